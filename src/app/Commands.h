@@ -1,0 +1,14 @@
+#pragma once
+// The subcommands of the `lenslab` executable. Each registers its options on the CLI11 app and
+// runs when chosen; errors a user can act on are thrown as InputError.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace lenslab {
+
+// Adds `render` to `app`; the returned function runs it after parsing.
+std::function<int()> addRenderCommand(CLI::App& app);
+std::function<int()> addInfoCommand(CLI::App& app);
+
+}  // namespace lenslab

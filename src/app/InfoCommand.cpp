@@ -1,0 +1,86 @@
+// lenslab info: what a scene holds and what a render of it would need.
+#include "app/CameraSelection.h"
+#include "app/Commands.h"
+#include "camera/Projection.h"
+#include "core/Error.h"
+#include "plan/FramePlan.h"
+#include "scene/GltfLoader.h"
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+namespace lenslab {
+namespace {
+
+constexpr double kDegreesPerRadian = 57.29577951308232;
+
+void printVector(std::ostream& out, const glm::dvec3& v) {
+  out << "[" << v.x << ", " << v.y << ", " << v.z << "]";
+}
+
+int runInfo(const std::string& path) {
+  const Scene scene = loadGltf(path);
+  std::ostream& out = std::cout;
+  out.precision(6);
+  out << "scene       " << path << "\n";
+  out << "triangles   " << scene.triangleCount() << " (" << scene.meshes.size() << " meshes, "
+      << scene.instances.size() << " instances)\n";
+  if (scene.bounds.empty()) {
+    out << "bounds      empty\n";
+  } else {
+    out << "bounds      min ";
+    printVector(out, scene.bounds.min);
+    out << " max ";
+    printVector(out, scene.bounds.max);
+    out << " (size ";
+    printVector(out, scene.bounds.size());
+    out << ")\n";
+  }
+  out << "cameras     " << scene.cameras.size() << "\n";
+  for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+    const SceneCamera& c = scene.cameras[i];
+    out << "  [" << i << "] " << (c.name.empty() ? "(unnamed)" : c.name) << ": ";
+    if (c.perspective)
+      out << "perspective, yfov " << c.yfovRadians * kDegreesPerRadian << " deg, aspect "
+          << (c.aspectRatio > 0 ? std::to_string(c.aspectRatio) : "from image");
+    else
+      out << "orthographic, xmag " << c.xmag << ", ymag " << c.ymag;
+    out << ", znear " << c.znear << ", zfar " << c.zfar << ", at ";
+    printVector(out, glm::dvec3(c.worldFromCamera[3]));
+    out << "\n";
+  }
+  out << "materials   " << scene.materials.size() << "\n";
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    out << "  [" << i << "] " << (m.name.empty() ? "(unnamed)" : m.name) << ": " << (m.unlit ? "unlit" : "lit")
+        << ", base [" << m.baseColorFactor.r << ", " << m.baseColorFactor.g << ", " << m.baseColorFactor.b << ", "
+        << m.baseColorFactor.a << "]" << (m.baseColorTexture >= 0 ? ", textured" : "")
+        << (m.alphaMode == AlphaMode::Mask ? ", alpha mask" : m.alphaMode == AlphaMode::Blend ? ", alpha blend (drawn opaque)" : "")
+        << (m.doubleSided ? ", double-sided" : "") << "\n";
+  }
+  out << "textures    " << scene.textures.size() << " (" << scene.images.size() << " images)\n";
+  for (const std::string& note : scene.notes) out << "note        " << note << "\n";
+
+  if (scene.triangleCount() > 0) {
+    const SelectedCamera selected = selectCamera(scene, std::nullopt, 0.0);
+    const FramePlan plan = makeFramePlan(scene, selected.camera);
+    out << "render      camera: " << selected.camera.source << "\n";
+    out << "            aperture samples: " << plan.apertureSamples << " (" << plan.samplesWhy << ")\n";
+    for (const PlannedPass& p : plan.passes) out << "            pass " << p.name << ": " << p.why << "\n";
+  } else {
+    out << "render      nothing to draw (no triangles)\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> addInfoCommand(CLI::App& app) {
+  auto path = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("info", "Describe a glTF scene: triangles, bounds, cameras, materials, render plan");
+  cmd->add_option("scene", *path, "glTF 2.0 scene (.gltf or .glb)")->required();
+  return [cmd, path]() { return cmd->parsed() ? runInfo(*path) : -1; };
+}
+
+}  // namespace lenslab

@@ -1,0 +1,122 @@
+// lenslab render: one image of a scene through the lecture's camera, headless.
+#include "app/CameraSelection.h"
+#include "app/Commands.h"
+#include "app/Stats.h"
+#include "camera/ImageSize.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "gl/GlContext.h"
+#include "io/ImageFile.h"
+#include "plan/FramePlan.h"
+#include "render/Renderer.h"
+#include "scene/GltfLoader.h"
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  std::string cameraFile;
+  std::string out = "render.png";
+  std::optional<int> width;
+  std::optional<int> height;
+  std::string backend = "osmesa";
+  std::string statsFile;
+  bool quiet = false;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int runRender(const RenderOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path out = o.out;
+  checkImageExtension(out);  // fail before any work
+  if (!o.statsFile.empty() && fs::path(o.statsFile).extension() != ".json")
+    throw InputError(cat("--stats ", o.statsFile, ": give a .json file name"));
+
+  // No scene: the bundled default scene with its default camera.
+  fs::path scenePath = o.scene;
+  std::optional<fs::path> cameraPath;
+  if (!o.cameraFile.empty()) cameraPath = o.cameraFile;
+  if (scenePath.empty()) {
+    scenePath = assetDirectory() / "rows" / "rows.gltf";
+    if (!cameraPath) cameraPath = assetDirectory() / "rows" / "camera.json";
+  }
+
+  const Scene scene = loadGltf(scenePath);
+  if (scene.triangleCount() == 0)
+    throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
+  const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
+  const SelectedCamera selected = selectCamera(scene, cameraPath, requestedAspect);
+  const Camera& camera = selected.camera;
+  const ImageSize size = resolveImageSize(camera.view.window, o.width, o.height);
+  if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
+    std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx
+              << ") differs from the window's; pixels will not be square (give only --width or --height)\n";
+
+  const FramePlan plan = makeFramePlan(scene, camera);
+  for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
+
+  RunStats stats;
+  stats.command = "render";
+  stats.scene = scenePath.string();
+  stats.camera = camera.source;
+  stats.size = size;
+  const Backend backend = o.backend == "egl" ? Backend::Egl : Backend::OSMesa;
+  stats.backend = backendName(backend);
+  stats.triangles = scene.triangleCount();
+  stats.plan = plan;
+
+  auto t = std::chrono::steady_clock::now();
+  const std::unique_ptr<GlContext> context = createHeadlessContext(backend);
+  stats.contextSeconds = secondsSince(t);
+  stats.renderer = context->renderer();
+
+  t = std::chrono::steady_clock::now();
+  Renderer renderer(scene);
+  stats.setupSeconds = secondsSince(t);
+
+  t = std::chrono::steady_clock::now();
+  const Image image = renderer.render(camera, plan, size);
+  stats.renderSeconds = secondsSince(t);
+
+  t = std::chrono::steady_clock::now();
+  writeImage(out, image);
+  stats.writeSeconds = secondsSince(t);
+  stats.seconds = secondsSince(start);
+  if (!o.statsFile.empty()) writeStats(o.statsFile, stats);
+  if (!o.quiet)
+    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
+              << plan.apertureSamples << " aperture sample" << (plan.apertureSamples == 1 ? "" : "s") << ", "
+              << stats.renderer << ", " << stats.seconds << " s)\n";
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> addRenderCommand(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model");
+  cmd->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
+  cmd->add_option("--camera", options->cameraFile, "camera JSON (lecture or physical form); default: the scene's first glTF camera, else an automatic framing");
+  cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")->capture_default_str();
+  cmd->add_option("--width", options->width, "image width in pixels (default 960; height follows the window's aspect)");
+  cmd->add_option("--height", options->height, "image height in pixels");
+  cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
+      ->check(CLI::IsMember({"osmesa", "egl"}))
+      ->capture_default_str();
+  cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
+  cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
+  return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };
+}
+
+}  // namespace lenslab

@@ -1,0 +1,30 @@
+#pragma once
+// --stats: what a run did, as JSON, for scripts and reports.
+#include "camera/ImageSize.h"
+#include "plan/FramePlan.h"
+
+#include <filesystem>
+#include <string>
+
+namespace lenslab {
+
+struct RunStats {
+  std::string command;
+  std::string scene;
+  std::string camera;
+  ImageSize size;
+  std::string backend;
+  std::string renderer;
+  std::size_t triangles = 0;
+  FramePlan plan;
+  double seconds = 0.0;          // the whole command, from start to the image written
+  double contextSeconds = 0.0;   // creating the GL context
+  double setupSeconds = 0.0;     // uploading the scene and compiling shaders
+  double renderSeconds = 0.0;    // the frame, GPU work finished (glFinish), with read-back
+  double writeSeconds = 0.0;     // encoding and writing the image
+};
+
+std::string toJson(const RunStats& stats);
+void writeStats(const std::filesystem::path& path, const RunStats& stats);
+
+}  // namespace lenslab

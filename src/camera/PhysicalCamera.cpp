@@ -1,0 +1,99 @@
+#include "camera/PhysicalCamera.h"
+
+#include "core/Error.h"
+#include "core/Text.h"
+
+#include <cmath>
+
+namespace lenslab {
+namespace {
+
+bool finite(const glm::dvec3& a) {
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
+
+[[noreturn]] void fail(std::string_view where, const std::string& message) {
+  throw InputError(cat(where, ": ", message));
+}
+
+}  // namespace
+
+void validate(const PhysicalCamera& c, std::string_view where) {
+  if (!finite(c.eye)) fail(where, "eye must be three finite numbers");
+  if (!finite(c.target)) fail(where, "target must be three finite numbers");
+  if (!finite(c.up)) fail(where, "up must be three finite numbers");
+  if (!(std::isfinite(c.focalLengthMm) && c.focalLengthMm > 0.0))
+    fail(where, cat("focal_length_mm is ", c.focalLengthMm, "; give a positive number of millimetres"));
+  if (!(std::isfinite(c.sensorMm.x) && std::isfinite(c.sensorMm.y) && c.sensorMm.x > 0.0 && c.sensorMm.y > 0.0))
+    fail(where, "sensor_mm must be two positive numbers [width, height] in millimetres");
+  if (!(c.fNumber > 0.0) || std::isnan(c.fNumber))
+    fail(where, cat("f_number is ", c.fNumber, "; give a positive number (e.g. 2.8), or leave it out for a pinhole"));
+  const glm::dvec3 forward = c.target - c.eye;
+  const double distance = glm::length(forward);
+  if (!(distance > 0.0)) fail(where, "eye and target are the same point; the view direction is undefined");
+  if (!(glm::length(c.up) > 0.0)) fail(where, "up is the zero vector");
+  if (glm::length(glm::cross(glm::normalize(c.up), forward / distance)) < 1e-9)
+    fail(where, "up is parallel to the view direction (target - eye); give an up direction across it");
+  const double f = c.focalLengthMm * kMetresPerMillimetre;
+  if (!std::isfinite(c.focusDistance) || !(c.focusDistance > f))
+    fail(where, cat("focus_distance is ", c.focusDistance, "; it must be finite and beyond the focal length (",
+                    f, " world units), or the lens forms no real image"));
+  if (!(std::isfinite(c.nearDistance) && c.nearDistance > 0.0))
+    fail(where, cat("near is ", c.nearDistance, "; give a positive distance"));
+  if (std::isnan(c.farDistance) || !(c.farDistance > c.nearDistance))
+    fail(where, cat("near (", c.nearDistance, ") must be less than far (", c.farDistance, ")"));
+}
+
+double imageDistance(double focalLength, double focusDistance) {
+  return focalLength * focusDistance / (focusDistance - focalLength);
+}
+
+ViewSpec toViewSpec(const PhysicalCamera& c) {
+  const double f = c.focalLengthMm * kMetresPerMillimetre;
+  const double zf = c.focusDistance;
+  const double zi = imageDistance(f, zf);
+  // The sensor seen back through the lens centre, on the plane of focus.
+  const glm::dvec2 windowSize = c.sensorMm * kMetresPerMillimetre * (zf / zi);
+  const glm::dvec3 forward = glm::normalize(c.target - c.eye);
+
+  ViewSpec spec;
+  spec.projection = Projection::Perspective;
+  spec.vrp = c.eye + zf * forward;
+  spec.vpn = -forward;
+  spec.vup = c.up;
+  spec.prp = {0.0, 0.0, zf};
+  spec.window = {-0.5 * windowSize.x, -0.5 * windowSize.y, 0.5 * windowSize.x, 0.5 * windowSize.y};
+  spec.nearDistance = c.nearDistance;
+  spec.farDistance = c.farDistance;
+  return spec;
+}
+
+double apertureRadius(const PhysicalCamera& c) {
+  if (std::isinf(c.fNumber)) return 0.0;
+  return c.focalLengthMm * kMetresPerMillimetre / (2.0 * c.fNumber);
+}
+
+double verticalFovRadians(const PhysicalCamera& c) {
+  const double f = c.focalLengthMm * kMetresPerMillimetre;
+  const double zi = imageDistance(f, c.focusDistance);
+  return 2.0 * std::atan(c.sensorMm.y * kMetresPerMillimetre / (2.0 * zi));
+}
+
+PhysicalCamera toPhysical(const ViewSpec& spec, glm::dvec2 sensorMm) {
+  const ViewBasis b = viewBasis(spec);
+  PhysicalCamera c;
+  c.eye = prpWorld(spec);
+  c.focusDistance = spec.prp.z;
+  c.target = c.eye - c.focusDistance * b.n;
+  c.up = b.v;
+  c.sensorMm = sensorMm;
+  // window = sensor · z_f / z_i  ⇒  z_i = sensor · z_f / window;  1/f = 1/z_i + 1/z_f.
+  const double zi = sensorMm.x * kMetresPerMillimetre * c.focusDistance / spec.window.width();
+  const double f = zi * c.focusDistance / (zi + c.focusDistance);
+  c.focalLengthMm = f / kMetresPerMillimetre;
+  c.nearDistance = spec.nearDistance;
+  c.farDistance = spec.farDistance;
+  return c;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,54 @@
+#pragma once
+// A camera described as a photographer would: where it stands, where it looks, its lens and sensor.
+// World units are metres (glTF's); lens and sensor sizes are millimetres, as printed on lenses.
+//
+// Conversion to the lecture's viewing description puts the window on the plane of focus
+// (../shared/ARCHITECTURE.md), by the thin-lens relations:
+//   image distance   z_i = f·z_f / (z_f − f)
+//   window           = sensor × z_f / z_i        (the sensor, projected back through the lens centre)
+//   field of view    = 2·atan(d / (2·z_i))      (the lecture's atan(d/2f) is the half angle at
+//                                                infinity focus, where z_i = f)
+//   aperture radius  = f / (2N)
+#include "camera/ViewSpec.h"
+
+#include <glm/glm.hpp>
+
+#include <limits>
+#include <string_view>
+
+namespace lenslab {
+
+struct PhysicalCamera {
+  glm::dvec3 eye{0.0, 0.0, 5.0};         // lens centre, world
+  glm::dvec3 target{0.0};                // a point the camera looks at, world
+  glm::dvec3 up{0.0, 1.0, 0.0};          // world up
+  double focalLengthMm = 35.0;           // f
+  glm::dvec2 sensorMm{36.0, 24.0};       // sensor width, height
+  double fNumber = std::numeric_limits<double>::infinity();  // N; infinity = pinhole
+  double focusDistance = 5.0;            // z_f: distance from the lens to the plane of focus, world
+  double nearDistance = 0.05;            // world
+  double farDistance = std::numeric_limits<double>::infinity();
+};
+
+constexpr double kMetresPerMillimetre = 1e-3;
+
+// Throws InputError naming `where` for non-finite or non-positive values, eye == target, up
+// parallel to the view direction, or focus at or inside the focal length (no real image).
+void validate(const PhysicalCamera& camera, std::string_view where);
+
+// Image distance z_i for focus distance z_f and focal length f (same units).
+double imageDistance(double focalLength, double focusDistance);
+
+ViewSpec toViewSpec(const PhysicalCamera& camera);
+
+// Aperture radius f / (2N) in world units (0 for a pinhole).
+double apertureRadius(const PhysicalCamera& camera);
+
+// Vertical field of view, 2·atan(sensor_h / (2·z_i)).
+double verticalFovRadians(const PhysicalCamera& camera);
+
+// The inverse of toViewSpec for a perspective ViewSpec whose PRP is over the window centre, given
+// the sensor size (which the viewing description does not hold). Near/far carry over.
+PhysicalCamera toPhysical(const ViewSpec& spec, glm::dvec2 sensorMm);
+
+}  // namespace lenslab

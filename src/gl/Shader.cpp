@@ -1,0 +1,131 @@
+#include "gl/Shader.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace lenslab::gl {
+namespace fs = std::filesystem;
+
+fs::path shaderDirectory() {
+  if (const char* env = std::getenv("LENSLAB_SHADER_DIR"); env && *env) return env;
+  return LENSLAB_DEFAULT_SHADER_DIR;
+}
+
+namespace {
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw std::runtime_error("shader " + path.string() +
+                             ": cannot read it (set LENSLAB_SHADER_DIR to lenslab's shaders/ folder)");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void expand(const fs::path& file, const fs::path& root, ShaderSource& out, int depth) {
+  if (depth > 16) throw std::runtime_error("shader " + file.string() + ": #include nested too deeply");
+  const int fileIndex = static_cast<int>(out.files.size());
+  out.files.push_back(fs::relative(file, root).generic_string());
+  if (depth > 0) out.text += "#line 1 " + std::to_string(fileIndex) + "\n";
+  std::istringstream in(readText(file));
+  static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+  std::string line;
+  int lineNumber = 0;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    std::smatch m;
+    if (std::regex_match(line, m, includeLine)) {
+      fs::path target = file.parent_path() / m[1].str();
+      if (!fs::exists(target)) target = root / m[1].str();
+      expand(target, root, out, depth + 1);
+      out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(fileIndex) + "\n";
+    } else {
+      out.text += line + "\n";
+    }
+  }
+}
+
+}  // namespace
+
+ShaderSource loadShaderSource(const fs::path& relativePath, const std::vector<std::string>& defines) {
+  const fs::path root = shaderDirectory();
+  ShaderSource raw;
+  expand(root / relativePath, root, raw, 0);
+  // Put the defines right after #version (which must stay the first line).
+  const std::size_t versionEnd = raw.text.find('\n');
+  std::string header = raw.text.substr(0, versionEnd + 1);
+  for (const std::string& d : defines) header += "#define " + d + "\n";
+  header += "#line 2 0\n";
+  raw.text = header + raw.text.substr(versionEnd + 1);
+  return raw;
+}
+
+std::string annotateInfoLog(const std::string& log, const std::vector<std::string>& files) {
+  // Mesa writes "0:12(3): error: ..."; others write "0(12) : error ...".
+  static const std::regex location(R"((\d+)[:(](\d+)(\(\d+\))?\)?)");
+  std::istringstream in(log);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, location) && m.position(0) == 0) {
+      const std::size_t index = std::stoul(m[1].str());
+      const std::string name = index < files.size() ? files[index] : "source " + m[1].str();
+      line = name + ":" + m[2].str() + m.suffix().str();
+    }
+    out += (out.empty() ? "" : " | ") + line;
+  }
+  return out;
+}
+
+namespace {
+
+Shader compile(GLenum stage, const fs::path& path, const std::vector<std::string>& defines) {
+  const ShaderSource source = loadShaderSource(path, defines);
+  Shader shader(glCreateShader(stage));
+  const char* text = source.text.c_str();
+  glShaderSource(shader.id(), 1, &text, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
+    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+    throw std::runtime_error("shader " + path.generic_string() + " failed to compile: " +
+                             annotateInfoLog(log, source.files));
+  }
+  return shader;
+}
+
+}  // namespace
+
+Program buildProgram(const fs::path& vertexPath, const fs::path& fragmentPath,
+                     const std::vector<std::string>& defines) {
+  const Shader vs = compile(GL_VERTEX_SHADER, vertexPath, defines);
+  const Shader fsh = compile(GL_FRAGMENT_SHADER, fragmentPath, defines);
+  Program program = Program::create();
+  glAttachShader(program.id(), vs.id());
+  glAttachShader(program.id(), fsh.id());
+  glLinkProgram(program.id());
+  glDetachShader(program.id(), vs.id());
+  glDetachShader(program.id(), fsh.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+    throw std::runtime_error("shader program " + vertexPath.generic_string() + " + " +
+                             fragmentPath.generic_string() + " failed to link: " + log.c_str());
+  }
+  return program;
+}
+
+}  // namespace lenslab::gl

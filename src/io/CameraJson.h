@@ -1,0 +1,41 @@
+#pragma once
+// Camera files (JSON), in one of two forms.
+//
+// Lecture form — the viewing description itself:
+//   {"projection": "perspective" | "parallel",      default "perspective"
+//    "vrp": [x, y, z], "vpn": [x, y, z],            required (world)
+//    "vup": [x, y, z],                              default [0, 1, 0]
+//    "prp": [u, v, n],                              required (view-reference coordinates)
+//    "window": [umin, vmin, umax, vmax],            required (on the view plane)
+//    "near": d, "far": d | "infinity"}              defaults: near = prp.n / 1000 (perspective)
+//                                                   or 0 (parallel); far = infinity
+//                                                   (perspective; required for parallel)
+// Physical form — a photographer's description (world units are metres):
+//   {"eye": [x, y, z], "target": [x, y, z],         required
+//    "up": [x, y, z],                               default [0, 1, 0]
+//    "focal_length_mm": 35, "sensor_mm": [36, 24],  defaults
+//    "f_number": 2.8,                               default: none (a pinhole)
+//    "focus_distance": d,                           default |target − eye|
+//    "near": 0.05, "far": d | "infinity"}           defaults
+// Unknown keys, wrong types and mixed forms are errors naming the file and the key.
+#include "camera/Camera.h"
+#include "camera/PhysicalCamera.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace lenslab {
+
+struct CameraFile {
+  Camera camera;
+  std::optional<PhysicalCamera> physical;  // when given in the physical form
+};
+
+CameraFile parseCameraJson(const std::string& text, const std::string& where);
+CameraFile loadCameraJson(const std::filesystem::path& file);
+
+// The lecture form of `camera` as JSON text (what `view` will save and `render` loads back).
+std::string toCameraJson(const Camera& camera);
+
+}  // namespace lenslab

@@ -1,0 +1,99 @@
+#include "io/ImageFile.h"
+
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/AtomicFile.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lowerExtension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  return s;
+}
+
+}  // namespace
+
+float srgbFromLinear(float x) {
+  x = std::clamp(x, 0.0f, 1.0f);
+  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+float linearFromSrgb(float x) {
+  return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
+void checkImageExtension(const fs::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext != ".png" && ext != ".exr")
+    throw InputError(cat(path.string(), ": unsupported image type '", ext,
+                         "'; use .png (8-bit sRGB) or .exr (linear float)"));
+}
+
+void writeImage(const fs::path& path, const Image& image) {
+  checkImageExtension(path);
+  const bool png = lowerExtension(path) == ".png";
+  AtomicOutput output(path);
+  auto out = OIIO::ImageOutput::create(output.temporaryPath().string());
+  if (!out) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(OIIO::geterror())));
+  const int channels = 4;
+  OIIO::ImageSpec spec(image.width, image.height, channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+  spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
+  spec.attribute("Software", "lenslab");
+  if (!out->open(output.temporaryPath().string(), spec))
+    throw InputError(cat(path.string(), ": cannot write it: ", oneLine(out->geterror())));
+  bool ok = false;
+  if (png) {
+    std::vector<std::uint8_t> encoded(image.rgba.size());
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) {
+      const bool alpha = i % 4 == 3;
+      const float v = alpha ? std::clamp(image.rgba[i], 0.0f, 1.0f) : srgbFromLinear(image.rgba[i]);
+      encoded[i] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+    }
+    ok = out->write_image(OIIO::TypeDesc::UINT8, encoded.data());
+  } else {
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
+  }
+  if (!ok || !out->close())
+    throw InputError(cat(path.string(), ": cannot write it: ", oneLine(out->geterror())));
+  output.commit();
+}
+
+Image readImage(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(cat(path.string(), ": cannot read image: ", oneLine(OIIO::geterror())));
+  const OIIO::ImageSpec& spec = in->spec();
+  Image image(spec.width, spec.height);
+  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw InputError(cat(path.string(), ": cannot read image: ", oneLine(in->geterror())));
+  const bool encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
+  for (int y = 0; y < spec.height; ++y)
+    for (int x = 0; x < spec.width; ++x) {
+      const float* p = &pixels[(static_cast<std::size_t>(y) * spec.width + x) * spec.nchannels];
+      glm::vec4 c(0.0f, 0.0f, 0.0f, 1.0f);
+      for (int k = 0; k < std::min(spec.nchannels, 4); ++k) c[k] = p[k];
+      if (spec.nchannels < 3) c.g = c.b = c.r;
+      if (encoded)
+        for (int k = 0; k < 3; ++k) c[k] = linearFromSrgb(c[k]);
+      image.set(x, y, c);
+    }
+  return image;
+}
+
+}  // namespace lenslab

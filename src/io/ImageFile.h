@@ -1,0 +1,23 @@
+#pragma once
+// Image files through OpenImageIO. By extension: .png is 8-bit sRGB (the transfer function
+// applied here, values clamped to [0, 1]); .exr is linear 32-bit float, unclamped.
+// Writing is atomic (see AtomicFile.h): a failed run leaves no partial file.
+#include "core/Image.h"
+
+#include <filesystem>
+
+namespace lenslab {
+
+// Throws InputError naming the path when its extension is neither .png nor .exr. Call it before
+// long work, so that a typo fails at once.
+void checkImageExtension(const std::filesystem::path& path);
+
+void writeImage(const std::filesystem::path& path, const Image& linear);
+
+// Reads PNG/EXR (or anything OIIO reads) into linear RGBA; 8-bit files are decoded from sRGB.
+Image readImage(const std::filesystem::path& path);
+
+float linearFromSrgb(float encoded);
+float srgbFromLinear(float linear);
+
+}  // namespace lenslab

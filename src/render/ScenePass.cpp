@@ -1,0 +1,88 @@
+#include "render/ScenePass.h"
+
+#include "gl/Shader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace lenslab {
+namespace {
+
+// Uniform locations, as declared in shaders/scene/*.
+enum Location : GLint {
+  kClipFromModel = 0,
+  kWorldNormalFromModel = 1,
+  kBaseColorFactor = 2,
+  kHasBaseColorTexture = 3,
+  kUnlit = 4,
+  kAlphaMask = 5,
+  kAlphaCutoff = 6,
+  kDoubleSided = 7,
+  kToLight = 8,
+  kAmbient = 9,
+  kDiffuse = 10,
+};
+
+const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaque, single-sided
+
+}  // namespace
+
+ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
+
+void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld,
+                     const gl::RenderTarget& target) const {
+  const Scene& scene = gpuScene.scene();
+  target.bind();
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  const glm::vec3& bg = scene.lighting.background;
+  const float clearColor[] = {bg.r, bg.g, bg.b, 1.0f};
+  const float clearDepth = 0.0f;  // reverse-Z: far is 0
+  glClearBufferfv(GL_COLOR, 0, clearColor);
+  glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+
+  const GLuint program = program_.id();
+  glUseProgram(program);
+  glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
+  glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
+  glProgramUniform1f(program, kDiffuse, scene.lighting.diffuse);
+
+  for (const Instance& instance : scene.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    const Material& material =
+        mesh.material >= 0 ? scene.materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
+
+    // Composed in double, rounded once (see scene.vert).
+    const glm::mat4 clipFromModel(clipFromWorld * instance.worldFromModel);
+    const glm::dmat3 linear(instance.worldFromModel);
+    const glm::mat3 normalFromModel(glm::transpose(glm::inverse(linear)));
+    glProgramUniformMatrix4fv(program, kClipFromModel, 1, GL_FALSE, glm::value_ptr(clipFromModel));
+    glProgramUniformMatrix3fv(program, kWorldNormalFromModel, 1, GL_FALSE, glm::value_ptr(normalFromModel));
+    glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
+    const bool textured = material.baseColorTexture >= 0;
+    glProgramUniform1i(program, kHasBaseColorTexture, textured);
+    if (textured) gpuScene.bindTexture(material.baseColorTexture, 0);
+    glProgramUniform1i(program, kUnlit, material.unlit);
+    glProgramUniform1i(program, kAlphaMask, material.alphaMode == AlphaMode::Mask);
+    glProgramUniform1f(program, kAlphaCutoff, material.alphaCutoff);
+    glProgramUniform1i(program, kDoubleSided, material.doubleSided);
+
+    if (material.doubleSided) {
+      glDisable(GL_CULL_FACE);
+    } else {
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_BACK);
+    }
+    // A mirroring transform turns counter-clockwise front faces clockwise.
+    glFrontFace(glm::determinant(linear) < 0.0 ? GL_CW : GL_CCW);
+
+    const GpuScene::GpuMesh& gpuMesh = gpuScene.mesh(instance.mesh);
+    glBindVertexArray(gpuMesh.vertexArray.id());
+    glDrawElements(GL_TRIANGLES, gpuMesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace lenslab

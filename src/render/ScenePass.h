@@ -1,0 +1,21 @@
+#pragma once
+// The scene pass: every instance drawn once with the camera's clipFromWorld, into a float colour
+// target with reverse-Z depth (clear to 0, GREATER). One pass is one view from one PRP.
+#include "gl/Framebuffer.h"
+#include "gl/Object.h"
+#include "render/GpuScene.h"
+
+#include <glm/glm.hpp>
+
+namespace lenslab {
+
+class ScenePass {
+ public:
+  ScenePass();  // builds the program (needs a current context)
+  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::RenderTarget& target) const;
+
+ private:
+  gl::Program program_;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,132 @@
+#pragma once
+// The renderable scene: what every renderer (raster and ray caster) draws, flattened out of glTF.
+// Pure data (GLM + std), no GL: src/render uploads it, src/raycast will intersect it.
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// Texture wrap and filter modes, glTF's sampler values (they are the GL enum values, kept as
+// plain integers here so that this header stays free of GL).
+enum class Wrap : int { Repeat = 10497, ClampToEdge = 33071, MirroredRepeat = 33648 };
+enum class Filter : int {
+  Nearest = 9728, Linear = 9729,
+  NearestMipmapNearest = 9984, LinearMipmapNearest = 9985,
+  NearestMipmapLinear = 9986, LinearMipmapLinear = 9987,
+};
+
+struct Sampler {
+  Wrap wrapS = Wrap::Repeat;
+  Wrap wrapT = Wrap::Repeat;
+  Filter magFilter = Filter::Linear;
+  Filter minFilter = Filter::LinearMipmapLinear;  // glTF leaves it to the renderer; this is ours
+};
+
+// An 8-bit RGBA image, rows from the top (glTF's UV origin is the image's top-left corner).
+struct TextureImage {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba8;  // width * height * 4
+};
+
+// A texture as a material uses it: an image and how to sample it.
+struct Texture {
+  int image = -1;  // index into Scene::images
+  Sampler sampler;
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+struct Material {
+  std::string name;
+  glm::vec4 baseColorFactor{1.0f};  // linear RGBA
+  int baseColorTexture = -1;        // index into Scene::textures, -1 = none
+  int baseColorTexCoord = 0;        // which TEXCOORD_n set; only 0 is kept by the loader
+  bool unlit = false;               // KHR_materials_unlit: colour = base colour
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  bool doubleSided = false;
+};
+
+struct Vertex {
+  glm::vec3 position{0.0f};  // model units
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  glm::vec2 uv{0.0f};
+  glm::vec4 color{1.0f};  // COLOR_0, linear; white when absent
+};
+
+// One triangle list with one material (glTF strips and fans are converted to lists).
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;  // always indexed, 3 per triangle
+  int material = -1;                   // index into Scene::materials, -1 = glTF default material
+  bool hasVertexColors = false;
+};
+
+// A mesh placed in the world by the node hierarchy.
+struct Instance {
+  int mesh = -1;
+  glm::dmat4 worldFromModel{1.0};
+};
+
+struct Bounds {
+  glm::dvec3 min{std::numeric_limits<double>::infinity()};
+  glm::dvec3 max{-std::numeric_limits<double>::infinity()};
+  bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
+  void extend(const glm::dvec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  glm::dvec3 center() const { return 0.5 * (min + max); }
+  glm::dvec3 size() const { return max - min; }
+};
+
+// A camera stored in the glTF file, with its node's placement (it looks along -Z, up +Y).
+struct SceneCamera {
+  std::string name;
+  bool perspective = true;
+  double yfovRadians = 0.0;  // perspective
+  double aspectRatio = 0.0;  // perspective, 0 = not given (use the image's)
+  double xmag = 0.0;         // orthographic half-width
+  double ymag = 0.0;         // orthographic half-height
+  double znear = 0.0;
+  double zfar = std::numeric_limits<double>::infinity();  // infinite when absent
+  glm::dmat4 worldFromCamera{1.0};
+};
+
+// The one light of lenslab's shading model, which the ray caster reproduces exactly:
+//   unlit:  colour = base
+//   lit:    colour = base * (ambient + diffuse * max(0, dot(n, toLight)))
+// n faces the viewer on double-sided materials. No shadows, no image lighting.
+struct Lighting {
+  glm::vec3 toLight = glm::normalize(glm::vec3(0.35f, 0.8f, 0.5f));  // world, unit
+  float ambient = 0.25f;
+  float diffuse = 0.75f;
+  glm::vec3 background{0.05f, 0.06f, 0.08f};  // linear colour where no surface is hit
+};
+
+struct Scene {
+  std::string source;  // file it came from, for messages
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<TextureImage> images;
+  std::vector<Instance> instances;
+  std::vector<SceneCamera> cameras;
+  Lighting lighting;
+  Bounds bounds;                      // world-space bounds of all instances
+  std::vector<std::string> notes;     // what the loader left out and why (shown by `lenslab info`)
+
+  std::size_t triangleCount() const;  // over all instances
+};
+
+// World-space bounds of every instance's vertices.
+Bounds computeBounds(const Scene& scene);
+
+}  // namespace lenslab

@@ -1,0 +1,416 @@
+#!/usr/bin/env python3
+"""Writes lenslab's bundled scenes and their camera files into assets/.
+
+    python3 tools/make_assets.py            # then: bash tools/validate-assets.sh
+
+Standard library only, deterministic (the same bytes every run). World units are metres, +Y up,
+glTF's conventions throughout. Each scene is assets/<name>/<name>.gltf with one .bin and its PNG
+textures beside it, and assets/<name>/camera.json, the default camera of `lenslab render`.
+
+  rows         textured objects at 2, 4, 8, 16 and 32 m over a checker floor: the default scene
+               and the depth-of-field showcase
+  occluder     a fence of thin bars 1 m from the camera before a textured wall at 4 m: partial
+               obscuration
+  grid         a plane of dots facing the camera, the view plane on it: distortion
+  depth-range  objects from 0.01 to 1e5 m, and two quads 1e-5 apart (relative) at 1 km: depth
+               precision
+"""
+
+import json
+import math
+import os
+import struct
+import zlib
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets")
+
+# glTF enums
+FLOAT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5123, 5125
+REPEAT, CLAMP_TO_EDGE = 10497, 33071
+LINEAR, LINEAR_MIPMAP_LINEAR, NEAREST = 9729, 9987, 9728
+
+
+# ---------------------------------------------------------------- PNG
+
+def write_png(path, width, height, pixels):
+    """pixels: bytes of RGBA8, rows from the top."""
+    raw = b"".join(b"\x00" + pixels[y * width * 4:(y + 1) * width * 4] for y in range(height))
+
+    def chunk(kind, data):
+        body = kind + data
+        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
+
+    png = b"\x89PNG\r\n\x1a\n"
+    png += chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+    png += chunk(b"IDAT", zlib.compress(raw, 9))
+    png += chunk(b"IEND", b"")
+    with open(path, "wb") as f:
+        f.write(png)
+
+
+def image(width, height, fn):
+    """fn(x, y) -> (r, g, b) in 0..255 (sRGB-encoded, as PNG textures are)."""
+    out = bytearray()
+    for y in range(height):
+        for x in range(width):
+            r, g, b = fn(x, y)
+            out += bytes((r, g, b, 255))
+    return bytes(out)
+
+
+def checker(cell_px, light=(235, 235, 235), dark=(40, 40, 40)):
+    def fn(x, y):
+        return light if (x // cell_px + y // cell_px) % 2 == 0 else dark
+    return fn
+
+
+def stripes(x, y):
+    palette = [(230, 60, 50), (245, 190, 40), (60, 170, 80), (40, 110, 210), (150, 70, 190)]
+    return palette[((x + y) // 16) % len(palette)]
+
+
+def rings(x, y):
+    r = math.hypot(x - 63.5, y - 63.5)
+    return (250, 250, 250) if int(r // 8) % 2 == 0 else (200, 30, 60)
+
+
+def bricks(x, y):
+    row = y // 16
+    offset = 16 if row % 2 else 0
+    mortar = y % 16 < 2 or (x + offset) % 32 < 2
+    return (210, 205, 195) if mortar else (165, 70, 45)
+
+
+# ---------------------------------------------------------------- glTF builder
+
+class Gltf:
+    def __init__(self, name):
+        self.name = name
+        self.bin = bytearray()
+        self.doc = {
+            "asset": {"version": "2.0", "generator": "lenslab tools/make_assets.py"},
+            "scene": 0,
+            "scenes": [{"name": name, "nodes": []}],
+            "nodes": [], "meshes": [], "materials": [], "accessors": [], "bufferViews": [],
+        }
+        self.images = []  # (file name, width, height, pixels)
+
+    def _view(self, data, target=None):
+        while len(self.bin) % 4:
+            self.bin += b"\x00"
+        view = {"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data)}
+        if target:
+            view["target"] = target
+        self.bin += data
+        self.doc["bufferViews"].append(view)
+        return len(self.doc["bufferViews"]) - 1
+
+    def _accessor(self, values, kind, components):
+        flat = [c for v in values for c in v]
+        view = self._view(struct.pack("<%df" % len(flat), *flat), 34962)
+        acc = {"bufferView": view, "componentType": FLOAT, "count": len(values), "type": kind}
+        if kind == "VEC3" and components == 3:
+            acc["min"] = [min(v[i] for v in values) for i in range(3)]
+            acc["max"] = [max(v[i] for v in values) for i in range(3)]
+            # min/max must hold the float32 values exactly
+            acc["min"] = [struct.unpack("<f", struct.pack("<f", m))[0] for m in acc["min"]]
+            acc["max"] = [struct.unpack("<f", struct.pack("<f", m))[0] for m in acc["max"]]
+        self.doc["accessors"].append(acc)
+        return len(self.doc["accessors"]) - 1
+
+    def _indices(self, indices):
+        big = max(indices) > 65535
+        fmt = "<%d%s" % (len(indices), "I" if big else "H")
+        view = self._view(struct.pack(fmt, *indices), 34963)
+        self.doc["accessors"].append({"bufferView": view, "componentType": UNSIGNED_INT if big else UNSIGNED_SHORT,
+                                      "count": len(indices), "type": "SCALAR"})
+        return len(self.doc["accessors"]) - 1
+
+    def texture(self, name, width, height, pixels, wrap=REPEAT, mipmaps=True):
+        doc = self.doc
+        doc.setdefault("images", []).append({"name": name, "uri": name + ".png"})
+        doc.setdefault("samplers", []).append({
+            "name": name + "-sampler", "wrapS": wrap, "wrapT": wrap, "magFilter": LINEAR,
+            "minFilter": LINEAR_MIPMAP_LINEAR if mipmaps else LINEAR})
+        doc.setdefault("textures", []).append({"name": name, "source": len(doc["images"]) - 1,
+                                               "sampler": len(doc["samplers"]) - 1})
+        self.images.append((name + ".png", width, height, pixels))
+        return len(doc["textures"]) - 1
+
+    def material(self, name, color=(1, 1, 1, 1), texture=None, unlit=False):
+        pbr = {"baseColorFactor": list(color), "metallicFactor": 0.0, "roughnessFactor": 1.0}
+        if texture is not None:
+            pbr["baseColorTexture"] = {"index": texture}
+        mat = {"name": name, "pbrMetallicRoughness": pbr}
+        if unlit:
+            mat["extensions"] = {"KHR_materials_unlit": {}}
+            used = self.doc.setdefault("extensionsUsed", [])
+            if "KHR_materials_unlit" not in used:
+                used.append("KHR_materials_unlit")
+        self.doc["materials"].append(mat)
+        return len(self.doc["materials"]) - 1
+
+    def mesh(self, name, geometry, material, normals=True, colors=None):
+        positions, geo_normals, uvs, indices = geometry
+        attributes = {"POSITION": self._accessor(positions, "VEC3", 3)}
+        if normals:
+            attributes["NORMAL"] = self._accessor(geo_normals, "VEC3", 0)
+        attributes["TEXCOORD_0"] = self._accessor(uvs, "VEC2", 2)
+        if colors:
+            attributes["COLOR_0"] = self._accessor(colors, "VEC4", 4)
+        self.doc["meshes"].append({"name": name, "primitives": [
+            {"attributes": attributes, "indices": self._indices(indices), "material": material}]})
+        return len(self.doc["meshes"]) - 1
+
+    def node(self, name, mesh=None, translation=None, scale=None, matrix=None, camera=None):
+        node = {"name": name}
+        if mesh is not None:
+            node["mesh"] = mesh
+        if camera is not None:
+            node["camera"] = camera
+        if matrix is not None:
+            node["matrix"] = matrix
+        if translation is not None:
+            node["translation"] = list(translation)
+        if scale is not None:
+            node["scale"] = list(scale)
+        self.doc["nodes"].append(node)
+        self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
+        return len(self.doc["nodes"]) - 1
+
+    def camera_from(self, cam):
+        """A glTF perspective camera node matching a physical camera.json."""
+        eye, target, up = cam["eye"], cam["target"], cam.get("up", [0, 1, 0])
+        f = cam["focal_length_mm"] / 1000.0
+        zf = cam["focus_distance"]
+        zi = f * zf / (zf - f)
+        sensor = cam.get("sensor_mm", [36, 24])
+        yfov = 2.0 * math.atan(sensor[1] / 1000.0 / (2.0 * zi))
+        forward = normalize(sub(target, eye))
+        right = normalize(cross(forward, up))
+        true_up = cross(right, forward)
+        back = [-c for c in forward]
+        matrix = right + [0.0] + true_up + [0.0] + back + [0.0] + list(eye) + [1.0]
+        perspective = {"yfov": yfov, "aspectRatio": sensor[0] / sensor[1], "znear": cam["near"]}
+        if cam.get("far", "infinity") != "infinity":
+            perspective["zfar"] = cam["far"]
+        self.doc.setdefault("cameras", []).append({"name": "camera", "type": "perspective",
+                                                   "perspective": perspective})
+        self.node("camera", camera=len(self.doc["cameras"]) - 1, matrix=matrix)
+
+    def write(self, camera_json):
+        folder = os.path.join(ROOT, self.name)
+        os.makedirs(folder, exist_ok=True)
+        while len(self.bin) % 4:
+            self.bin += b"\x00"
+        self.doc["buffers"] = [{"name": self.name, "uri": self.name + ".bin", "byteLength": len(self.bin)}]
+        with open(os.path.join(folder, self.name + ".bin"), "wb") as f:
+            f.write(bytes(self.bin))
+        with open(os.path.join(folder, self.name + ".gltf"), "w") as f:
+            json.dump(self.doc, f, indent=1, sort_keys=True)
+            f.write("\n")
+        for file_name, width, height, pixels in self.images:
+            write_png(os.path.join(folder, file_name), width, height, pixels)
+        with open(os.path.join(folder, "camera.json"), "w") as f:
+            json.dump(camera_json, f, indent=2)
+            f.write("\n")
+
+
+# ---------------------------------------------------------------- geometry
+
+def sub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def normalize(a):
+    n = math.sqrt(sum(c * c for c in a))
+    return [c / n for c in a]
+
+
+def box(hx, hy, hz, uv_scale=1.0):
+    """A box centred at the origin: 24 vertices, outward normals, counter-clockwise faces."""
+    positions, normals, uvs, indices = [], [], [], []
+    faces = [((1, 0, 0), (0, 0, -1), (0, 1, 0)), ((-1, 0, 0), (0, 0, 1), (0, 1, 0)),
+             ((0, 1, 0), (1, 0, 0), (0, 0, -1)), ((0, -1, 0), (1, 0, 0), (0, 0, 1)),
+             ((0, 0, 1), (1, 0, 0), (0, 1, 0)), ((0, 0, -1), (-1, 0, 0), (0, 1, 0))]
+    half = (hx, hy, hz)
+    for n, a, b in faces:  # a × b = n: a is "right", b is "up" seen from outside
+        base = len(positions)
+        for s, t in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+            positions.append([half[i] * (n[i] + s * a[i] + t * b[i]) for i in range(3)])
+            normals.append(list(n))
+            uvs.append([(s + 1) * 0.5 * uv_scale, (1 - t) * 0.5 * uv_scale])
+        indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+    return positions, normals, uvs, indices
+
+
+def quad(width, height, uv_repeat=1.0):
+    """A quad in z = 0 facing +z, centred at the origin."""
+    w, h = width / 2, height / 2
+    positions = [[-w, -h, 0], [w, -h, 0], [w, h, 0], [-w, h, 0]]
+    normals = [[0, 0, 1]] * 4
+    uvs = [[0, uv_repeat], [uv_repeat, uv_repeat], [uv_repeat, 0], [0, 0]]
+    return positions, normals, uvs, [0, 1, 2, 0, 2, 3]
+
+
+def floor(size, uv_repeat):
+    """A quad in y = 0 facing +y."""
+    s = size / 2
+    positions = [[-s, 0, s], [s, 0, s], [s, 0, -s], [-s, 0, -s]]
+    normals = [[0, 1, 0]] * 4
+    uvs = [[0, uv_repeat], [uv_repeat, uv_repeat], [uv_repeat, 0], [0, 0]]
+    return positions, normals, uvs, [0, 1, 2, 0, 2, 3]
+
+
+def disc(radius, sides=8):
+    """A regular polygon in z = 0 facing +z (a dot)."""
+    positions = [[0, 0, 0]] + [[radius * math.cos(2 * math.pi * k / sides), radius * math.sin(2 * math.pi * k / sides), 0]
+                               for k in range(sides)]
+    normals = [[0, 0, 1]] * (sides + 1)
+    uvs = [[0.5, 0.5]] * (sides + 1)
+    indices = []
+    for k in range(sides):
+        indices += [0, 1 + k, 1 + (k + 1) % sides]
+    return positions, normals, uvs, indices
+
+
+def merge(parts):
+    """Concatenates (geometry, offset) pairs into one geometry."""
+    positions, normals, uvs, indices = [], [], [], []
+    for (p, n, t, i), offset in parts:
+        base = len(positions)
+        positions += [[v[k] + offset[k] for k in range(3)] for v in p]
+        normals += n
+        uvs += t
+        indices += [base + j for j in i]
+    return positions, normals, uvs, indices
+
+
+# ---------------------------------------------------------------- scenes
+
+def make_rows():
+    g = Gltf("rows")
+    checker_tex = g.texture("checker", 64, 64, image(64, 64, checker(8)))
+    stripes_tex = g.texture("stripes", 128, 128, image(128, 128, stripes))
+    rings_tex = g.texture("rings", 128, 128, image(128, 128, rings))
+    bricks_tex = g.texture("bricks", 128, 128, image(128, 128, bricks))
+
+    floor_mat = g.material("floor", texture=checker_tex)
+    g.node("floor", g.mesh("floor", floor(60.0, 30.0), floor_mat))
+
+    eye = [0.0, 1.0, 3.0]
+    # distance from the eye along -z, sideways offset, half size, what it is
+    rows = [
+        (2.0, -0.55, 0.15, "stripes"),
+        (4.0, 0.75, 0.25, "rings-unlit"),
+        (8.0, -1.6, 0.4, "red-no-normals"),
+        (16.0, 2.8, 0.7, "vertex-colours"),
+        (32.0, -4.5, 1.2, "bricks"),
+    ]
+    for distance, x, h, kind in rows:
+        z = eye[2] - distance
+        name = "box-%gm" % distance
+        if kind == "stripes":
+            mesh = g.mesh(name, box(h, h, h), g.material("stripes", texture=stripes_tex))
+        elif kind == "rings-unlit":
+            mesh = g.mesh(name, box(h, h, h), g.material("rings-unlit", texture=rings_tex, unlit=True))
+        elif kind == "red-no-normals":
+            # No NORMAL attribute: the loader must generate flat normals.
+            mesh = g.mesh(name, box(h, h, h), g.material("red", color=(0.8, 0.1, 0.08, 1.0)), normals=False)
+        elif kind == "vertex-colours":
+            geometry = box(h, h, h)
+            colors = [[(p[0] / h + 1) / 2, (p[1] / h + 1) / 2, (p[2] / h + 1) / 2, 1.0] for p in geometry[0]]
+            mesh = g.mesh(name, geometry, g.material("vertex-colours"), colors=colors)
+        else:
+            mesh = g.mesh(name, box(h, h, h), g.material("bricks", texture=bricks_tex))
+        g.node(name, mesh, translation=(x, h, z))
+    # A slim unlit column behind the first box, for a strongly out-of-focus foreground edge.
+    column = g.mesh("column", box(0.025, 0.45, 0.025), g.material("column-unlit", color=(0.95, 0.85, 0.2, 1), unlit=True))
+    g.node("column-1.5m", column, translation=(0.62, 0.45, eye[2] - 1.5))
+
+    camera = {"eye": eye, "target": [0.0, 0.55, -2.0], "up": [0, 1, 0], "focal_length_mm": 35,
+              "sensor_mm": [36, 24], "focus_distance": 4.0, "near": 0.05, "far": "infinity"}
+    g.camera_from(camera)
+    g.write(camera)
+
+
+def make_occluder():
+    g = Gltf("occluder")
+    wall_tex = g.texture("wall-checker", 256, 256, image(256, 256, checker(16, (250, 250, 250), (15, 15, 15))),
+                         wrap=CLAMP_TO_EDGE, mipmaps=True)
+    wall = g.mesh("wall", quad(4.0, 3.0), g.material("wall", texture=wall_tex, unlit=True))
+    g.node("wall-4m", wall, translation=(0.0, 1.0, -4.0))
+    # Fence: bars 1.5 cm wide, 12 cm apart, 1 m from the camera.
+    bar_geometry = merge([(box(0.0075, 0.8, 0.0075), (x * 0.12, 0.0, 0.0)) for x in range(-5, 6)])
+    fence = g.mesh("fence", bar_geometry, g.material("fence", color=(0.9, 0.45, 0.1, 1.0), unlit=True))
+    g.node("fence-1m", fence, translation=(0.0, 1.0, -1.0))
+    camera = {"eye": [0.0, 1.0, 0.0], "target": [0.0, 1.0, -4.0], "up": [0, 1, 0], "focal_length_mm": 50,
+              "sensor_mm": [36, 24], "focus_distance": 4.0, "near": 0.05, "far": "infinity"}
+    g.camera_from(camera)
+    g.write(camera)
+
+
+def make_grid():
+    g = Gltf("grid")
+    plane = g.mesh("plane", quad(8.0, 6.0), g.material("plane", color=(0.04, 0.04, 0.05, 1.0), unlit=True))
+    g.node("plane", plane)
+    # 21 × 15 dots, 0.25 m apart, 1 mm in front of the plane; the view plane runs through them.
+    dots = merge([(disc(0.04), (0.25 * i, 0.25 * j, 0.0)) for j in range(-7, 8) for i in range(-10, 11)])
+    g.node("dots", g.mesh("dots", dots, g.material("dots", color=(1, 1, 1, 1), unlit=True)),
+           translation=(0.0, 0.0, 0.001))
+    camera = {"projection": "perspective", "vrp": [0.0, 0.0, 0.001], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+              "prp": [0.0, 0.0, 3.0], "window": [-2.1, -1.4, 2.1, 1.4], "near": 0.1, "far": 100.0}
+    g.write(camera)
+
+
+def make_depth_range():
+    g = Gltf("depth-range")
+    cube = box(1.0, 1.0, 1.0)
+    colours = [(0.9, 0.2, 0.2), (0.9, 0.6, 0.1), (0.8, 0.9, 0.2), (0.3, 0.85, 0.3),
+               (0.2, 0.8, 0.8), (0.25, 0.4, 0.95), (0.6, 0.3, 0.9), (0.9, 0.3, 0.7)]
+    distances = [0.01, 0.1, 1.0, 10.0, 100.0, 1e3, 1e4, 1e5]
+    for k, d in enumerate(distances):
+        angle = math.radians(45.0 * k + 22.5)
+        direction = normalize([0.28 * math.cos(angle), 0.22 * math.sin(angle), -1.0])
+        mesh = g.mesh("cube-%g" % d, cube, g.material("cube-%g" % d, color=colours[k] + (1.0,)))
+        g.node("cube-%gm" % d, mesh, translation=[d * c for c in direction], scale=[0.03 * d] * 3)
+    # Two quads at 1 km, 1 cm (1e-5 relative) apart: the nearer, smaller red one must win.
+    near_quad = g.mesh("near-quad", quad(120.0, 120.0), g.material("near-quad", color=(0.9, 0.1, 0.1, 1), unlit=True))
+    far_quad = g.mesh("far-quad", quad(240.0, 240.0), g.material("far-quad", color=(0.1, 0.8, 0.2, 1), unlit=True))
+    g.node("far-quad", far_quad, translation=(0.0, 0.0, -1000.0 * (1.0 + 1e-5)))
+    g.node("near-quad", near_quad, translation=(0.0, 0.0, -1000.0))
+    camera = {"eye": [0.0, 0.0, 0.0], "target": [0.0, 0.0, -1.0], "up": [0, 1, 0], "focal_length_mm": 35,
+              "sensor_mm": [36, 24], "focus_distance": 1.0, "near": 0.001, "far": "infinity"}
+    g.camera_from(camera)
+    g.write(camera)
+
+
+def main():
+    make_rows()
+    make_occluder()
+    make_grid()
+    make_depth_range()
+    with open(os.path.join(ROOT, "README.md"), "w") as f:
+        f.write(__doc__.split("\n\n", 1)[0] + "\n\n" + README)
+
+
+README = """Regenerate with `python3 tools/make_assets.py`; check with `bash tools/validate-assets.sh`
+(the Khronos glTF validator, from npm). Everything here is generated by that script and is CC0.
+
+| scene | what it is for | camera |
+|---|---|---|
+| `rows` | the default scene and depth-of-field showcase: boxes at 2, 4, 8, 16, 32 m over a 60 m checker floor; textured, plain, unlit, vertex-coloured, one without normals; a thin column at 1.5 m | physical, 35 mm, focus 4 m |
+| `occluder` | partial obscuration: eleven 1.5 cm bars, 12 cm apart, 1 m away, before a 4 × 3 m checker wall at 4 m | physical, 50 mm, focus 4 m |
+| `grid` | distortion: 21 × 15 dots (octagons of radius 4 cm, 0.25 m apart) in the plane z = 0.001, on a dark 8 × 6 m plane | lecture form, view plane on the dots, PRP 3 m in front |
+| `depth-range` | depth precision: cubes at 0.01, 0.1, 1, 10, 100, 1e3, 1e4 and 1e5 m, each 6 % of its distance wide; a red 120 m quad at 1 km in front of a green 240 m quad 1 cm farther | physical, near 0.001, far infinity |
+
+Each `<scene>.gltf` also holds a glTF camera matching its `camera.json` (except `grid`, whose
+camera is in the lecture's form only).
+"""
+
+if __name__ == "__main__":
+    main()

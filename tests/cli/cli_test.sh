@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# The lenslab command line as a user meets it: help, a default render with --stats, and bad input
+# (a missing file, invalid JSON, a degenerate camera, a bad extension) giving one line on stderr,
+# a non-zero exit and no output file.
+# usage: cli_test.sh path/to/lenslab source-dir
+set -u
+lenslab=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# expect_refusal NAME EXPECTED_FRAGMENT -- ARGS...: non-zero exit, one stderr line holding the
+# fragment, nothing written to $work/out.*
+expect_refusal() {
+  local name=$1 fragment=$2
+  shift 3
+  rm -f "$work"/out.*
+  "$lenslab" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  local lines
+  lines=$(wc -l <"$work/stderr")
+  if [ "$rc" -eq 0 ]; then fail "$name: exit 0"; return; fi
+  if [ "$lines" -ne 1 ]; then fail "$name: $lines stderr lines: $(cat "$work/stderr")"; return; fi
+  if ! grep -qF -- "$fragment" "$work/stderr"; then fail "$name: stderr lacks '$fragment': $(cat "$work/stderr")"; return; fi
+  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$name: left an output file"; return; fi
+  pass
+}
+
+# Help.
+if "$lenslab" --help | grep -q render && "$lenslab" render --help | grep -q -- "--camera"; then pass; else fail "--help"; fi
+
+# The default render, with stats.
+if "$lenslab" render --width 120 --out "$work/default.png" --stats "$work/stats.json" -q && [ -s "$work/default.png" ]; then
+  pass
+  for key in '"width": 120' '"height"' '"backend": "osmesa"' '"renderer"' '"seconds"' '"plan"' '"aperture_samples": 1'; do
+    if grep -qF "$key" "$work/stats.json"; then pass; else fail "stats.json lacks $key"; fi
+  done
+else
+  fail "default render"
+fi
+# EXR output.
+if "$lenslab" render --width 64 --out "$work/default.exr" -q && [ -s "$work/default.exr" ]; then pass; else fail "exr render"; fi
+
+# EGL (Mesa's surfaceless platform here; a GPU where there is one) draws what OSMesa draws.
+if "$lenslab" render --width 120 --backend egl --out "$work/egl.png" --stats "$work/egl.json" -q; then
+  if grep -qF '"backend": "egl"' "$work/egl.json"; then pass; else fail "egl stats"; fi
+  if cmp -s "$work/egl.png" "$work/default.png" || [ "$(grep -o '"renderer": "[^"]*"' "$work/egl.json")" != "$(grep -o '"renderer": "[^"]*"' "$work/stats.json")" ]; then
+    pass  # identical on the same renderer; a different renderer (a GPU) may differ slightly
+  else
+    fail "egl and osmesa images differ on the same renderer"
+  fi
+else
+  fail "egl render"
+fi
+
+# info.
+if "$lenslab" info "$src/assets/rows/rows.gltf" | grep -q "^triangles"; then pass; else fail "info"; fi
+
+# Bad input.
+echo '{ "eye": [0, 0, 5], "target": ' >"$work/broken.json"
+echo '{ "vrp": [0,0,0], "vpn": [0,0,0], "prp": [0,0,1], "window": [-1,-1,1,1] }' >"$work/zero-vpn.json"
+echo '{ "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,0], "window": [-1,-1,1,1] }' >"$work/prp-on-plane.json"
+echo '{ "eye": [0,0,5], "target": [0,0,0], "focal_lenght_mm": 50 }' >"$work/typo.json"
+expect_refusal "missing scene" "no-such-scene.gltf" -- render "$work/no-such-scene.gltf" --out "$work/out.png"
+expect_refusal "missing camera" "no-such-camera.json" -- render --camera "$work/no-such-camera.json" --out "$work/out.png"
+expect_refusal "invalid json" "not valid JSON" -- render --camera "$work/broken.json" --out "$work/out.png"
+expect_refusal "zero vpn" "vpn" -- render --camera "$work/zero-vpn.json" --out "$work/out.png"
+expect_refusal "prp on view plane" "view plane" -- render --camera "$work/prp-on-plane.json" --out "$work/out.png"
+expect_refusal "unknown key" "focal_lenght_mm" -- render --camera "$work/typo.json" --out "$work/out.png"
+expect_refusal "bad extension" "use .png" -- render --out "$work/out.jpg"
+expect_refusal "bad width" "--width" -- render --width 0 --out "$work/out.png"
+expect_refusal "missing output folder" "does not exist" -- render --width 32 --out "$work/nowhere/out.png"
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,79 @@
+// Shader errors are reported with the file, the line and the driver's log.
+#include "gl/Shader.h"
+#include "gl_test_context.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace lenslab {
+namespace {
+namespace fs = std::filesystem;
+
+class ShaderDirOverride {
+ public:
+  explicit ShaderDirOverride(const fs::path& dir) {
+    if (const char* old = std::getenv("LENSLAB_SHADER_DIR")) old_ = old;
+    setenv("LENSLAB_SHADER_DIR", dir.c_str(), 1);
+  }
+  ~ShaderDirOverride() {
+    if (old_.empty()) unsetenv("LENSLAB_SHADER_DIR");
+    else setenv("LENSLAB_SHADER_DIR", old_.c_str(), 1);
+  }
+
+ private:
+  std::string old_;
+};
+
+void write(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+TEST(Shader, CompileErrorNamesTheIncludedFileAndLine) {
+  LENSLAB_REQUIRE_GL();
+  const fs::path dir = fs::temp_directory_path() / "lenslab-shader-test";
+  fs::remove_all(dir);
+  write(dir / "bad/ok.vert", "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n");
+  write(dir / "common/helper.glsl", "// helper\nfloat helper() {\n  return undefined_name;\n}\n");
+  write(dir / "bad/bad.frag",
+        "#version 450 core\n#include \"../common/helper.glsl\"\nout vec4 c;\nvoid main() { c = vec4(helper()); }\n");
+  const ShaderDirOverride override(dir);
+  try {
+    gl::buildProgram("bad/ok.vert", "bad/bad.frag");
+    FAIL() << "a broken shader compiled";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("bad/bad.frag"), std::string::npos) << message;
+    EXPECT_NE(message.find("common/helper.glsl:3"), std::string::npos) << message;
+    EXPECT_NE(message.find("undefined_name"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Shader, MissingShaderFolderSaysHowToFixIt) {
+  LENSLAB_REQUIRE_GL();
+  const ShaderDirOverride override("/nonexistent/lenslab/shaders");
+  try {
+    gl::buildProgram("scene/scene.vert", "scene/scene.frag");
+    FAIL() << "built a program from a missing folder";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("LENSLAB_SHADER_DIR"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Shader, ExpandsIncludesWithLineDirectives) {
+  LENSLAB_REQUIRE_GL();
+  const gl::ShaderSource source = gl::loadShaderSource("scene/scene.frag", {"VARIANT_X"});
+  ASSERT_EQ(source.files.size(), 2u);
+  EXPECT_EQ(source.files[0], "scene/scene.frag");
+  EXPECT_EQ(source.files[1], "common/shading.glsl");
+  EXPECT_EQ(source.text.rfind("#version 450 core\n#define VARIANT_X\n", 0), 0u);
+  EXPECT_NE(source.text.find("vec3 shade("), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -1,0 +1,85 @@
+#include "camera/Projection.h"
+#include "core/Error.h"
+#include "io/CameraJson.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lenslab {
+namespace {
+
+// Expects the text to be refused with a one-line message naming the file and containing `fragment`.
+void expectRefused(const std::string& text, const std::string& fragment) {
+  try {
+    parseCameraJson(text, "cam.json");
+    FAIL() << "accepted: " << text;
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("cam.json: ", 0), 0u) << message;
+    EXPECT_NE(message.find(fragment), std::string::npos) << "expected '" << fragment << "' in: " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(CameraJson, ReadsTheLectureForm) {
+  const CameraFile f = parseCameraJson(R"({"projection": "perspective", "vrp": [0, 0, -5],
+      "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [0.5, 0, 5], "window": [-2, -1, 2, 1],
+      "near": 0.1, "far": "infinity"})", "cam.json");
+  const ViewSpec& s = f.camera.view;
+  EXPECT_EQ(s.projection, Projection::Perspective);
+  EXPECT_EQ(s.vrp, glm::dvec3(0, 0, -5));
+  EXPECT_EQ(s.prp, glm::dvec3(0.5, 0, 5));
+  EXPECT_DOUBLE_EQ(s.window.umax, 2.0);
+  EXPECT_DOUBLE_EQ(s.nearDistance, 0.1);
+  EXPECT_TRUE(std::isinf(s.farDistance));
+  EXPECT_FALSE(f.physical.has_value());
+  EXPECT_EQ(f.camera.apertureRadius, 0.0);
+}
+
+TEST(CameraJson, ReadsTheParallelLectureForm) {
+  const CameraFile f = parseCameraJson(R"({"projection": "parallel", "vrp": [0, 0, 0],
+      "vpn": [0, 0, 1], "prp": [0, 0, 5], "window": [-2, -1, 2, 1], "far": 20})", "cam.json");
+  EXPECT_EQ(f.camera.view.projection, Projection::Parallel);
+  EXPECT_DOUBLE_EQ(f.camera.view.farDistance, 20.0);
+}
+
+TEST(CameraJson, ReadsThePhysicalFormWithDefaults) {
+  const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 4,
+      "focal_length_mm": 50})", "cam.json");
+  ASSERT_TRUE(f.physical.has_value());
+  EXPECT_DOUBLE_EQ(f.physical->focusDistance, 5.0);
+  EXPECT_EQ(f.physical->sensorMm, glm::dvec2(36, 24));
+  EXPECT_NEAR(f.camera.apertureRadius, 0.05 / 8.0, 1e-15);
+  const glm::dvec2 uv = projectToWindow(f.camera.view, {0, 1, -3});
+  EXPECT_NEAR(uv.x, 0.0, 1e-12);
+  EXPECT_NEAR(uv.y, 0.0, 1e-12);
+}
+
+TEST(CameraJson, RoundTripsTheLectureForm) {
+  const CameraFile f = parseCameraJson(R"({"eye": [1, 2, 5], "target": [0, 1, 0]})", "cam.json");
+  const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
+  EXPECT_NEAR(glm::length(back.camera.view.vrp - f.camera.view.vrp), 0.0, 1e-12);
+  EXPECT_NEAR(back.camera.view.window.umax, f.camera.view.window.umax, 1e-12);
+  EXPECT_EQ(back.camera.view.farDistance, f.camera.view.farDistance);
+}
+
+TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
+  expectRefused("{ not json", "not valid JSON");
+  expectRefused("[1, 2]", "JSON object");
+  expectRefused("{}", "no camera");
+  expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "focal_lenght_mm": 50})", "focal_lenght_mm");
+  expectRefused(R"({"eye": [0, 0], "target": [0, 0, 0]})", "\"eye\"");
+  expectRefused(R"({"eye": "here", "target": [0, 0, 0]})", "\"eye\"");
+  expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "f_number": "wide"})", "\"f_number\"");
+  expectRefused(R"({"eye": [0, 0, 5]})", "\"target\" is missing");
+  expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "vrp": [0, 0, 0]})", "mixes");
+  expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 0], "prp": [0, 0, 1], "window": [-1, -1, 1, 1]})", "vpn");
+  expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [1, -1, -1, 1]})", "window");
+  expectRefused(R"({"projection": "fisheye", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1]})", "\"projection\"");
+  expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1], "near": 5, "far": 2})", "near");
+  expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "focus_distance": 0.01})", "focus_distance");
+}
+
+}  // namespace
+}  // namespace lenslab

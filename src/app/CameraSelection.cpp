@@ -48,16 +48,15 @@ SelectedCamera selectCamera(const Scene& scene, const std::optional<fs::path>& c
     focus = std::max(focus, 2.0 * c.znear);
     if (!(focus > 0.0)) focus = 1.0;
     const double aspect = c.aspectRatio > 0.0 ? c.aspectRatio : (imageAspect > 0.0 ? imageAspect : 1.5);
-    selected.camera.view =
+    const ViewSpec view =
         c.perspective ? viewSpecFromGltfPerspective(c.worldFromCamera, c.yfovRadians, aspect, c.znear, c.zfar, focus)
                       : viewSpecFromGltfOrthographic(c.worldFromCamera, c.xmag, c.ymag, c.znear, c.zfar, focus);
-    selected.camera.source = cat("glTF camera 0", c.name.empty() ? "" : cat(" (", c.name, ")"));
+    selected.camera = cameraFocusedOnViewPlane(view, 0.0, cat("glTF camera 0", c.name.empty() ? "" : cat(" (", c.name, ")")));
     validate(selected.camera.view, cat(scene.source, ": ", selected.camera.source));
     return selected;
   }
   const PhysicalCamera c = autoFramingCamera(scene.bounds);
-  selected.camera.view = toViewSpec(c);
-  selected.camera.source = "automatic framing of the scene bounds";
+  selected.camera = toCamera(c, "automatic framing of the scene bounds");
   selected.physical = c;
   return selected;
 }

@@ -1,6 +1,7 @@
 // lenslab info: what a scene holds and what a render of it would need.
 #include "app/CameraSelection.h"
 #include "app/Commands.h"
+#include "camera/ImageSize.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "plan/FramePlan.h"
@@ -64,8 +65,9 @@ int runInfo(const std::string& path) {
 
   if (scene.triangleCount() > 0) {
     const SelectedCamera selected = selectCamera(scene, std::nullopt, 0.0);
-    const FramePlan plan = makeFramePlan(scene, selected.camera);
-    out << "render      camera: " << selected.camera.source << "\n";
+    const ImageSize size = resolveImageSize(selected.camera.view.window, std::nullopt, std::nullopt);
+    const FramePlan plan = makeFramePlan(scene, selected.camera, size);
+    out << "render      camera: " << selected.camera.source << ", " << size.widthPx << "x" << size.heightPx << "\n";
     out << "            aperture samples: " << plan.apertureSamples << " (" << plan.samplesWhy << ")\n";
     for (const PlannedPass& p : plan.passes) out << "            pass " << p.name << ": " << p.why << "\n";
   } else {

@@ -1,6 +1,7 @@
 // lenslab render: one image of a scene through the lecture's camera, headless.
 #include "app/CameraSelection.h"
 #include "app/Commands.h"
+#include "app/LensOptions.h"
 #include "app/Stats.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
@@ -30,6 +31,7 @@ struct RenderOptions {
   std::string backend = "osmesa";
   std::string statsFile;
   bool quiet = false;
+  LensOptions lens;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -42,6 +44,7 @@ int runRender(const RenderOptions& o) {
   checkImageExtension(out);  // fail before any work
   if (!o.statsFile.empty() && fs::path(o.statsFile).extension() != ".json")
     throw InputError(cat("--stats ", o.statsFile, ": give a .json file name"));
+  const PlanOptions planOptions = toPlanOptions(o.lens);
 
   // No scene: the bundled default scene with its default camera.
   fs::path scenePath = o.scene;
@@ -56,28 +59,21 @@ int runRender(const RenderOptions& o) {
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
-  const SelectedCamera selected = selectCamera(scene, cameraPath, requestedAspect);
-  const Camera& camera = selected.camera;
+  Camera camera = applyLensOptions(selectCamera(scene, cameraPath, requestedAspect).camera, o.lens);
   const ImageSize size = resolveImageSize(camera.view.window, o.width, o.height);
   if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
     std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx
               << ") differs from the window's; pixels will not be square (give only --width or --height)\n";
 
-  const FramePlan plan = makeFramePlan(scene, camera);
-  for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
-
   RunStats stats;
   stats.command = "render";
   stats.scene = scenePath.string();
-  stats.camera = camera.source;
   stats.size = size;
-  const Backend backend = o.backend == "egl" ? Backend::Egl : Backend::OSMesa;
-  stats.backend = backendName(backend);
+  stats.backend = o.backend;
   stats.triangles = scene.triangleCount();
-  stats.plan = plan;
 
   auto t = std::chrono::steady_clock::now();
-  const std::unique_ptr<GlContext> context = createHeadlessContext(backend);
+  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   stats.contextSeconds = secondsSince(t);
   stats.renderer = context->renderer();
 
@@ -85,9 +81,24 @@ int runRender(const RenderOptions& o) {
   Renderer renderer(scene);
   stats.setupSeconds = secondsSince(t);
 
+  if (o.lens.focusAt) camera = focusOnPixel(renderer, camera, size, *o.lens.focusAt);
+  const FramePlan plan = makeFramePlan(scene, camera, size, planOptions);
+  for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
+  stats.camera = camera.source;
+  stats.plan = plan;
+
   t = std::chrono::steady_clock::now();
-  const Image image = renderer.render(camera, plan, size);
+  renderer.begin(camera, plan, size);
+  const bool showProgress = !o.quiet && plan.apertureSamples > 1 && isTerminal(stderr);
+  // Samples in batches, so that long renders report progress on a terminal.
+  const int batch = std::max(1, plan.apertureSamples / 50);
+  while (renderer.samplesDone() < renderer.samplesPlanned()) {
+    renderer.addSamples(batch);
+    if (showProgress) printProgress(renderer.samplesDone(), renderer.samplesPlanned(), secondsSince(t));
+  }
+  const Image image = renderer.resolve();
   stats.renderSeconds = secondsSince(t);
+  if (showProgress) std::cerr << "\n";
 
   t = std::chrono::steady_clock::now();
   writeImage(out, image);
@@ -114,6 +125,7 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
       ->check(CLI::IsMember({"osmesa", "egl"}))
       ->capture_default_str();
+  addLensOptions(*cmd, options->lens);
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
   return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };

@@ -25,7 +25,11 @@ std::string toJson(const RunStats& s) {
   for (const PlannedPass& p : s.plan.passes) passes.push_back({{"name", p.name}, {"why", p.why}});
   j["plan"] = {{"passes", passes},
                {"aperture_samples", s.plan.apertureSamples},
-               {"aperture_samples_why", s.plan.samplesWhy}};
+               {"aperture_samples_why", s.plan.samplesWhy},
+               {"pattern", patternName(s.plan.pattern)},
+               {"seed", s.plan.seed},
+               {"coc_px", {{"min", s.plan.cocMinPx}, {"max", s.plan.cocMaxPx}}},
+               {"depth_range", {{"min", s.plan.depthMin}, {"max", s.plan.depthMax}}}};
   return j.dump(2) + "\n";
 }
 

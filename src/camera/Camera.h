@@ -1,7 +1,14 @@
 #pragma once
 // Everything the renderers need to know about the camera: the lecture's viewing description and
-// the lens. Where it came from is kept for messages and --stats.
+// the thin lens. Where it came from is kept for messages and --stats.
+//
+// The view plane is the plane of focus (../shared/ARCHITECTURE.md). A thin lens is the same camera
+// with the PRP moved to a point of the aperture disk, in the PRP's plane (parallel to the view
+// plane), while the window stays where it is: every point of the view plane then lands on the same
+// pixel from every aperture point, and any other point spreads over its circle of confusion.
 #include "camera/ViewSpec.h"
+
+#include <glm/glm.hpp>
 
 #include <string>
 
@@ -9,8 +16,37 @@ namespace lenslab {
 
 struct Camera {
   ViewSpec view;
-  double apertureRadius = 0.0;  // world units; 0 = pinhole (depth of field: issue #3)
-  std::string source;           // "assets/rows/camera.json", "glTF camera 0 (Main)", "auto framing"
+  double apertureRadius = 0.0;  // world units; 0 = pinhole
+  // The plane of focus is the view plane, except at infinity focus, which no finite view plane
+  // can hold: the window then travels with the PRP (see viewThroughLens).
+  bool focusAtInfinity = false;
+  std::string source;           // "assets/rows/camera.json", "glTF camera 0 (Main)", ...
+
+  bool isPinhole() const { return !(apertureRadius > 0.0); }
+  // 1/z_f, from the PRP along −n: 1/PRP.n, or 0 at infinity focus.
+  double inverseFocusDistance() const { return focusAtInfinity ? 0.0 : 1.0 / view.prp.z; }
 };
+
+// A camera whose plane of focus is its view plane.
+Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std::string source);
+
+// The view from one point of the aperture: the PRP moved by lensOffset (u, v; world units) in its
+// plane, the window kept on the plane of focus, and the window also shifted by pixelOffset
+// (window units) for sub-pixel jitter. For focus at inverse distance φ and view plane at d = PRP.n
+// the window moves by lensOffset·(1 − d·φ): not at all when the view plane is the plane of focus,
+// with the PRP when focus is at infinity.
+ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset);
+
+// Diameter, in window units on the view plane, of the circle of confusion of a point at `depth`
+// (world units from the PRP along −n): every aperture point sees it through a different window
+// point. Perspective: 2R·d·|1/z_f − 1/z| with d = PRP.n (2R·|z − z_f|/z when the view plane is the
+// plane of focus). Parallel: the DOP tilts by the lens offset over PRP.n, so 2R·|z − PRP.n|/PRP.n.
+double cocDiameterOnWindow(const Camera& camera, double depth);
+
+// Moves the plane of focus to `distance` (world units along −n from the PRP; +infinity allowed for
+// perspective). Lecture-form cameras keep their field of view: the view plane moves and the window
+// scales about the principal point. Throws InputError naming `where` for a distance ≤ 0, or a
+// parallel projection focused anywhere but a finite distance.
+Camera refocused(const Camera& camera, double distance, const std::string& where);
 
 }  // namespace lenslab

@@ -35,9 +35,9 @@ void validate(const PhysicalCamera& c, std::string_view where) {
   if (glm::length(glm::cross(glm::normalize(c.up), forward / distance)) < 1e-9)
     fail(where, "up is parallel to the view direction (target - eye); give an up direction across it");
   const double f = c.focalLengthMm * kMetresPerMillimetre;
-  if (!std::isfinite(c.focusDistance) || !(c.focusDistance > f))
-    fail(where, cat("focus_distance is ", c.focusDistance, "; it must be finite and beyond the focal length (",
-                    f, " world units), or the lens forms no real image"));
+  if (std::isnan(c.focusDistance) || !(c.focusDistance > f))
+    fail(where, cat("focus_distance is ", c.focusDistance, "; it must be beyond the focal length (",
+                    f, " world units), or the lens forms no real image; \"infinity\" is allowed"));
   if (!(std::isfinite(c.nearDistance) && c.nearDistance > 0.0))
     fail(where, cat("near is ", c.nearDistance, "; give a positive distance"));
   if (std::isnan(c.farDistance) || !(c.farDistance > c.nearDistance))
@@ -45,13 +45,15 @@ void validate(const PhysicalCamera& c, std::string_view where) {
 }
 
 double imageDistance(double focalLength, double focusDistance) {
+  if (std::isinf(focusDistance)) return focalLength;
   return focalLength * focusDistance / (focusDistance - focalLength);
 }
 
 ViewSpec toViewSpec(const PhysicalCamera& c) {
   const double f = c.focalLengthMm * kMetresPerMillimetre;
-  const double zf = c.focusDistance;
-  const double zi = imageDistance(f, zf);
+  // At infinity focus the window goes on a plane at the target's distance (any would do).
+  const double zf = std::isinf(c.focusDistance) ? glm::length(c.target - c.eye) : c.focusDistance;
+  const double zi = imageDistance(f, c.focusDistance);
   // The sensor seen back through the lens centre, on the plane of focus.
   const glm::dvec2 windowSize = c.sensorMm * kMetresPerMillimetre * (zf / zi);
   const glm::dvec3 forward = glm::normalize(c.target - c.eye);
@@ -66,6 +68,12 @@ ViewSpec toViewSpec(const PhysicalCamera& c) {
   spec.nearDistance = c.nearDistance;
   spec.farDistance = c.farDistance;
   return spec;
+}
+
+Camera toCamera(const PhysicalCamera& c, std::string source) {
+  Camera camera = cameraFocusedOnViewPlane(toViewSpec(c), apertureRadius(c), std::move(source));
+  camera.focusAtInfinity = std::isinf(c.focusDistance);
+  return camera;
 }
 
 double apertureRadius(const PhysicalCamera& c) {

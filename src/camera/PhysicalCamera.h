@@ -9,11 +9,13 @@
 //   field of view    = 2·atan(d / (2·z_i))      (the lecture's atan(d/2f) is the half angle at
 //                                                infinity focus, where z_i = f)
 //   aperture radius  = f / (2N)
+#include "camera/Camera.h"
 #include "camera/ViewSpec.h"
 
 #include <glm/glm.hpp>
 
 #include <limits>
+#include <string>
 #include <string_view>
 
 namespace lenslab {
@@ -25,7 +27,8 @@ struct PhysicalCamera {
   double focalLengthMm = 35.0;           // f
   glm::dvec2 sensorMm{36.0, 24.0};       // sensor width, height
   double fNumber = std::numeric_limits<double>::infinity();  // N; infinity = pinhole
-  double focusDistance = 5.0;            // z_f: distance from the lens to the plane of focus, world
+  double focusDistance = 5.0;            // z_f: distance from the lens to the plane of focus, world;
+                                         // +infinity allowed
   double nearDistance = 0.05;            // world
   double farDistance = std::numeric_limits<double>::infinity();
 };
@@ -39,7 +42,13 @@ void validate(const PhysicalCamera& camera, std::string_view where);
 // Image distance z_i for focus distance z_f and focal length f (same units).
 double imageDistance(double focalLength, double focusDistance);
 
+// The viewing description with the view plane on the plane of focus. Focus at infinity has no
+// finite plane: the view plane is then put at |target − eye| with the window of that distance
+// (z_i = f), and the Camera's inverse focus distance is 0 (see toCamera).
 ViewSpec toViewSpec(const PhysicalCamera& camera);
+
+// The whole camera: view, aperture radius f/2N and focus.
+Camera toCamera(const PhysicalCamera& camera, std::string source);
 
 // Aperture radius f / (2N) in world units (0 for a pinhole).
 double apertureRadius(const PhysicalCamera& camera);

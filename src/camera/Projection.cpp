@@ -1,6 +1,7 @@
 #include "camera/Projection.h"
 
 #include <cmath>
+#include <limits>
 
 namespace lenslab {
 
@@ -103,6 +104,15 @@ glm::dvec2 pixelFromWindow(const Window& window, glm::dvec2 uv, int widthPx, int
 glm::dvec2 windowFromPixel(const Window& window, glm::dvec2 pixel, int widthPx, int heightPx) {
   return {window.umin + pixel.x / widthPx * window.width(),
           window.vmax - pixel.y / heightPx * window.height()};
+}
+
+double depthFromReverseZ(const ViewSpec& spec, double zNdc) {
+  const double nearZ = spec.nearDistance, farZ = spec.farDistance;
+  if (spec.projection == Projection::Parallel) return farZ - zNdc * (farZ - nearZ);
+  if (!(zNdc > 0.0)) return std::numeric_limits<double>::infinity();
+  if (std::isinf(farZ)) return nearZ / zNdc;
+  // z_ndc = near·(far − Z) / (Z·(far − near))  ⇒  Z = near·far / (z_ndc·(far − near) + near)
+  return nearZ * farZ / (zNdc * (farZ - nearZ) + nearZ);
 }
 
 glm::dvec2 projectToWindow(const ViewSpec& spec, const glm::dvec3& worldPoint) {

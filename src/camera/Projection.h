@@ -53,6 +53,10 @@ glm::dvec2 windowFromNdc(const Window& window, glm::dvec2 ndc);
 glm::dvec2 pixelFromWindow(const Window& window, glm::dvec2 uv, int widthPx, int heightPx);
 glm::dvec2 windowFromPixel(const Window& window, glm::dvec2 pixel, int widthPx, int heightPx);
 
+// Depth (the lecture's Z: world units from the PRP along −n) of a reverse-Z depth-buffer value;
+// +infinity for 0 (nothing drawn there, the far plane at infinity).
+double depthFromReverseZ(const ViewSpec& spec, double zNdc);
+
 // The lecture's formula applied directly (no matrices): where a world point lands on the view plane,
 // in window (u, v). Perspective: u = PRP.u + f·X/Z, v = PRP.v + f·Y/Z. Parallel: along DOP.
 glm::dvec2 projectToWindow(const ViewSpec& spec, const glm::dvec3& worldPoint);

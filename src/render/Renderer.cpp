@@ -2,34 +2,73 @@
 
 #include "camera/Projection.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace lenslab {
 
 Renderer::Renderer(const Scene& scene) : gpuScene_(scene) {}
 
-const gl::RenderTarget& Renderer::targetFor(ImageSize size) {
-  if (!target_ || target_->width() != size.widthPx || target_->height() != size.heightPx)
-    target_ = std::make_unique<gl::RenderTarget>(size.widthPx, size.heightPx);
-  return *target_;
+const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size) {
+  if (!slot || slot->width() != size.widthPx || slot->height() != size.heightPx)
+    slot = std::make_unique<gl::RenderTarget>(size.widthPx, size.heightPx);
+  return *slot;
+}
+
+void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size) {
+  camera_ = camera;
+  size_ = size;
+  done_ = 0;
+  if (plan.apertureSamples <= 1) {
+    // No lens: the pinhole view from the PRP, at the pixel centres.
+    samples_ = {LensSample{{0.0, 0.0}, {0.0, 0.0}}};
+  } else {
+    samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
+    if (!accumulator_) accumulator_ = std::make_unique<Accumulator>();
+    accumulator_->start(size.widthPx, size.heightPx);
+  }
+}
+
+int Renderer::addSamples(int count) {
+  const Window& w = camera_.view.window;
+  const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
+  int added = 0;
+  for (; added < count && done_ < samplesPlanned(); ++added, ++done_) {
+    const LensSample& s = samples_[static_cast<std::size_t>(done_)];
+    // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
+    const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
+    const ViewSpec view = viewThroughLens(camera_, s.lens * camera_.apertureRadius, pixelOffset);
+    const glm::dmat4 clip = clipFromWorld(view);
+    if (samplesPlanned() == 1) {
+      scenePass_.draw(gpuScene_, clip, target(output_, size_));
+    } else {
+      const gl::RenderTarget& v = target(view_, size_);
+      scenePass_.draw(gpuScene_, clip, v);
+      accumulator_->add(v);
+    }
+  }
+  return added;
+}
+
+Image Renderer::resolve() {
+  if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
+  const gl::RenderTarget& out = target(output_, size_);
+  if (samplesPlanned() > 1) accumulator_->resolve(out);
+  glFinish();
+  return out.readColor();
 }
 
 Image Renderer::render(const Camera& camera, const FramePlan& plan, ImageSize size) {
-  const gl::RenderTarget& target = targetFor(size);
-  for (const PlannedPass& pass : plan.passes) {
-    if (pass.name == "scene") {
-      scenePass_.draw(gpuScene_, clipFromWorld(camera.view), target);
-    } else {
-      throw std::logic_error("frame plan names a pass the renderer does not have: " + pass.name);
-    }
-  }
-  glFinish();
-  return target.readColor();
+  begin(camera, plan, size);
+  addSamples(samplesPlanned());
+  return resolve();
 }
 
-std::vector<float> Renderer::lastDepth() const {
-  if (!target_) return {};
-  return target_->readDepth();
+std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) {
+  const gl::RenderTarget& v = target(view_, size);
+  scenePass_.draw(gpuScene_, clipFromWorld(camera.view), v);
+  glFinish();
+  return v.readDepth();
 }
 
 }  // namespace lenslab

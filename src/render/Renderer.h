@@ -1,14 +1,20 @@
 #pragma once
 // Runs a frame plan on the current GL context and returns the linear image.
+// One aperture sample: one scene pass straight into the output. More: each sample renders the
+// scene from its aperture point (the PRP moved across the lens, the window kept on the plane of
+// focus, shifted by the sample's sub-pixel offset) and is added into the accumulator.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
 #include "gl/Framebuffer.h"
+#include "lens/AperturePattern.h"
 #include "plan/FramePlan.h"
+#include "render/Accumulator.h"
 #include "render/GpuScene.h"
 #include "render/ScenePass.h"
 
 #include <memory>
+#include <vector>
 
 namespace lenslab {
 
@@ -17,18 +23,32 @@ class Renderer {
   // Uploads the scene and builds the programs; `scene` must outlive the renderer.
   explicit Renderer(const Scene& scene);
 
-  // Renders and waits for the GPU (glFinish), so wall time around it is honest.
+  // The whole frame; waits for the GPU (glFinish), so wall time around it is honest.
   Image render(const Camera& camera, const FramePlan& plan, ImageSize size);
 
-  // Depth of the last render (reverse-Z z_ndc, rows from the top).
-  std::vector<float> lastDepth() const;
+  // The same in steps, for progressive rendering: begin, then addSamples until done, resolve.
+  void begin(const Camera& camera, const FramePlan& plan, ImageSize size);
+  int addSamples(int count);  // returns how many were added (stops at the plan's count)
+  int samplesDone() const { return done_; }
+  int samplesPlanned() const { return static_cast<int>(samples_.size()); }
+  Image resolve();            // the mean so far, read back
+
+  // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
+  std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);
 
  private:
-  const gl::RenderTarget& targetFor(ImageSize size);
+  const gl::RenderTarget& target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size);
 
   GpuScene gpuScene_;
   ScenePass scenePass_;
-  std::unique_ptr<gl::RenderTarget> target_;
+  std::unique_ptr<Accumulator> accumulator_;  // made on first use: a pinhole frame needs none
+  std::unique_ptr<gl::RenderTarget> view_;    // one aperture view
+  std::unique_ptr<gl::RenderTarget> output_;  // the resolved image
+
+  Camera camera_;
+  ImageSize size_;
+  std::vector<LensSample> samples_;
+  int done_ = 0;
 };
 
 }  // namespace lenslab

@@ -52,7 +52,7 @@ TEST(ReverseZ, KeepsSurfacesOneHundredThousandthApartInOrder) {
                                         << (nearFirst ? ", near drawn first" : ", far drawn first"));
         const Scene scene = twoPlanes(depth, 1e-5, nearFirst);
         Renderer renderer(scene);
-        const Image image = renderer.render(cam, makeFramePlan(scene, cam), {32, 32});
+        const Image image = renderer.render(cam, makeFramePlan(scene, cam, {32, 32}), {32, 32});
         int nearWins = 0;
         for (int y = 0; y < image.height; ++y)
           for (int x = 0; x < image.width; ++x) nearWins += image.at(x, y).r > 0.5f && image.at(x, y).g < 0.5f;

@@ -52,7 +52,7 @@ TEST_P(Golden, MatchesTheStoredImage) {
   const Camera& camera = cameraFile.camera;
   const ImageSize size = resolveImageSize(camera.view.window, kGoldenWidth, std::nullopt);
   Renderer renderer(scene);
-  const Image actual = renderer.render(camera, makeFramePlan(scene, camera), size);
+  const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size), size);
 
   const fs::path golden = fs::path(LENSLAB_GOLDEN_DIR) / (std::string(c.name) + ".png");
   if (const char* update = std::getenv("LENSLAB_UPDATE_GOLDENS"); update && std::string(update) == "1") {

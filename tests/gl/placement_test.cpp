@@ -102,8 +102,8 @@ void expectMarkersLandOnTheLecturePixel(const ViewSpec& spec) {
       Camera camera;
       camera.view = spec;
       Renderer renderer(scene);
-      const Image fine = renderer.render(camera, makeFramePlan(scene, camera),
-                                         {kWidth * kSupersample, kHeight * kSupersample});
+      const ImageSize fineSize{kWidth * kSupersample, kHeight * kSupersample};
+      const Image fine = renderer.render(camera, makeFramePlan(scene, camera, fineSize), fineSize);
       const glm::dvec2 measured = measuredCentroid(fine);
       const glm::dvec2 expected = lecturePixel(spec, center);
       SCOPED_TRACE(testing::Message() << "depth " << depth << " spot (" << spot.x << ", " << spot.y << ")");

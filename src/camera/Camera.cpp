@@ -1,0 +1,74 @@
+#include "camera/Camera.h"
+
+#include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
+
+#include <cmath>
+
+namespace lenslab {
+
+Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std::string source) {
+  Camera c;
+  c.view = view;
+  c.apertureRadius = apertureRadius;
+  c.source = std::move(source);
+  return c;
+}
+
+ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset) {
+  ViewSpec v = camera.view;
+  v.prp.x += lensOffset.x;
+  v.prp.y += lensOffset.y;
+  double windowTravel = 0.0;
+  if (v.projection == Projection::Perspective) windowTravel = 1.0 - v.prp.z * camera.inverseFocusDistance();
+  const glm::dvec2 shift = windowTravel * lensOffset + pixelOffset;
+  v.window.umin += shift.x;
+  v.window.umax += shift.x;
+  v.window.vmin += shift.y;
+  v.window.vmax += shift.y;
+  return v;
+}
+
+double cocDiameterOnWindow(const Camera& camera, double depth) {
+  const double r = camera.apertureRadius;
+  const double d = camera.view.prp.z;
+  if (camera.view.projection == Projection::Parallel) return 2.0 * r * std::abs(depth - d) / d;
+  return 2.0 * r * d * std::abs(camera.inverseFocusDistance() - 1.0 / depth);
+}
+
+Camera refocused(const Camera& camera, double distance, const std::string& where) {
+  if (std::isnan(distance) || !(distance > 0.0))
+    throw InputError(cat(where, ": focus distance ", distance, " must be a positive distance or infinity"));
+  Camera c = camera;
+  if (c.view.projection == Projection::Parallel) {
+    if (std::isinf(distance)) throw InputError(cat(where, ": a parallel projection cannot focus at infinity"));
+  }
+  if (std::isinf(distance)) {
+    c.focusAtInfinity = true;
+    return c;
+  }
+  // Move the view plane to the new plane of focus, keeping the PRP where it is in the world and,
+  // for perspective, the field of view: the window scales about the principal point.
+  const ViewBasis b = viewBasis(c.view);
+  const glm::dvec3 prp = prpWorld(c.view);
+  const double scale = c.view.projection == Projection::Perspective ? distance / c.view.prp.z : 1.0;
+  const glm::dvec2 principal(c.view.prp.x, c.view.prp.y);
+  Window& w = c.view.window;
+  w = {principal.x + (w.umin - principal.x) * scale, principal.y + (w.vmin - principal.y) * scale,
+       principal.x + (w.umax - principal.x) * scale, principal.y + (w.vmax - principal.y) * scale};
+  if (c.view.projection == Projection::Parallel) {
+    // DOP = CW − PRP keeps its direction: the PRP's (u, v) offset from the window centre scales too.
+    const double ratio = distance / c.view.prp.z;
+    const glm::dvec2 cw = w.center();
+    c.view.prp.x = cw.x + (c.view.prp.x - cw.x) * ratio;
+    c.view.prp.y = cw.y + (c.view.prp.y - cw.y) * ratio;
+  }
+  // New VRP: the PRP's foot on the new plane, minus the PRP's (u, v) so that coordinates carry over.
+  c.view.vrp = prp - distance * b.n - c.view.prp.x * b.u - c.view.prp.y * b.v;
+  c.view.prp.z = distance;
+  c.focusAtInfinity = false;
+  return c;
+}
+
+}  // namespace lenslab

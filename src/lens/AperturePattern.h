@@ -1,0 +1,39 @@
+#pragma once
+// Points on the aperture at which the PRP is placed, one scene pass each, and the sub-pixel
+// offset that pass uses (box-filtered anti-aliasing comes with the same samples).
+//
+// The lecture: "every pixel generates many rays toward different points on the lens … arrange
+// points in spherical pattern: two radii every 45 degrees + centre = 17 points".
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+enum class AperturePattern {
+  Lecture17,   // the lecture's 17: centre + radii 1/2 and 1 every 45°
+  Concentric,  // stratified (jittered grid) through Shirley–Chiu's concentric square→disk map
+  R2,          // Roberts' R4 low-discrepancy sequence: lens from two dimensions, pixel from two
+  Random,      // independent uniform points, for comparison
+};
+
+const char* patternName(AperturePattern pattern);
+std::optional<AperturePattern> patternFromName(const std::string& name);
+std::string patternNames();  // "lecture17, concentric, r2, random"
+
+struct LensSample {
+  glm::dvec2 lens;   // on the unit disk; scale by the aperture radius
+  glm::dvec2 pixel;  // sub-pixel offset in [−0.5, 0.5)², in pixels
+};
+
+// `count` samples (Lecture17 always gives 17). The same seed gives the same samples.
+std::vector<LensSample> makeApertureSamples(AperturePattern pattern, int count, std::uint32_t seed);
+
+// Shirley and Chiu's concentric map from [0, 1)² onto the unit disk: area-preserving, and it keeps
+// strata compact (squares map to wedges of rings).
+glm::dvec2 concentricDisk(glm::dvec2 u);
+
+}  // namespace lenslab

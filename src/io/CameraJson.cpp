@@ -18,7 +18,8 @@ using nlohmann::json;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far"};
+const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
+                                            "aperture_radius"};
 const std::set<std::string> kPhysicalKeys = {"eye", "target", "up", "focal_length_mm", "sensor_mm",
                                              "f_number", "focus_distance", "near", "far"};
 
@@ -104,9 +105,13 @@ CameraFile parseLecture(const Reader& r) {
   if (r.has("far")) spec.farDistance = r.distance("far");
   else if (!perspective) r.require("far", "parallel-projection lecture");
   validate(spec, r.where());
+  double aperture = 0.0;
+  if (r.has("aperture_radius")) {
+    aperture = r.number("aperture_radius");
+    if (aperture < 0.0) r.fail("aperture_radius", cat("is ", aperture, "; give a radius ≥ 0 in world units (0 = pinhole)"));
+  }
   CameraFile file;
-  file.camera.view = spec;
-  file.camera.source = r.where();
+  file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
   return file;
 }
 
@@ -120,15 +125,13 @@ CameraFile parsePhysical(const Reader& r) {
   if (r.has("focal_length_mm")) c.focalLengthMm = r.number("focal_length_mm");
   if (r.has("sensor_mm")) c.sensorMm = r.vector<2>("sensor_mm");
   if (r.has("f_number")) c.fNumber = r.number("f_number");
-  c.focusDistance = r.has("focus_distance") ? r.number("focus_distance") : glm::length(c.target - c.eye);
+  c.focusDistance = r.has("focus_distance") ? r.distance("focus_distance") : glm::length(c.target - c.eye);
   if (r.has("near")) c.nearDistance = r.distance("near");
   if (r.has("far")) c.farDistance = r.distance("far");
   validate(c, r.where());
   CameraFile file;
   file.physical = c;
-  file.camera.view = toViewSpec(c);
-  file.camera.apertureRadius = apertureRadius(c);
-  file.camera.source = r.where();
+  file.camera = toCamera(c, r.where());
   validate(file.camera.view, r.where());
   return file;
 }
@@ -185,6 +188,7 @@ std::string toCameraJson(const Camera& camera) {
   j["prp"] = {s.prp.x, s.prp.y, s.prp.z};
   j["window"] = {s.window.umin, s.window.vmin, s.window.umax, s.window.vmax};
   j["near"] = s.nearDistance;
+  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
   if (std::isinf(s.farDistance)) j["far"] = "infinity";
   else j["far"] = s.farDistance;
   return j.dump(2) + "\n";

@@ -7,15 +7,17 @@
 //    "vup": [x, y, z],                              default [0, 1, 0]
 //    "prp": [u, v, n],                              required (view-reference coordinates)
 //    "window": [umin, vmin, umax, vmax],            required (on the view plane)
-//    "near": d, "far": d | "infinity"}              defaults: near = prp.n / 1000 (perspective)
+//    "near": d, "far": d | "infinity",              defaults: near = prp.n / 1000 (perspective)
 //                                                   or 0 (parallel); far = infinity
 //                                                   (perspective; required for parallel)
+//    "aperture_radius": r}                          default 0 (a pinhole); the view plane is the
+//                                                   plane of focus
 // Physical form — a photographer's description (world units are metres):
 //   {"eye": [x, y, z], "target": [x, y, z],         required
 //    "up": [x, y, z],                               default [0, 1, 0]
 //    "focal_length_mm": 35, "sensor_mm": [36, 24],  defaults
 //    "f_number": 2.8,                               default: none (a pinhole)
-//    "focus_distance": d,                           default |target − eye|
+//    "focus_distance": d | "infinity",              default |target − eye|
 //    "near": 0.05, "far": d | "infinity"}           defaults
 // Unknown keys, wrong types and mixed forms are errors naming the file and the key.
 #include "camera/Camera.h"

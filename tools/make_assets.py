@@ -336,6 +336,13 @@ def make_rows():
               "sensor_mm": [36, 24], "focus_distance": 4.0, "near": 0.05, "far": "infinity"}
     g.camera_from(camera)
     g.write(camera)
+    write_camera("rows", "camera-dof.json", dict(camera, f_number=1.4, focus_distance=2.0))
+
+
+def write_camera(scene, name, camera):
+    with open(os.path.join(ROOT, scene, name), "w") as f:
+        json.dump(camera, f, indent=2)
+        f.write("\n")
 
 
 def make_occluder():
@@ -352,6 +359,7 @@ def make_occluder():
               "sensor_mm": [36, 24], "focus_distance": 4.0, "near": 0.05, "far": "infinity"}
     g.camera_from(camera)
     g.write(camera)
+    write_camera("occluder", "camera-dof.json", dict(camera, f_number=2.0))
 
 
 def make_grid():
@@ -407,6 +415,9 @@ README = """Regenerate with `python3 tools/make_assets.py`; check with `bash too
 | `occluder` | partial obscuration: eleven 1.5 cm bars, 12 cm apart, 1 m away, before a 4 × 3 m checker wall at 4 m | physical, 50 mm, focus 4 m |
 | `grid` | distortion: 21 × 15 dots (octagons of radius 4 cm, 0.25 m apart) in the plane z = 0.001, on a dark 8 × 6 m plane | lecture form, view plane on the dots, PRP 3 m in front |
 | `depth-range` | depth precision: cubes at 0.01, 0.1, 1, 10, 100, 1e3, 1e4 and 1e5 m, each 6 % of its distance wide; a red 120 m quad at 1 km in front of a green 240 m quad 1 cm farther | physical, near 0.001, far infinity |
+
+`rows/camera-dof.json` (f/1.4, focused on the nearest box at 2 m) and `occluder/camera-dof.json` (f/2) are the same cameras with an
+aperture: the depth-of-field showcase and the partial-obscuration case.
 
 Each `<scene>.gltf` also holds a glTF camera matching its `camera.json` (except `grid`, whose
 camera is in the lecture's form only).

@@ -58,6 +58,24 @@ else
   fail "egl render"
 fi
 
+# Depth of field: auto sample count, each pattern, focus tools.
+if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --max-samples 8 --out "$work/dof.png" --stats "$work/dof.json" -q; then
+  if grep -qF '"aperture_samples": 8' "$work/dof.json" && grep -qF '"accumulate"' "$work/dof.json" && grep -qF '"coc_px"' "$work/dof.json"; then pass; else fail "dof stats: $(cat "$work/dof.json")"; fi
+else
+  fail "dof render"
+fi
+for pattern in lecture17 concentric r2 random; do
+  if "$lenslab" render --camera "$src/assets/occluder/camera-dof.json" --width 64 --pattern $pattern --aperture-samples 4 --out "$work/p-$pattern.png" --stats "$work/p-$pattern.json" -q &&
+     grep -qF "\"pattern\": \"$pattern\"" "$work/p-$pattern.json"; then pass; else fail "pattern $pattern"; fi
+done
+if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --max-samples 4 --focus-at 66,42 --out "$work/focus.png" --stats "$work/focus.json" -q &&
+   grep -qF 'focused at pixel 66,42' "$work/focus.json"; then pass; else fail "--focus-at"; fi
+# A pinhole camera is one scene pass, no accumulation.
+if grep -qF '"accumulate"' "$work/stats.json"; then fail "pinhole plan accumulates"; else pass; fi
+expect_refusal "bad sample count" "--aperture-samples" -- render --aperture-samples lots --out "$work/out.png"
+expect_refusal "bad focus distance" "focus distance" -- render --focus-distance -3 --out "$work/out.png"
+expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$src/assets/rows/camera-dof.json" --width 96 --focus-at 50,2 --out "$work/out.png"
+
 # info.
 if "$lenslab" info "$src/assets/rows/rows.gltf" | grep -q "^triangles"; then pass; else fail "info"; fi
 

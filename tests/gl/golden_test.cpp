@@ -37,6 +37,7 @@ struct GoldenCase {
   const char* name;    // tests/golden/<name>.png
   const char* scene;   // under assets/
   const char* camera;  // under assets/
+  int maxSamples = 64; // auto aperture samples, capped to keep the suite quick
 };
 
 void PrintTo(const GoldenCase& c, std::ostream* out) { *out << c.name; }
@@ -52,7 +53,7 @@ TEST_P(Golden, MatchesTheStoredImage) {
   const Camera& camera = cameraFile.camera;
   const ImageSize size = resolveImageSize(camera.view.window, kGoldenWidth, std::nullopt);
   Renderer renderer(scene);
-  const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size), size);
+  const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 0, c.maxSamples, 1}), size);
 
   const fs::path golden = fs::path(LENSLAB_GOLDEN_DIR) / (std::string(c.name) + ".png");
   if (const char* update = std::getenv("LENSLAB_UPDATE_GOLDENS"); update && std::string(update) == "1") {
@@ -84,7 +85,9 @@ INSTANTIATE_TEST_SUITE_P(BundledScenes, Golden,
                                            GoldenCase{"occluder", "occluder/occluder.gltf", "occluder/camera.json"},
                                            GoldenCase{"grid", "grid/grid.gltf", "grid/camera.json"},
                                            GoldenCase{"depth-range", "depth-range/depth-range.gltf",
-                                                      "depth-range/camera.json"}),
+                                                      "depth-range/camera.json"},
+                                           GoldenCase{"rows-dof", "rows/rows.gltf", "rows/camera-dof.json"},
+                                           GoldenCase{"occluder-dof", "occluder/occluder.gltf", "occluder/camera-dof.json"}),
                          [](const ::testing::TestParamInfo<GoldenCase>& param) {
                            std::string name = param.param.name;
                            for (char& ch : name)

@@ -1,0 +1,84 @@
+// Cost of thin-lens accumulation at 1280×720 on the bundled rows scene:
+//   BM_ScenePass        one bare scene pass (draw + glFinish), the unit of work
+//   BM_Accumulate/N     N aperture samples: N scene passes + N accumulate passes (+ glFinish)
+// The accumulation overhead is BM_Accumulate/N ÷ (N × BM_ScenePass).
+// Run:  build/tests/lenslab_bench [--backend=egl]   (OSMesa by default)
+#include "camera/Projection.h"
+#include "gl/GlContext.h"
+#include "io/CameraJson.h"
+#include "plan/FramePlan.h"
+#include "render/Renderer.h"
+#include "render/ScenePass.h"
+#include "scene/GltfLoader.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <memory>
+
+namespace lenslab {
+namespace {
+
+constexpr ImageSize kSize{1280, 720};
+
+struct Fixture {
+  std::unique_ptr<GlContext> context;
+  Scene scene;
+  Camera camera;
+  std::unique_ptr<Renderer> renderer;
+};
+
+Backend gBackend = Backend::OSMesa;
+
+Fixture& fixture() {
+  static Fixture f = [] {
+    Fixture x;
+    x.context = createHeadlessContext(gBackend);
+    x.scene = loadGltf(std::string(LENSLAB_BENCH_ASSET_DIR) + "/rows/rows.gltf");
+    x.camera = loadCameraJson(std::string(LENSLAB_BENCH_ASSET_DIR) + "/rows/camera-dof.json").camera;
+    x.renderer = std::make_unique<Renderer>(x.scene);
+    return x;
+  }();
+  return f;
+}
+
+void BM_ScenePass(benchmark::State& state) {
+  Fixture& f = fixture();
+  state.SetLabel(f.context->renderer());
+  FramePlan plan = makeFramePlan(f.scene, f.camera, kSize, PlanOptions{AperturePattern::Concentric, 1, 1, 1});
+  Camera pinhole = f.camera;
+  pinhole.apertureRadius = 0.0;
+  f.renderer->begin(pinhole, plan, kSize);
+  for (auto _ : state) {
+    f.renderer->begin(pinhole, plan, kSize);
+    f.renderer->addSamples(1);
+    glFinish();
+  }
+}
+
+void BM_Accumulate(benchmark::State& state) {
+  Fixture& f = fixture();
+  const int n = static_cast<int>(state.range(0));
+  const FramePlan plan = makeFramePlan(f.scene, f.camera, kSize, PlanOptions{AperturePattern::Concentric, n, n, 1});
+  for (auto _ : state) {
+    f.renderer->begin(f.camera, plan, kSize);
+    f.renderer->addSamples(n);
+    glFinish();
+  }
+  state.counters["ms_per_sample"] = benchmark::Counter(
+      static_cast<double>(n) * 1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK(BM_ScenePass)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+BENCHMARK(BM_Accumulate)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
+
+}  // namespace
+}  // namespace lenslab
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--backend=egl") == 0) lenslab::gBackend = lenslab::Backend::Egl;
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  return 0;
+}

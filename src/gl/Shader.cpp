@@ -83,6 +83,18 @@ std::string annotateInfoLog(const std::string& log, const std::vector<std::strin
 
 namespace {
 
+// The driver's log for a shader or a program (getLength/getLog: glGetShaderiv/InfoLog or the
+// program pair), without the trailing NUL.
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
+  GLint length = 0;
+  getIv(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  getLog(object, length, nullptr, log.data());
+  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+  return log;
+}
+
 Shader compile(GLenum stage, const fs::path& path, const std::vector<std::string>& defines) {
   const ShaderSource source = loadShaderSource(path, defines);
   Shader shader(glCreateShader(stage));
@@ -91,15 +103,9 @@ Shader compile(GLenum stage, const fs::path& path, const std::vector<std::string
   glCompileShader(shader.id());
   GLint ok = GL_FALSE;
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+  if (!ok)
     throw std::runtime_error("shader " + path.generic_string() + " failed to compile: " +
-                             annotateInfoLog(log, source.files));
-  }
+                             annotateInfoLog(infoLog(shader.id(), glGetShaderiv, glGetShaderInfoLog), source.files));
   return shader;
 }
 
@@ -117,14 +123,9 @@ Program buildProgram(const fs::path& vertexPath, const fs::path& fragmentPath,
   glDetachShader(program.id(), fsh.id());
   GLint ok = GL_FALSE;
   glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-    throw std::runtime_error("shader program " + vertexPath.generic_string() + " + " +
-                             fragmentPath.generic_string() + " failed to link: " + log.c_str());
-  }
+  if (!ok)
+    throw std::runtime_error("shader program " + vertexPath.generic_string() + " + " + fragmentPath.generic_string() +
+                             " failed to link: " + annotateInfoLog(infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog), {}));
   return program;
 }
 

@@ -114,13 +114,29 @@ double widthBetween(const std::function<double(double)>& profile, double lo, dou
   return cross(lo) - cross(hi);
 }
 
-TEST(DepthOfField, AStraightEdgeBlursToTheCircleOfConfusion) {
-  LENSLAB_REQUIRE_GL();
-  // A white half-plane (x < 0) at 6 m, focus at 3 m: CoC on the window = 2R·|z − z_f|/z = R.
+// A white half-plane (x < 0) at 6 m on black.
+Scene edgeScene() {
   Scene scene;
   scene.source = "edge";
   scene.lighting.background = glm::vec3(0.0f);
   addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(-50.0, 0.0, -6.0)), 50.0, 50.0, glm::vec3(1.0f));
+  return scene;
+}
+
+// The 10–90 % width of the edge along row y (pixel centres at x + 0.5, linear in between).
+double measuredEdgeWidth(const Image& image, int y) {
+  auto at = [&](double x) {
+    const int i = std::clamp(static_cast<int>(std::floor(x - 0.5)), 0, image.width - 2);
+    const double t = std::clamp(x - 0.5 - i, 0.0, 1.0);
+    return (1 - t) * image.at(i, y).g + t * image.at(i + 1, y).g;
+  };
+  return widthBetween(at, 0.1, 0.9);
+}
+
+TEST(DepthOfField, AStraightEdgeBlursToTheCircleOfConfusion) {
+  LENSLAB_REQUIRE_GL();
+  // Focus at 3 m, the edge at 6 m: CoC on the window = 2R·|z − z_f|/z = R.
+  const Scene scene = edgeScene();
   const double radius = 0.2;
   const Camera camera = lensCamera(3.0, radius, 3.0);
   const ImageSize size{300, 100};
@@ -128,18 +144,7 @@ TEST(DepthOfField, AStraightEdgeBlursToTheCircleOfConfusion) {
   ASSERT_NEAR(cocPx, 30.0, 1e-9);
   Renderer renderer(scene);
   const Image image = renderer.render(camera, planWith(scene, camera, size, AperturePattern::Concentric, 1024), size);
-  // Measured 10–90 % width along the middle rows (pixel centres at x + 0.5), averaged over rows.
-  double measured = 0.0;
-  const int rows[] = {40, 50, 60};
-  for (int y : rows) {
-    auto at = [&](double x) {
-      const int i = std::clamp(static_cast<int>(std::floor(x - 0.5)), 0, size.widthPx - 2);
-      const double t = std::clamp(x - 0.5 - i, 0.0, 1.0);
-      return (1 - t) * image.at(i, y).g + t * image.at(i + 1, y).g;
-    };
-    measured += widthBetween(at, 0.1, 0.9);
-  }
-  measured /= 3.0;
+  const double measured = (measuredEdgeWidth(image, 40) + measuredEdgeWidth(image, 50) + measuredEdgeWidth(image, 60)) / 3.0;
   const double expected = widthBetween([&](double x) { return edgeProfile(x, cocPx); }, 0.1, 0.9);
   EXPECT_NEAR(measured, expected, 0.1 * expected) << "CoC " << cocPx << " px";
 }
@@ -290,10 +295,7 @@ TEST(DepthOfField, ShrinkingTheApertureConvergesToThePinhole) {
 TEST(DepthOfField, ParallelProjectionBlursInProportionToDistanceFromTheViewPlane) {
   LENSLAB_REQUIRE_GL();
   // The edge test again, with a parallel projection: CoC on the window = 2R·|z − d|/d.
-  Scene scene;
-  scene.source = "edge";
-  scene.lighting.background = glm::vec3(0.0f);
-  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(-50.0, 0.0, -6.0)), 50.0, 50.0, glm::vec3(1.0f));
+  const Scene scene = edgeScene();
   Camera camera = lensCamera(3.0, 0.1, 3.0);
   camera.view.projection = Projection::Parallel;
   camera.view.nearDistance = 0.0;
@@ -303,13 +305,8 @@ TEST(DepthOfField, ParallelProjectionBlursInProportionToDistanceFromTheViewPlane
   ASSERT_NEAR(cocPx, 2.0 * 0.1 * 3.0 / 3.0 * 150.0, 1e-9);
   Renderer renderer(scene);
   const Image image = renderer.render(camera, planWith(scene, camera, size, AperturePattern::Concentric, 1024), size);
-  auto at = [&](double x) {
-    const int i = std::clamp(static_cast<int>(std::floor(x - 0.5)), 0, size.widthPx - 2);
-    const double t = std::clamp(x - 0.5 - i, 0.0, 1.0);
-    return (1 - t) * image.at(i, 50).g + t * image.at(i + 1, 50).g;
-  };
   const double expected = widthBetween([&](double x) { return edgeProfile(x, cocPx); }, 0.1, 0.9);
-  EXPECT_NEAR(widthBetween(at, 0.1, 0.9), expected, 0.1 * expected);
+  EXPECT_NEAR(measuredEdgeWidth(image, 50), expected, 0.1 * expected);
 }
 
 }  // namespace

@@ -189,14 +189,31 @@ class Gltf:
         forward = normalize(sub(target, eye))
         right = normalize(cross(forward, up))
         true_up = cross(right, forward)
+        self._camera_node(eye, forward, true_up, right, yfov, sensor[0] / sensor[1], cam["near"], cam.get("far", "infinity"))
+
+    def camera_from_lecture(self, cam):
+        """A glTF perspective camera node matching a lecture-form (perspective, on-axis) camera.json:
+        the eye at the PRP, looking along −VPN, yfov spanning the window's height at the PRP's n."""
+        vrp, vpn, vup, prp, window = cam["vrp"], normalize(cam["vpn"]), cam["vup"], cam["prp"], cam["window"]
+        assert prp[0] == 0.5 * (window[0] + window[2]) and prp[1] == 0.5 * (window[1] + window[3]), "off-axis PRP"
+        u = normalize(cross(vup, vpn))
+        v = cross(vpn, u)
+        eye = [vrp[i] + prp[0] * u[i] + prp[1] * v[i] + prp[2] * vpn[i] for i in range(3)]
+        yfov = 2.0 * math.atan(0.5 * (window[3] - window[1]) / prp[2])
+        aspect = round((window[2] - window[0]) / (window[3] - window[1]), 12)  # 1.5, not 1.5000000000000002
+        self._camera_node(eye, [-c for c in vpn], v, u, yfov, aspect, cam["near"], cam["far"])
+
+    def _camera_node(self, eye, forward, up, right, yfov, aspect, near, far):
         back = [-c for c in forward]
-        matrix = right + [0.0] + true_up + [0.0] + back + [0.0] + list(eye) + [1.0]
-        perspective = {"yfov": yfov, "aspectRatio": sensor[0] / sensor[1], "znear": cam["near"]}
-        if cam.get("far", "infinity") != "infinity":
-            perspective["zfar"] = cam["far"]
+        matrix = list(right) + [0.0] + list(up) + [0.0] + back + [0.0] + list(eye) + [1.0]
+        identity = [1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0]
+        perspective = {"yfov": yfov, "aspectRatio": aspect, "znear": near}
+        if far != "infinity":
+            perspective["zfar"] = far
         self.doc.setdefault("cameras", []).append({"name": "camera", "type": "perspective",
                                                    "perspective": perspective})
-        self.node("camera", camera=len(self.doc["cameras"]) - 1, matrix=matrix)
+        self.node("camera", camera=len(self.doc["cameras"]) - 1,
+                  matrix=None if matrix == identity else matrix)  # glTF: no default matrix
 
     def write(self, camera_json):
         folder = os.path.join(ROOT, self.name)
@@ -372,6 +389,7 @@ def make_grid():
            translation=(0.0, 0.0, 0.001))
     camera = {"projection": "perspective", "vrp": [0.0, 0.0, 0.001], "vpn": [0, 0, 1], "vup": [0, 1, 0],
               "prp": [0.0, 0.0, 3.0], "window": [-2.1, -1.4, 2.1, 1.4], "near": 0.1, "far": 100.0}
+    g.camera_from_lecture(camera)
     g.write(camera)
 
 
@@ -419,8 +437,9 @@ README = """Regenerate with `python3 tools/make_assets.py`; check with `bash too
 `rows/camera-dof.json` (f/1.4, focused on the nearest box at 2 m) and `occluder/camera-dof.json` (f/2) are the same cameras with an
 aperture: the depth-of-field showcase and the partial-obscuration case.
 
-Each `<scene>.gltf` also holds a glTF camera matching its `camera.json` (except `grid`, whose
-camera is in the lecture's form only).
+Each `<scene>.gltf` also holds a glTF perspective camera node matching its `camera.json` (same eye,
+direction, field of view, 3:2 aspect, near and far; for `grid` the eye is the PRP, 3.001 m from the
+plane), so `lenslab render <scene>.gltf` without `--camera` sees the same view.
 """
 
 if __name__ == "__main__":

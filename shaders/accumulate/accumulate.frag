@@ -1,10 +1,14 @@
 #version 450 core
-// Adds one aperture view into the running sum (blending ONE, ONE into an RGBA32F target).
+// Adds a batch of aperture views into the running sum (blending ONE, ONE into an RGBA32F target).
 // The lecture: "compute color along every deflected ray, average the results" — the sum here,
-// the division in resolve.frag.
-layout(binding = 0) uniform sampler2D view;
+// the division in resolve.frag. Views are rendered into the layers of an array texture and summed
+// a batch at a time, so that the scene passes of a batch need not wait for one another.
+layout(binding = 0) uniform sampler2DArray views;
+layout(location = 0) uniform int viewCount;
 layout(location = 0) out vec4 sum;
 
 void main() {
-  sum = texelFetch(view, ivec2(gl_FragCoord.xy), 0);
+  vec4 total = vec4(0.0);
+  for (int i = 0; i < viewCount; ++i) total += texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
+  sum = total;
 }

@@ -29,9 +29,9 @@ RenderTarget::RenderTarget(int widthPx, int heightPx)
                              std::to_string(status) + ")");
 }
 
-void RenderTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glViewport(0, 0, width_, height_);
+void DrawTarget::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, width, height);
 }
 
 Image RenderTarget::readColor() const {

@@ -6,11 +6,20 @@
 
 namespace lenslab::gl {
 
+// Where a pass draws: a framebuffer and its size. Owned elsewhere (RenderTarget, Accumulator).
+struct DrawTarget {
+  GLuint framebuffer = 0;
+  int width = 0;
+  int height = 0;
+  void bind() const;  // binds the framebuffer and sets the viewport
+};
+
 class RenderTarget {
  public:
   RenderTarget(int widthPx, int heightPx);
 
-  void bind() const;  // binds the framebuffer and sets the viewport
+  void bind() const { drawTarget().bind(); }
+  DrawTarget drawTarget() const { return {framebuffer_.id(), width_, height_}; }
   int width() const { return width_; }
   int height() const { return height_; }
   GLuint colorTexture() const { return color_.id(); }

@@ -51,6 +51,10 @@ struct Texture2DKind {
   static GLuint create() { GLuint id = 0; glCreateTextures(GL_TEXTURE_2D, 1, &id); return id; }
   static void destroy(GLuint id) { glDeleteTextures(1, &id); }
 };
+struct Texture2DArrayKind {
+  static GLuint create() { GLuint id = 0; glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteTextures(1, &id); }
+};
 struct SamplerKind {
   static GLuint create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
   static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
@@ -71,6 +75,7 @@ struct ShaderKind {
 using Buffer = Object<BufferKind>;
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<Texture2DKind>;
+using TextureArray = Object<Texture2DArrayKind>;
 using Sampler = Object<SamplerKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Program = Object<ProgramKind>;

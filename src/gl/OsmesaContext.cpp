@@ -1,8 +1,11 @@
 // OSMesa: Mesa's off-screen renderer (llvmpipe), available on every machine lenslab builds on.
+// The library is opened at run time rather than linked: it brings LLVM (over 100 MB) with it, and
+// a binary that renders through EGL on a GPU server should not need it.
 #include "gl/GlContext.h"
 
 #include <glad/gl.h>
 #include <GL/osmesa.h>
+#include <dlfcn.h>
 
 #include <stdexcept>
 #include <vector>
@@ -10,31 +13,61 @@
 namespace lenslab {
 namespace {
 
+struct OsmesaLibrary {
+  void* handle = nullptr;
+  decltype(&OSMesaCreateContextAttribs) createContextAttribs = nullptr;
+  decltype(&OSMesaMakeCurrent) makeCurrent = nullptr;
+  decltype(&OSMesaDestroyContext) destroyContext = nullptr;
+  decltype(&OSMesaGetProcAddress) getProcAddress = nullptr;
+
+  OsmesaLibrary() {
+    for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
+      if ((handle = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
+    if (!handle) return;
+    createContextAttribs = reinterpret_cast<decltype(createContextAttribs)>(dlsym(handle, "OSMesaCreateContextAttribs"));
+    makeCurrent = reinterpret_cast<decltype(makeCurrent)>(dlsym(handle, "OSMesaMakeCurrent"));
+    destroyContext = reinterpret_cast<decltype(destroyContext)>(dlsym(handle, "OSMesaDestroyContext"));
+    getProcAddress = reinterpret_cast<decltype(getProcAddress)>(dlsym(handle, "OSMesaGetProcAddress"));
+  }
+  bool ok() const { return createContextAttribs && makeCurrent && destroyContext && getProcAddress; }
+};
+
+// Loaded once, kept for the process (contexts come and go; the library stays).
+const OsmesaLibrary& osmesa() {
+  static const OsmesaLibrary library;
+  return library;
+}
+
+// glad calls this without a user pointer, so it goes through the process-wide library.
+GlProc osmesaProc(const char* name) { return reinterpret_cast<GlProc>(osmesa().getProcAddress(name)); }
+
 class OsmesaContext final : public GlContext {
  public:
   OsmesaContext() {
+    if (!osmesa().ok())
+      throw std::runtime_error("OSMesa: cannot open libOSMesa.so.8 (install libosmesa6, or use --backend egl)");
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
                               OSMESA_DEPTH_BITS, 0,
                               OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 4,
                               OSMESA_CONTEXT_MINOR_VERSION, 5,
                               0};
-    context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    context_ = osmesa().createContextAttribs(attributes, nullptr);
     if (!context_) throw std::runtime_error("OSMesa: could not create an OpenGL 4.5 core context");
     // OSMesaMakeCurrent needs a client buffer even though lenslab only draws into FBOs.
     buffer_.resize(4 * kBufferSide * kBufferSide);
-    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, kBufferSide, kBufferSide)) {
-      OSMesaDestroyContext(context_);
+    if (!osmesa().makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, kBufferSide, kBufferSide)) {
+      osmesa().destroyContext(context_);
       throw std::runtime_error("OSMesa: could not make the context current");
     }
     try {
-      loadGlFunctions(reinterpret_cast<GlProc (*)(const char*)>(&OSMesaGetProcAddress), "OSMesa");
+      loadGlFunctions(&osmesaProc, "OSMesa");
     } catch (...) {
-      OSMesaDestroyContext(context_);
+      osmesa().destroyContext(context_);
       throw;
     }
   }
-  ~OsmesaContext() override { OSMesaDestroyContext(context_); }
+  ~OsmesaContext() override { osmesa().destroyContext(context_); }
   Backend backend() const override { return Backend::OSMesa; }
 
  private:

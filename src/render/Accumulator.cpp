@@ -2,25 +2,15 @@
 
 #include "gl/Shader.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace lenslab {
-
-Accumulator::Accumulator()
-    : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
-      resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
-      emptyVertexArray_(gl::VertexArray::create()) {}
-
-void Accumulator::start(int widthPx, int heightPx) {
-  if (!sum_ || sum_->width() != widthPx || sum_->height() != heightPx)
-    sum_ = std::make_unique<gl::RenderTarget>(widthPx, heightPx);
-  sum_->bind();
-  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearBufferfv(GL_COLOR, 0, zero);
-  count_ = 0;
-}
-
 namespace {
+
+constexpr int kMaxBatch = 8;
+constexpr double kBatchMemoryBytes = 256.0 * 1024 * 1024;  // at most this much for the view layers
 
 void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture) {
   glDisable(GL_DEPTH_TEST);
@@ -33,21 +23,69 @@ void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture) {
   glBindVertexArray(0);
 }
 
+void nearestClamp(GLuint texture) {
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 }  // namespace
 
-void Accumulator::add(const gl::RenderTarget& view) {
-  if (!sum_) throw std::logic_error("Accumulator::add before start");
+Accumulator::Accumulator()
+    : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
+      resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
+      emptyVertexArray_(gl::VertexArray::create()) {}
+
+void Accumulator::start(int widthPx, int heightPx) {
+  if (!sum_ || sum_->width() != widthPx || sum_->height() != heightPx) {
+    sum_ = std::make_unique<gl::RenderTarget>(widthPx, heightPx);
+    const double bytesPerLayer = 16.0 * widthPx * heightPx;
+    const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
+    views_ = gl::TextureArray::create();
+    glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
+    nearestClamp(views_.id());
+    depth_ = gl::Texture::create();
+    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, widthPx, heightPx);
+    framebuffers_.clear();
+    for (int layer = 0; layer < layers; ++layer) {
+      gl::Framebuffer fb = gl::Framebuffer::create();
+      glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, views_.id(), 0, layer);
+      glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+      if (glCheckNamedFramebufferStatus(fb.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("accumulator: view layer " + std::to_string(layer) + " is incomplete");
+      framebuffers_.push_back(std::move(fb));
+    }
+  }
+  sum_->bind();
+  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearBufferfv(GL_COLOR, 0, zero);
+  pending_ = 0;
+  count_ = 0;
+}
+
+gl::DrawTarget Accumulator::nextView() {
+  if (!sum_) throw std::logic_error("Accumulator::nextView before start");
+  if (pending_ == batchSize()) flush();
+  ++count_;
+  return {framebuffers_[static_cast<std::size_t>(pending_++)].id(), sum_->width(), sum_->height()};
+}
+
+void Accumulator::flush() {
+  if (pending_ == 0) return;
   sum_->bind();
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  drawFullScreen(accumulate_.id(), emptyVertexArray_.id(), view.colorTexture());
+  glProgramUniform1i(accumulate_.id(), 0, pending_);
+  drawFullScreen(accumulate_.id(), emptyVertexArray_.id(), views_.id());
   glDisable(GL_BLEND);
-  ++count_;
+  pending_ = 0;
 }
 
-void Accumulator::resolve(const gl::RenderTarget& out) const {
+void Accumulator::resolve(const gl::RenderTarget& out) {
   if (!sum_ || count_ == 0) throw std::logic_error("Accumulator::resolve with nothing added");
+  flush();
   out.bind();
   glDisable(GL_BLEND);
   glProgramUniform1f(resolve_.id(), 0, 1.0f / static_cast<float>(count_));

@@ -1,11 +1,17 @@
 #pragma once
-// Thin-lens depth of field by accumulation: each aperture view is added into a float sum, and the
-// image is the sum over the count. start / add / resolve let the samples spread over frames (the
-// interactive demo converges progressively).
+// Thin-lens depth of field by accumulation: the image is the mean of the aperture views.
+//
+// Views are drawn into the layers of an array texture (one framebuffer per layer, one shared depth
+// buffer), and a batch of them is added into the float sum by one full-screen pass. Compared with
+// adding each view as it is drawn, the sum is read and written once per batch instead of once per
+// view, and on a GPU the views of a batch do not wait on each other (no pass reads what the next
+// one overwrites). start / nextView / resolve let the samples spread over frames (the interactive
+// demo converges progressively).
 #include "gl/Framebuffer.h"
 #include "gl/Object.h"
 
 #include <memory>
+#include <vector>
 
 namespace lenslab {
 
@@ -13,17 +19,26 @@ class Accumulator {
  public:
   Accumulator();  // builds the programs (needs a current context)
 
-  void start(int widthPx, int heightPx);   // clears the sum
-  void add(const gl::RenderTarget& view);  // sum += view
+  void start(int widthPx, int heightPx);  // clears the sum
+  // Where to draw the next view; it counts as added once drawn. Adds the previous batch to the
+  // sum first when the batch is full.
+  gl::DrawTarget nextView();
   int count() const { return count_; }
+  int batchSize() const { return static_cast<int>(framebuffers_.size()); }
   // The mean so far, into `out` (same size).
-  void resolve(const gl::RenderTarget& out) const;
+  void resolve(const gl::RenderTarget& out);
 
  private:
+  void flush();  // adds the pending views to the sum
+
   gl::Program accumulate_;
   gl::Program resolve_;
   gl::VertexArray emptyVertexArray_;  // core profile needs one bound even without attributes
   std::unique_ptr<gl::RenderTarget> sum_;
+  gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
+  gl::Texture depth_;                 // shared by the views (each clears it)
+  std::vector<gl::Framebuffer> framebuffers_;
+  int pending_ = 0;
   int count_ = 0;
 };
 

@@ -39,13 +39,8 @@ int Renderer::addSamples(int count) {
     const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
     const ViewSpec view = viewThroughLens(camera_, s.lens * camera_.apertureRadius, pixelOffset);
     const glm::dmat4 clip = clipFromWorld(view);
-    if (samplesPlanned() == 1) {
-      scenePass_.draw(gpuScene_, clip, target(output_, size_));
-    } else {
-      const gl::RenderTarget& v = target(view_, size_);
-      scenePass_.draw(gpuScene_, clip, v);
-      accumulator_->add(v);
-    }
+    if (samplesPlanned() == 1) scenePass_.draw(gpuScene_, clip, target(output_, size_).drawTarget());
+    else scenePass_.draw(gpuScene_, clip, accumulator_->nextView());
   }
   return added;
 }
@@ -66,7 +61,7 @@ Image Renderer::render(const Camera& camera, const FramePlan& plan, ImageSize si
 
 std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) {
   const gl::RenderTarget& v = target(view_, size);
-  scenePass_.draw(gpuScene_, clipFromWorld(camera.view), v);
+  scenePass_.draw(gpuScene_, clipFromWorld(camera.view), v.drawTarget());
   glFinish();
   return v.readDepth();
 }

@@ -42,7 +42,7 @@ class Renderer {
   GpuScene gpuScene_;
   ScenePass scenePass_;
   std::unique_ptr<Accumulator> accumulator_;  // made on first use: a pinhole frame needs none
-  std::unique_ptr<gl::RenderTarget> view_;    // one aperture view
+  std::unique_ptr<gl::RenderTarget> view_;    // a pinhole view for focusing
   std::unique_ptr<gl::RenderTarget> output_;  // the resolved image
 
   Camera camera_;

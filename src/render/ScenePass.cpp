@@ -29,7 +29,7 @@ const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaq
 ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
 
 void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld,
-                     const gl::RenderTarget& target) const {
+                     const gl::DrawTarget& target) const {
   const Scene& scene = gpuScene.scene();
   target.bind();
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);

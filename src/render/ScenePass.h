@@ -12,7 +12,7 @@ namespace lenslab {
 class ScenePass {
  public:
   ScenePass();  // builds the program (needs a current context)
-  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::RenderTarget& target) const;
+  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target) const;
 
  private:
   gl::Program program_;

@@ -13,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 
@@ -30,12 +31,18 @@ struct Fixture {
 
 Backend gBackend = Backend::OSMesa;
 
+// LENSLAB_ASSET_DIR overrides the source tree's assets/ (for a binary copied elsewhere).
+std::string assetDir() {
+  const char* env = std::getenv("LENSLAB_ASSET_DIR");
+  return env && *env ? env : LENSLAB_BENCH_ASSET_DIR;
+}
+
 Fixture& fixture() {
   static Fixture f = [] {
     Fixture x;
     x.context = createHeadlessContext(gBackend);
-    x.scene = loadGltf(std::string(LENSLAB_BENCH_ASSET_DIR) + "/rows/rows.gltf");
-    x.camera = loadCameraJson(std::string(LENSLAB_BENCH_ASSET_DIR) + "/rows/camera-dof.json").camera;
+    x.scene = loadGltf(assetDir() + "/rows/rows.gltf");
+    x.camera = loadCameraJson(assetDir() + "/rows/camera-dof.json").camera;
     x.renderer = std::make_unique<Renderer>(x.scene);
     return x;
   }();

@@ -76,16 +76,22 @@ Camera applyLensOptions(const Camera& camera, const LensOptions& o) {
   return c;
 }
 
-Camera focusOnPixel(Renderer& renderer, const Camera& camera, ImageSize size, glm::dvec2 pixel) {
+DepthAtPixel rasterDepth(Renderer& renderer, ImageSize size) {
+  return [&renderer, size](const Camera& camera, int x, int y) {
+    const std::vector<float> depth = renderer.pinholeDepth(camera, size);
+    const double zNdc = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x)];
+    return depthFromReverseZ(camera.view, zNdc);
+  };
+}
+
+Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt) {
   const int x = static_cast<int>(std::floor(pixel.x)), y = static_cast<int>(std::floor(pixel.y));
   if (x < 0 || y < 0 || x >= size.widthPx || y >= size.heightPx)
     throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
                          size.heightPx, " image"));
-  const std::vector<float> depth = renderer.pinholeDepth(camera, size);
-  const double zNdc = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x)];
-  if (!(zNdc > 0.0))
+  const double distance = depthAt(camera, x, y);
+  if (!std::isfinite(distance) || !(distance > 0.0))
     throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": nothing of the scene is under that pixel to focus on"));
-  const double distance = depthFromReverseZ(camera.view, zNdc);
   Camera c = refocused(camera, distance, "--focus-at");
   c.source += cat(", focused at pixel ", pixel.x, ",", pixel.y, " (depth ", distance, ")");
   return c;

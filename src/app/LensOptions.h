@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -32,9 +33,14 @@ PlanOptions toPlanOptions(const LensOptions& options);
 // --focus-distance applied to the camera.
 Camera applyLensOptions(const Camera& camera, const LensOptions& options);
 
-// Focuses on the depth under pixel (x, y) of a pinhole view; throws InputError when nothing is
-// there (background) or the pixel is outside the image.
-Camera focusOnPixel(Renderer& renderer, const Camera& camera, ImageSize size, glm::dvec2 pixel);
+// Focuses on the depth under pixel (x, y) of a pinhole view, as `depthAt(camera, x, y)` reports it
+// (world units from the PRP along −n, +infinity for background); throws InputError when nothing is
+// there or the pixel is outside the image.
+using DepthAtPixel = std::function<double(const Camera&, int x, int y)>;
+Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt);
+
+// depthAt through the rasterizer's pinhole depth buffer.
+DepthAtPixel rasterDepth(Renderer& renderer, ImageSize size);
 
 bool isTerminal(std::FILE* stream);
 void printProgress(int done, int total, double seconds);

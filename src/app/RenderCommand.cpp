@@ -1,4 +1,5 @@
-// lenslab render: one image of a scene through the lecture's camera, headless.
+// lenslab render: one image of a scene through the lecture's camera, rasterized headless.
+// lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
 #include "app/CameraSelection.h"
 #include "app/Commands.h"
 #include "app/LensOptions.h"
@@ -9,6 +10,7 @@
 #include "gl/GlContext.h"
 #include "io/ImageFile.h"
 #include "plan/FramePlan.h"
+#include "raycast/RayCaster.h"
 #include "render/Renderer.h"
 #include "scene/GltfLoader.h"
 
@@ -22,7 +24,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+enum class Method { Raster, Raycast };
+
 struct RenderOptions {
+  Method method = Method::Raster;
+  int samplesPerPixel = 64;  // raycast
   std::string scene;
   std::string cameraFile;
   std::string out = "render.png";
@@ -36,6 +42,64 @@ struct RenderOptions {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Image rasterize(const RenderOptions& o, const Scene& scene, Camera camera, ImageSize size,
+                const PlanOptions& planOptions, RunStats& stats) {
+  auto t = std::chrono::steady_clock::now();
+  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
+  stats.contextSeconds = secondsSince(t);
+  stats.renderer = context->renderer();
+
+  t = std::chrono::steady_clock::now();
+  Renderer renderer(scene);
+  stats.setupSeconds = secondsSince(t);
+
+  if (o.lens.focusAt) camera = focusOnPixel(camera, size, *o.lens.focusAt, rasterDepth(renderer, size));
+  const FramePlan plan = makeFramePlan(scene, camera, size, planOptions);
+  for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
+  stats.camera = camera.source;
+  stats.plan = plan;
+
+  t = std::chrono::steady_clock::now();
+  renderer.begin(camera, plan, size);
+  const bool showProgress = !o.quiet && plan.apertureSamples > 1 && isTerminal(stderr);
+  // Samples in batches, so that long renders report progress on a terminal.
+  const int batch = std::max(1, plan.apertureSamples / 50);
+  while (renderer.samplesDone() < renderer.samplesPlanned()) {
+    renderer.addSamples(batch);
+    if (showProgress) printProgress(renderer.samplesDone(), renderer.samplesPlanned(), secondsSince(t));
+  }
+  Image image = renderer.resolve();
+  stats.renderSeconds = secondsSince(t);
+  if (showProgress) std::cerr << "\n";
+
+  return image;
+}
+
+Image raycast(const RenderOptions& o, const Scene& scene, Camera camera, ImageSize size, RunStats& stats) {
+  if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
+  auto t = std::chrono::steady_clock::now();
+  const RayCaster caster(scene);
+  stats.setupSeconds = secondsSince(t);
+  stats.renderer = "lenslab ray caster (Embree, TBB)";
+  stats.backend = "cpu";
+  if (o.lens.focusAt)
+    camera = focusOnPixel(camera, size, *o.lens.focusAt, [&](const Camera& c, int x, int y) {
+      return caster.depthAt(c, {x + 0.5, y + 0.5}, size);
+    });
+  stats.camera = camera.source;
+  stats.plan.apertureSamples = o.samplesPerPixel;
+  stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
+  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.isPinhole() ? "the PRP" : "the thin lens")}};
+  const bool showProgress = !o.quiet && isTerminal(stderr);
+  t = std::chrono::steady_clock::now();
+  Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed}, [&](int done, int rows) {
+    if (showProgress) printProgress(done, rows, secondsSince(t));
+  });
+  stats.renderSeconds = secondsSince(t);
+  if (showProgress) std::cerr << "\n";
+  return image;
 }
 
 int runRender(const RenderOptions& o) {
@@ -66,69 +130,65 @@ int runRender(const RenderOptions& o) {
               << ") differs from the window's; pixels will not be square (give only --width or --height)\n";
 
   RunStats stats;
-  stats.command = "render";
+  stats.command = o.method == Method::Raster ? "render" : "raycast";
   stats.scene = scenePath.string();
   stats.size = size;
   stats.backend = o.backend;
   stats.triangles = scene.triangleCount();
 
-  auto t = std::chrono::steady_clock::now();
-  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
-  stats.contextSeconds = secondsSince(t);
-  stats.renderer = context->renderer();
-
-  t = std::chrono::steady_clock::now();
-  Renderer renderer(scene);
-  stats.setupSeconds = secondsSince(t);
-
-  if (o.lens.focusAt) camera = focusOnPixel(renderer, camera, size, *o.lens.focusAt);
-  const FramePlan plan = makeFramePlan(scene, camera, size, planOptions);
-  for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
-  stats.camera = camera.source;
-  stats.plan = plan;
-
-  t = std::chrono::steady_clock::now();
-  renderer.begin(camera, plan, size);
-  const bool showProgress = !o.quiet && plan.apertureSamples > 1 && isTerminal(stderr);
-  // Samples in batches, so that long renders report progress on a terminal.
-  const int batch = std::max(1, plan.apertureSamples / 50);
-  while (renderer.samplesDone() < renderer.samplesPlanned()) {
-    renderer.addSamples(batch);
-    if (showProgress) printProgress(renderer.samplesDone(), renderer.samplesPlanned(), secondsSince(t));
+  Image image;
+  if (o.method == Method::Raster) {
+    image = rasterize(o, scene, camera, size, planOptions, stats);
+  } else {
+    image = raycast(o, scene, camera, size, stats);
   }
-  const Image image = renderer.resolve();
-  stats.renderSeconds = secondsSince(t);
-  if (showProgress) std::cerr << "\n";
 
-  t = std::chrono::steady_clock::now();
+  auto t = std::chrono::steady_clock::now();
   writeImage(out, image);
   stats.writeSeconds = secondsSince(t);
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(o.statsFile, stats);
   if (!o.quiet)
     std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
-              << plan.apertureSamples << " aperture sample" << (plan.apertureSamples == 1 ? "" : "s") << ", "
-              << stats.renderer << ", " << stats.seconds << " s)\n";
+              << stats.plan.apertureSamples
+              << (o.method == Method::Raster ? " aperture sample" : " sample") << (stats.plan.apertureSamples == 1 ? "" : "s")
+              << (o.method == Method::Raster ? "" : " per pixel") << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
   return 0;
 }
 
 }  // namespace
 
-std::function<int()> addRenderCommand(CLI::App& app) {
+namespace {
+
+std::function<int()> addImageCommand(CLI::App& app, Method method) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model");
+  options->method = method;
+  CLI::App* cmd = method == Method::Raster
+      ? app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model")
+      : app.add_subcommand("raycast", "Ray cast a glTF scene on the CPU: the reference for `render`, same camera and shading");
   cmd->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
   cmd->add_option("--camera", options->cameraFile, "camera JSON (lecture or physical form); default: the scene's first glTF camera, else an automatic framing");
   cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")->capture_default_str();
   cmd->add_option("--width", options->width, "image width in pixels (default 960; height follows the window's aspect)");
   cmd->add_option("--height", options->height, "image height in pixels");
-  cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
-      ->check(CLI::IsMember({"osmesa", "egl"}))
-      ->capture_default_str();
+  if (method == Method::Raster) {
+    cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
+        ->check(CLI::IsMember({"osmesa", "egl"}))
+        ->capture_default_str();
+  } else {
+    cmd->add_option("--spp", options->samplesPerPixel, "samples per pixel (stratified pixel x lens)")
+        ->check(CLI::Range(1, 1 << 20))
+        ->capture_default_str();
+  }
   addLensOptions(*cmd, options->lens);
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
   return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };
 }
+
+}  // namespace
+
+std::function<int()> addRenderCommand(CLI::App& app) { return addImageCommand(app, Method::Raster); }
+std::function<int()> addRaycastCommand(CLI::App& app) { return addImageCommand(app, Method::Raycast); }
 
 }  // namespace lenslab

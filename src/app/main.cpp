@@ -9,7 +9,12 @@ int main(int argc, char** argv) {
   CLI::App app{"lenslab — a renderer of the lecture's camera models: pinhole, thin lens, lens effects", "lenslab"};
   app.set_version_flag("--version", LENSLAB_VERSION);
   app.require_subcommand(1);
-  std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app), lenslab::addInfoCommand(app)};
+  // Usage errors in one line, like every other error lenslab reports.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("lenslab: error: ") + e.what() + " (see --help)\n";
+  });
+  std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app), lenslab::addRaycastCommand(app),
+                                                lenslab::addInfoCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

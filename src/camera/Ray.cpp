@@ -1,5 +1,7 @@
 #include "camera/Ray.h"
 
+#include "camera/Projection.h"
+
 namespace lenslab {
 
 glm::dvec3 viewPlanePoint(const ViewSpec& spec, glm::dvec2 uv) {
@@ -26,6 +28,11 @@ Ray primaryRay(const ViewSpec& spec, glm::dvec2 uv) {
   ray.tNear = spec.nearDistance / cosTheta;
   ray.tFar = spec.farDistance / cosTheta;
   return ray;
+}
+
+Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) {
+  const ViewSpec view = viewThroughLens(camera, lensOffset, {0.0, 0.0});
+  return primaryRay(view, windowFromPixel(view.window, pixel, size.widthPx, size.heightPx));
 }
 
 }  // namespace lenslab

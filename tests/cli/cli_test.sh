@@ -76,6 +76,13 @@ expect_refusal "bad sample count" "--aperture-samples" -- render --aperture-samp
 expect_refusal "bad focus distance" "focus distance" -- render --focus-distance -3 --out "$work/out.png"
 expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$src/assets/rows/camera-dof.json" --width 96 --focus-at 50,2 --out "$work/out.png"
 
+# The ray-cast reference: same options, --spp, same outputs.
+if "$lenslab" raycast --camera "$src/assets/occluder/camera-dof.json" --width 48 --spp 4 --out "$work/rc.exr" --stats "$work/rc.json" -q &&
+   [ -s "$work/rc.exr" ] && grep -qF '"command": "raycast"' "$work/rc.json" && grep -qF '"aperture_samples": 4' "$work/rc.json"; then pass; else fail "raycast"; fi
+if "$lenslab" raycast --camera "$src/assets/rows/camera-dof.json" --width 48 --spp 1 --focus-at 33,21 --out "$work/rcf.png" --stats "$work/rcf.json" -q &&
+   grep -qF 'focused at pixel 33,21' "$work/rcf.json"; then pass; else fail "raycast --focus-at"; fi
+expect_refusal "raycast bad spp" "--spp" -- raycast --spp 0 --out "$work/out.png"
+
 # info.
 if "$lenslab" info "$src/assets/rows/rows.gltf" | grep -q "^triangles"; then pass; else fail "info"; fi
 

@@ -240,3 +240,57 @@ TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// The lecture's construction of the in-focus point ("RC + TL (II)"): from an image point, one ray
+// parallel to the optic axis (deflected through the front focal point) and one through the back
+// focal point (deflected parallel to the axis) meet at the point in focus. Every lens ray the ray
+// caster fires for that pixel must pass through it.
+TEST(LensRay, RaysOfOnePixelMeetAtTheLecturesTwoRayFocusPoint) {
+  PhysicalCamera p;
+  p.eye = {0.3, 1.2, 4.0};
+  p.target = {-0.5, 0.8, -3.0};
+  p.focalLengthMm = 50.0;
+  p.fNumber = 1.8;
+  p.focusDistance = 2.5;
+  const Camera camera = toCamera(p, "test");
+  const ViewBasis b = viewBasis(camera.view);
+  const glm::dvec3 d = -b.n;  // the optic axis, toward the scene
+  const double focal = 0.05, focus = p.focusDistance, zi = imageDistance(focal, focus);
+
+  const double a = 0.004, c = -0.003;  // an image point on the sensor, behind the lens
+  const glm::dvec3 sensorPoint = p.eye - zi * d + a * b.u + c * b.v;
+  // Ray A: parallel to the axis to the lens, then through the front focal point.
+  const glm::dvec3 lensA = p.eye + a * b.u + c * b.v;
+  const glm::dvec3 dirA = glm::normalize((p.eye + focal * d) - lensA);
+  // Ray B: through the back focal point to the lens, then parallel to the axis.
+  const glm::dvec3 backFocal = p.eye - focal * d;
+  const double t = zi / (zi - focal);
+  const glm::dvec3 lensB = sensorPoint + t * (backFocal - sensorPoint);
+  const glm::dvec3 dirB = d;
+  // Closest points of the two lines: they intersect.
+  const glm::dvec3 w0 = lensA - lensB;
+  const double aa = glm::dot(dirA, dirA), bb = glm::dot(dirA, dirB), cc = glm::dot(dirB, dirB);
+  const double dd = glm::dot(dirA, w0), ee = glm::dot(dirB, w0);
+  const double sA = (bb * ee - cc * dd) / (aa * cc - bb * bb), sB = (aa * ee - bb * dd) / (aa * cc - bb * bb);
+  const glm::dvec3 qA = lensA + sA * dirA, qB = lensB + sB * dirB;
+  ASSERT_NEAR(glm::length(qA - qB), 0.0, 1e-9) << "the lecture's two rays meet";
+  const glm::dvec3 focusPoint = 0.5 * (qA + qB);
+  EXPECT_NEAR(glm::dot(focusPoint - p.eye, d), focus, 1e-9) << "on the plane of focus";
+
+  // The pixel that images it: through the lens centre the image is inverted and scaled by z_f/z_i.
+  const ImageSize size{600, 400};
+  const glm::dvec2 uv(-a * focus / zi, -c * focus / zi);
+  const glm::dvec2 pixel = pixelFromWindow(camera.view.window, uv, size.widthPx, size.heightPx);
+  for (const LensSample& s : makeApertureSamples(AperturePattern::Lecture17, 17, 1)) {
+    const Ray ray = lensRay(camera, s.lens * camera.apertureRadius, pixel, size);
+    const glm::dvec3 toPoint = focusPoint - ray.origin;
+    const double miss = glm::length(toPoint - glm::dot(toPoint, ray.direction) * ray.direction);
+    EXPECT_NEAR(miss, 0.0, 1e-9) << "a lens ray misses the in-focus point";
+  }
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -1,0 +1,219 @@
+#include "raycast/RayCaster.h"
+
+#include "camera/Ray.h"
+#include "lens/AperturePattern.h"
+#include "raycast/TextureSampler.h"
+
+#include <embree3/rtcore.h>
+#include <limits>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lenslab {
+
+namespace {
+
+const Material kDefaultMaterial{};
+
+// Where a ray meets a triangle's plane, as barycentric (b1, b2) of its vertices p0, p1, p2.
+glm::dvec2 barycentricOnPlane(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
+  const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
+  const glm::dvec3 normal = glm::cross(e1, e2);
+  const double denom = glm::dot(ray.direction, normal);
+  const double t = std::abs(denom) > 0.0 ? glm::dot(p0 - ray.origin, normal) / denom : 0.0;
+  const glm::dvec3 q = ray.origin + t * ray.direction - p0;
+  const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+  const double d20 = glm::dot(q, e1), d21 = glm::dot(q, e2);
+  const double det = d00 * d11 - d01 * d01;
+  if (det == 0.0) return {0.0, 0.0};
+  return {(d11 * d20 - d01 * d21) / det, (d00 * d21 - d01 * d20) / det};
+}
+
+// lenslab's shading model (src/scene/Scene.h), as shaders/common/shading.glsl computes it.
+glm::vec3 shade(const glm::vec3& base, const glm::vec3& normal, bool unlit, const Lighting& light) {
+  if (unlit) return base;
+  const float lambert = std::max(0.0f, glm::dot(normal, light.toLight));
+  return base * (light.ambient + light.diffuse * lambert);
+}
+
+}  // namespace
+
+struct RayCaster::Impl {
+  const Scene* scene = nullptr;
+  RTCDevice device = nullptr;
+  RTCScene rtcScene = nullptr;
+  struct Geometry {
+    int instance;
+    const float* worldPositions;  // Embree's vertex buffer: 3 floats per vertex
+    glm::mat3 normalFromModel;
+    bool mirrored;
+  };
+  std::vector<Geometry> geometries;           // by Embree geometry ID
+  std::vector<TextureSampler> samplers;       // by Scene texture index
+
+  ~Impl() {
+    if (rtcScene) rtcReleaseScene(rtcScene);
+    if (device) rtcReleaseDevice(device);
+  }
+
+  struct Hit {
+    glm::vec3 color{0.0f};
+    double t = std::numeric_limits<double>::infinity();  // along the unit ray direction
+    Ray ray;
+  };
+
+  // First visible surface along `ray` (single-sided back faces and masked-out texels are passed
+  // through, as the rasterizer culls and discards them), shaded.
+  Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) const {
+    const Ray ray = lensRay(camera, lensOffset, pixel, size);
+    Hit miss{scene->lighting.background, std::numeric_limits<double>::infinity(), ray};
+    double tNear = ray.tNear;
+    for (int layer = 0; layer < 64; ++layer) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rh{};
+      rh.ray.org_x = static_cast<float>(ray.origin.x);
+      rh.ray.org_y = static_cast<float>(ray.origin.y);
+      rh.ray.org_z = static_cast<float>(ray.origin.z);
+      rh.ray.dir_x = static_cast<float>(ray.direction.x);
+      rh.ray.dir_y = static_cast<float>(ray.direction.y);
+      rh.ray.dir_z = static_cast<float>(ray.direction.z);
+      rh.ray.tnear = static_cast<float>(tNear);
+      rh.ray.tfar = std::isinf(ray.tFar) ? std::numeric_limits<float>::infinity() : static_cast<float>(ray.tFar);
+      rh.ray.mask = 0xFFFFFFFFu;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(rtcScene, &context, &rh);
+      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return miss;
+
+      const Geometry& g = geometries[rh.hit.geomID];
+      const Instance& instance = scene->instances[static_cast<std::size_t>(g.instance)];
+      const Mesh& mesh = scene->meshes[static_cast<std::size_t>(instance.mesh)];
+      const Material& material = mesh.material >= 0 ? scene->materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
+      const std::uint32_t i0 = mesh.indices[rh.hit.primID * 3], i1 = mesh.indices[rh.hit.primID * 3 + 1],
+                          i2 = mesh.indices[rh.hit.primID * 3 + 2];
+      auto world = [&](std::uint32_t i) {
+        return glm::dvec3(g.worldPositions[i * 3], g.worldPositions[i * 3 + 1], g.worldPositions[i * 3 + 2]);
+      };
+      const glm::dvec3 p0 = world(i0), p1 = world(i1), p2 = world(i2);
+      // Front-facing as GL decides it: counter-clockwise on screen, i.e. the model's winding seen
+      // from the normal's side; a mirroring transform turns it around (glFrontFace(GL_CW)).
+      bool front = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) < 0.0;
+      if (g.mirrored) front = !front;
+      const double tHit = rh.ray.tfar;
+      const double skipTo = tHit * (1.0 + 1e-6) + 1e-9;
+      if (!front && !material.doubleSided) {
+        tNear = skipTo;
+        continue;
+      }
+      const float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
+      const Vertex& v0 = mesh.vertices[i0];
+      const Vertex& v1 = mesh.vertices[i1];
+      const Vertex& v2 = mesh.vertices[i2];
+      glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
+      if (material.baseColorTexture >= 0) {
+        const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
+        // Ray differentials: the same lens point, one pixel over in x and in y.
+        auto uvAt = [&](glm::dvec2 offset) {
+          const glm::dvec2 b = barycentricOnPlane(lensRay(camera, lensOffset, pixel + offset, size), p0, p1, p2);
+          return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
+        };
+        const glm::vec2 uvHere = uvAt({0.0, 0.0});
+        const Texture& texture = scene->textures[static_cast<std::size_t>(material.baseColorTexture)];
+        base *= samplers[static_cast<std::size_t>(material.baseColorTexture)].sample(
+            texture.sampler, uv, uvAt({1.0, 0.0}) - uvHere, uvAt({0.0, 1.0}) - uvHere);
+      }
+      if (material.alphaMode == AlphaMode::Mask && base.a < material.alphaCutoff) {
+        tNear = skipTo;
+        continue;
+      }
+      glm::vec3 normal = glm::normalize(g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal));
+      if (material.doubleSided && !front) normal = -normal;
+      return {shade(glm::vec3(base), normal, material.unlit, scene->lighting), tHit, ray};
+    }
+    return miss;
+  }
+};
+
+RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.scene = &scene;
+  m.device = rtcNewDevice(nullptr);
+  if (!m.device) throw std::runtime_error("Embree: could not create a device");
+  m.rtcScene = rtcNewScene(m.device);
+  rtcSetSceneBuildQuality(m.rtcScene, RTC_BUILD_QUALITY_HIGH);
+  for (std::size_t k = 0; k < scene.instances.size(); ++k) {
+    const Instance& instance = scene.instances[k];
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    RTCGeometry geometry = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh.vertices.size()));
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const glm::dvec3 p(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0));
+      positions[i * 3] = static_cast<float>(p.x);
+      positions[i * 3 + 1] = static_cast<float>(p.y);
+      positions[i * 3 + 2] = static_cast<float>(p.z);
+    }
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                  3 * sizeof(unsigned), mesh.indices.size() / 3));
+    std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
+    rtcCommitGeometry(geometry);
+    const unsigned id = rtcAttachGeometry(m.rtcScene, geometry);
+    rtcReleaseGeometry(geometry);
+    const glm::dmat3 linear(instance.worldFromModel);
+    if (id != m.geometries.size()) throw std::logic_error("Embree geometry IDs are not sequential");
+    m.geometries.push_back({static_cast<int>(k), positions, glm::mat3(glm::transpose(glm::inverse(linear))),
+                            glm::determinant(linear) < 0.0});
+  }
+  rtcCommitScene(m.rtcScene);
+  // Mip chains where the GPU makes them: any sampler of the image minifies with mipmaps.
+  for (const Texture& t : scene.textures) {
+    const bool mipmaps = t.sampler.minFilter != Filter::Nearest && t.sampler.minFilter != Filter::Linear;
+    m.samplers.emplace_back(scene.images[static_cast<std::size_t>(t.image)], mipmaps);
+  }
+}
+
+RayCaster::~RayCaster() = default;
+
+glm::vec3 RayCaster::trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) const {
+  return impl_->shadeAlong(camera, lensOffset, pixel, size).color;
+}
+
+double RayCaster::depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const {
+  const Impl::Hit hit = impl_->shadeAlong(camera, {0.0, 0.0}, pixel, size);
+  if (std::isinf(hit.t)) return hit.t;
+  return -glm::dot(hit.t * hit.ray.direction, viewBasis(camera.view).n);
+}
+
+Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,
+                        const std::function<void(int, int)>& progress) const {
+  Image image(size.widthPx, size.heightPx);
+  const int spp = std::max(1, options.samplesPerPixel);
+  constexpr int kBand = 16;
+  for (int band = 0; band < size.heightPx; band += kBand) {
+    const int end = std::min(band + kBand, size.heightPx);
+    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& rows) {
+      for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int x = 0; x < size.widthPx; ++x) {
+          // A different stratified set per pixel, so that the noise does not repeat across pixels.
+          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(y * size.widthPx + x) * 40503u;
+          const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
+          glm::dvec3 sum(0.0);
+          for (const LensSample& s : samples) {
+            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
+            sum += glm::dvec3(trace(camera, s.lens * camera.apertureRadius, pixel, size));
+          }
+          image.set(x, y, glm::vec4(glm::vec3(sum / static_cast<double>(samples.size())), 1.0f));
+        }
+    });
+    if (progress) progress(end, size.heightPx);
+  }
+  return image;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,48 @@
+#pragma once
+// The CPU reference: the lecture's ray casting, "for each pixel, ray R from PRP toward
+// VRP + u·udir + v·vdir; P = Intersect(R, World); Image[u, v] = Color(P)", through the thin lens
+// ("rays from every lens surface point toward the in-focus point, averaged"). It uses the same
+// Camera (lensRay), the same Scene and the same shading as the rasterizer, so any difference
+// between the two images is the rasterizer's method error. Embree finds the hits; TBB spreads
+// rows over the cores.
+#include "camera/Camera.h"
+#include "camera/ImageSize.h"
+#include "core/Image.h"
+#include "scene/Scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+namespace lenslab {
+
+struct RaycastOptions {
+  int samplesPerPixel = 64;  // stratified pixel × lens samples (Shirley–Chiu concentric on the lens)
+  std::uint32_t seed = 1;
+};
+
+class RayCaster {
+ public:
+  explicit RayCaster(const Scene& scene);  // builds the Embree scene; `scene` must outlive it
+  ~RayCaster();
+  RayCaster(const RayCaster&) = delete;
+  RayCaster& operator=(const RayCaster&) = delete;
+
+  // `progress(rowsDone, rows)` is called from the calling thread between bands of rows.
+  Image render(const Camera& camera, ImageSize size, const RaycastOptions& options,
+               const std::function<void(int, int)>& progress = {}) const;
+
+  // The shaded colour seen along one ray through continuous pixel position `pixel` from aperture
+  // offset `lensOffset` (linear RGB; the background where nothing is hit).
+  glm::vec3 trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) const;
+
+  // Depth (world units from the PRP along −n) of the first visible surface under pixel centre
+  // `pixel` seen from the lens centre; +infinity where nothing is hit. For --focus-at.
+  double depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lenslab

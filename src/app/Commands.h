@@ -10,6 +10,7 @@ namespace lenslab {
 // Adds `render` to `app`; the returned function runs it after parsing.
 std::function<int()> addRenderCommand(CLI::App& app);
 std::function<int()> addRaycastCommand(CLI::App& app);
+std::function<int()> addSweepCommand(CLI::App& app);
 std::function<int()> addInfoCommand(CLI::App& app);
 
 }  // namespace lenslab

@@ -59,11 +59,15 @@ Image Renderer::render(const Camera& camera, const FramePlan& plan, ImageSize si
   return resolve();
 }
 
-std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) {
+const gl::RenderTarget& Renderer::renderPinhole(const Camera& camera, ImageSize size) {
   const gl::RenderTarget& v = target(view_, size);
   scenePass_.draw(gpuScene_, clipFromWorld(camera.view), v.drawTarget());
   glFinish();
-  return v.readDepth();
+  return v;
+}
+
+std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) {
+  return renderPinhole(camera, size).readDepth();
 }
 
 }  // namespace lenslab

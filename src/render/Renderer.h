@@ -36,6 +36,9 @@ class Renderer {
   // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
   std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);
 
+  // The pinhole view from the PRP (colour and depth), drawn and finished; valid until the next call.
+  const gl::RenderTarget& renderPinhole(const Camera& camera, ImageSize size);
+
  private:
   const gl::RenderTarget& target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size);
 

@@ -1,22 +1,29 @@
 #pragma once
-// glTF 2.0 (.gltf and .glb) → Scene, through Debian's tinygltf.
+// glTF 2.0 (.gltf and .glb) → Scene, through Debian's tinygltf 2.7 (parsing only: every index,
+// offset, stride and count is checked here before a byte is read).
 //
 // What is kept: the default scene's node hierarchy (matrix or TRS, composed in double precision),
 // triangle primitives (lists, strips and fans; indexed or not), normals (flat ones generated when
 // absent, as the glTF spec asks), TEXCOORD_0, COLOR_0, base colour factor and texture with its
 // sampler, KHR_materials_unlit, alpha mode and cutoff, double-sidedness, cameras.
-// What is left out, with a note in Scene::notes: points and lines, other PBR inputs, skins,
-// morph targets, animations. Only meshes, materials, textures and images that the drawn scene uses
-// end up in the Scene ("upload nothing the scene does not use").
+// What is left out, with a line in Scene::notes: points and lines, other PBR inputs, other
+// texture coordinate sets, skins (bind pose), morph targets (base mesh), animations, unsupported
+// extensions that the file uses but does not require.
+// Only meshes, materials, textures and images that the drawn scene uses end up in the Scene, and
+// only those images are decoded ("upload nothing the scene does not use").
 //
-// Every index, offset and stride is checked before it is read: a malformed file is refused with
-// an InputError of one line naming the file and the problem, never a crash.
+// A file that is not valid glTF, or needs what lenslab cannot do (a required extension other
+// than KHR_materials_unlit), is refused with an InputError of one line: the file, the problem and,
+// where there is one, what would be valid. A scene without a single triangle still loads (its
+// bounds are empty); callers decide what to do with it.
 #include "scene/Scene.h"
 
 #include <filesystem>
 
 namespace lenslab {
 
+// Reads a .gltf (JSON, buffers and images beside it or in data: URIs) or a .glb (recognised by
+// its magic "glTF", whatever the extension). Throws InputError.
 Scene loadGltf(const std::filesystem::path& file);
 
 }  // namespace lenslab

@@ -83,6 +83,13 @@ if "$lenslab" raycast --camera "$src/assets/rows/camera-dof.json" --width 48 --s
    grep -qF 'focused at pixel 33,21' "$work/rcf.json"; then pass; else fail "raycast --focus-at"; fi
 expect_refusal "raycast bad spp" "--spp" -- raycast --spp 0 --out "$work/out.png"
 
+# The sweep writes its CSV, table, plot and images.
+if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" --out "$work/sweep" --width 48 --reference-spp 8 --max-views 4 --max-spp 2 2>/dev/null &&
+   [ -s "$work/sweep/sweep.csv" ] && [ -s "$work/sweep/sweep.md" ] && [ -s "$work/sweep/error_vs_time.png" ] &&
+   head -1 "$work/sweep/sweep.csv" | grep -qx "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse" &&
+   grep -q "^postprocess,gather," "$work/sweep/sweep.csv" && ls "$work"/sweep/images/raster-concentric-4.png >/dev/null; then pass; else fail "sweep"; fi
+expect_refusal "sweep of a pinhole" "pinhole" -- sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera.json" --out "$work/out-sweep" --width 16
+
 # info.
 if "$lenslab" info "$src/assets/rows/rows.gltf" | grep -q "^triangles"; then pass; else fail "info"; fi
 

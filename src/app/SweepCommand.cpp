@@ -1,0 +1,110 @@
+// lenslab sweep: error against run time for every method, against the ray-cast reference.
+#include "app/CameraSelection.h"
+#include "app/Commands.h"
+#include "app/LensOptions.h"
+#include "camera/ImageSize.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "gl/GlContext.h"
+#include "io/AtomicFile.h"
+#include "io/ImageFile.h"
+#include "report/Plot.h"
+#include "report/Sweep.h"
+#include "scene/GltfLoader.h"
+
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct SweepCommandOptions {
+  std::string scene;
+  std::string cameraFile;
+  std::string outDir;
+  std::optional<int> width;
+  std::optional<int> height;
+  std::string backend = "osmesa";
+  LensOptions lens;
+  SweepOptions sweep;
+};
+
+int runSweepCommand(SweepCommandOptions& o) {
+  fs::path scenePath = o.scene;
+  std::optional<fs::path> cameraPath;
+  if (!o.cameraFile.empty()) cameraPath = o.cameraFile;
+  if (scenePath.empty()) {
+    scenePath = assetDirectory() / "rows" / "rows.gltf";
+    if (!cameraPath) cameraPath = assetDirectory() / "rows" / "camera-dof.json";
+  }
+  const Scene scene = loadGltf(scenePath);
+  const Camera camera = applyLensOptions(selectCamera(scene, cameraPath, 0.0).camera, o.lens);
+  const ImageSize size = resolveImageSize(camera.view.window, o.width ? o.width : std::optional<int>(320), o.height);
+  const fs::path out = o.outDir;
+  std::error_code error;
+  fs::create_directories(out, error);
+  if (error) throw InputError(cat("--out ", out.string(), ": cannot create the folder: ", error.message()));
+
+  auto t = std::chrono::steady_clock::now();
+  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
+  const double contextSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  o.sweep.outDir = out;
+  o.sweep.seed = o.lens.seed;
+  o.sweep.log = [](const std::string& line) { std::cerr << "lenslab: sweep: " << line << "\n"; };
+  t = std::chrono::steady_clock::now();
+  const SweepResult result = runSweep(scene, camera, size, o.sweep);
+  const double sweepSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+
+  const std::string header = cat(
+      "# Error against run time: ", scenePath.filename().string(), "\n\n",
+      "- scene `", scenePath.string(), "`, camera ", camera.source, ", ", size.widthPx, "x", size.heightPx, "\n",
+      "- renderer: ", context->renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
+      "- reference: ray cast at ", o.sweep.referenceSpp, " spp",
+      result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"), "\n",
+      "- GL context creation ", contextSeconds, " s, not in the rows; rows time the frame with the GPU finished and read back\n",
+      "- occlusion-edge pixels (within their circle of confusion of a depth step): ", result.edgeFraction * 100.0, " %\n",
+      "- whole sweep: ", sweepSeconds, " s\n");
+  writeTextFileAtomically(out / "sweep.csv", sweepCsv(result));
+  writeTextFileAtomically(out / "sweep.md", sweepMarkdown(result, header));
+
+  const std::map<std::string, glm::vec3> colours = {
+      {"raster lecture17", {0.8f, 0.1f, 0.6f}}, {"raster concentric", {0.1f, 0.3f, 0.9f}},
+      {"raster r2", {0.0f, 0.6f, 0.3f}},        {"raster random", {0.9f, 0.5f, 0.0f}},
+      {"raycast stratified", {0.8f, 0.0f, 0.0f}}, {"postprocess gather", {0.3f, 0.3f, 0.3f}}};
+  std::vector<PlotSeries> series;
+  for (const SweepRow& row : result.rows) {
+    const std::string key = row.method + " " + row.pattern;
+    if (series.empty() || series.back().name != key) series.push_back({key, colours.count(key) ? colours.at(key) : glm::vec3(0.0f), {}});
+    series.back().points.push_back({row.seconds, row.rmse});
+  }
+  writeImage(out / "error_vs_time.png", logLogPlot(series, "seconds", "RMSE", "error against run time"));
+  std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and "
+            << result.rows.size() << " images\n";
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> addSweepCommand(CLI::App& app) {
+  auto o = std::make_shared<SweepCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("sweep", "Error against run time of every method, against the ray-cast reference");
+  cmd->add_option("scene", o->scene, "glTF 2.0 scene; default: the bundled 'rows' with camera-dof.json");
+  cmd->add_option("--camera", o->cameraFile, "camera JSON with an aperture (f_number or aperture_radius)");
+  cmd->add_option("--out,-o", o->outDir, "folder for sweep.csv, sweep.md, error_vs_time.png and images/")->required();
+  cmd->add_option("--width", o->width, "image width in pixels (default 320 here: the reference is costly)");
+  cmd->add_option("--height", o->height, "image height in pixels");
+  cmd->add_option("--backend", o->backend, "osmesa or egl")->check(CLI::IsMember({"osmesa", "egl"}))->capture_default_str();
+  cmd->add_option("--reference-spp", o->sweep.referenceSpp, "samples per pixel of the reference")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  cmd->add_option("--max-views", o->sweep.maxViews, "largest raster budget (views)")->check(CLI::Range(1, 65536))->capture_default_str();
+  cmd->add_option("--max-spp", o->sweep.maxSpp, "largest ray-cast budget (spp)")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  cmd->add_option("--seed", o->lens.seed, "seed for every sampler")->capture_default_str();
+  cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
+  return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
+}
+
+}  // namespace lenslab

@@ -1,0 +1,261 @@
+#include "report/Sweep.h"
+
+#include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/CameraJson.h"
+#include "io/ImageCompare.h"
+#include "io/ImageFile.h"
+#include "plan/FramePlan.h"
+#include "raycast/RayCaster.h"
+#include "render/GatherDof.h"
+#include "render/Renderer.h"
+#include "report/Plot.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// FNV-1a, 64 bits: a cache key, not a security measure.
+struct Hash {
+  std::uint64_t value = 1469598103934665603ull;
+  void add(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) value = (value ^ p[i]) * 1099511628211ull;
+  }
+  template <class T>
+  void addVector(const std::vector<T>& v) { add(v.data(), v.size() * sizeof(T)); }
+  void addString(const std::string& s) { add(s.data(), s.size()); }
+};
+
+std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {
+  Hash h;
+  h.addString("lenslab reference v1");
+  for (const Mesh& m : scene.meshes) {
+    h.addVector(m.vertices);
+    h.addVector(m.indices);
+    h.add(&m.material, sizeof m.material);
+  }
+  for (const Instance& i : scene.instances) h.add(&i, sizeof i);
+  for (const Material& m : scene.materials) {
+    h.add(&m.baseColorFactor, sizeof m.baseColorFactor);
+    const int flags[] = {m.baseColorTexture, m.unlit, static_cast<int>(m.alphaMode), m.doubleSided};
+    h.add(flags, sizeof flags);
+    h.add(&m.alphaCutoff, sizeof m.alphaCutoff);
+  }
+  for (const TextureImage& i : scene.images) h.addVector(i.rgba8);
+  for (const Texture& t : scene.textures) h.add(&t, sizeof t);
+  h.add(&scene.lighting, sizeof scene.lighting);
+  h.addString(toCameraJson(camera));
+  h.add(&camera.apertureRadius, sizeof camera.apertureRadius);
+  h.add(&camera.focusAtInfinity, sizeof camera.focusAtInfinity);
+  const long long ints[] = {size.widthPx, size.heightPx, o.referenceSpp, o.seed};
+  h.add(ints, sizeof ints);
+  std::ostringstream s;
+  s << std::hex << std::setw(16) << std::setfill('0') << h.value;
+  return s.str();
+}
+
+std::vector<int> doublings(int max) {
+  std::vector<int> n;
+  for (int k = 1; k <= max; k *= 2) n.push_back(k);
+  return n;
+}
+
+void say(const SweepOptions& o, const std::string& line) {
+  if (o.log) o.log(line);
+}
+
+}  // namespace
+
+std::vector<bool> occlusionEdgeMask(const Camera& camera, ImageSize size, const std::vector<double>& depth) {
+  const int w = size.widthPx, h = size.heightPx;
+  const double pxPerUnit = w / camera.view.window.width();
+  std::vector<bool> mask(depth.size(), false);
+  auto depthAt = [&](int x, int y) { return depth[static_cast<std::size_t>(y * w + x)]; };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double d = depthAt(x, y);
+      const double coc = std::isfinite(d) ? cocDiameterOnWindow(camera, d) : cocDiameterOnWindow(camera, 1e30);
+      const int r = static_cast<int>(std::ceil(std::clamp(0.5 * coc * pxPerUnit, 1.0, 32.0)));
+      bool edge = false;
+      for (int dy = -r; dy <= r && !edge; ++dy)
+        for (int dx = -r; dx <= r && !edge; ++dx) {
+          const int qx = x + dx, qy = y + dy;
+          if (qx < 0 || qy < 0 || qx >= w || qy >= h || dx * dx + dy * dy > r * r) continue;
+          const double e = depthAt(qx, qy);
+          if (std::isinf(d) != std::isinf(e)) edge = true;
+          else if (std::isfinite(d) && std::abs(d - e) > 0.05 * std::min(d, e)) edge = true;
+        }
+      mask[static_cast<std::size_t>(y * w + x)] = edge;
+    }
+  return mask;
+}
+
+double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) {
+      for (int k = 0; k < 3; ++k) {
+        const double d = static_cast<double>(a.rgba[i * 4 + static_cast<std::size_t>(k)]) - b.rgba[i * 4 + static_cast<std::size_t>(k)];
+        sum += d * d;
+      }
+      n += 3;
+    }
+  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {
+  if (camera.isPinhole())
+    throw InputError("sweep: the camera is a pinhole, so there is no depth of field to converge to; give a camera with "
+                     "f_number (physical form) or aperture_radius (lecture form)");
+  SweepResult result;
+  const fs::path imageDir = o.outDir.empty() ? fs::path() : o.outDir / "images";
+  if (!imageDir.empty()) fs::create_directories(imageDir);
+
+  // The reference, cached.
+  const RayCaster caster(scene);
+  Image reference;
+  const fs::path cached = o.outDir.empty() ? fs::path() : o.outDir / ("reference-" + referenceKey(scene, camera, size, o) + ".exr");
+  if (!cached.empty() && fs::exists(cached)) {
+    reference = readImage(cached);
+    result.referenceCached = reference.width == size.widthPx && reference.height == size.heightPx;
+  }
+  if (!result.referenceCached) {
+    say(o, cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp, " spp"));
+    const auto t = std::chrono::steady_clock::now();
+    reference = caster.render(camera, size, RaycastOptions{o.referenceSpp, o.seed ^ 0x9e3779b9u});
+    result.referenceSeconds = secondsSince(t);
+    if (!cached.empty()) writeImage(cached, reference);
+  }
+
+  Renderer renderer(scene);
+  GatherDof gather;
+  // Occlusion edges from the pinhole depth; and a warm-up frame (first-frame shader JIT).
+  std::vector<float> zNdc = renderer.pinholeDepth(camera, size);
+  std::vector<double> depth(zNdc.size());
+  for (std::size_t i = 0; i < zNdc.size(); ++i) depth[i] = depthFromReverseZ(camera.view, zNdc[i]);
+  const std::vector<bool> edges = occlusionEdgeMask(camera, size, depth);
+  result.edgeFraction = static_cast<double>(std::count(edges.begin(), edges.end(), true)) / static_cast<double>(edges.size());
+  renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 2, 2, o.seed}), size);
+  (void)gather.apply(camera, renderer.renderPinhole(camera, size), 8);
+
+  // Raster and post-process frames are short and the machine is noisy: each is timed three times
+  // and the median kept (the image is the same every time: fixed seeds).
+  auto medianOf3 = [](const std::function<Image()>& frame, Image& image) {
+    double t[3];
+    for (double& ti : t) {
+      const auto start = std::chrono::steady_clock::now();
+      image = frame();
+      ti = secondsSince(start);
+    }
+    std::sort(std::begin(t), std::end(t));
+    return t[1];
+  };
+
+  auto record = [&](const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image) {
+    const ImageDifference d = compareImages(image, reference, 0.0);
+    result.rows.push_back({method, pattern, samples, seconds, d.rmse, d.psnrDb, d.maxAbs, maskedRmse(image, reference, edges)});
+    if (!imageDir.empty()) writeImage(imageDir / cat(method, "-", pattern, "-", samples, ".png"), image);
+  };
+
+  for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random}) {
+    const std::vector<int> budgets = pattern == AperturePattern::Lecture17 ? std::vector<int>{17} : doublings(o.maxViews);
+    for (int n : budgets) {
+      const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{pattern, n, n, o.seed});
+      Image image;
+      const double seconds = medianOf3([&] { return renderer.render(camera, plan, size); }, image);
+      record("raster", patternName(pattern), n, seconds, image);
+    }
+    say(o, cat("raster ", patternName(pattern), ": done"));
+  }
+  for (int spp : doublings(o.maxSpp)) {
+    const auto t = std::chrono::steady_clock::now();
+    const Image image = caster.render(camera, size, RaycastOptions{spp, o.seed});
+    record("raycast", "stratified", spp, secondsSince(t), image);
+  }
+  say(o, "raycast: done");
+  for (int taps : o.gatherTaps) {
+    Image image;
+    const double seconds = medianOf3([&] { return gather.apply(camera, renderer.renderPinhole(camera, size), taps); }, image);
+    record("postprocess", "gather", taps, seconds, image);
+  }
+  say(o, "postprocess: done");
+  return result;
+}
+
+std::string sweepCsv(const SweepResult& r) {
+  std::ostringstream s;
+  s.precision(8);
+  s << "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse\n";
+  for (const SweepRow& row : r.rows)
+    s << row.method << "," << row.pattern << "," << row.samples << "," << row.seconds << "," << row.rmse << ","
+      << row.psnr << "," << row.maxError << "," << row.edgeRmse << "\n";
+  return s.str();
+}
+
+std::string sweepMarkdown(const SweepResult& r, const std::string& header) {
+  std::map<std::string, std::vector<const SweepRow*>> series;
+  std::vector<std::string> order;
+  for (const SweepRow& row : r.rows) {
+    const std::string key = row.method + " " + row.pattern;
+    if (!series.count(key)) order.push_back(key);
+    series[key].push_back(&row);
+  }
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s << header << "\n";
+  s << "## Time to reach a PSNR (seconds; — where the largest budget does not reach it)\n\n";
+  s << "| method | 30 dB | 35 dB | 40 dB | best PSNR | edge RMSE at best | slope d log RMSE / d log N |\n|---|---|---|---|---|---|---|\n";
+  for (const std::string& key : order) {
+    const auto& rows = series[key];
+    s << "| " << key << " |";
+    for (double target : {30.0, 35.0, 40.0}) {
+      double best = -1.0;
+      for (const SweepRow* row : rows)
+        if (row->psnr >= target && (best < 0.0 || row->seconds < best)) best = row->seconds;
+      if (best < 0.0) s << " — |";
+      else s << " " << std::setprecision(4) << best << " |";
+    }
+    const SweepRow* top = rows.front();
+    for (const SweepRow* row : rows)
+      if (row->psnr > top->psnr) top = row;
+    s << " " << std::setprecision(1) << top->psnr << " dB (" << top->samples << ") | " << std::setprecision(4) << top->edgeRmse << " |";
+    // Least-squares slope of log RMSE against log samples (N = 1 included).
+    if (rows.size() >= 3) {
+      double sx = 0, sy = 0, sxx = 0, sxy = 0;
+      for (const SweepRow* row : rows) {
+        const double x = std::log(static_cast<double>(row->samples)), y = std::log(row->rmse);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+      }
+      const double n = static_cast<double>(rows.size());
+      s << " " << std::setprecision(2) << (n * sxy - sx * sy) / (n * sxx - sx * sx) << " |\n";
+    } else {
+      s << " — |\n";
+    }
+  }
+  s << "\n## All rows\n\n| method | pattern | samples | seconds | RMSE | PSNR (dB) | max error | edge RMSE |\n|---|---|---|---|---|---|---|---|\n";
+  for (const SweepRow& row : r.rows)
+    s << "| " << row.method << " | " << row.pattern << " | " << row.samples << " | " << std::setprecision(4) << row.seconds
+      << " | " << std::setprecision(5) << row.rmse << " | " << std::setprecision(2) << row.psnr << " | " << std::setprecision(4)
+      << row.maxError << " | " << std::setprecision(5) << row.edgeRmse << " |\n";
+  return s.str();
+}
+
+}  // namespace lenslab

@@ -1,0 +1,68 @@
+#pragma once
+// The error-against-run-time report: how fast each method converges to the ray-cast truth.
+//   reference   the ray caster at high spp (cached by a hash of scene, camera and options)
+//   raster      accumulation of aperture views, each pattern, N = 1, 2, 4, … (lecture17: 17)
+//   raycast     the ray caster at 1, 2, 4, … spp
+//   postprocess a single-pass gather depth of field from the pinhole colour and depth (baseline)
+// Every image is compared with the reference: RMSE, PSNR, max error, and the RMSE over occlusion
+// edges (pixels within their circle of confusion of a depth discontinuity).
+// Timing: GPU work finished (glFinish) and read back, the median of three runs for raster and
+// post-process frames (one run for the ray caster); context creation is measured apart by the
+// caller and reported in sweep.md; shader compilation happens before the rows (a warm-up frame).
+#include "camera/Camera.h"
+#include "camera/ImageSize.h"
+#include "core/Image.h"
+#include "scene/Scene.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+struct SweepOptions {
+  int referenceSpp = 1024;
+  int maxViews = 256;                 // raster budgets 1, 2, 4, … up to this
+  int maxSpp = 64;                    // ray-cast budgets 1, 2, 4, … up to this
+  std::vector<int> gatherTaps = {8, 32, 128};
+  std::uint32_t seed = 1;
+  std::filesystem::path outDir;       // empty: write nothing
+  std::function<void(const std::string&)> log;  // progress lines
+};
+
+struct SweepRow {
+  std::string method;   // raster, raycast, postprocess
+  std::string pattern;  // aperture pattern, "stratified" for raycast, "gather" for postprocess
+  int samples = 0;      // views, spp, taps
+  double seconds = 0.0;
+  double rmse = 0.0;
+  double psnr = 0.0;
+  double maxError = 0.0;
+  double edgeRmse = 0.0;
+};
+
+struct SweepResult {
+  std::vector<SweepRow> rows;
+  double referenceSeconds = 0.0;  // 0 when it came from the cache
+  bool referenceCached = false;
+  double edgeFraction = 0.0;      // share of pixels in the occlusion-edge mask
+};
+
+// Needs a current GL context (the caller creates it and times it). Throws InputError for a
+// pinhole camera: there is no depth of field to converge to.
+SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& options);
+
+// Pixels near a depth discontinuity lying within the local circle of confusion (radius capped at
+// 32 px), from a pinhole depth map in world units (rows from the top).
+std::vector<bool> occlusionEdgeMask(const Camera& camera, ImageSize size, const std::vector<double>& depth);
+
+double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask);
+
+// sweep.md: the rows' summary, the equal-error table (time to reach 30 / 35 / 40 dB) and the
+// convergence slope of each series (d log RMSE / d log samples).
+std::string sweepMarkdown(const SweepResult& result, const std::string& header);
+std::string sweepCsv(const SweepResult& result);
+
+}  // namespace lenslab

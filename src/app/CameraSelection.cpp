@@ -16,6 +16,18 @@ fs::path assetDirectory() {
   return LENSLAB_DEFAULT_ASSET_DIR;
 }
 
+SceneAndCamera resolveSceneAndCamera(const std::string& sceneArgument, const std::string& cameraArgument,
+                                     const std::string& defaultCamera) {
+  SceneAndCamera r;
+  r.scene = sceneArgument;
+  if (!cameraArgument.empty()) r.camera = cameraArgument;
+  if (r.scene.empty()) {
+    r.scene = assetDirectory() / "rows" / "rows.gltf";
+    if (!r.camera) r.camera = assetDirectory() / "rows" / defaultCamera;
+  }
+  return r;
+}
+
 PhysicalCamera autoFramingCamera(const Bounds& bounds) {
   PhysicalCamera c;
   const glm::dvec3 center = bounds.empty() ? glm::dvec3(0.0) : bounds.center();

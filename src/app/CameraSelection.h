@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 namespace lenslab {
 
@@ -22,6 +23,15 @@ SelectedCamera selectCamera(const Scene& scene, const std::optional<std::filesys
 // A 35 mm lens on a 36×24 mm sensor looking at the bounds' centre from the front and a little
 // above, far enough back that the bounding sphere fits the vertical field of view.
 PhysicalCamera autoFramingCamera(const Bounds& bounds);
+
+// The scene and camera files a command uses: with no scene, the bundled `rows` scene with its
+// camera file `defaultCamera` (e.g. "camera.json"); an explicit --camera always wins.
+struct SceneAndCamera {
+  std::filesystem::path scene;
+  std::optional<std::filesystem::path> camera;
+};
+SceneAndCamera resolveSceneAndCamera(const std::string& sceneArgument, const std::string& cameraArgument,
+                                     const std::string& defaultCamera);
 
 // Where the bundled assets are: LENSLAB_ASSET_DIR, else the source tree's assets/.
 std::filesystem::path assetDirectory();

@@ -110,14 +110,7 @@ int runRender(const RenderOptions& o) {
     throw InputError(cat("--stats ", o.statsFile, ": give a .json file name"));
   const PlanOptions planOptions = toPlanOptions(o.lens);
 
-  // No scene: the bundled default scene with its default camera.
-  fs::path scenePath = o.scene;
-  std::optional<fs::path> cameraPath;
-  if (!o.cameraFile.empty()) cameraPath = o.cameraFile;
-  if (scenePath.empty()) {
-    scenePath = assetDirectory() / "rows" / "rows.gltf";
-    if (!cameraPath) cameraPath = assetDirectory() / "rows" / "camera.json";
-  }
+  const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
 
   const Scene scene = loadGltf(scenePath);
   if (scene.triangleCount() == 0)

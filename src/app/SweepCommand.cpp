@@ -35,13 +35,7 @@ struct SweepCommandOptions {
 };
 
 int runSweepCommand(SweepCommandOptions& o) {
-  fs::path scenePath = o.scene;
-  std::optional<fs::path> cameraPath;
-  if (!o.cameraFile.empty()) cameraPath = o.cameraFile;
-  if (scenePath.empty()) {
-    scenePath = assetDirectory() / "rows" / "rows.gltf";
-    if (!cameraPath) cameraPath = assetDirectory() / "rows" / "camera-dof.json";
-  }
+  const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera-dof.json");
   const Scene scene = loadGltf(scenePath);
   const Camera camera = applyLensOptions(selectCamera(scene, cameraPath, 0.0).camera, o.lens);
   const ImageSize size = resolveImageSize(camera.view.window, o.width ? o.width : std::optional<int>(320), o.height);

@@ -60,7 +60,9 @@ int runSweepCommand(SweepCommandOptions& o) {
       "- renderer: ", context->renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
       "- reference: ray cast at ", o.sweep.referenceSpp, " spp",
       result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"), "\n",
-      "- GL context creation ", contextSeconds, " s, not in the rows; rows time the frame with the GPU finished and read back\n",
+      "- GL context creation ", contextSeconds, " s; scene upload, shader compilation and a warm-up frame ",
+      result.setupSeconds, " s; neither is in the rows, which time each frame with the GPU finished and read back ",
+      "(median of 3 for raster and post-process)\n",
       "- occlusion-edge pixels (within their circle of confusion of a depth step): ", result.edgeFraction * 100.0, " %\n",
       "- whole sweep: ", sweepSeconds, " s\n");
   writeTextFileAtomically(out / "sweep.csv", sweepCsv(result));

@@ -145,6 +145,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     if (!cached.empty()) writeImage(cached, reference);
   }
 
+  const auto setupStart = std::chrono::steady_clock::now();
   Renderer renderer(scene);
   GatherDof gather;
   // Occlusion edges from the pinhole depth; and a warm-up frame (first-frame shader JIT).
@@ -155,6 +156,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   result.edgeFraction = static_cast<double>(std::count(edges.begin(), edges.end(), true)) / static_cast<double>(edges.size());
   renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 2, 2, o.seed}), size);
   (void)gather.apply(camera, renderer.renderPinhole(camera, size), 8);
+  result.setupSeconds = secondsSince(setupStart);
 
   // Raster and post-process frames are short and the machine is noisy: each is timed three times
   // and the median kept (the image is the same every time: fixed seeds).

@@ -47,6 +47,7 @@ struct SweepResult {
   std::vector<SweepRow> rows;
   double referenceSeconds = 0.0;  // 0 when it came from the cache
   bool referenceCached = false;
+  double setupSeconds = 0.0;      // scene upload, shader compilation and a warm-up frame (not in rows)
   double edgeFraction = 0.0;      // share of pixels in the occlusion-edge mask
 };
 

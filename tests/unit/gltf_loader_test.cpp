@@ -1,110 +1,185 @@
-// The glTF loader over the Khronos sample models and the glTF-Validator's test files in
-// ../shared/gltf (skipped where that folder is absent), plus small files written here.
+// The glTF loader: over the Khronos sample models and the glTF-Validator's test files in the
+// shared folder (skipped where it is absent), and over small files written here that each test
+// one rule with a known answer.
 #include "core/Error.h"
+#include "core/Text.h"
 #include "scene/GltfLoader.h"
 
-#include <nlohmann/json.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
 
 namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
+using nlohmann::json;
 
+// ---- the shared test data ----
+
+// The environment variable wins over the path compiled in, so a build can be pointed elsewhere.
 fs::path sharedDirectory() {
   if (const char* env = std::getenv("LENSLAB_SHARED_DIR"); env && *env) return env;
   return LENSLAB_SHARED_DIR;
 }
 
-#define REQUIRE_SHARED(relative)                                                          \
-  const fs::path path = sharedDirectory() / (relative);                                    \
-  if (!fs::exists(path)) {                                                                 \
-    GTEST_SKIP() << path << " is absent (../shared holds the glTF test data)";             \
-  }                                                                                        \
-  static_assert(true)
+fs::path samplesDirectory() { return sharedDirectory() / "gltf/samples"; }
+fs::path invalidDirectory() { return sharedDirectory() / "gltf/invalid"; }
 
-Scene loadSample(const std::string& relative) {
-  return loadGltf(sharedDirectory() / "gltf/samples" / relative);
+#define SKIP_UNLESS_EXISTS(path)                                                              \
+  do {                                                                                        \
+    if (!fs::exists(path)) GTEST_SKIP() << (path) << " is absent (the shared glTF test data)"; \
+  } while (false)
+
+Scene loadSample(const std::string& relative) { return loadGltf(samplesDirectory() / relative); }
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-bool finiteBounds(const Bounds& b) {
+// ---- what every loaded scene and every refusal must satisfy ----
+
+bool finite(const Bounds& b) {
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(b.min[i]) || !std::isfinite(b.max[i])) return false;
   return true;
 }
 
-// ---- the sample models ----
-
-TEST(GltfSamples, EveryVariantLoadsOrIsRefusedWithOneLine) {
-  REQUIRE_SHARED("gltf/samples");
-  int loaded = 0, refused = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(path)) {
-    const std::string ext = entry.path().extension().string();
-    if (ext != ".gltf" && ext != ".glb") continue;
-    SCOPED_TRACE(entry.path().string());
-    try {
-      const Scene scene = loadGltf(entry.path());
-      ++loaded;
-      if (scene.triangleCount() > 0) {
-        EXPECT_TRUE(finiteBounds(scene.bounds));
-      }
-      for (const Instance& instance : scene.instances) {
-        ASSERT_GE(instance.mesh, 0);
-        ASSERT_LT(static_cast<std::size_t>(instance.mesh), scene.meshes.size());
-      }
-      for (const Mesh& mesh : scene.meshes) {
-        ASSERT_EQ(mesh.indices.size() % 3, 0u);
-        for (std::uint32_t i : mesh.indices) ASSERT_LT(i, mesh.vertices.size());
-        for (const Vertex& v : mesh.vertices) ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-3f);
-      }
-    } catch (const InputError& e) {
-      ++refused;
-      const std::string message = e.what();
-      EXPECT_FALSE(message.empty());
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+// Every index in range, every normal of unit length, images the size they say.
+void expectWellFormed(const Scene& scene) {
+  for (const Instance& instance : scene.instances) {
+    ASSERT_GE(instance.mesh, 0);
+    ASSERT_LT(static_cast<std::size_t>(instance.mesh), scene.meshes.size());
   }
-  EXPECT_GE(loaded, 50) << "most sample variants should load";
-  EXPECT_EQ(refused, 1) << "only the Draco box is expected to be refused";
+  for (const Mesh& mesh : scene.meshes) {
+    EXPECT_FALSE(mesh.indices.empty()) << mesh.name;
+    EXPECT_EQ(mesh.indices.size() % 3, 0u) << mesh.name;
+    for (const std::uint32_t i : mesh.indices) ASSERT_LT(i, mesh.vertices.size()) << mesh.name;
+    for (const Vertex& v : mesh.vertices) ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-3f) << mesh.name;
+    EXPECT_GE(mesh.material, -1);
+    EXPECT_LT(mesh.material, static_cast<int>(scene.materials.size()));
+  }
+  for (const Material& m : scene.materials) EXPECT_LT(m.baseColorTexture, static_cast<int>(scene.textures.size()));
+  for (const Texture& t : scene.textures) {
+    ASSERT_GE(t.image, 0);
+    EXPECT_LT(t.image, static_cast<int>(scene.images.size()));
+  }
+  for (const TextureImage& image : scene.images) {
+    EXPECT_GT(image.width, 0);
+    EXPECT_GT(image.height, 0);
+    EXPECT_EQ(image.rgba8.size(), static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4u);
+  }
+  if (scene.triangleCount() > 0) {
+    EXPECT_TRUE(finite(scene.bounds));
+  } else {
+    EXPECT_TRUE(scene.bounds.empty());
+  }
 }
 
-TEST(GltfSamples, DracoIsRefusedByName) {
-  REQUIRE_SHARED("gltf/samples/Box/glTF-Draco/Box.gltf");
+void expectOneLineNamingFile(const InputError& e, const fs::path& file) {
+  const std::string message = e.what();
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
+  EXPECT_GT(message.size(), file.string().size() + 4) << message;
+}
+
+// ---- every sample model variant ----
+
+std::vector<std::string> sampleFiles() {
+  std::vector<std::string> files;
+  std::error_code ec;
+  if (fs::is_directory(samplesDirectory(), ec))
+    for (const auto& entry : fs::recursive_directory_iterator(samplesDirectory(), ec)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext == ".gltf" || ext == ".glb") files.push_back(fs::relative(entry.path(), samplesDirectory()).string());
+    }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) files.push_back("");  // one case, which skips
+  return files;
+}
+
+std::string caseName(const std::string& path) {
+  std::string name;
+  for (const char c : path) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name.empty() ? std::string("absent") : name;
+}
+
+// The one sample that lenslab refuses, and the word its message must contain.
+const std::map<std::string, std::string> kRefusedSamples = {{"Box/glTF-Draco/Box.gltf", "KHR_draco_mesh_compression"}};
+
+class GltfSampleVariant : public testing::TestWithParam<std::string> {};
+
+TEST_P(GltfSampleVariant, LoadsWithTrianglesOrIsRefusedWithOneLine) {
+  if (GetParam().empty()) GTEST_SKIP() << samplesDirectory() << " is absent (the shared glTF test data)";
+  const fs::path file = samplesDirectory() / GetParam();
+  const auto refused = kRefusedSamples.find(GetParam());
   try {
-    loadGltf(path);
+    const Scene scene = loadGltf(file);
+    EXPECT_EQ(refused, kRefusedSamples.end()) << "loaded a file lenslab cannot draw";
+    EXPECT_GT(scene.triangleCount(), 0u) << "every sample model has triangles";
+    expectWellFormed(scene);
+  } catch (const InputError& e) {
+    ASSERT_NE(refused, kRefusedSamples.end()) << e.what();
+    expectOneLineNamingFile(e, file);
+    EXPECT_NE(std::string(e.what()).find(refused->second), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples, GltfSampleVariant, testing::ValuesIn(sampleFiles()),
+                         [](const testing::TestParamInfo<std::string>& info) { return caseName(info.param); });
+
+// ---- facts about particular samples ----
+
+TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
+  const fs::path file = samplesDirectory() / "Box/glTF-Draco/Box.gltf";
+  SKIP_UNLESS_EXISTS(file);
+  try {
+    loadGltf(file);
     FAIL() << "loaded a Draco-compressed file";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("KHR_draco_mesh_compression"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
+                                                      "does not support (supported: KHR_materials_unlit)");
   }
 }
 
-TEST(GltfSamples, KnownFacts) {
-  REQUIRE_SHARED("gltf/samples");
-  EXPECT_EQ(loadSample("Box/glTF/Box.gltf").triangleCount(), 12u);
-  EXPECT_EQ(loadSample("Box/glTF-Binary/Box.glb").triangleCount(), 12u);
-  EXPECT_EQ(loadSample("TriangleWithoutIndices/glTF/TriangleWithoutIndices.gltf").triangleCount(), 1u);
-  EXPECT_EQ(loadSample("MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf").triangleCount(), 16u)
-      << "triangles, strip and fan become 16 triangles; points and lines are left out";
-  // Two scenes; the default is scene 1 (two triangles), not scene 0 (one).
-  const Scene multiple = loadSample("MultipleScenes/glTF/MultipleScenes.gltf");
-  EXPECT_EQ(multiple.triangleCount(), 2u);
-  EXPECT_FALSE(multiple.notes.empty());
-  // Mesh reuse: one mesh, two instances.
-  const Scene simple = loadSample("SimpleMeshes/glTF/SimpleMeshes.gltf");
-  EXPECT_EQ(simple.meshes.size(), 1u);
-  EXPECT_EQ(simple.instances.size(), 2u);
-  EXPECT_EQ(loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf").triangleCount(), 12u);
-  EXPECT_EQ(loadSample("UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf").triangleCount(), 2u);
+TEST(GltfSamples, BoxHasTwelveTrianglesInEveryContainer) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "Box");
+  for (const char* file : {"Box/glTF/Box.gltf", "Box/glTF-Binary/Box.glb", "Box/glTF-Embedded/Box.gltf"}) {
+    const Scene scene = loadSample(file);
+    EXPECT_EQ(scene.triangleCount(), 12u) << file;
+    EXPECT_EQ(scene.materials.size(), 1u) << file;
+    EXPECT_NEAR(scene.bounds.size().x, 1.0, 1e-6) << file;
+  }
 }
 
-TEST(GltfSamples, Cameras) {
-  REQUIRE_SHARED("gltf/samples/Cameras/glTF/Cameras.gltf");
-  const Scene scene = loadGltf(path);
+TEST(GltfSamples, TriangleWithoutIndicesHasOneTriangle) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "TriangleWithoutIndices");
+  const Scene scene = loadSample("TriangleWithoutIndices/glTF/TriangleWithoutIndices.gltf");
+  EXPECT_EQ(scene.triangleCount(), 1u);
+  EXPECT_EQ(scene.meshes[0].material, -1) << "no material: glTF's default material";
+}
+
+TEST(GltfSamples, CamerasArePerspectiveAndOrthographicWithTheirValues) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "Cameras");
+  const Scene scene = loadSample("Cameras/glTF/Cameras.gltf");
   ASSERT_EQ(scene.cameras.size(), 2u);
   const SceneCamera& p = scene.cameras[0];
   EXPECT_TRUE(p.perspective);
@@ -117,228 +192,850 @@ TEST(GltfSamples, Cameras) {
   EXPECT_FALSE(o.perspective);
   EXPECT_DOUBLE_EQ(o.xmag, 1.0);
   EXPECT_DOUBLE_EQ(o.ymag, 1.0);
+  EXPECT_DOUBLE_EQ(o.znear, 0.01);
+  EXPECT_DOUBLE_EQ(o.zfar, 100.0);
+  EXPECT_EQ(glm::dvec3(o.worldFromCamera[3]), glm::dvec3(0.5, 0.5, 3.0));
 }
 
-TEST(GltfSamples, SparseSubstitutionIsApplied) {
-  REQUIRE_SHARED("gltf/samples/SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf");
-  const Scene scene = loadGltf(path);
+TEST(GltfSamples, MultipleScenesDrawsItsDefaultSceneOne) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "MultipleScenes");
+  const Scene scene = loadSample("MultipleScenes/glTF/MultipleScenes.gltf");
+  // Scene 0 holds a triangle (mesh 0), scene 1 a square of two triangles (mesh 1).
+  EXPECT_EQ(scene.triangleCount(), 2u);
   ASSERT_EQ(scene.meshes.size(), 1u);
-  // The sparse part moves vertices 8, 10 and 12 to (1, 2), (3, 3) and (5, 4).
-  for (const glm::vec3 expected : {glm::vec3(1, 2, 0), glm::vec3(3, 3, 0), glm::vec3(5, 4, 0)}) {
-    bool found = false;
-    for (const Vertex& v : scene.meshes[0].vertices) found |= glm::length(v.position - expected) < 1e-6f;
-    EXPECT_TRUE(found) << "no vertex at (" << expected.x << ", " << expected.y << ")";
-  }
-  EXPECT_DOUBLE_EQ(scene.bounds.max.y, 4.0);
+  bool noted = false;
+  for (const std::string& note : scene.notes) noted |= note.find("scene 1") != std::string::npos;
+  EXPECT_TRUE(noted);
 }
 
-TEST(GltfSamples, TexturesMaterialsAndColours) {
-  REQUIRE_SHARED("gltf/samples");
-  const Scene textured = loadSample("BoxTextured/glTF-Binary/BoxTextured.glb");
-  ASSERT_EQ(textured.textures.size(), 1u);
-  ASSERT_EQ(textured.images.size(), 1u);
-  EXPECT_EQ(textured.images[0].width, 256);
-  EXPECT_EQ(textured.images[0].height, 256);
-  EXPECT_EQ(textured.images[0].rgba8.size(), 256u * 256u * 4u);
-  ASSERT_EQ(textured.materials.size(), 1u);
-  EXPECT_EQ(textured.materials[0].baseColorTexture, 0);
+// Reads `count` elements of `size` bytes from a bufferView of the sample's .bin, independently
+// of the loader.
+std::vector<unsigned char> viewData(const json& gltf, const std::string& bin, int view, std::size_t byteOffset, std::size_t bytes) {
+  const json& v = gltf["bufferViews"][static_cast<std::size_t>(view)];
+  const std::size_t at = v.value("byteOffset", std::size_t{0}) + byteOffset;
+  return {bin.begin() + static_cast<std::ptrdiff_t>(at), bin.begin() + static_cast<std::ptrdiff_t>(at + bytes)};
+}
 
-  const Scene unlit = loadSample("UnlitTest/glTF/UnlitTest.gltf");
-  ASSERT_FALSE(unlit.materials.empty());
-  for (const Material& m : unlit.materials) EXPECT_TRUE(m.unlit) << m.name;
+TEST(GltfSamples, SparseAccessorValuesAreSubstituted) {
+  const fs::path file = samplesDirectory() / "SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf";
+  SKIP_UNLESS_EXISTS(file);
+  const json gltf = json::parse(readText(file));
+  const std::string bin = readText(file.parent_path() / gltf["buffers"][0]["uri"].get<std::string>());
+  const json& positions = gltf["accessors"][1];
+  const json& sparse = positions["sparse"];
+  ASSERT_EQ(sparse["indices"]["componentType"], 5123);
+  const auto count = sparse["count"].get<std::size_t>();
+  const auto targetBytes = viewData(gltf, bin, sparse["indices"]["bufferView"].get<int>(), sparse["indices"].value("byteOffset", 0u), count * 2);
+  const auto valueBytes = viewData(gltf, bin, sparse["values"]["bufferView"].get<int>(), sparse["values"].value("byteOffset", 0u), count * 12);
+  const auto indexBytes = viewData(gltf, bin, gltf["accessors"][0]["bufferView"].get<int>(), 0, 36 * 2);
 
-  const Scene colours = loadSample("VertexColorTest/glTF/VertexColorTest.gltf");
-  bool anyColoured = false;
-  for (const Mesh& m : colours.meshes) anyColoured |= m.hasVertexColors;
-  EXPECT_TRUE(anyColoured);
+  const Scene scene = loadGltf(file);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  // Without normals the triangles are unwelded: loaded vertex j is file vertex indices[j].
+  ASSERT_EQ(mesh.vertices.size(), 36u);
+  int checked = 0;
+  for (std::size_t s = 0; s < count; ++s) {
+    std::uint16_t target;
+    std::memcpy(&target, &targetBytes[s * 2], 2);
+    glm::vec3 value;
+    std::memcpy(glm::value_ptr(value), &valueBytes[s * 12], 12);
+    glm::vec3 base;
+    std::memcpy(glm::value_ptr(base), &bin[gltf["bufferViews"][1].value("byteOffset", 0u) + target * 12u], 12);
+    EXPECT_NE(value, base) << "the sparse value should differ from the base value it replaces";
+    for (std::size_t j = 0; j < 36; ++j) {
+      std::uint16_t original;
+      std::memcpy(&original, &indexBytes[j * 2], 2);
+      if (original != target) continue;
+      EXPECT_EQ(mesh.vertices[j].position, value) << "file vertex " << target;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+  EXPECT_DOUBLE_EQ(scene.bounds.max.y, 4.0) << "the substituted vertices raise the top to y = 4";
+}
 
-  const Scene alpha = loadSample("AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf");
-  int masks = 0;
-  for (const Material& m : alpha.materials) masks += m.alphaMode == AlphaMode::Mask;
-  EXPECT_GE(masks, 3);
+TEST(GltfSamples, BoxTexturedDecodesItsOneImage) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "BoxTextured");
+  for (const char* file : {"BoxTextured/glTF/BoxTextured.gltf", "BoxTextured/glTF-Binary/BoxTextured.glb",
+                           "BoxTextured/glTF-Embedded/BoxTextured.gltf"}) {
+    const Scene scene = loadSample(file);
+    ASSERT_EQ(scene.textures.size(), 1u) << file;
+    ASSERT_EQ(scene.images.size(), 1u) << file;
+    EXPECT_EQ(scene.images[0].width, 256) << file;
+    EXPECT_EQ(scene.images[0].height, 256) << file;
+    EXPECT_EQ(scene.images[0].rgba8.size(), 256u * 256u * 4u) << file;
+    EXPECT_EQ(scene.images[0].rgba8[3], 255) << "an opaque PNG gets alpha 255";
+    ASSERT_EQ(scene.materials.size(), 1u) << file;
+    EXPECT_EQ(scene.materials[0].baseColorTexture, 0) << file;
+  }
+}
+
+TEST(GltfSamples, UnlitTestMaterialsAreUnlit) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "UnlitTest");
+  for (const char* file : {"UnlitTest/glTF/UnlitTest.gltf", "UnlitTest/glTF-Binary/UnlitTest.glb"}) {
+    const Scene scene = loadSample(file);
+    ASSERT_FALSE(scene.materials.empty());
+    for (const Material& m : scene.materials) EXPECT_TRUE(m.unlit) << file << " " << m.name;
+  }
+}
+
+TEST(GltfSamples, VertexColorTestHasAColouredMesh) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "VertexColorTest");
+  const Scene scene = loadSample("VertexColorTest/glTF/VertexColorTest.gltf");
+  int coloured = 0, plain = 0;
+  for (const Mesh& m : scene.meshes) {
+    if (!m.hasVertexColors) {
+      ++plain;
+      continue;
+    }
+    ++coloured;
+    bool anyNotWhite = false;
+    for (const Vertex& v : m.vertices) {
+      anyNotWhite |= v.color != glm::vec4(1.0f);
+      for (int c = 0; c < 4; ++c) ASSERT_TRUE(v.color[c] >= 0.0f && v.color[c] <= 1.0f);
+    }
+    EXPECT_TRUE(anyNotWhite) << m.name;
+  }
+  EXPECT_EQ(coloured, 1);
+  EXPECT_EQ(plain, 1) << "the label mesh has no COLOR_0";
 }
 
 TEST(GltfSamples, MissingNormalsBecomeFlatUnitNormals) {
-  REQUIRE_SHARED("gltf/samples/Triangle/glTF/Triangle.gltf");
-  const Scene scene = loadGltf(path);
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "Triangle");
+  const Scene scene = loadSample("Triangle/glTF/Triangle.gltf");
   ASSERT_EQ(scene.meshes.size(), 1u);
-  for (const Vertex& v : scene.meshes[0].vertices) {
-    EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "the triangle lies in z = 0, counter-clockwise toward +z";
+  const Mesh& mesh = scene.meshes[0];
+  EXPECT_EQ(mesh.vertices.size(), mesh.indices.size()) << "flat normals unweld: three vertices per triangle";
+  for (const Vertex& v : mesh.vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "the triangle lies in z = 0, counter-clockwise seen from +z";
+}
+
+TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "BoxWithSpaces");
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "UnicodeTest");
+  const Scene spaces = loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf");
+  EXPECT_EQ(spaces.triangleCount(), 12u);
+  ASSERT_EQ(spaces.images.size(), 1u) << "the base colour image's %20-encoded URI resolves";
+  for (const char* file : {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
+    const Scene unicode = loadSample(file);
+    EXPECT_EQ(unicode.triangleCount(), 2u) << file;
+    EXPECT_EQ(unicode.images.size(), 1u) << file;
   }
 }
 
-// ---- the validator's test files ----
-
-TEST(GltfValidatorFiles, EachGetsTheVerdictItsReportImplies) {
-  REQUIRE_SHARED("gltf/invalid/expected.json");
-  std::ifstream in(path);
-  const nlohmann::json expected = nlohmann::json::parse(in);
-  ASSERT_GE(expected.size(), 50u);
-  int refused = 0;
-  for (const auto& entry : expected) {
-    const std::string file = entry["file"];
-    const int errors = entry["numErrors"];
-    SCOPED_TRACE(file + " (" + std::to_string(errors) + " errors)");
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      loadGltf(path.parent_path() / file);
-      EXPECT_EQ(errors, 0) << "loaded a file the validator finds errors in";
-    } catch (const InputError& e) {
-      ++refused;
-      const std::string message = e.what();
-      EXPECT_GT(message.size(), file.size() + 4) << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
-    // Not a timing claim: a generous bound that tells a hang from slowness.
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
-  }
-  EXPECT_GE(refused, 47);
+TEST(GltfSamples, PrimitiveModesKeepTrianglesStripsAndFans) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "MeshPrimitiveModes");
+  const Scene scene = loadSample("MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf");
+  EXPECT_EQ(scene.triangleCount(), 16u) << "triangles, strip and fan; points, lines and loops are left out";
+  bool noted = false;
+  for (const std::string& note : scene.notes) noted |= note.find("points and lines") != std::string::npos;
+  EXPECT_TRUE(noted);
 }
+
+TEST(GltfSamples, ReusedMeshIsOneMeshWithTwoInstances) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "SimpleMeshes");
+  const Scene scene = loadSample("SimpleMeshes/glTF/SimpleMeshes.gltf");
+  EXPECT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  EXPECT_NE(scene.instances[0].worldFromModel, scene.instances[1].worldFromModel);
+}
+
+TEST(GltfSamples, MaterialsKeepAlphaModesSamplersAndSides) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "AlphaBlendModeTest");
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "TextureSettingsTest");
+  const Scene alpha = loadSample("AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf");
+  std::vector<float> cutoffs;
+  int blends = 0;
+  for (const Material& m : alpha.materials) {
+    if (m.alphaMode == AlphaMode::Mask) cutoffs.push_back(m.alphaCutoff);
+    blends += m.alphaMode == AlphaMode::Blend;
+  }
+  EXPECT_NE(std::find(cutoffs.begin(), cutoffs.end(), 0.25f), cutoffs.end());
+  EXPECT_NE(std::find(cutoffs.begin(), cutoffs.end(), 0.75f), cutoffs.end());
+  EXPECT_NE(std::find(cutoffs.begin(), cutoffs.end(), 0.5f), cutoffs.end()) << "the default cutoff";
+  EXPECT_GE(blends, 1);
+
+  const Scene settings = loadSample("TextureSettingsTest/glTF/TextureSettingsTest.gltf");
+  std::vector<Wrap> wraps;
+  for (const Texture& t : settings.textures) wraps.insert(wraps.end(), {t.sampler.wrapS, t.sampler.wrapT});
+  for (const Wrap w : {Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat})
+    EXPECT_NE(std::find(wraps.begin(), wraps.end(), w), wraps.end()) << static_cast<int>(w);
+  int doubleSided = 0;
+  for (const Material& m : settings.materials) doubleSided += m.doubleSided;
+  EXPECT_GT(doubleSided, 0);
+  EXPECT_LT(doubleSided, static_cast<int>(settings.materials.size()));
+}
+
+TEST(GltfSamples, OnlyTheBaseColourImageOfAFullPbrMaterialIsDecoded) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "DamagedHelmet");
+  const Scene scene = loadSample("DamagedHelmet/glTF-Binary/DamagedHelmet.glb");  // five images in the file
+  EXPECT_EQ(scene.textures.size(), 1u);
+  EXPECT_EQ(scene.images.size(), 1u);
+  bool noted = false;
+  for (const std::string& note : scene.notes) noted |= note.find("normal, occlusion, emissive") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+TEST(GltfSamples, IgnoredFeaturesAreNoted) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "SimpleSkin");
+  const std::pair<const char*, const char*> cases[] = {
+      {"SimpleSkin/glTF/SimpleSkin.gltf", "skins are ignored"},
+      {"AnimatedTriangle/glTF/AnimatedTriangle.gltf", "animation"},
+      {"SimpleMorph/glTF/SimpleMorph.gltf", "morph targets"},
+      {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"},
+      {"TextureTransformTest/glTF/TextureTransformTest.gltf", "KHR_texture_transform"}};
+  for (const auto& [file, words] : cases) {
+    const Scene scene = loadSample(file);
+    bool noted = false;
+    for (const std::string& note : scene.notes) noted |= note.find(words) != std::string::npos;
+    EXPECT_TRUE(noted) << file << " should note " << words;
+  }
+}
+
+// ---- the glTF-Validator's test files ----
+
+struct ValidatorCase {
+  std::string file;  // relative to gltf/invalid; empty when the data is absent
+  int errors = 0;
+};
+
+void PrintTo(const ValidatorCase& c, std::ostream* out) { *out << c.file << " (" << c.errors << " errors)"; }
+
+std::vector<ValidatorCase> validatorCases() {
+  std::vector<ValidatorCase> cases;
+  const fs::path expected = invalidDirectory() / "expected.json";
+  if (fs::exists(expected)) {
+    const json entries = json::parse(readText(expected), nullptr, false);
+    if (entries.is_array())
+      for (const json& entry : entries) cases.push_back({entry.value("file", ""), entry.value("numErrors", 0)});
+  }
+  if (cases.empty()) cases.push_back({});
+  return cases;
+}
+
+// Every file with errors is refused: none needs an exception, so there is no allow-list. Files
+// without errors (warnings only) may load or be refused; lenslab refuses some of them because
+// tinygltf 2.7 cannot read them (a buffer without uri in a .gltf, an unknown accessor type) or
+// because lenslab reads no URLs (non_relative_uri).
+class GltfValidatorFile : public testing::TestWithParam<ValidatorCase> {};
+
+TEST_P(GltfValidatorFile, ErrorsAreRefusedWithOneLineAndNothingCrashesOrHangs) {
+  if (GetParam().file.empty()) GTEST_SKIP() << invalidDirectory() / "expected.json" << " is absent (the shared glTF test data)";
+  const fs::path file = invalidDirectory() / GetParam().file;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const Scene scene = loadGltf(file);
+    EXPECT_EQ(GetParam().errors, 0) << "loaded a file in which the validator finds errors";
+    expectWellFormed(scene);
+  } catch (const InputError& e) {
+    expectOneLineNamingFile(e, file);
+  }
+  // Not a timing claim: a generous bound that tells a hang from slowness.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Validator, GltfValidatorFile, testing::ValuesIn(validatorCases()),
+                         [](const testing::TestParamInfo<ValidatorCase>& info) { return caseName(info.param.file); });
 
 // ---- files written here ----
 
-class GltfWritten : public ::testing::Test {
+std::string base64(const std::string& in) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < in.size(); i += 3) {
+    const std::uint32_t b0 = static_cast<unsigned char>(in[i]);
+    const std::uint32_t b1 = i + 1 < in.size() ? static_cast<unsigned char>(in[i + 1]) : 0;
+    const std::uint32_t b2 = i + 2 < in.size() ? static_cast<unsigned char>(in[i + 2]) : 0;
+    const std::uint32_t n = (b0 << 16) | (b1 << 8) | b2;
+    out += table[(n >> 18) & 63];
+    out += table[(n >> 12) & 63];
+    out += i + 1 < in.size() ? table[(n >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? table[n & 63] : '=';
+  }
+  return out;
+}
+
+// Small PNGs (made with Python's zlib): 1x1 red, 2x1 green (both RGBA8), 2x1 16-bit grey
+// (0x8000, 0xFFFF).
+const char* kRedPng = "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR4nGP4z8DwHwAFAAH/iZk9HQAAAABJRU5ErkJggg==";
+const char* kGreenPng = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAYAAAD0In+KAAAADElEQVR4nGNg+A+BAA/5A/3YOXFBAAAAAElFTkSuQmCC";
+const char* kGrey16Png = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABEAAAAACB2fwVAAAADUlEQVR4nGNoYPj/HwAFAgJ/Fl7EZQAAAABJRU5ErkJggg==";
+
+constexpr int kFloat = 5126, kUByte = 5121, kUShort = 5123, kUInt = 5125;
+
+// Builds a glTF with one buffer: add views and accessors, then write it as .gltf (buffer in a
+// data: URI) or .glb (buffer in the BIN chunk).
+class GltfBuilder {
+ public:
+  json gltf = {{"asset", {{"version", "2.0"}}}};
+
+  int view(const void* data, std::size_t bytes, std::size_t stride = 0) {
+    while (bin_.size() % 4) bin_.push_back('\0');
+    json v = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", bytes}};
+    if (stride) v["byteStride"] = stride;
+    bin_.append(static_cast<const char*>(data), bytes);
+    return push("bufferViews", v);
+  }
+
+  template <class T>
+  int accessor(const std::vector<T>& values, int componentType, const char* type, std::size_t count, bool normalized = false) {
+    json a = {{"bufferView", view(values.data(), values.size() * sizeof(T))}, {"componentType", componentType}, {"count", count}, {"type", type}};
+    if (normalized) a["normalized"] = true;
+    return push("accessors", a);
+  }
+
+  // POSITION accessors need min and max.
+  int positions(const std::vector<glm::vec3>& p) {
+    std::vector<float> flat;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& v : p) {
+      flat.insert(flat.end(), {v.x, v.y, v.z});
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+    const int a = accessor(flat, kFloat, "VEC3", p.size());
+    gltf["accessors"][static_cast<std::size_t>(a)]["min"] = {lo.x, lo.y, lo.z};
+    gltf["accessors"][static_cast<std::size_t>(a)]["max"] = {hi.x, hi.y, hi.z};
+    return a;
+  }
+
+  int indices(const std::vector<std::uint16_t>& i) { return accessor(i, kUShort, "SCALAR", i.size()); }
+
+  // A mesh of one primitive, drawn by a new root node of scene 0; returns the node.
+  int drawnMesh(json primitive, const std::string& name = "m") {
+    const int mesh = push("meshes", {{"name", name}, {"primitives", json::array({primitive})}});
+    const int node = push("nodes", {{"mesh", mesh}});
+    if (!gltf.contains("scenes")) gltf["scenes"] = json::array({{{"nodes", json::array()}}});
+    gltf["scenes"][0]["nodes"].push_back(node);
+    return node;
+  }
+
+  int push(const char* collection, const json& item) {
+    gltf[collection].push_back(item);
+    return static_cast<int>(gltf[collection].size()) - 1;
+  }
+
+  fs::path writeGltf(const fs::path& file) {
+    json g = gltf;
+    if (!bin_.empty()) g["buffers"] = {{{"byteLength", bin_.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin_)}}};
+    std::ofstream(file, std::ios::binary) << g.dump();
+    return file;
+  }
+
+  // A GLB with the JSON, the BIN chunk, then `extra` chunks of other types.
+  std::string glb(const std::vector<std::pair<std::uint32_t, std::string>>& extra = {}) const {
+    json g = gltf;
+    std::string bin = bin_;
+    while (bin.size() % 4) bin.push_back('\0');
+    if (!bin.empty()) g["buffers"] = {{{"byteLength", bin_.size()}}};
+    std::string text = g.dump();
+    while (text.size() % 4) text.push_back(' ');
+    std::vector<std::pair<std::uint32_t, std::string>> chunks = {{0x4E4F534Au, text}};
+    if (!bin.empty()) chunks.emplace_back(0x004E4942u, bin);
+    chunks.insert(chunks.end(), extra.begin(), extra.end());
+    std::string body;
+    for (const auto& [type, data] : chunks) body += u32(data.size()) + u32(type) + data;
+    return "glTF" + u32(2) + u32(12 + body.size()) + body;
+  }
+
+ private:
+  static std::string u32(std::size_t v) {
+    std::string out;
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+    return out;
+  }
+
+  std::string bin_;
+};
+
+class GltfWritten : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lenslab-gltf-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = fs::temp_directory_path() /
+           ("lenslab-gltf-" + std::to_string(::getpid()) + "-" + testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // A one-buffer glTF whose buffer holds `floats` then `indices` as a data: URI.
-  fs::path write(nlohmann::json gltf, const std::vector<float>& floats, const std::vector<std::uint16_t>& indices = {}) {
-    std::string bytes(reinterpret_cast<const char*>(floats.data()), floats.size() * 4);
-    bytes.append(reinterpret_cast<const char*>(indices.data()), indices.size() * 2);
-    while (bytes.size() % 4) bytes.push_back('\0');
-    gltf["asset"] = {{"version", "2.0"}};
-    gltf["buffers"] = {{{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + base64(bytes)}}};
-    const fs::path file = dir_ / "scene.gltf";
-    std::ofstream(file) << gltf.dump();
-    return file;
-  }
+  Scene load(GltfBuilder& b) { return loadGltf(b.writeGltf(dir_ / "scene.gltf")); }
 
-  static std::string base64(const std::string& in) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < in.size(); i += 3) {
-      const std::uint32_t b0 = static_cast<unsigned char>(in[i]);
-      const std::uint32_t b1 = i + 1 < in.size() ? static_cast<unsigned char>(in[i + 1]) : 0;
-      const std::uint32_t b2 = i + 2 < in.size() ? static_cast<unsigned char>(in[i + 2]) : 0;
-      const std::uint32_t n = (b0 << 16) | (b1 << 8) | b2;
-      out += table[(n >> 18) & 63];
-      out += table[(n >> 12) & 63];
-      out += i + 1 < in.size() ? table[(n >> 6) & 63] : '=';
-      out += i + 2 < in.size() ? table[n & 63] : '=';
+  // The message of the InputError that loading throws ("" and a failure when it loads).
+  std::string refusal(GltfBuilder& b) {
+    const fs::path file = b.writeGltf(dir_ / "scene.gltf");
+    try {
+      loadGltf(file);
+    } catch (const InputError& e) {
+      expectOneLineNamingFile(e, file);
+      return e.what();
     }
-    return out;
+    ADD_FAILURE() << "loaded " << b.gltf.dump();
+    return "";
   }
 
-  // Four vertices of a unit square in z = 0 and the accessors for them (0: positions).
-  static nlohmann::json squareAccessors(std::size_t indexCount) {
-    return {{"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
-                             {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", indexCount * 2}}}},
-            {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
-                            {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
-                           {{"bufferView", 1}, {"componentType", 5123}, {"count", indexCount}, {"type", "SCALAR"}}}}};
+  fs::path writeBytes(const std::string& name, const std::string& bytes) {
+    std::ofstream(dir_ / name, std::ios::binary) << bytes;
+    return dir_ / name;
   }
-  static std::vector<float> square() { return {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}; }
 
-  static nlohmann::json primitive(int material = -1, int mode = 4) {
-    nlohmann::json p = {{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", mode}};
-    if (material >= 0) p["material"] = material;
-    return p;
-  }
-  static nlohmann::json mesh(const std::string& name, const nlohmann::json& prim) {
-    return {{"name", name}, {"primitives", nlohmann::json::array({prim})}};
+  static GltfBuilder square(std::vector<std::uint16_t> order = {0, 1, 2, 0, 2, 3}) {
+    GltfBuilder b;
+    const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    b.drawnMesh({{"attributes", {{"POSITION", p}}}, {"indices", b.indices(order)}});
+    return b;
   }
 
   fs::path dir_;
 };
 
-TEST_F(GltfWritten, StripsAndFansBecomeCounterClockwiseTriangles) {
-  for (int mode : {5, 6}) {
-    nlohmann::json g = squareAccessors(4);
-    g["meshes"] = nlohmann::json::array({mesh("m", primitive(-1, mode))});
-    g["nodes"] = {{{"mesh", 0}}};
-    g["scenes"] = {{{"nodes", {0}}}};
-    // Strip order 0 1 3 2 and fan order 0 1 2 3 both cover the square with two triangles.
-    const std::vector<std::uint16_t> order = mode == 5 ? std::vector<std::uint16_t>{0, 1, 3, 2} : std::vector<std::uint16_t>{0, 1, 2, 3};
-    const Scene scene = loadGltf(write(g, square(), order));
-    ASSERT_EQ(scene.triangleCount(), 2u) << "mode " << mode;
-    for (const Vertex& v : scene.meshes[0].vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "mode " << mode << ": a triangle is wound clockwise";
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+bool noted(const Scene& scene, const std::string& part) {
+  for (const std::string& note : scene.notes)
+    if (contains(note, part)) return true;
+  return false;
+}
+
+// -- files and containers
+
+TEST(GltfFiles, MissingFileIsOneLineNamingItAndTheReason) {
+  try {
+    loadGltf("/no/such/x.gltf");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "/no/such/x.gltf: cannot read file: No such file or directory");
   }
 }
 
-TEST_F(GltfWritten, NodeTransformsComposeMatrixAndTrs) {
-  nlohmann::json g = squareAccessors(6);
-  g["meshes"] = nlohmann::json::array({mesh("m", primitive())});
-  // parent: matrix translating by (10, 0, 0); child: rotate 90° about z, then scale 2, then move (0, 5, 0).
-  g["nodes"] = {{{"name", "parent"}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1}}, {"children", {1}}},
-                {{"name", "child"}, {"mesh", 0}, {"translation", {0, 5, 0}}, {"rotation", {0, 0, std::sqrt(0.5), std::sqrt(0.5)}}, {"scale", {2, 2, 2}}}};
-  g["scenes"] = {{{"nodes", {0}}}};
-  const Scene scene = loadGltf(write(g, square(), {0, 1, 2, 0, 2, 3}));
+TEST_F(GltfWritten, DirectoryIsRefused) {
+  try {
+    loadGltf(dir_);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_TRUE(contains(e.what(), "cannot read file: Is a directory")) << e.what();
+  }
+}
+
+TEST_F(GltfWritten, GlbIsRecognisedByMagicAndUnknownChunksAreIgnored) {
+  GltfBuilder b = square();
+  const Scene plain = loadGltf(writeBytes("plain.glb", b.glb()));
+  EXPECT_EQ(plain.triangleCount(), 2u);
+  const Scene extra = loadGltf(writeBytes("extra.glb", b.glb({{0x12345678u, std::string(8, 'x')}})));
+  EXPECT_EQ(extra.triangleCount(), 2u);
+  const Scene renamed = loadGltf(writeBytes("binary.gltf", b.glb()));  // the magic decides, not the name
+  EXPECT_EQ(renamed.triangleCount(), 2u);
+  EXPECT_THROW(loadGltf(writeBytes("text.glb", square().gltf.dump())), InputError);
+}
+
+TEST_F(GltfWritten, TruncatedGlbIsRefused) {
+  const std::string glb = square().glb();
+  for (const std::size_t keep : {std::size_t{0}, std::size_t{11}, std::size_t{12}, std::size_t{19}, glb.size() / 2, glb.size() - 4}) {
+    SCOPED_TRACE(keep);
+    EXPECT_THROW(loadGltf(writeBytes("cut.glb", glb.substr(0, keep))), InputError);
+  }
+}
+
+TEST_F(GltfWritten, DeeplyNestedJsonIsRefusedNotACrash) {
+  const std::string deep = R"({"asset":{"version":"2.0"},"extras":)" + std::string(100000, '[') + std::string(100000, ']') + "}";
+  try {
+    loadGltf(writeBytes("deep.gltf", deep));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_TRUE(contains(e.what(), "nests deeper")) << e.what();
+  }
+}
+
+// -- extensions
+
+TEST_F(GltfWritten, RequiredUnsupportedExtensionIsRefusedByName) {
+  GltfBuilder b = square();
+  b.gltf["extensionsUsed"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
+  b.gltf["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
+  const fs::path file = dir_ / "scene.gltf";
+  EXPECT_EQ(refusal(b), file.string() + ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
+                                        "(supported: KHR_materials_unlit)");
+  b.gltf["extensionsRequired"] = {"KHR_materials_unlit"};
+  const Scene scene = load(b);
+  EXPECT_TRUE(noted(scene, "EXT_meshopt_compression")) << "used but not required: a note";
+}
+
+// -- nodes
+
+TEST_F(GltfWritten, NodeLoopsAndSharedChildrenAreRefused) {
+  {
+    GltfBuilder b = square();  // node 0 draws the square; nodes 1 and 2 form a loop nobody draws
+    b.push("nodes", {{"children", {2}}});
+    b.push("nodes", {{"children", {1}}});
+    EXPECT_TRUE(contains(refusal(b), "loop"));
+  }
+  {
+    GltfBuilder b = square();
+    b.gltf["nodes"][0]["children"] = {0};
+    EXPECT_TRUE(contains(refusal(b), "loop"));
+  }
+  {
+    GltfBuilder b = square();  // node 0 is a child of nodes 1 and 2
+    b.push("nodes", {{"children", {0}}});
+    b.push("nodes", {{"children", {0}}});
+    b.gltf["scenes"][0]["nodes"] = {1, 2};
+    EXPECT_TRUE(contains(refusal(b), "at most one parent"));
+  }
+  {
+    GltfBuilder b = square();
+    b.gltf["nodes"][0]["children"] = {7};
+    EXPECT_TRUE(contains(refusal(b), "node 7, which does not exist"));
+  }
+}
+
+TEST_F(GltfWritten, TrsAndMatrixGiveTheSameTransform) {
+  const glm::dvec3 t(1, -2, 3), s(2, 3, 0.5);
+  const glm::dquat q = glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3)));
+  const glm::dmat4 expected = glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), s);
+  GltfBuilder b = square();
+  b.gltf["nodes"][0]["translation"] = {t.x, t.y, t.z};
+  b.gltf["nodes"][0]["rotation"] = {q.x, q.y, q.z, q.w};
+  b.gltf["nodes"][0]["scale"] = {s.x, s.y, s.z};
+  const int asMatrix = b.push("nodes", {{"mesh", 0}, {"matrix", std::vector<double>(glm::value_ptr(expected), glm::value_ptr(expected) + 16)}});
+  b.gltf["scenes"][0]["nodes"].push_back(asMatrix);
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      EXPECT_NEAR(scene.instances[0].worldFromModel[c][r], expected[c][r], 1e-12) << "TRS, column " << c << " row " << r;
+      EXPECT_NEAR(scene.instances[1].worldFromModel[c][r], expected[c][r], 1e-12) << "matrix, column " << c << " row " << r;
+    }
+}
+
+TEST_F(GltfWritten, HierarchyComposesParentThenChild) {
+  GltfBuilder b = square();
+  // child (node 0): rotate 90 degrees about z, scale 2, move (0, 5, 0); parent: matrix moving (10, 0, 0).
+  b.gltf["nodes"][0]["translation"] = {0, 5, 0};
+  b.gltf["nodes"][0]["rotation"] = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+  b.gltf["nodes"][0]["scale"] = {2, 2, 2};
+  b.push("nodes", {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1}}, {"children", {0}}});
+  b.gltf["scenes"][0]["nodes"] = {1};
+  const Scene scene = load(b);
   ASSERT_EQ(scene.instances.size(), 1u);
-  const glm::dvec3 p = glm::dvec3(scene.instances[0].worldFromModel * glm::dvec4(1, 0, 0, 1));
-  EXPECT_NEAR(p.x, 10.0, 1e-12);  // (1,0,0) scaled → (2,0,0), rotated → (0,2,0), moved → (0,7,0), parent → (10,7,0)
+  // (1, 0, 0) → scaled (2, 0, 0) → rotated (0, 2, 0) → moved (0, 7, 0) → parent (10, 7, 0).
+  const glm::dvec3 p(scene.instances[0].worldFromModel * glm::dvec4(1, 0, 0, 1));
+  EXPECT_NEAR(p.x, 10.0, 1e-12);
   EXPECT_NEAR(p.y, 7.0, 1e-12);
   EXPECT_NEAR(scene.bounds.min.x, 8.0, 1e-9);
+  EXPECT_NEAR(scene.bounds.max.x, 10.0, 1e-9);
   EXPECT_NEAR(scene.bounds.max.y, 7.0, 1e-9);
 }
 
-TEST_F(GltfWritten, NodeLoopIsRefused) {
-  nlohmann::json g = squareAccessors(6);
-  g["nodes"] = {{{"name", "a"}, {"children", {1}}}, {{"name", "b"}, {"children", {0}}}};
-  g["scenes"] = {{{"nodes", {0}}}};
-  try {
-    loadGltf(write(g, square(), {0, 1, 2, 0, 2, 3}));
-    FAIL() << "loaded a node loop";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("loop"), std::string::npos) << e.what();
-  }
+TEST_F(GltfWritten, WithoutScenesEveryRootNodeIsDrawn) {
+  GltfBuilder b = square();
+  b.gltf.erase("scenes");
+  b.push("nodes", {{"mesh", 0}, {"translation", {5, 0, 0}}});
+  const Scene scene = load(b);
+  EXPECT_EQ(scene.instances.size(), 2u);
+  EXPECT_EQ(scene.meshes.size(), 1u);
 }
 
-TEST_F(GltfWritten, OnlyWhatTheSceneUsesIsKept) {
-  nlohmann::json g = squareAccessors(6);
-  g["materials"] = {{{"name", "unused"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}},
-                    {{"name", "used"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0, 1, 0, 1}}}}}};
-  g["meshes"] = nlohmann::json::array({mesh("drawn", primitive(1)), mesh("not drawn", primitive(0))});
-  g["nodes"] = {{{"mesh", 0}}, {{"mesh", 1}}};
-  g["scenes"] = {{{"nodes", {0}}}, {{"nodes", {1}}}};
-  g["scene"] = 0;
-  const Scene scene = loadGltf(write(g, square(), {0, 1, 2, 0, 2, 3}));
+// -- primitives
+
+// The triangles of a mesh loaded without normals, as the numbers of the file's vertices (found
+// by position: the positions written are distinct).
+std::vector<std::array<int, 3>> trianglesAsFileVertices(const Mesh& mesh, const std::vector<glm::vec3>& file) {
+  std::vector<std::array<int, 3>> out;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    std::array<int, 3> tri{};
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 p = mesh.vertices[mesh.indices[t + static_cast<std::size_t>(k)]].position;
+      tri[static_cast<std::size_t>(k)] = static_cast<int>(std::find(file.begin(), file.end(), p) - file.begin());
+    }
+    out.push_back(tri);
+  }
+  return out;
+}
+
+TEST_F(GltfWritten, StripsAndFansBecomeListsInTheSpecOrder) {
+  // Both outlines are laid out so that every triangle the spec defines is counter-clockwise from +z.
+  const std::vector<glm::vec3> strip = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 2, 0}};
+  const std::vector<glm::vec3> fan = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0, 0}};
+  struct Case {
+    int mode;
+    const std::vector<glm::vec3>* positions;
+    std::vector<std::array<int, 3>> expected;
+  };
+  const Case cases[] = {{5, &strip, {{0, 1, 2}, {1, 3, 2}, {2, 3, 4}}}, {6, &fan, {{1, 2, 0}, {2, 3, 0}, {3, 4, 0}}}};
+  for (const Case& c : cases)
+    for (const int indexType : {0, kUByte, kUShort, kUInt}) {
+      SCOPED_TRACE(cat("mode ", c.mode, ", index componentType ", indexType));
+      GltfBuilder b;
+      json primitive = {{"attributes", {{"POSITION", b.positions(*c.positions)}}}, {"mode", c.mode}};
+      if (indexType == kUByte) primitive["indices"] = b.accessor(std::vector<std::uint8_t>{0, 1, 2, 3, 4}, kUByte, "SCALAR", 5);
+      if (indexType == kUShort) primitive["indices"] = b.indices({0, 1, 2, 3, 4});
+      if (indexType == kUInt) primitive["indices"] = b.accessor(std::vector<std::uint32_t>{0, 1, 2, 3, 4}, kUInt, "SCALAR", 5);
+      b.drawnMesh(primitive);
+      const Scene scene = load(b);
+      ASSERT_EQ(scene.meshes.size(), 1u);
+      EXPECT_EQ(trianglesAsFileVertices(scene.meshes[0], *c.positions), c.expected);
+      for (const Vertex& v : scene.meshes[0].vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "a triangle is wound clockwise";
+    }
+}
+
+TEST_F(GltfWritten, PointsLinesAndPrimitivesWithoutPositionAreLeftOutWithANote) {
+  GltfBuilder b;
+  const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  b.drawnMesh({{"attributes", {{"POSITION", p}}}, {"mode", 0}});
+  b.drawnMesh({{"attributes", {{"POSITION", p}}}, {"mode", 1}});
+  b.drawnMesh({{"attributes", json::object({{"TEXCOORD_0", b.accessor(std::vector<float>(6, 0.0f), kFloat, "VEC2", 3)}})}});
+  const Scene scene = load(b);
+  EXPECT_EQ(scene.triangleCount(), 0u);
+  EXPECT_TRUE(scene.bounds.empty()) << "a scene without triangles loads, with empty bounds";
+  EXPECT_TRUE(noted(scene, "points and lines"));
+  EXPECT_TRUE(noted(scene, "no POSITION"));
+}
+
+TEST_F(GltfWritten, MeshNamesCountPrimitivesAndMissingMaterialIsTheDefault) {
+  GltfBuilder b;
+  const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  const json prim = {{"attributes", {{"POSITION", p}}}};
+  const int mesh = b.push("meshes", {{"name", "pair"}, {"primitives", {prim, prim}}});
+  b.push("nodes", {{"mesh", mesh}});
+  b.push("scenes", {{"nodes", {0}}});
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  EXPECT_EQ(scene.meshes[0].name, "pair#0");
+  EXPECT_EQ(scene.meshes[1].name, "pair#1");
+  EXPECT_EQ(scene.meshes[0].material, -1);
+  EXPECT_EQ(scene.instances.size(), 2u) << "one instance per (node, primitive)";
+}
+
+TEST_F(GltfWritten, IndexBeyondTheVerticesIsRefused) {
+  GltfBuilder b = square({0, 1, 9});
+  EXPECT_TRUE(contains(refusal(b), "not below the vertex count 4"));
+}
+
+TEST_F(GltfWritten, AccessorBeyondItsBufferViewIsRefused) {
+  GltfBuilder b = square();
+  b.gltf["accessors"][0]["count"] = 5;  // 5 vertices of 12 bytes in a 48-byte view
+  const std::string message = refusal(b);
+  EXPECT_TRUE(contains(message, "accessor 0: byteOffset + count*stride exceeds bufferView 0")) << message;
+  EXPECT_TRUE(contains(message, "length 48")) << message;
+}
+
+TEST_F(GltfWritten, InterleavedAttributesAreReadThroughTheirStride) {
+  // position (3 floats) and colour (4 normalised bytes) per vertex: a 16-byte stride.
+  struct Packed {
+    float position[3];
+    std::uint8_t color[4];
+  };
+  const std::vector<Packed> data = {{{0, 0, 0}, {255, 0, 0, 255}}, {{1, 0, 0}, {0, 255, 0, 255}}, {{0, 1, 0}, {0, 0, 255, 51}}};
+  GltfBuilder b;
+  const int v = b.view(data.data(), data.size() * sizeof(Packed), sizeof(Packed));
+  const int p = b.push("accessors", {{"bufferView", v}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {1, 1, 0}}});
+  const int c = b.push("accessors", {{"bufferView", v}, {"byteOffset", 12}, {"componentType", kUByte}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
+  b.drawnMesh({{"attributes", {{"POSITION", p}, {"COLOR_0", c}}}});
+  const Scene scene = load(b);
   ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  EXPECT_TRUE(mesh.hasVertexColors);
+  ASSERT_EQ(mesh.vertices.size(), 3u);
+  EXPECT_EQ(mesh.vertices[1].position, glm::vec3(1, 0, 0));
+  EXPECT_EQ(mesh.vertices[0].color, glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(mesh.vertices[2].color, glm::vec4(0, 0, 1, 0.2f));
+}
+
+TEST_F(GltfWritten, AttributesMustHaveAGltfFormat) {
+  {
+    GltfBuilder b = square();  // COLOR_0 of bytes that are not normalised
+    b.gltf["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = b.accessor(std::vector<std::uint8_t>(12, 255), kUByte, "VEC3", 4);
+    const std::string message = refusal(b);
+    EXPECT_TRUE(contains(message, "COLOR_0 (accessor 2) is VEC3 of UNSIGNED_BYTE; it must be VEC3/VEC4 of FLOAT or of normalized")) << message;
+  }
+  {
+    GltfBuilder b = square();  // normalised 16-bit texture coordinates are fine
+    b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
+        b.accessor(std::vector<std::uint16_t>{0, 0, 65535, 0, 65535, 65535, 0, 65535}, kUShort, "VEC2", 4, true);
+    const Scene scene = load(b);
+    EXPECT_EQ(scene.meshes[0].vertices[scene.meshes[0].indices[2]].uv, glm::vec2(1, 1));
+  }
+  {
+    GltfBuilder b = square();  // NORMAL with a count other than POSITION's
+    b.gltf["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3);
+    EXPECT_TRUE(contains(refusal(b), "all must have the same count"));
+  }
+}
+
+TEST_F(GltfWritten, SparseAccessorsAreSubstitutedAndChecked) {
+  // Three vertices, all zero but for the sparse substitution of vertices 1 and 2.
+  auto build = [](std::vector<std::uint16_t> targets) {
+    GltfBuilder b;
+    const std::vector<float> values = {1, 0, 0, 0, 1, 0};
+    const int p = b.push("accessors", {{"componentType", kFloat}, {"count", 3}, {"type", "VEC3"},
+                                       {"sparse", {{"count", 2},
+                                                   {"indices", {{"bufferView", b.view(targets.data(), 4)}, {"componentType", kUShort}}},
+                                                   {"values", {{"bufferView", b.view(values.data(), 24)}}}}}});
+    b.drawnMesh({{"attributes", {{"POSITION", p}}}});
+    return b;
+  };
+  GltfBuilder good = build({1, 2});
+  const Scene scene = load(good);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].vertices[1].position, glm::vec3(1, 0, 0));
+  EXPECT_EQ(scene.meshes[0].vertices[2].position, glm::vec3(0, 1, 0));
+  GltfBuilder beyond = build({1, 3});
+  EXPECT_TRUE(contains(refusal(beyond), "sparse index 3 is not below the accessor's count (3)"));
+  GltfBuilder unordered = build({2, 1});
+  EXPECT_TRUE(contains(refusal(unordered), "strictly increase"));
+}
+
+TEST_F(GltfWritten, DeclaredMinMaxMustHoldTheData) {
+  GltfBuilder b = square();
+  b.gltf["accessors"][0]["max"] = {1, 0.5, 0};
+  EXPECT_TRUE(contains(refusal(b), "above the declared max 0.5"));
+}
+
+// -- materials, textures, images
+
+TEST_F(GltfWritten, OnlyUsedMaterialsTexturesAndImagesAreKeptAndReindexed) {
+  GltfBuilder b = square();
+  const json tex = {{"index", 0}};
+  b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}, {{"uri", std::string("data:image/png;base64,") + kGreenPng}}};
+  b.gltf["samplers"] = {{{"wrapS", 33071}, {"magFilter", 9728}}};
+  b.gltf["textures"] = {{{"source", 0}}, {{"source", 1}, {"sampler", 0}}};
+  b.gltf["materials"] = {{{"name", "unused"}},
+                         {{"name", "drawn"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 1}}, {"baseColorTexture", {{"index", 1}}}}}},
+                         {{"name", "other scene"}, {"pbrMetallicRoughness", {{"baseColorTexture", tex}}}}};
+  b.gltf["meshes"][0]["primitives"][0]["material"] = 1;
+  // A second scene, not drawn, uses material 2 (and so texture 0 and image 0).
+  b.push("meshes", {{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"material", 2}}}}});
+  b.push("nodes", {{"mesh", 1}});
+  b.push("scenes", {{"nodes", {1}}});
+  b.gltf["scene"] = 0;
+  const Scene scene = load(b);
   ASSERT_EQ(scene.materials.size(), 1u);
-  EXPECT_EQ(scene.materials[0].name, "used");
+  EXPECT_EQ(scene.materials[0].name, "drawn");
+  EXPECT_EQ(scene.materials[0].baseColorFactor, glm::vec4(0.5f, 1, 1, 1));
   EXPECT_EQ(scene.meshes[0].material, 0);
+  ASSERT_EQ(scene.textures.size(), 1u);
+  EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+  EXPECT_EQ(scene.textures[0].sampler.wrapS, Wrap::ClampToEdge);
+  EXPECT_EQ(scene.textures[0].sampler.wrapT, Wrap::Repeat);
+  EXPECT_EQ(scene.textures[0].sampler.magFilter, Filter::Nearest);
+  EXPECT_EQ(scene.textures[0].sampler.minFilter, Filter::LinearMipmapLinear) << "undefined: Scene.h's default";
+  ASSERT_EQ(scene.images.size(), 1u);
+  EXPECT_EQ(scene.textures[0].image, 0);
+  EXPECT_EQ(scene.images[0].width, 2) << "the green image, not the red one";
+  EXPECT_EQ(std::vector<std::uint8_t>(scene.images[0].rgba8.begin(), scene.images[0].rgba8.begin() + 4), (std::vector<std::uint8_t>{0, 255, 0, 255}));
 }
 
-TEST_F(GltfWritten, UnsupportedRequiredExtensionIsNamed) {
-  nlohmann::json g = squareAccessors(6);
-  g["extensionsUsed"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
-  g["extensionsRequired"] = {"EXT_meshopt_compression"};
-  try {
-    loadGltf(write(g, square(), {0, 1, 2, 0, 2, 3}));
-    FAIL() << "loaded a file requiring an unsupported extension";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("EXT_meshopt_compression"), std::string::npos) << e.what();
+TEST_F(GltfWritten, SixteenBitGreyImagesBecomeRgba8) {
+  GltfBuilder b = square();
+  b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kGrey16Png}}};
+  b.gltf["textures"] = {{{"source", 0}}};
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.images.size(), 1u);
+  EXPECT_EQ(scene.images[0].rgba8, (std::vector<std::uint8_t>{128, 128, 128, 255, 255, 255, 255, 255}));
+}
+
+TEST_F(GltfWritten, BaseColourFromAnotherUvSetIsLeftOutWithANote) {
+  GltfBuilder b = square();
+  b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
+  b.gltf["textures"] = {{{"source", 0}}};
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}, {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
+  b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_TRUE(scene.materials[0].unlit);
+  EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+  EXPECT_TRUE(scene.images.empty());
+  EXPECT_TRUE(noted(scene, "TEXCOORD_1"));
+}
+
+TEST_F(GltfWritten, BrokenImagesAreRefusedNamingThem) {
+  {
+    GltfBuilder b = square();  // cut off in the middle: found without decoding, used or not
+    const std::string png(kRedPng);
+    b.gltf["images"] = {{{"name", "cut"}, {"uri", "data:image/png;base64," + png.substr(0, 40)}}};
+    EXPECT_TRUE(contains(refusal(b), "image 0 \"cut\": PNG data ends before its IEND chunk"));
+  }
+  {
+    GltfBuilder b = square();  // a used image that is no image at all
+    b.gltf["images"] = {{{"name", "text"}, {"uri", "data:image/png;base64," + base64("not an image")}}};
+    b.gltf["textures"] = {{{"source", 0}}};
+    b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
+    EXPECT_TRUE(contains(refusal(b), "image 0 \"text\": neither PNG nor JPEG"));
   }
 }
 
-TEST_F(GltfWritten, IndexOutOfRangeIsRefused) {
-  nlohmann::json g = squareAccessors(3);
-  g["meshes"] = nlohmann::json::array({mesh("m", primitive())});
-  g["nodes"] = {{{"mesh", 0}}};
-  g["scenes"] = {{{"nodes", {0}}}};
-  EXPECT_THROW(loadGltf(write(g, square(), {0, 1, 9})), InputError);
+TEST_F(GltfWritten, MaterialValuesMustBeValid) {
+  GltfBuilder b = square();
+  b.gltf["materials"] = {{{"name", "m"}, {"alphaMode", "SOMETIMES"}}};
+  EXPECT_TRUE(contains(refusal(b), "material 0 \"m\": alphaMode \"SOMETIMES\" must be OPAQUE, MASK or BLEND"));
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 2, 1, 1}}}}}};
+  EXPECT_TRUE(contains(refusal(b), "baseColorFactor[1] is 2"));
 }
 
-TEST(GltfFiles, MissingFileIsOneLineNamingIt) {
-  try {
-    loadGltf("/no/such/scene.gltf");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/no/such/scene.gltf"), std::string::npos);
+// -- cameras
+
+TEST_F(GltfWritten, CamerasTakeTheirNodesPlaceAndDefaults) {
+  GltfBuilder b = square();
+  b.gltf["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}};
+  b.gltf["nodes"][0]["camera"] = 0;
+  b.gltf["nodes"][0]["translation"] = {1, 2, 3};
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.cameras.size(), 1u);
+  EXPECT_EQ(scene.cameras[0].aspectRatio, 0.0) << "absent";
+  EXPECT_EQ(scene.cameras[0].zfar, std::numeric_limits<double>::infinity()) << "absent";
+  EXPECT_EQ(glm::dvec3(scene.cameras[0].worldFromCamera[3]), glm::dvec3(1, 2, 3));
+}
+
+TEST_F(GltfWritten, BadCameraValuesAreRefusedNamingCameraAndField) {
+  const std::pair<json, std::string> cases[] = {
+      {{{"name", "eye"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.0}, {"znear", 0.1}}}}, "camera 0 \"eye\": yfov is 0"},
+      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", -1.0}}}}, "camera 0: znear is -1"},
+      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 1.0}, {"zfar", 0.5}}}}, "zfar 0.5 must be greater than znear 1"},
+      {{{"type", "orthographic"}, {"orthographic", {{"xmag", -1.0}, {"ymag", 1.0}, {"znear", 0.0}, {"zfar", 10.0}}}}, "camera 0: xmag is -1"},
+  };
+  for (const auto& [camera, expected] : cases) {
+    GltfBuilder b = square();
+    b.gltf["cameras"] = {camera};
+    b.gltf["nodes"][0]["camera"] = 0;
+    const std::string message = refusal(b);
+    EXPECT_TRUE(contains(message, expected)) << message;
   }
+}
+
+// -- robustness
+
+// Fixed-seed mutations of a small textured GLB (bytes flipped, or the file cut short): each must
+// load or be refused with an InputError, never crash (run under ASan/UBSan to mean it).
+TEST_F(GltfWritten, MutatedFilesLoadOrAreRefusedNeverCrash) {
+  GltfBuilder b = square();
+  b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kGreenPng}}};
+  b.gltf["textures"] = {{{"source", 0}}};
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
+  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
+  const std::string original = b.glb();
+  std::mt19937 random(20240601);
+  int loaded = 0, refused = 0;
+  for (int i = 0; i < 400; ++i) {
+    std::string bytes = original;
+    if (i % 4 == 3) {
+      bytes.resize(std::uniform_int_distribution<std::size_t>(0, bytes.size() - 1)(random));
+    } else {
+      for (int flips = 1 + i % 3; flips > 0; --flips)
+        bytes[std::uniform_int_distribution<std::size_t>(0, bytes.size() - 1)(random)] =
+            static_cast<char>(std::uniform_int_distribution<int>(0, 255)(random));
+    }
+    try {
+      const Scene scene = loadGltf(writeBytes("mutated.glb", bytes));
+      expectWellFormed(scene);
+      ++loaded;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+      ++refused;
+    }
+  }
+  EXPECT_EQ(loaded + refused, 400);
 }
 
 }  // namespace

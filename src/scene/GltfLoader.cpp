@@ -22,6 +22,7 @@
 #include <optional>
 #include <span>
 #include <sstream>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -39,8 +40,8 @@ using Bytes = std::span<const unsigned char>;
 // hundred thousand levels deep overflows the stack. Real files nest fewer than 20 levels.
 constexpr int kMaxJsonDepth = 512;
 // An accessor without a bufferView is zeros plus its sparse values: nothing in the file bounds
-// its count, so a typo could ask for gigabytes.
-constexpr std::size_t kMaxUnbackedElements = std::size_t{1} << 22;
+// its count, so a typo could ask for gigabytes. This many components (128 MiB as doubles).
+constexpr std::size_t kMaxUnbackedComponents = std::size_t{1} << 24;
 // Decoded images: per side, GL_MAX_TEXTURE_SIZE of common GPUs; in all, so that tinygltf 2.7
 // (which sizes its copy of the pixels in int) cannot overflow on 16-bit RGBA.
 constexpr std::uint32_t kMaxImageSide = 16384;
@@ -205,6 +206,7 @@ std::string readFile(const fs::path& file) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
   if (!f) refuse("cannot read file: ", std::strerror(errno));
   std::string bytes;
+  if (const auto size = fs::file_size(file, ec); !ec) bytes.reserve(static_cast<std::size_t>(size));
   char chunk[1 << 16];
   while (const std::size_t n = std::fread(chunk, 1, sizeof chunk, f.get())) bytes.append(chunk, n);
   if (std::ferror(f.get())) refuse("cannot read file: ", std::strerror(errno));
@@ -256,12 +258,14 @@ GlbChunks splitGlb(std::string_view bytes) {
 }
 
 // tinygltf 2.7 takes the chunk after the JSON for BIN whatever its type and stops there. It gets
-// a GLB of the JSON and BIN chunks only, so that unknown chunks are ignored as the spec asks.
-std::string glbForTinygltf(const GlbChunks& chunks) {
+// a GLB of the JSON and BIN chunks only, so that unknown chunks are ignored as the spec asks
+// (empty when the file is just that already, to spare a copy of a large file).
+std::string glbForTinygltf(const GlbChunks& chunks, std::size_t fileSize) {
   auto u32 = [](std::string& out, std::size_t v) {
     for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
   };
   const std::size_t total = 12 + 8 + chunks.json.size() + (chunks.bin ? 8 + chunks.bin->size() : 0);
+  if (total == fileSize) return {};
   std::string glb = "glTF";
   u32(glb, 2);
   u32(glb, total);
@@ -324,6 +328,20 @@ bool hasUriScheme(const std::string& uri) {
   return false;
 }
 
+// root[key] when it is an array, else an empty array (no copy: buffers may hold megabytes).
+const nlohmann::json& arrayAt(const nlohmann::json& root, const char* key) {
+  static const nlohmann::json empty = nlohmann::json::array();
+  const auto found = root.find(key);
+  return found != root.end() && found->is_array() ? *found : empty;
+}
+
+// A string member, or "" when absent or not a string.
+std::string stringAt(const nlohmann::json& object, const char* key) {
+  if (!object.is_object()) return {};
+  const auto found = object.find(key);
+  return found != object.end() && found->is_string() ? found->get<std::string>() : std::string();
+}
+
 // What tinygltf lets pass or words unclearly: the top level's shape, required extensions (named
 // before tinygltf trips over the data they encode), buffers without data, URIs that are not
 // files beside the scene.
@@ -334,31 +352,28 @@ void precheckJson(const nlohmann::json& root, bool binary) {
                           "extensionsRequired"})
     if (root.contains(key) && !root[key].is_array()) refuse("\"", key, "\" must be an array, not ", root[key].type_name());
   if (root.contains("asset") && !root["asset"].is_object()) refuse("\"asset\" must be an object");
-  for (const auto& e : root.value("extensionsRequired", nlohmann::json::array()))
+  for (const auto& e : arrayAt(root, "extensionsRequired"))
     if (!e.is_string() || std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), e.get<std::string>()) ==
                               kSupportedExtensions.end())
       refuse("extensionsRequired lists ", e.is_string() ? e.get<std::string>() : e.dump(),
              ", which lenslab does not support (supported: ", joined(kSupportedExtensions), ")");
-  const nlohmann::json buffers = root.value("buffers", nlohmann::json::array());
+  const nlohmann::json& buffers = arrayAt(root, "buffers");
   for (std::size_t i = 0; i < buffers.size(); ++i) {
-    if (!buffers[i].is_object()) continue;  // tinygltf words that
-    if (!buffers[i].contains("uri") && !(binary && i == 0))
+    if (buffers[i].is_object() && !buffers[i].contains("uri") && !(binary && i == 0))
       refuse("buffer ", i, " has no uri; only the first buffer of a .glb (its BIN chunk) may leave it out");
-    if (buffers[i].contains("uri") && buffers[i]["uri"].is_string() && hasUriScheme(buffers[i]["uri"].get<std::string>()))
-      refuse("buffer ", i, ": uri ", buffers[i]["uri"].get<std::string>(),
-             " is not a relative path; lenslab reads files beside the scene and data: URIs");
+    if (const std::string uri = stringAt(buffers[i], "uri"); hasUriScheme(uri))
+      refuse("buffer ", i, ": uri ", uri, " is not a relative path; lenslab reads files beside the scene and data: URIs");
   }
+  const nlohmann::json& images = arrayAt(root, "images");
+  for (std::size_t i = 0; i < images.size(); ++i)
+    if (const std::string uri = stringAt(images[i], "uri"); hasUriScheme(uri))
+      refuse("image ", i, ": uri ", uri, " is not a relative path; lenslab reads files beside the scene and data: URIs");
   // tinygltf 2.7 keeps only the matrix of a node that also has translation, rotation or scale.
-  const nlohmann::json nodes = root.value("nodes", nlohmann::json::array());
+  const nlohmann::json& nodes = arrayAt(root, "nodes");
   for (std::size_t i = 0; i < nodes.size(); ++i)
     if (nodes[i].is_object() && nodes[i].contains("matrix") &&
         (nodes[i].contains("translation") || nodes[i].contains("rotation") || nodes[i].contains("scale")))
       refuse("node ", i, " has both a matrix and translation/rotation/scale; glTF allows one or the other");
-  const nlohmann::json images = root.value("images", nlohmann::json::array());
-  for (std::size_t i = 0; i < images.size(); ++i)
-    if (images[i].is_object() && images[i].contains("uri") && images[i]["uri"].is_string() && hasUriScheme(images[i]["uri"].get<std::string>()))
-      refuse("image ", i, ": uri ", images[i]["uri"].get<std::string>(),
-             " is not a relative path; lenslab reads files beside the scene and data: URIs");
 }
 
 // ---- tinygltf ----
@@ -466,8 +481,9 @@ class AccessorReader {
     if (a.bufferView != -1) {
       requireIndex(a.bufferView, model_.bufferViews.size(), where, "bufferView");
       (void)region(a.bufferView, a.byteOffset, a.count, layout, model_.bufferViews[toIndex(a.bufferView)].byteStride, where);
-    } else if (a.count > kMaxUnbackedElements) {
-      refuse(where, ": count ", a.count, " without a bufferView is more than lenslab reads (", kMaxUnbackedElements, ")");
+    } else if (a.count > kMaxUnbackedComponents / layout.components) {
+      refuse(where, ": count ", a.count, " without a bufferView is more than lenslab reads (",
+             kMaxUnbackedComponents / layout.components, " of ", typeName(a.type), ")");
     }
     return layout;
   }
@@ -1043,7 +1059,10 @@ class PrimitiveConverter {
     mesh.name = gltfMesh.name.empty() ? cat("mesh", meshIndex) : gltfMesh.name;
     if (gltfMesh.primitives.size() > 1) mesh.name += cat("#", k);
     const std::size_t vertexCount = readVertices(p, where, mesh);
-    mesh.indices = triangleList(mode, vertexOrder(p, vertexCount, where));
+    const std::vector<std::uint32_t> order = vertexOrder(p, vertexCount, where);
+    if (mode == TINYGLTF_MODE_TRIANGLES && order.size() % 3 != 0)
+      noteOnce(notes_, cat(where, ": ", order.size(), " vertices are not whole triangles; the last ", order.size() % 3, " are left out"));
+    mesh.indices = triangleList(mode, order);
     if (mesh.indices.empty()) {
       noteOnce(notes_, cat(where, " has no whole triangle and is not drawn"));
       return std::nullopt;
@@ -1324,10 +1343,10 @@ Scene load(const fs::path& file) {
   if (binary) {
     const GlbChunks chunks = splitGlb(bytes);
     jsonText = chunks.json;
-    glb = glbForTinygltf(chunks);
+    glb = glbForTinygltf(chunks, bytes.size());
   }
   precheckJson(parseJson(jsonText), binary);
-  const tinygltf::Model model = parseModel(binary ? std::string_view(glb) : std::string_view(bytes), binary, file.parent_path());
+  const tinygltf::Model model = parseModel(glb.empty() ? std::string_view(bytes) : std::string_view(glb), binary, file.parent_path());
   const AccessorReader reader(model);
   const std::vector<int> parents = ModelCheck(model, reader).run();
   Scene scene;

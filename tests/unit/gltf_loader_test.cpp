@@ -32,6 +32,28 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// ---- Scene.cpp ----
+
+TEST(SceneTotals, TrianglesAndBoundsCountEveryInstance) {
+  Scene scene;
+  Mesh triangle;
+  triangle.vertices.resize(3);
+  triangle.vertices[1].position = {1, 0, 0};
+  triangle.vertices[2].position = {0, 1, 0};
+  triangle.indices = {0, 1, 2};
+  scene.meshes.push_back(triangle);
+  EXPECT_TRUE(computeBounds(scene).empty()) << "no instances, nothing drawn";
+  scene.instances.push_back({0, glm::dmat4(1.0)});
+  scene.instances.push_back({0, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -5)) *
+                                    glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(0, 0, 1))});
+  EXPECT_EQ(scene.triangleCount(), 2u);
+  const Bounds b = computeBounds(scene);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(b.min[i], glm::dvec3(-1, 0, -5)[i], 1e-15) << "the rotated copy reaches x = -1, z = -5";
+    EXPECT_NEAR(b.max[i], glm::dvec3(1, 1, 0)[i], 1e-15);
+  }
+}
+
 // ---- the shared test data ----
 
 // The environment variable wins over the path compiled in, so a build can be pointed elsewhere.
@@ -144,7 +166,7 @@ TEST_P(GltfSampleVariant, LoadsWithTrianglesOrIsRefusedWithOneLine) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, GltfSampleVariant, testing::ValuesIn(sampleFiles()),
-                         [](const testing::TestParamInfo<std::string>& info) { return caseName(info.param); });
+                         [](const testing::TestParamInfo<std::string>& param) { return caseName(param.param); });
 
 // ---- facts about particular samples ----
 
@@ -435,7 +457,7 @@ TEST_P(GltfValidatorFile, ErrorsAreRefusedWithOneLineAndNothingCrashesOrHangs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Validator, GltfValidatorFile, testing::ValuesIn(validatorCases()),
-                         [](const testing::TestParamInfo<ValidatorCase>& info) { return caseName(info.param.file); });
+                         [](const testing::TestParamInfo<ValidatorCase>& param) { return caseName(param.param.file); });
 
 // ---- files written here ----
 

@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/Text.h"
+#include "lens/ThinLens.h"
 
 #include <cmath>
 
@@ -45,8 +46,8 @@ void validate(const PhysicalCamera& c, std::string_view where) {
 }
 
 double imageDistance(double focalLength, double focusDistance) {
-  if (std::isinf(focusDistance)) return focalLength;
-  return focalLength * focusDistance / (focusDistance - focalLength);
+  // 1/∞ = 0: focus at infinity needs no special case there.
+  return imageDistanceFromInverse(focalLength, 1.0 / focusDistance);
 }
 
 ViewSpec toViewSpec(const PhysicalCamera& c) {

@@ -14,7 +14,8 @@ GatherDof::GatherDof()
 
 Image GatherDof::apply(const Camera& camera, const gl::RenderTarget& pinhole, int tapCount) {
   const int w = pinhole.width(), h = pinhole.height();
-  // Circle-of-confusion radius per pixel, from the depth buffer (rows from the bottom, as GL has them).
+  // Circle-of-confusion radius per pixel from the depth (read back rows from the top; the texture
+  // is uploaded rows from the bottom, as GL has them).
   const std::vector<float> topDown = pinhole.readDepth();
   std::vector<float> radius(topDown.size());
   const double pxPerUnit = w / camera.view.window.width();
@@ -29,10 +30,12 @@ Image GatherDof::apply(const Camera& camera, const gl::RenderTarget& pinhole, in
       radius[static_cast<std::size_t>((h - 1 - y) * w + x)] = static_cast<float>(r);
       maxRadius = std::max(maxRadius, static_cast<float>(r));
     }
-  coc_ = gl::Texture::create();
-  glTextureStorage2D(coc_.id(), 1, GL_R32F, w, h);
+  if (!out_ || out_->width() != w || out_->height() != h) {
+    out_ = std::make_unique<gl::RenderTarget>(w, h);
+    coc_ = gl::Texture::create();
+    glTextureStorage2D(coc_.id(), 1, GL_R32F, w, h);
+  }
   glTextureSubImage2D(coc_.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, radius.data());
-  if (!out_ || out_->width() != w || out_->height() != h) out_ = std::make_unique<gl::RenderTarget>(w, h);
   out_->bind();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);

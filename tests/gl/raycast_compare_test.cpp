@@ -17,10 +17,6 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 
-struct Pair {
-  double psnr;
-};
-
 // Raster with `views` jittered (and, with an aperture, lens) samples vs ray casting with `spp`.
 double rasterVsRaycastPsnr(const std::string& sceneName, const std::string& cameraFile, bool pinhole, int views, int spp,
                            ImageSize size) {

@@ -69,7 +69,11 @@ int runInfo(const std::string& path) {
     const FramePlan plan = makeFramePlan(scene, selected.camera, size);
     out << "render      camera: " << selected.camera.source << ", " << size.widthPx << "x" << size.heightPx << "\n";
     out << "            aperture samples: " << plan.apertureSamples << " (" << plan.samplesWhy << ")\n";
-    for (const PlannedPass& p : plan.passes) out << "            pass " << p.name << ": " << p.why << "\n";
+    for (const PlannedPass& p : plan.passes) {
+      out << "            pass " << p.name << ": " << p.why;
+      for (const std::string& v : p.variants) out << " [" << v << "]";
+      out << "\n";
+    }
   } else {
     out << "render      nothing to draw (no triangles)\n";
   }

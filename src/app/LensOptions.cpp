@@ -1,5 +1,6 @@
 #include "app/LensOptions.h"
 
+#include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -76,8 +77,8 @@ Camera applyLensOptions(const Camera& camera, const LensOptions& o) {
   return c;
 }
 
-DepthAtPixel rasterDepth(Renderer& renderer, ImageSize size) {
-  return [&renderer, size](const Camera& camera, int x, int y) {
+DepthAtPixel rasterDepth(Renderer& renderer) {
+  return [&renderer](const Camera& camera, ImageSize size, int x, int y) {
     const std::vector<float> depth = renderer.pinholeDepth(camera, size);
     const double zNdc = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x)];
     return depthFromReverseZ(camera.view, zNdc);
@@ -89,7 +90,16 @@ Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, cons
   if (x < 0 || y < 0 || x >= size.widthPx || y >= size.heightPx)
     throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
                          size.heightPx, " image"));
-  const double distance = depthAt(camera, x, y);
+  double distance = 0.0;
+  if (camera.effects.needsRemap()) {
+    const glm::dvec2 centre(x + 0.5, y + 0.5);
+    const glm::dvec2 guess = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, centre, size.widthPx, size.heightPx));
+    const Overscan o = overscanFor(camera, size);
+    const glm::dvec2 p = undistortedSample(camera, Channel::Green, centre, size, guess).pixel + glm::dvec2(o.padPx);
+    distance = depthAt(o.camera, o.size, static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
+  } else {
+    distance = depthAt(camera, size, x, y);
+  }
   if (!std::isfinite(distance) || !(distance > 0.0))
     throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": nothing of the scene is under that pixel to focus on"));
   Camera c = refocused(camera, distance, "--focus-at");

@@ -33,14 +33,16 @@ PlanOptions toPlanOptions(const LensOptions& options);
 // --focus-distance applied to the camera.
 Camera applyLensOptions(const Camera& camera, const LensOptions& options);
 
-// Focuses on the depth under pixel (x, y) of a pinhole view, as `depthAt(camera, x, y)` reports it
-// (world units from the PRP along −n, +infinity for background); throws InputError when nothing is
-// there or the pixel is outside the image.
-using DepthAtPixel = std::function<double(const Camera&, int x, int y)>;
+// Focuses on the depth under pixel (x, y) of a pinhole view, as `depthAt(camera, size, x, y)`
+// reports it (world units from the PRP along −n, +infinity for background); throws InputError when
+// nothing is there or the pixel is outside the image. With distortion or lateral colour the pixel is
+// first taken back to the true perspective image (green's), which is looked up in the overscanned
+// pinhole view the lens pass would sample.
+using DepthAtPixel = std::function<double(const Camera&, ImageSize, int x, int y)>;
 Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt);
 
 // depthAt through the rasterizer's pinhole depth buffer.
-DepthAtPixel rasterDepth(Renderer& renderer, ImageSize size);
+DepthAtPixel rasterDepth(Renderer& renderer);
 
 bool isTerminal(std::FILE* stream);
 void printProgress(int done, int total, double seconds);

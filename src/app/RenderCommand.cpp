@@ -55,7 +55,7 @@ Image rasterize(const RenderOptions& o, const Scene& scene, Camera camera, Image
   Renderer renderer(scene);
   stats.setupSeconds = secondsSince(t);
 
-  if (o.lens.focusAt) camera = focusOnPixel(camera, size, *o.lens.focusAt, rasterDepth(renderer, size));
+  if (o.lens.focusAt) camera = focusOnPixel(camera, size, *o.lens.focusAt, rasterDepth(renderer));
   const FramePlan plan = makeFramePlan(scene, camera, size, planOptions);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
@@ -85,13 +85,14 @@ Image raycast(const RenderOptions& o, const Scene& scene, Camera camera, ImageSi
   stats.renderer = "lenslab ray caster (Embree, TBB)";
   stats.backend = "cpu";
   if (o.lens.focusAt)
-    camera = focusOnPixel(camera, size, *o.lens.focusAt, [&](const Camera& c, int x, int y) {
-      return caster.depthAt(c, {x + 0.5, y + 0.5}, size);
+    camera = focusOnPixel(camera, size, *o.lens.focusAt, [&](const Camera& c, ImageSize depthSize, int x, int y) {
+      return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
     });
   stats.camera = camera.source;
   stats.plan.apertureSamples = o.samplesPerPixel;
   stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
-  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.isPinhole() ? "the PRP" : "the thin lens")}};
+  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.isPinhole() ? "the PRP" : "the thin lens",
+                                        camera.effects.isZero() ? "" : ", each through the inverse lens model (exact)"), {}}};
   const bool showProgress = !o.quiet && isTerminal(stderr);
   t = std::chrono::steady_clock::now();
   Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed}, [&](int done, int rows) {

@@ -4,6 +4,7 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lenslab {
@@ -14,6 +15,18 @@ Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std
   c.apertureRadius = apertureRadius;
   c.source = std::move(source);
   return c;
+}
+
+ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx) {
+  if (!camera.calibratedSize || (widthPx && heightPx)) return resolveImageSize(camera.view.window, widthPx, heightPx);
+  // A calibrated camera's pixels need not be square (fx ≠ fy): scale its own size.
+  const ImageSize own = *camera.calibratedSize;
+  const double aspect = static_cast<double>(own.widthPx) / own.heightPx;
+  std::optional<int> w = widthPx, h = heightPx;
+  if (w) h = std::max(1, static_cast<int>(std::lround(*w / aspect)));
+  else if (h) w = std::max(1, static_cast<int>(std::lround(*h * aspect)));
+  else w = own.widthPx, h = own.heightPx;
+  return resolveImageSize(camera.view.window, w, h);
 }
 
 ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset) {

@@ -6,9 +6,13 @@
 // with the PRP moved to a point of the aperture disk, in the PRP's plane (parallel to the view
 // plane), while the window stays where it is: every point of the view plane then lands on the same
 // pixel from every aperture point, and any other point spreads over its circle of confusion.
+#include "camera/ImageSize.h"
 #include "camera/ViewSpec.h"
+#include "lens/LensEffects.h"
 
 #include <glm/glm.hpp>
+
+#include <optional>
 
 #include <string>
 
@@ -21,11 +25,22 @@ struct Camera {
   // can hold: the window then travels with the PRP (see viewThroughLens).
   bool focusAtInfinity = false;
   std::string source;           // "assets/rows/camera.json", "glTF camera 0 (Main)", ...
+  // Distortion, chromatic aberration, field curvature (perspective only; see lens/LensEffects.h).
+  LensEffects effects;
+  // Added to the inverse focus distance: how one colour channel (axial chromatic aberration) or one
+  // part of the image (field curvature) is focused. 0 in a camera as loaded.
+  double inverseFocusShift = 0.0;
+  // The image size the camera was calibrated for (OpenCV intrinsics), the default render size.
+  std::optional<ImageSize> calibratedSize;
 
   bool isPinhole() const { return !(apertureRadius > 0.0); }
-  // 1/z_f, from the PRP along −n: 1/PRP.n, or 0 at infinity focus.
-  double inverseFocusDistance() const { return focusAtInfinity ? 0.0 : 1.0 / view.prp.z; }
+  // 1/z_f, from the PRP along −n: 1/PRP.n, or 0 at infinity focus (plus inverseFocusShift).
+  double inverseFocusDistance() const { return (focusAtInfinity ? 0.0 : 1.0 / view.prp.z) + inverseFocusShift; }
 };
+
+// The image size for a camera: a calibrated camera's own size (scaled to a given width or height),
+// else resolveImageSize from the window.
+ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx);
 
 // A camera whose plane of focus is its view plane.
 Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std::string source);

@@ -106,6 +106,14 @@ glm::dvec2 windowFromPixel(const Window& window, glm::dvec2 pixel, int widthPx, 
           window.vmax - pixel.y / heightPx * window.height()};
 }
 
+glm::dvec2 normalisedFromWindow(const ViewSpec& spec, glm::dvec2 uv) {
+  return (uv - glm::dvec2(spec.prp.x, spec.prp.y)) / spec.prp.z;
+}
+
+glm::dvec2 windowFromNormalised(const ViewSpec& spec, glm::dvec2 normalised) {
+  return glm::dvec2(spec.prp.x, spec.prp.y) + normalised * spec.prp.z;
+}
+
 double depthFromReverseZ(const ViewSpec& spec, double zNdc) {
   const double nearZ = spec.nearDistance, farZ = spec.farDistance;
   if (spec.projection == Projection::Parallel) return farZ - zNdc * (farZ - nearZ);

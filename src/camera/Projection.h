@@ -53,6 +53,12 @@ glm::dvec2 windowFromNdc(const Window& window, glm::dvec2 ndc);
 glm::dvec2 pixelFromWindow(const Window& window, glm::dvec2 uv, int widthPx, int heightPx);
 glm::dvec2 windowFromPixel(const Window& window, glm::dvec2 pixel, int widthPx, int heightPx);
 
+// Normalised image coordinates (lens/LensEffects.h) of window point (u, v) of a perspective view:
+// (u − PRP.u, v − PRP.v) / PRP.n, the point's position on a view plane at unit distance measured
+// from the principal point; (X/Z, Y/Z) of the eye frame. And back.
+glm::dvec2 normalisedFromWindow(const ViewSpec& spec, glm::dvec2 uv);
+glm::dvec2 windowFromNormalised(const ViewSpec& spec, glm::dvec2 normalised);
+
 // Depth (the lecture's Z: world units from the PRP along −n) of a reverse-Z depth-buffer value;
 // +infinity for 0 (nothing drawn there, the far plane at infinity).
 double depthFromReverseZ(const ViewSpec& spec, double zNdc);

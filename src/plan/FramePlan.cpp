@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace lenslab {
 
@@ -50,14 +51,28 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   } else {
     const double pxPerWindowUnit = size.widthPx / camera.view.window.width();
     if (visible) {
-      const double atNear = cocDiameterOnWindow(camera, plan.depthMin) * pxPerWindowUnit;
-      const double atFar = cocDiameterOnWindow(camera, plan.depthMax) * pxPerWindowUnit;
-      plan.cocMaxPx = std::max(atNear, atFar);
-      // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
-      const double focus = camera.focusAtInfinity ? std::numeric_limits<double>::infinity()
-                         : camera.view.projection == Projection::Parallel ? camera.view.prp.z
-                                                                          : 1.0 / camera.inverseFocusDistance();
-      plan.cocMinPx = (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar);
+      // Axial colour and field curvature move the plane of focus per channel and toward the
+      // corners: the largest circle is the largest over each of those planes.
+      const LensEffects& e = camera.effects;
+      const double corner = normalisedWindow(camera.view).cornerRadius();
+      std::vector<double> shifts;
+      for (const double channel : {0.0, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue})
+        for (const double curve : {0.0, e.fieldCurvature.inverseFocusPerRadius2 * corner * corner})
+          shifts.push_back(channel + curve);
+      plan.cocMaxPx = 0.0;
+      plan.cocMinPx = std::numeric_limits<double>::infinity();
+      for (const double shift : shifts) {
+        Camera shifted = camera;
+        shifted.inverseFocusShift += shift;
+        const double atNear = cocDiameterOnWindow(shifted, plan.depthMin) * pxPerWindowUnit;
+        const double atFar = cocDiameterOnWindow(shifted, plan.depthMax) * pxPerWindowUnit;
+        plan.cocMaxPx = std::max({plan.cocMaxPx, atNear, atFar});
+        // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
+        const double inverse = shifted.inverseFocusDistance();
+        const double focus = camera.view.projection == Projection::Parallel ? camera.view.prp.z
+                           : inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+        plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
+      }
     }
     const std::string range = cat("circle of confusion ", plan.cocMinPx, " to ", plan.cocMaxPx,
                                   " px over depths ", plan.depthMin, " to ", plan.depthMax);
@@ -78,14 +93,41 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     }
   }
 
-  if (plan.apertureSamples == 1) {
-    plan.passes.push_back({"scene", cat("one view of ", triangles, " triangles into a float target")});
-  } else {
-    plan.passes.push_back({"scene", cat(plan.apertureSamples, " views of ", triangles, " triangles, one from each ",
-                                        patternName(plan.pattern), " aperture point, with sub-pixel jitter")});
-    plan.passes.push_back({"accumulate", cat("adds each view into a float sum (", plan.apertureSamples, " times)")});
-    plan.passes.push_back({"resolve", "divides the sum by the sample count"});
+  const LensEffects& effects = camera.effects;
+  if (plan.apertureSamples > 1) {
+    plan.viewsPerSample = effects.chromatic.hasAxial() ? 3 : 1;
+    plan.fieldCurvature = !effects.fieldCurvature.isZero();
   }
+  plan.remap = effects.needsRemap();
+  plan.overscan = overscanFor(camera, size);
+  const ImageSize rendered = plan.overscan.size;
+  const std::string where = plan.remap ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,
+                                             "+", plan.overscan.padPx.y, " px overscan for the lens pass)")
+                                       : std::string();
+  if (plan.apertureSamples == 1) {
+    plan.passes.push_back({"scene", cat("one view of ", triangles, " triangles into a float target", where), {}});
+  } else {
+    PlannedPass scenePass{"scene", cat(plan.apertureSamples * plan.viewsPerSample, " views of ", triangles, " triangles, ",
+                                       plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "
+                                                                : "one from each ",
+                                       patternName(plan.pattern), " aperture point, with sub-pixel jitter", where), {}};
+    if (plan.fieldCurvature) scenePass.variants.push_back("field-curvature");
+    if (plan.viewsPerSample == 3) scenePass.variants.push_back("channel-focus");
+    plan.passes.push_back(scenePass);
+    plan.passes.push_back({"accumulate", cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"), {}});
+    plan.passes.push_back({"resolve", plan.viewsPerSample == 3 ? "divides each channel's sum by its view count"
+                                                               : "divides the sum by the sample count", {}});
+  }
+  if (plan.remap) {
+    PlannedPass lens{"lens", cat("remaps the image through the inverse lens model (a lookup table per ",
+                                 effects.chromatic.hasLateral() ? "colour channel" : "image", ", bilinear)"), {}};
+    if (!effects.distortion.isZero()) lens.variants.push_back("distortion");
+    if (effects.chromatic.hasLateral()) lens.variants.push_back("lateral-colour");
+    plan.passes.push_back(lens);
+  }
+  if (camera.isPinhole() && (effects.chromatic.hasAxial() || !effects.fieldCurvature.isZero()))
+    plan.warnings.push_back("axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
+                            "has none, so they change nothing here (give an aperture)");
   return plan;
 }
 

@@ -1,9 +1,15 @@
 #pragma once
 // The frame plan: per scene and camera, which passes run and how many aperture samples.
 // Nothing a scene does not need: a pinhole camera with no lens effects is one plain scene pass,
-// and so is a scene wholly inside the depth of field (every circle of confusion ≤ 1 pixel).
+// and so is a scene wholly inside the depth of field (every circle of confusion ≤ 1 pixel). Each
+// lens effect adds its pass or shader variant only when its strength is not zero:
+//   distortion, lateral colour → the "lens" post pass (and an overscanned scene render);
+//   axial colour               → three views per aperture sample, one per colour channel;
+//   field curvature            → the scene pass's field-curvature variant.
+// The last two change nothing through a pinhole, and are left out for one.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
+#include "camera/LensMap.h"
 #include "lens/AperturePattern.h"
 #include "scene/Scene.h"
 
@@ -21,8 +27,9 @@ struct PlanOptions {
 };
 
 struct PlannedPass {
-  std::string name;  // "scene", "accumulate", "resolve"
+  std::string name;  // "scene", "accumulate", "resolve", "lens"
   std::string why;   // one line, shown by --stats and `lenslab info`
+  std::vector<std::string> variants;  // shader variants in use, e.g. "field-curvature"
 };
 
 struct FramePlan {
@@ -36,6 +43,10 @@ struct FramePlan {
   double depthMin = 0.0;        // that part's depth range, world units from the PRP along −n
   double depthMax = 0.0;
   std::vector<std::string> warnings;  // what the plan could not honour, for stderr
+  int viewsPerSample = 1;       // 3 with axial chromatic aberration: one per colour channel
+  bool fieldCurvature = false;  // the scene pass bends its plane of focus
+  bool remap = false;           // the lens post pass runs (distortion, lateral colour)
+  Overscan overscan;            // what the scene passes render: the image, or more for the lens pass
 
   bool accumulates() const { return apertureSamples > 1; }
 };

@@ -1,5 +1,8 @@
 #include "raycast/RayCaster.h"
 
+#include "camera/LensMap.h"
+#include "camera/Projection.h"
+
 #include "camera/Ray.h"
 #include "lens/AperturePattern.h"
 #include "raycast/TextureSampler.h"
@@ -194,19 +197,47 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
                         const std::function<void(int, int)>& progress) const {
   Image image(size.widthPx, size.heightPx);
   const int spp = std::max(1, options.samplesPerPixel);
+  const bool lensEffects = !camera.effects.isZero();
+  // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
+  const int channels = camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1;
   constexpr int kBand = 16;
   for (int band = 0; band < size.heightPx; band += kBand) {
     const int end = std::min(band + kBand, size.heightPx);
     tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& rows) {
+      // The camera each channel's rays are cast with: the lens effects are applied here, per ray.
+      Camera focused = camera;
+      focused.effects = {};
+      focused.source.clear();
       for (int y = rows.begin(); y < rows.end(); ++y)
         for (int x = 0; x < size.widthPx; ++x) {
           // A different stratified set per pixel, so that the noise does not repeat across pixels.
           const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(y * size.widthPx + x) * 40503u;
           const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
           glm::dvec3 sum(0.0);
-          for (const LensSample& s : samples) {
-            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-            sum += glm::dvec3(trace(camera, s.lens * camera.apertureRadius, pixel, size));
+          if (lensEffects) {
+            // Exactly, per sample: each channel's ray goes through the true perspective position
+            // that the inverse lens model gives for this sample's point of the distorted image,
+            // focused on that channel's (and that radius's) plane of focus.
+            glm::dvec2 guess[3];
+            for (int c = 0; c < channels; ++c)
+              guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5},
+                                           size, normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx)))
+                             .normalised;
+            for (const LensSample& s : samples) {
+              const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
+              for (int c = 0; c < channels; ++c) {
+                const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
+                focused.inverseFocusShift = cs.inverseFocusShift;
+                const glm::vec3 colour = trace(focused, s.lens * camera.apertureRadius, cs.pixel, size);
+                if (channels == 3) sum[c] += colour[c];
+                else sum += glm::dvec3(colour);
+              }
+            }
+          } else {
+            for (const LensSample& s : samples) {
+              const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
+              sum += glm::dvec3(trace(camera, s.lens * camera.apertureRadius, pixel, size));
+            }
           }
           image.set(x, y, glm::vec4(glm::vec3(sum / static_cast<double>(samples.size())), 1.0f));
         }

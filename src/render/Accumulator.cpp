@@ -62,12 +62,19 @@ void Accumulator::start(int widthPx, int heightPx) {
   glClearBufferfv(GL_COLOR, 0, zero);
   pending_ = 0;
   count_ = 0;
+  weightSum_ = glm::vec4(0.0f);
+  pendingWeights_.assign(static_cast<std::size_t>(batchSize()), glm::vec4(0.0f));
 }
 
-gl::DrawTarget Accumulator::nextView() {
+gl::DrawTarget Accumulator::nextView(glm::vec3 channels) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
   if (pending_ == batchSize()) flush();
   ++count_;
+  // Alpha is shared out so that a full set of channel views adds 1, as one full view does.
+  const float channelCount = channels.r + channels.g + channels.b;
+  const glm::vec4 weight(channels, channelCount / 3.0f);
+  pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
+  weightSum_ += weight;
   return {framebuffers_[static_cast<std::size_t>(pending_++)].id(), sum_->width(), sum_->height()};
 }
 
@@ -78,6 +85,7 @@ void Accumulator::flush() {
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glProgramUniform1i(accumulate_.id(), 0, pending_);
+  glProgramUniform4fv(accumulate_.id(), 1, pending_, &pendingWeights_[0].x);
   drawFullScreen(accumulate_.id(), emptyVertexArray_.id(), views_.id());
   glDisable(GL_BLEND);
   pending_ = 0;
@@ -88,7 +96,8 @@ void Accumulator::resolve(const gl::RenderTarget& out) {
   flush();
   out.bind();
   glDisable(GL_BLEND);
-  glProgramUniform1f(resolve_.id(), 0, 1.0f / static_cast<float>(count_));
+  const glm::vec4 inverseWeight = glm::vec4(1.0f) / glm::max(weightSum_, glm::vec4(1e-30f));
+  glProgramUniform4fv(resolve_.id(), 0, 1, &inverseWeight.x);
   drawFullScreen(resolve_.id(), emptyVertexArray_.id(), sum_->colorTexture());
 }
 

@@ -10,6 +10,8 @@
 #include "gl/Framebuffer.h"
 #include "gl/Object.h"
 
+#include <glm/glm.hpp>
+
 #include <memory>
 #include <vector>
 
@@ -21,8 +23,10 @@ class Accumulator {
 
   void start(int widthPx, int heightPx);  // clears the sum
   // Where to draw the next view; it counts as added once drawn. Adds the previous batch to the
-  // sum first when the batch is full.
-  gl::DrawTarget nextView();
+  // sum first when the batch is full. `channels` says which colour channels the view contributes
+  // (axial chromatic aberration draws one view per channel); resolve divides each channel by the
+  // number of views that contributed to it.
+  gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f));
   int count() const { return count_; }
   int batchSize() const { return static_cast<int>(framebuffers_.size()); }
   // The mean so far, into `out` (same size).
@@ -40,6 +44,8 @@ class Accumulator {
   std::vector<gl::Framebuffer> framebuffers_;
   int pending_ = 0;
   int count_ = 0;
+  std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share
+  glm::vec4 weightSum_{0.0f};
 };
 
 }  // namespace lenslab

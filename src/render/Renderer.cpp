@@ -3,6 +3,7 @@
 #include "camera/Projection.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace lenslab {
@@ -16,16 +17,22 @@ const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot
 }
 
 void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size) {
-  camera_ = camera;
-  size_ = size;
+  plan_ = plan;
+  camera_ = plan.remap ? plan.overscan.camera : camera;
+  size_ = plan.remap ? plan.overscan.size : size;
+  outSize_ = size;
   done_ = 0;
+  if (plan.remap) {
+    if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
+    lensPass_->prepare(camera, size, plan.overscan);
+  }
   if (plan.apertureSamples <= 1) {
     // No lens: the pinhole view from the PRP, at the pixel centres.
     samples_ = {LensSample{{0.0, 0.0}, {0.0, 0.0}}};
   } else {
     samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
     if (!accumulator_) accumulator_ = std::make_unique<Accumulator>();
-    accumulator_->start(size.widthPx, size.heightPx);
+    accumulator_->start(size_.widthPx, size_.heightPx);
   }
 }
 
@@ -37,18 +44,47 @@ int Renderer::addSamples(int count) {
     const LensSample& s = samples_[static_cast<std::size_t>(done_)];
     // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
     const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
-    const ViewSpec view = viewThroughLens(camera_, s.lens * camera_.apertureRadius, pixelOffset);
-    const glm::dmat4 clip = clipFromWorld(view);
-    if (samplesPlanned() == 1) scenePass_.draw(gpuScene_, clip, target(output_, size_).drawTarget());
-    else scenePass_.draw(gpuScene_, clip, accumulator_->nextView());
+    const glm::dvec2 lensOffset = s.lens * camera_.apertureRadius;
+    std::optional<FocusWarp> warp;
+    if (plan_.fieldCurvature) {
+      // The move at r = 1 of a plane of focus bent by κ: δ·d·κ window units (ScenePass.h).
+      const double d = camera_.view.prp.z;
+      const glm::dvec2 windowShift = lensOffset * d * camera_.effects.fieldCurvature.inverseFocusPerRadius2;
+      warp = FocusWarp{eyeFromView(camera_.view) * viewFromWorld(camera_.view),
+                       2.0 * windowShift / glm::dvec2(w.width(), w.height())};
+    }
+    if (samplesPlanned() == 1) {
+      const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
+      scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset)), out.drawTarget(),
+                      warp ? &*warp : nullptr);
+    } else if (plan_.viewsPerSample == 3) {
+      // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
+      for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue}) {
+        Camera focused = camera_;
+        focused.inverseFocusShift += camera_.effects.chromatic.inverseFocusShift(c);
+        glm::vec3 mask(0.0f);
+        mask[static_cast<int>(c)] = 1.0f;
+        scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(focused, lensOffset, pixelOffset)),
+                        accumulator_->nextView(mask), warp ? &*warp : nullptr);
+      }
+    } else {
+      scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset)),
+                      accumulator_->nextView(), warp ? &*warp : nullptr);
+    }
   }
   return added;
 }
 
 Image Renderer::resolve() {
   if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
-  const gl::RenderTarget& out = target(output_, size_);
-  if (samplesPlanned() > 1) accumulator_->resolve(out);
+  const gl::RenderTarget& out = target(output_, outSize_);
+  if (plan_.remap) {
+    const gl::RenderTarget& undistorted = target(undistorted_, size_);
+    if (samplesPlanned() > 1) accumulator_->resolve(undistorted);
+    lensPass_->apply(undistorted, out);
+  } else if (samplesPlanned() > 1) {
+    accumulator_->resolve(out);
+  }
   glFinish();
   return out.readColor();
 }

@@ -2,7 +2,10 @@
 // Runs a frame plan on the current GL context and returns the linear image.
 // One aperture sample: one scene pass straight into the output. More: each sample renders the
 // scene from its aperture point (the PRP moved across the lens, the window kept on the plane of
-// focus, shifted by the sample's sub-pixel offset) and is added into the accumulator.
+// focus, shifted by the sample's sub-pixel offset) and is added into the accumulator. Lens effects,
+// when the plan has them: one view per colour channel, each focused for its colour (axial
+// chromatic aberration); the field-curvature variant of the scene pass; the lens post pass
+// (distortion, lateral colour) from an overscanned render into the output.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
@@ -11,6 +14,7 @@
 #include "plan/FramePlan.h"
 #include "render/Accumulator.h"
 #include "render/GpuScene.h"
+#include "render/LensPass.h"
 #include "render/ScenePass.h"
 
 #include <memory>
@@ -47,9 +51,13 @@ class Renderer {
   std::unique_ptr<Accumulator> accumulator_;  // made on first use: a pinhole frame needs none
   std::unique_ptr<gl::RenderTarget> view_;    // a pinhole view for focusing
   std::unique_ptr<gl::RenderTarget> output_;  // the resolved image
+  std::unique_ptr<gl::RenderTarget> undistorted_;  // the overscanned image the lens pass reads
+  std::unique_ptr<LensPass> lensPass_;             // made on first use
 
-  Camera camera_;
-  ImageSize size_;
+  FramePlan plan_;
+  Camera camera_;      // the camera the scene passes use (overscanned when the lens pass runs)
+  ImageSize size_;     // the size they render at
+  ImageSize outSize_;  // the image's size
   std::vector<LensSample> samples_;
   int done_ = 0;
 };

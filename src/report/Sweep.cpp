@@ -1,5 +1,6 @@
 #include "report/Sweep.h"
 
+#include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -149,9 +150,24 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   Renderer renderer(scene);
   GatherDof gather;
   // Occlusion edges from the pinhole depth; and a warm-up frame (first-frame shader JIT).
-  std::vector<float> zNdc = renderer.pinholeDepth(camera, size);
-  std::vector<double> depth(zNdc.size());
-  for (std::size_t i = 0; i < zNdc.size(); ++i) depth[i] = depthFromReverseZ(camera.view, zNdc[i]);
+  // With distortion the depth is looked up where each pixel's true perspective position is, in
+  // the overscanned pinhole view (nearest pixel: the mask only needs to find the edges).
+  const Overscan overscan = overscanFor(camera, size);
+  std::vector<float> zNdc = renderer.pinholeDepth(overscan.camera, overscan.size);
+  std::vector<double> depth(static_cast<std::size_t>(size.widthPx) * static_cast<std::size_t>(size.heightPx));
+  for (int y = 0; y < size.heightPx; ++y)
+    for (int x = 0; x < size.widthPx; ++x) {
+      const glm::dvec2 centre(x + 0.5, y + 0.5);
+      glm::dvec2 p = centre;
+      if (camera.effects.needsRemap()) {
+        const glm::dvec2 guess = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, centre, size.widthPx, size.heightPx));
+        p = undistortedSample(camera, Channel::Green, centre, size, guess).pixel + glm::dvec2(overscan.padPx);
+      }
+      const int px = std::clamp(static_cast<int>(p.x), 0, overscan.size.widthPx - 1);
+      const int py = std::clamp(static_cast<int>(p.y), 0, overscan.size.heightPx - 1);
+      depth[static_cast<std::size_t>(y * size.widthPx + x)] =
+          depthFromReverseZ(camera.view, zNdc[static_cast<std::size_t>(py * overscan.size.widthPx + px)]);
+    }
   const std::vector<bool> edges = occlusionEdgeMask(camera, size, depth);
   result.edgeFraction = static_cast<double>(std::count(edges.begin(), edges.end(), true)) / static_cast<double>(edges.size());
   renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 2, 2, o.seed}), size);
@@ -193,7 +209,11 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     record("raycast", "stratified", spp, secondsSince(t), image);
   }
   say(o, "raycast: done");
-  for (int taps : o.gatherTaps) {
+  // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
+  // exact distorted reference would measure the missing distortion, not the method.
+  const std::vector<int> gatherTaps = camera.effects.isZero() ? o.gatherTaps : std::vector<int>{};
+  if (gatherTaps.empty() && !o.gatherTaps.empty()) say(o, "postprocess gather: left out (it has no lens effects)");
+  for (int taps : gatherTaps) {
     Image image;
     const double seconds = medianOf3([&] { return gather.apply(camera, renderer.renderPinhole(camera, size), taps); }, image);
     record("postprocess", "gather", taps, seconds, image);

@@ -1,0 +1,157 @@
+#include "camera/LensMap.h"
+
+#include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lenslab {
+namespace {
+
+constexpr Channel kChannels[] = {Channel::Red, Channel::Green, Channel::Blue};
+
+// The channels whose mapping differs: all three with lateral colour, else green alone.
+std::vector<Channel> remappedChannels(const LensEffects& effects) {
+  if (effects.chromatic.hasLateral()) return {Channel::Red, Channel::Green, Channel::Blue};
+  return {Channel::Green};
+}
+
+glm::dvec2 undistortOrThrow(const LensEffects& effects, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
+  auto undistorted = effects.undistortChannel(c, distorted, guess);
+  if (!undistorted) {
+    // validateLensEffects rules out folds inside the image, so this is a bug or an unvalidated camera.
+    throw std::runtime_error(cat("lens distortion: Newton's method did not converge at normalised (",
+                                 distorted.x, ", ", distorted.y, ")"));
+  }
+  return *undistorted;
+}
+
+}  // namespace
+
+double NormalisedRect::cornerRadius() const {
+  return std::max({glm::length(min), glm::length(max), glm::length(glm::dvec2(min.x, max.y)),
+                   glm::length(glm::dvec2(max.x, min.y))});
+}
+
+NormalisedRect normalisedWindow(const ViewSpec& view) {
+  const Window& w = view.window;
+  return {normalisedFromWindow(view, {w.umin, w.vmin}), normalisedFromWindow(view, {w.umax, w.vmax})};
+}
+
+void validateLensEffects(const Camera& camera, const std::string& where) {
+  const LensEffects& e = camera.effects;
+  if (e.isZero()) return;
+  if (camera.view.projection != Projection::Perspective)
+    throw InputError(cat(where, ": distortion, chromatic aberration and field curvature need a perspective "
+                                "projection (they act on the angle from the optical axis); this camera is parallel"));
+  const Distortion& d = e.distortion;
+  for (const double v : {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed,
+                         e.chromatic.lateralBlue, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue,
+                         e.fieldCurvature.inverseFocusPerRadius2})
+    if (!std::isfinite(v)) throw InputError(cat(where, ": lens effect coefficients must be finite numbers"));
+  for (const auto& [name, value] : {std::pair{"lateral_red", e.chromatic.lateralRed},
+                                    std::pair{"lateral_blue", e.chromatic.lateralBlue}})
+    if (!(std::abs(value) < 0.5))
+      throw InputError(cat(where, ": chromatic.", name, " = ", value,
+                           " is a relative magnification of the channel; use a value in (-0.5, 0.5), typically below 0.01"));
+  // The distorted region to check: the window, and for lateral colour the part of green's image
+  // that each channel's window shows (scaled by 1 / (1 + lateral)).
+  const NormalisedRect rect = normalisedWindow(camera.view);
+  glm::dvec2 lo = rect.min, hi = rect.max;
+  for (const Channel c : kChannels) {
+    const double s = 1.0 / (1.0 + e.chromatic.lateral(c));
+    lo = glm::min(lo, rect.min * s);
+    hi = glm::max(hi, rect.max * s);
+  }
+  if (const auto fold = findFoldOver(d, lo, hi)) {
+    const double along = glm::length(fold->distorted) / rect.cornerRadius();
+    throw InputError(cat(where, ": distortion folds over inside the image: at the true position (", fold->undistorted.x,
+                         ", ", fold->undistorted.y, ") in normalised coordinates, ", std::lround(100.0 * along),
+                         "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
+                         "so two points of the scene would land on one pixel (k1 = ", d.k1, ", k2 = ", d.k2,
+                         ", k3 = ", d.k3, "); use weaker coefficients or a narrower field of view"));
+  }
+}
+
+Overscan overscanFor(const Camera& camera, ImageSize size) {
+  Overscan o{camera, size, {0, 0}};
+  if (!camera.effects.needsRemap()) return o;
+  const Window& w = camera.view.window;
+  const int width = size.widthPx, height = size.heightPx;
+  // The output image's border maps to the border of the region it shows (no fold inside), so the
+  // border's true positions bound everything the post pass samples.
+  glm::dvec2 lo(0.0), hi(width, height);
+  const auto visit = [&](glm::dvec2 pixel) {
+    for (const Channel c : remappedChannels(camera.effects)) {
+      const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, width, height));
+      const glm::dvec2 truth = undistortOrThrow(camera.effects, c, distorted, distorted);
+      const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  };
+  for (int i = 0; i <= 2 * width; ++i) {
+    visit({0.5 * i, 0.0});
+    visit({0.5 * i, height});
+  }
+  for (int j = 0; j <= 2 * height; ++j) {
+    visit({0.0, 0.5 * j});
+    visit({width, 0.5 * j});
+  }
+  // Two more pixels for the bilinear footprint; the same on both sides keeps the window's centre.
+  const double padX = std::max(-lo.x, hi.x - width), padY = std::max(-lo.y, hi.y - height);
+  o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2, static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
+  o.size = {width + 2 * o.padPx.x, height + 2 * o.padPx.y};
+  if (o.size.widthPx > kMaxImageSidePx || o.size.heightPx > kMaxImageSidePx)
+    throw InputError(cat(camera.source, ": the distortion needs an undistorted render of ", o.size.widthPx, "x",
+                         o.size.heightPx, " pixels (more than ", kMaxImageSidePx, " per side); render a smaller image"));
+  const glm::dvec2 pitch(w.width() / width, w.height() / height);
+  Window& ow = o.camera.view.window;
+  ow.umin -= o.padPx.x * pitch.x;
+  ow.umax += o.padPx.x * pitch.x;
+  ow.vmin -= o.padPx.y * pitch.y;
+  ow.vmax += o.padPx.y * pitch.y;
+  return o;
+}
+
+RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan) {
+  RemapTable table{size, {}};
+  const Window& w = camera.view.window;
+  const int width = size.widthPx, height = size.heightPx;
+  const glm::dvec2 inner(overscan.size.widthPx, overscan.size.heightPx);
+  const glm::dvec2 pad(overscan.padPx);
+  for (const Channel c : remappedChannels(camera.effects)) {
+    std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    for (int row = 0; row < height; ++row) {
+      const int y = height - 1 - row;  // GL rows run up, image rows down
+      glm::dvec2 guess(0.0);
+      for (int x = 0; x < width; ++x) {
+        const glm::dvec2 distorted =
+            normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
+        // Neighbouring pixels' solutions are close: start from the previous one.
+        const glm::dvec2 truth = undistortOrThrow(camera.effects, c, distorted, x == 0 ? distorted : guess);
+        guess = truth;
+        const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
+        map[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+            glm::vec2(p.x / inner.x, 1.0 - p.y / inner.y);
+      }
+    }
+    table.channels.push_back(std::move(map));
+  }
+  return table;
+}
+
+ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size, glm::dvec2 guess) {
+  const Window& w = camera.view.window;
+  const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, size.widthPx, size.heightPx));
+  ChannelSample s;
+  s.normalised = camera.effects.needsRemap() ? undistortOrThrow(camera.effects, c, distorted, guess) : distorted;
+  s.pixel = pixelFromWindow(w, windowFromNormalised(camera.view, s.normalised), size.widthPx, size.heightPx);
+  s.inverseFocusShift = camera.effects.inverseFocusShift(c, s.normalised);
+  return s;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,62 @@
+#pragma once
+// The lens effects (lens/LensEffects.h) applied to a camera's image: which pixel of the true
+// perspective image each output pixel shows, per colour channel.
+//
+// The raster path renders the true perspective image (with depth of field) over a window a little
+// larger than the camera's (overscan: same centre, same pixel pitch, whole pixels added on each
+// side) and then remaps it in a post pass through a table of these positions. The ray caster casts
+// each output sample's ray through the same inverse mapping, exactly, per sample.
+#include "camera/Camera.h"
+#include "camera/ImageSize.h"
+#include "lens/LensEffects.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// Throws InputError naming `where` when the camera's lens effects cannot be rendered: effects on a
+// parallel projection, non-finite or out-of-range values, or a distortion that folds over inside
+// the image (see findFoldOver); the message says where the fold is and what to change.
+void validateLensEffects(const Camera& camera, const std::string& where);
+
+// The normalised-coordinate rectangle covered by the camera's window.
+struct NormalisedRect {
+  glm::dvec2 min, max;
+  double cornerRadius() const;  // distance of the farthest corner from the principal point
+};
+NormalisedRect normalisedWindow(const ViewSpec& view);
+
+// The undistorted render the post pass samples: the camera with its window widened by `padPx`
+// whole pixels on each side (left = right, top = bottom), and that render's size.
+struct Overscan {
+  Camera camera;     // lens effects still attached (the raster path needs the axial/curvature parts)
+  ImageSize size;
+  glm::ivec2 padPx{0, 0};
+};
+Overscan overscanFor(const Camera& camera, ImageSize size);
+
+// For each output pixel centre, in GL row order (row 0 at the bottom), the texture coordinate in
+// the overscan render of the true perspective position that channel `c` shows. One table per
+// channel when there is lateral colour, else one (green's) used for all three.
+struct RemapTable {
+  ImageSize size;
+  std::vector<std::vector<glm::vec2>> channels;  // 1 or 3 tables, size.widthPx × size.heightPx each
+  bool perChannel() const { return channels.size() == 3; }
+};
+RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan);
+
+// Exact, for the ray caster: channel `c` of output pixel position `pixel` (continuous, origin top
+// left) shows the true perspective pixel position returned (same image grid, may lie outside it),
+// focused at the camera's inverse focus distance plus `inverseFocusShift`. `guess` is a true
+// normalised position to start Newton from (the pixel centre's); `normalised` receives the result.
+struct ChannelSample {
+  glm::dvec2 pixel;
+  glm::dvec2 normalised;
+  double inverseFocusShift = 0.0;
+};
+ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size, glm::dvec2 guess);
+
+}  // namespace lenslab

@@ -1,0 +1,137 @@
+#include "lens/LensEffects.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lenslab {
+namespace {
+
+// lenslab's normalised frame has y up, OpenCV's y down: the same point is (x, −y) there.
+glm::dvec2 flipY(glm::dvec2 p) { return {p.x, -p.y}; }
+
+struct Radial {
+  double g;  // 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶
+  double h;  // g'(r) / r, so that ∂g/∂x = h·x (0 at the centre, where the α term has no derivative)
+};
+
+Radial radial(const Distortion& d, double r) {
+  const double r2 = r * r;
+  const double k1 = d.k1 + d.beta;
+  Radial out;
+  out.g = 1.0 + r * (d.alpha + r * (k1 + r * d.gamma)) + r2 * r2 * (d.k2 + r2 * d.k3);
+  out.h = 2.0 * k1 + 3.0 * d.gamma * r + 4.0 * d.k2 * r2 + 6.0 * d.k3 * r2 * r2 + (r > 0.0 ? d.alpha / r : 0.0);
+  return out;
+}
+
+}  // namespace
+
+bool Distortion::isZero() const {
+  return k1 == 0.0 && k2 == 0.0 && p1 == 0.0 && p2 == 0.0 && k3 == 0.0 && alpha == 0.0 && beta == 0.0 &&
+         gamma == 0.0;
+}
+
+glm::dvec2 Distortion::distort(glm::dvec2 undistorted) const {
+  const glm::dvec2 p = flipY(undistorted);  // OpenCV's frame from here on
+  const double x = p.x, y = p.y;
+  const double r2 = x * x + y * y;
+  const double g = radial(*this, std::sqrt(r2)).g;
+  const glm::dvec2 d(x * g + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
+                     y * g + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y);
+  return flipY(d);
+}
+
+glm::dmat2 Distortion::jacobian(glm::dvec2 undistorted) const {
+  const glm::dvec2 p = flipY(undistorted);
+  const double x = p.x, y = p.y;
+  const Radial rad = radial(*this, std::sqrt(x * x + y * y));
+  // OpenCV's frame: J = [[∂xd/∂x, ∂xd/∂y], [∂yd/∂x, ∂yd/∂y]].
+  const double dxdx = rad.g + rad.h * x * x + 2.0 * p1 * y + 6.0 * p2 * x;
+  const double dxdy = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y;
+  const double dydx = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y;
+  const double dydy = rad.g + rad.h * y * y + 6.0 * p1 * y + 2.0 * p2 * x;
+  // Back to y up: F·J·F with F = diag(1, −1) flips the off-diagonal signs. glm is column-major.
+  return glm::dmat2(glm::dvec2(dxdx, -dydx), glm::dvec2(-dxdy, dydy));
+}
+
+std::optional<glm::dvec2> Distortion::undistort(glm::dvec2 distorted, glm::dvec2 guess) const {
+  if (isZero()) return distorted;
+  glm::dvec2 x = guess;
+  for (int i = 0; i < 64; ++i) {
+    const glm::dmat2 j = jacobian(x);
+    const double det = glm::determinant(j);
+    if (!(std::abs(det) > 1e-300)) return std::nullopt;
+    const glm::dvec2 step = glm::inverse(j) * (distort(x) - distorted);
+    x -= step;
+    if (!std::isfinite(x.x) || !std::isfinite(x.y)) return std::nullopt;
+    if (glm::length(step) <= 1e-13 * std::max(1.0, glm::length(x))) return x;
+  }
+  return std::nullopt;
+}
+
+std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 distortedMin, glm::dvec2 distortedMax) {
+  if (distortion.isZero()) return std::nullopt;
+  const auto inside = [&](glm::dvec2 p) {
+    return p.x >= distortedMin.x && p.x <= distortedMax.x && p.y >= distortedMin.y && p.y <= distortedMax.y;
+  };
+  double extent = 0.0;  // the farthest corner of the region from the principal point
+  for (const glm::dvec2 c : {distortedMin, distortedMax, glm::dvec2(distortedMin.x, distortedMax.y),
+                             glm::dvec2(distortedMax.x, distortedMin.y)})
+    extent = std::max(extent, glm::length(c));
+  // Walk outward along rays from the centre. A point may leave the region and (with tangential
+  // terms) come back, so a ray is followed until its image is well outside every corner.
+  constexpr int kAngles = 720;
+  constexpr int kSteps = 4000;
+  const double step = extent / kSteps;
+  const double giveUp = 16.0 * extent;
+  std::optional<FoldOver> nearest;
+  for (int a = 0; a < kAngles; ++a) {
+    const double angle = 2.0 * M_PI * (a + 0.5) / kAngles;
+    const glm::dvec2 direction(std::cos(angle), std::sin(angle));
+    for (double t = 0.0; t < giveUp; t += step) {
+      const glm::dvec2 p = t * direction;
+      const glm::dvec2 d = distortion.distort(p);
+      if (glm::length(d) > 2.0 * extent) break;
+      // A polynomial that never carries this ray out of the image (it stalls) is a fold too.
+      const bool stalled = t + step >= giveUp;
+      if ((!(glm::determinant(distortion.jacobian(p)) > 0.0) || stalled) && inside(d)) {
+        if (!nearest || glm::length(p) < glm::length(nearest->undistorted)) nearest = FoldOver{p, d};
+        break;
+      }
+    }
+  }
+  return nearest;
+}
+
+double Chromatic::lateral(Channel c) const {
+  return c == Channel::Red ? lateralRed : c == Channel::Blue ? lateralBlue : 0.0;
+}
+
+double Chromatic::inverseFocusShift(Channel c) const {
+  return c == Channel::Red ? inverseFocusShiftRed : c == Channel::Blue ? inverseFocusShiftBlue : 0.0;
+}
+
+std::array<double, 2> inverseFocusShiftsFromAbbe(double abbeNumber, double focalLength) {
+  // Fraunhofer lines, micrometres: C (red), d (green, helium), F (blue).
+  constexpr double kC = 0.6562725, kD = 0.5875618, kF = 0.4861327;
+  const auto cauchy = [](double lambda) { return 1.0 / (lambda * lambda); };
+  // n_d − n_C as a fraction of n_F − n_C under n = A + B/λ² (0.301; BK7's measured value is 0.308).
+  const double redFraction = (cauchy(kD) - cauchy(kC)) / (cauchy(kF) - cauchy(kC));
+  const double power = 1.0 / focalLength;
+  return {-power * redFraction / abbeNumber, power * (1.0 - redFraction) / abbeNumber};
+}
+
+std::optional<glm::dvec2> LensEffects::undistortChannel(Channel c, glm::dvec2 distorted, glm::dvec2 guess) const {
+  // Lateral colour scales the channel's image about the principal point, after the distortion.
+  const glm::dvec2 green = distorted / (1.0 + chromatic.lateral(c));
+  return distortion.undistort(green, guess);
+}
+
+glm::dvec2 LensEffects::distortChannel(Channel c, glm::dvec2 undistorted) const {
+  return distortion.distort(undistorted) * (1.0 + chromatic.lateral(c));
+}
+
+double LensEffects::inverseFocusShift(Channel c, glm::dvec2 undistorted) const {
+  return chromatic.inverseFocusShift(c) + fieldCurvature.inverseFocusPerRadius2 * glm::dot(undistorted, undistorted);
+}
+
+}  // namespace lenslab

@@ -1,0 +1,75 @@
+#include "render/LensPass.h"
+
+#include "gl/Shader.h"
+
+#include <stdexcept>
+
+namespace lenslab {
+namespace {
+
+std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& overscan) {
+  const LensEffects& e = camera.effects;
+  const Distortion& d = e.distortion;
+  const ViewSpec& v = camera.view;
+  return {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed, e.chromatic.lateralBlue,
+          v.prp.x, v.prp.y, v.prp.z, v.window.umin, v.window.vmin, v.window.umax, v.window.vmax,
+          static_cast<double>(size.widthPx), static_cast<double>(size.heightPx),
+          static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx)};
+}
+
+}  // namespace
+
+LensPass::LensPass()
+    : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")),
+      emptyVertexArray_(gl::VertexArray::create()),
+      bilinear_(gl::Sampler::create()) {
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan) {
+  std::vector<double> key = keyOf(camera, size, overscan);
+  if (key == key_ && !tables_.empty()) return;
+  const RemapTable table = makeRemapTable(camera, size, overscan);
+  tables_.clear();
+  for (const std::vector<glm::vec2>& map : table.channels) {
+    gl::Texture t = gl::Texture::create();
+    glTextureStorage2D(t.id(), 1, GL_RG32F, size.widthPx, size.heightPx);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureSubImage2D(t.id(), 0, 0, 0, size.widthPx, size.heightPx, GL_RG, GL_FLOAT, map.data());
+    tables_.push_back(std::move(t));
+  }
+  if (table.perChannel() && !perChannelProgram_)
+    perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
+  key_ = std::move(key);
+  ++tablesBuilt_;
+}
+
+void LensPass::apply(const gl::RenderTarget& undistorted, const gl::RenderTarget& out) {
+  if (tables_.empty()) throw std::logic_error("LensPass::apply before prepare");
+  out.bind();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  const bool perChannel = tables_.size() == 3;
+  glUseProgram(perChannel ? perChannelProgram_.id() : program_.id());
+  glBindTextureUnit(0, undistorted.colorTexture());
+  glBindSampler(0, bilinear_.id());
+  if (perChannel) {
+    glBindTextureUnit(1, tables_[1].id());  // green
+    glBindTextureUnit(2, tables_[0].id());  // red
+    glBindTextureUnit(3, tables_[2].id());  // blue
+  } else {
+    glBindTextureUnit(1, tables_[0].id());
+  }
+  for (GLuint unit = 1; unit <= 3; ++unit) glBindSampler(unit, 0);
+  glBindVertexArray(emptyVertexArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glBindSampler(0, 0);
+}
+
+}  // namespace lenslab

@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 namespace lenslab {
 namespace {
@@ -68,8 +71,9 @@ void validateLensEffects(const Camera& camera, const std::string& where) {
   }
   if (const auto fold = findFoldOver(d, lo, hi)) {
     const double along = glm::length(fold->distorted) / rect.cornerRadius();
-    throw InputError(cat(where, ": distortion folds over inside the image: at the true position (", fold->undistorted.x,
-                         ", ", fold->undistorted.y, ") in normalised coordinates, ", std::lround(100.0 * along),
+    throw InputError(cat(where, ": distortion folds over inside the image: at normalised radius ",
+                         glm::length(fold->undistorted), " (true position ", fold->undistorted.x, ", ", fold->undistorted.y,
+                         "), ", std::lround(100.0 * along),
                          "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
                          "so two points of the scene would land on one pixel (k1 = ", d.k1, ", k2 = ", d.k2,
                          ", k3 = ", d.k3, "); use weaker coefficients or a narrower field of view"));
@@ -125,20 +129,39 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
   const glm::dvec2 pad(overscan.padPx);
   for (const Channel c : remappedChannels(camera.effects)) {
     std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-    for (int row = 0; row < height; ++row) {
-      const int y = height - 1 - row;  // GL rows run up, image rows down
-      glm::dvec2 guess(0.0);
-      for (int x = 0; x < width; ++x) {
-        const glm::dvec2 distorted =
-            normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
-        // Neighbouring pixels' solutions are close: start from the previous one.
-        const glm::dvec2 truth = undistortOrThrow(camera.effects, c, distorted, x == 0 ? distorted : guess);
-        guess = truth;
-        const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
-        map[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
-            glm::vec2(p.x / inner.x, 1.0 - p.y / inner.y);
+    const auto rows = [&](int first, int last) {
+      for (int row = first; row < last; ++row) {
+        const int y = height - 1 - row;  // GL rows run up, image rows down
+        glm::dvec2 guess(0.0);
+        for (int x = 0; x < width; ++x) {
+          const glm::dvec2 distorted =
+              normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
+          // Neighbouring pixels' solutions are close: start from the previous one.
+          const glm::dvec2 truth = undistortOrThrow(camera.effects, c, distorted, x == 0 ? distorted : guess);
+          guess = truth;
+          const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
+          map[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+              glm::vec2(p.x / inner.x, 1.0 - p.y / inner.y);
+        }
       }
-    }
+    };
+    // Rows are independent: one band per core (the table is rebuilt only when the lens changes,
+    // but a 4K table is 8 million Newton solves).
+    const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 16);
+    std::vector<std::thread> workers;
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    for (int t = 0; t < threads; ++t)
+      workers.emplace_back([&, t] {
+        try {
+          rows(height * t / threads, height * (t + 1) / threads);
+        } catch (...) {
+          const std::lock_guard lock(failureMutex);
+          failure = std::current_exception();
+        }
+      });
+    for (std::thread& worker : workers) worker.join();
+    if (failure) std::rethrow_exception(failure);
     table.channels.push_back(std::move(map));
   }
   return table;

@@ -63,7 +63,11 @@ std::optional<glm::dvec2> Distortion::undistort(glm::dvec2 distorted, glm::dvec2
     const glm::dvec2 step = glm::inverse(j) * (distort(x) - distorted);
     x -= step;
     if (!std::isfinite(x.x) || !std::isfinite(x.y)) return std::nullopt;
-    if (glm::length(step) <= 1e-13 * std::max(1.0, glm::length(x))) return x;
+    if (glm::length(step) <= 1e-13 * std::max(1.0, glm::length(x))) {
+      // Only the branch that contains the centre is the lens's (beyond a fold lies its mirror).
+      if (!(glm::determinant(jacobian(x)) > 0.0)) return std::nullopt;
+      return x;
+    }
   }
   return std::nullopt;
 }
@@ -77,26 +81,30 @@ std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 di
   for (const glm::dvec2 c : {distortedMin, distortedMax, glm::dvec2(distortedMin.x, distortedMax.y),
                              glm::dvec2(distortedMax.x, distortedMin.y)})
     extent = std::max(extent, glm::length(c));
-  // Walk outward along rays from the centre. A point may leave the region and (with tangential
-  // terms) come back, so a ray is followed until its image is well outside every corner.
-  constexpr int kAngles = 720;
-  constexpr int kSteps = 4000;
+  // Walk outward along rays from the centre, over the branch of the map that the inverse uses
+  // (the one that contains the centre): up to the first point where the Jacobian's determinant
+  // stops being positive. That point folds the image if its distorted position is inside the
+  // region; beyond it the polynomial may come back into the region (a mirrored ring, outside any
+  // real lens's field stop), which the inverse never uses.
+  constexpr int kAngles = 360;
+  constexpr int kSteps = 1000;
   const double step = extent / kSteps;
   const double giveUp = 16.0 * extent;
   std::optional<FoldOver> nearest;
   for (int a = 0; a < kAngles; ++a) {
     const double angle = 2.0 * M_PI * (a + 0.5) / kAngles;
     const glm::dvec2 direction(std::cos(angle), std::sin(angle));
-    for (double t = 0.0; t < giveUp; t += step) {
+    for (double t = 0.0;; t += step) {
       const glm::dvec2 p = t * direction;
       const glm::dvec2 d = distortion.distort(p);
-      if (glm::length(d) > 2.0 * extent) break;
-      // A polynomial that never carries this ray out of the image (it stalls) is a fold too.
+      const bool folded = !(glm::determinant(distortion.jacobian(p)) > 0.0);
+      // A polynomial that never carries this ray out of the region (it stalls) folds it too.
       const bool stalled = t + step >= giveUp;
-      if ((!(glm::determinant(distortion.jacobian(p)) > 0.0) || stalled) && inside(d)) {
-        if (!nearest || glm::length(p) < glm::length(nearest->undistorted)) nearest = FoldOver{p, d};
+      if (folded || stalled) {
+        if (inside(d) && (!nearest || glm::length(p) < glm::length(nearest->undistorted))) nearest = FoldOver{p, d};
         break;
       }
+      if (glm::length(d) > 2.0 * extent) break;
     }
   }
   return nearest;

@@ -1,0 +1,326 @@
+// Lens effects without a GL context: the distortion model against OpenCV's formulas written out
+// here, its inverse, fold-over detection, chromatic aberration, the camera file keys and the
+// frame plan's passes.
+#include "camera/LensMap.h"
+#include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/CameraJson.h"
+#include "lens/LensEffects.h"
+#include "plan/FramePlan.h"
+#include "scene/ProceduralScenes.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+namespace lenslab {
+namespace {
+
+// OpenCV's projectPoints for a camera looking down its +z axis (x right, y down), written from
+// its documentation rather than taken from the code under test: returns OpenCV pixel coordinates
+// (pixel centres on integers).
+struct OpenCvCamera {
+  double fx, fy, cx, cy;
+  double k1 = 0, k2 = 0, p1 = 0, p2 = 0, k3 = 0;
+  glm::dvec2 project(glm::dvec3 cameraPoint) const {
+    const double x = cameraPoint.x / cameraPoint.z, y = cameraPoint.y / cameraPoint.z;
+    const double r2 = x * x + y * y;
+    const double radial = 1 + k1 * r2 + k2 * r2 * r2 + k3 * r2 * r2 * r2;
+    const double xd = x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
+    const double yd = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y;
+    return {fx * xd + cx, fy * yd + cy};
+  }
+};
+
+const OpenCvCamera kBarrel{520, 515, 330.2, 236.7, -0.28, 0.09, 0, 0, 0};
+const OpenCvCamera kPincushion{520, 520, 319.5, 239.5, 0.18, 0.02, 0, 0, 0};
+const OpenCvCamera kMixed{505, 512, 325.0, 230.0, -0.21, 0.06, 0.0021, -0.0013, -0.01};
+
+std::string intrinsicsJson(const OpenCvCamera& c, const std::string& extra = "") {
+  return cat(R"({"eye": [0, 0, 0], "target": [0, 0, -1], "intrinsics": {"fx": )", c.fx, R"(, "fy": )", c.fy,
+             R"(, "cx": )", c.cx, R"(, "cy": )", c.cy, R"(, "width": 640, "height": 480}, "distortion": [)", c.k1,
+             ", ", c.k2, ", ", c.p1, ", ", c.p2, ", ", c.k3, "]", extra, "}");
+}
+
+// lenslab's own chain: world → lecture projection → normalised → distortion → pixel.
+glm::dvec2 lenslabPixel(const Camera& camera, const glm::dvec3& world, ImageSize size) {
+  const glm::dvec2 ideal = normalisedFromWindow(camera.view, projectToWindow(camera.view, world));
+  const glm::dvec2 distorted = camera.effects.distortion.distort(ideal);
+  return pixelFromWindow(camera.view.window, windowFromNormalised(camera.view, distorted), size.widthPx, size.heightPx);
+}
+
+class OpenCvModel : public ::testing::TestWithParam<OpenCvCamera> {};
+
+TEST_P(OpenCvModel, IntrinsicsCameraPutsPointsWhereOpenCvDoes) {
+  const OpenCvCamera cv = GetParam();
+  const CameraFile file = parseCameraJson(intrinsicsJson(cv), "test.json");
+  ASSERT_TRUE(file.camera.calibratedSize);
+  const ImageSize size = resolveImageSize(file.camera, std::nullopt, std::nullopt);
+  EXPECT_EQ(size.widthPx, 640);
+  EXPECT_EQ(size.heightPx, 480);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> along(-0.55, 0.55), depth(0.5, 20.0);
+  for (int i = 0; i < 2000; ++i) {
+    // The camera looks down −z with y up; OpenCV's camera frame has y down and looks down +z.
+    const double z = depth(rng);
+    const glm::dvec3 world(along(rng) * z, along(rng) * z * 0.75, -z);
+    const glm::dvec2 expected = cv.project({world.x, -world.y, -world.z}) + glm::dvec2(0.5);  // lenslab's pixel centres
+    const glm::dvec2 actual = lenslabPixel(file.camera, world, size);
+    ASSERT_NEAR(actual.x, expected.x, 1e-9);
+    ASSERT_NEAR(actual.y, expected.y, 1e-9);
+  }
+}
+
+TEST_P(OpenCvModel, InverseRoundTripsBelowOneMillionth) {
+  const CameraFile file = parseCameraJson(intrinsicsJson(GetParam()), "test.json");
+  const Distortion& d = file.camera.effects.distortion;
+  const NormalisedRect rect = normalisedWindow(file.camera.view);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(rect.min.x, rect.max.x), v(rect.min.y, rect.max.y);
+  double worst = 0.0;
+  for (int i = 0; i < 20000; ++i) {
+    const glm::dvec2 distorted(u(rng), v(rng));
+    const auto truth = d.undistort(distorted);
+    ASSERT_TRUE(truth.has_value());
+    worst = std::max(worst, glm::length(d.distort(*truth) - distorted));
+  }
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_LT(worst, 1e-12);  // Newton in double precision does much better than asked
+}
+
+TEST_P(OpenCvModel, JacobianMatchesFiniteDifferences) {
+  const Distortion d = parseCameraJson(intrinsicsJson(GetParam()), "t").camera.effects.distortion;
+  for (const glm::dvec2 p : {glm::dvec2(0.3, -0.2), glm::dvec2(-0.5, 0.4), glm::dvec2(0.01, 0.6)}) {
+    const glm::dmat2 j = d.jacobian(p);
+    const double h = 1e-6;
+    const glm::dvec2 dx = (d.distort(p + glm::dvec2(h, 0)) - d.distort(p - glm::dvec2(h, 0))) / (2 * h);
+    const glm::dvec2 dy = (d.distort(p + glm::dvec2(0, h)) - d.distort(p - glm::dvec2(0, h))) / (2 * h);
+    EXPECT_NEAR(j[0].x, dx.x, 1e-7);
+    EXPECT_NEAR(j[0].y, dx.y, 1e-7);
+    EXPECT_NEAR(j[1].x, dy.x, 1e-7);
+    EXPECT_NEAR(j[1].y, dy.y, 1e-7);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Barrel, OpenCvModel, ::testing::Values(kBarrel));
+INSTANTIATE_TEST_SUITE_P(Pincushion, OpenCvModel, ::testing::Values(kPincushion));
+INSTANTIATE_TEST_SUITE_P(MixedWithTangential, OpenCvModel, ::testing::Values(kMixed));
+
+TEST(Distortion, LectureSeriesScalesTheRadiusAsWritten) {
+  Distortion d;
+  d.alpha = 0.05, d.beta = -0.2, d.gamma = 0.03;
+  const glm::dvec2 p(0.3, -0.4);  // ρ' = 0.5
+  const double rho = 0.5 * (1 + 0.05 * 0.5 + -0.2 * 0.25 + 0.03 * 0.125);
+  EXPECT_NEAR(glm::length(d.distort(p)), rho, 1e-15);
+  // Radial: the direction is kept.
+  EXPECT_NEAR(d.distort(p).x / d.distort(p).y, p.x / p.y, 1e-12);
+  const auto back = d.undistort(d.distort(p));
+  ASSERT_TRUE(back);
+  EXPECT_NEAR(back->x, p.x, 1e-12);
+}
+
+TEST(Distortion, FoldOverIsFoundForAnExtremePairAndNotForAMildOne) {
+  const glm::dvec2 lo(-0.7, -0.47), hi(0.7, 0.47);  // the grid camera's window, normalised
+  Distortion extreme;
+  extreme.k1 = -0.9;
+  const auto fold = findFoldOver(extreme, lo, hi);
+  ASSERT_TRUE(fold);
+  // The radial fold of 1 − 0.9 r²: d(r·g)/dr = 1 − 2.7 r² = 0 at r = 0.609.
+  EXPECT_NEAR(glm::length(fold->undistorted), 1.0 / std::sqrt(2.7), 0.01);
+  Distortion pair;  // strong pincushion with a negative k2 turns back too
+  pair.k1 = 0.5, pair.k2 = -1.2;
+  EXPECT_TRUE(findFoldOver(pair, lo, hi));
+  Distortion mild;
+  mild.k1 = -0.25, mild.k2 = 0.05, mild.p1 = 0.01;
+  EXPECT_FALSE(findFoldOver(mild, lo, hi));
+}
+
+TEST(Distortion, FoldOverIsRefusedWithAClearMessage) {
+  try {
+    parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-2.1,-1.4,2.1,1.4],
+                        "distortion": {"k1": -0.9}})", "cam.json");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("cam.json"), std::string::npos) << m;
+    EXPECT_NE(m.find("folds over"), std::string::npos) << m;
+    EXPECT_NE(m.find("k1 = -0.9"), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  }
+}
+
+// A camera of about 50 mm on a 36 × 24 mm sensor: normalised corner radius 0.43.
+Camera narrowCamera(double k1) {
+  Camera c;
+  c.view.vrp = {0, 0, 0};
+  c.view.prp = {0, 0, 2};
+  c.view.window = {-0.72, -0.48, 0.72, 0.48};
+  c.effects.distortion.k1 = k1;
+  return c;
+}
+
+TEST(Overscan, BarrelFromMinusHalfToZeroNeverSamplesOutsideTheRender) {
+  const ImageSize size{300, 200};
+  for (double k1 = -0.5; k1 <= 0.0; k1 += 0.05) {
+    Camera camera = narrowCamera(k1);
+    ASSERT_NO_THROW(validateLensEffects(camera, "test"));
+    const Overscan o = overscanFor(camera, size);
+    const RemapTable table = makeRemapTable(camera, size, o);
+    // Every lookup's bilinear footprint lies on rendered texels: no black border.
+    const glm::dvec2 halfTexel(0.5 / o.size.widthPx, 0.5 / o.size.heightPx);
+    for (const auto& map : table.channels) {
+      for (const glm::vec2 t : map) {
+        ASSERT_GE(t.x, halfTexel.x) << "k1 " << k1;
+        ASSERT_LE(t.x, 1.0 - halfTexel.x) << "k1 " << k1;
+        ASSERT_GE(t.y, halfTexel.y) << "k1 " << k1;
+        ASSERT_LE(t.y, 1.0 - halfTexel.y) << "k1 " << k1;
+      }
+    }
+    if (k1 < -0.01) EXPECT_GT(o.padPx.x, 2) << "barrel needs more than the bilinear margin";
+  }
+}
+
+TEST(Overscan, ZeroDistortionIsTheIdentityOnPixelCentres) {
+  Camera camera = narrowCamera(0.0);
+  camera.effects.chromatic.lateralRed = 1e-9;  // forces the tables to be made
+  const ImageSize size{64, 48};
+  const Overscan o = overscanFor(camera, size);
+  const RemapTable table = makeRemapTable(camera, size, o);
+  const auto& green = table.channels[1];
+  for (int row = 0; row < size.heightPx; ++row)
+    for (int x = 0; x < size.widthPx; ++x) {
+      const glm::dvec2 t(green[static_cast<std::size_t>(row * size.widthPx + x)]);
+      EXPECT_NEAR(t.x * o.size.widthPx, x + 0.5 + o.padPx.x, 1e-3);
+      EXPECT_NEAR(t.y * o.size.heightPx, row + 0.5 + o.padPx.y, 1e-3);
+    }
+}
+
+TEST(Chromatic, AbbeNumberFocusesRedFartherAndBlueNearer) {
+  const double f = 0.05;  // 50 mm
+  const auto shifts = inverseFocusShiftsFromAbbe(64.17, f);  // BK7
+  EXPECT_LT(shifts[0], 0.0);
+  EXPECT_GT(shifts[1], 0.0);
+  // The F − C spread is the whole dispersion: 1/(V f).
+  EXPECT_NEAR(shifts[1] - shifts[0], 1.0 / (64.17 * f), 1e-12);
+  EXPECT_NEAR(-shifts[0] / (shifts[1] - shifts[0]), 0.301, 0.002);
+}
+
+TEST(Chromatic, CameraFileReadsPerChannelFocusAndLateralScale) {
+  const CameraFile file = parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
+      "aperture_radius": 0.05, "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.003,
+      "focus_distance_red": 2.5, "focus_distance_blue": "infinity"}})", "c.json");
+  const Chromatic& c = file.camera.effects.chromatic;
+  EXPECT_DOUBLE_EQ(c.lateralRed, 0.004);
+  EXPECT_DOUBLE_EQ(c.lateralBlue, -0.003);
+  EXPECT_NEAR(file.camera.inverseFocusDistance() + c.inverseFocusShiftRed, 1.0 / 2.5, 1e-15);
+  EXPECT_NEAR(file.camera.inverseFocusDistance() + c.inverseFocusShiftBlue, 0.0, 1e-15);
+  // Saved and loaded again, the lens is the same.
+  const CameraFile again = parseCameraJson(toCameraJson(file.camera), "again.json");
+  EXPECT_NEAR(again.camera.effects.chromatic.inverseFocusShiftRed, c.inverseFocusShiftRed, 1e-12);
+  EXPECT_DOUBLE_EQ(again.camera.effects.chromatic.lateralRed, c.lateralRed);
+}
+
+TEST(Chromatic, PhysicalFormTakesAnAbbeNumber) {
+  const CameraFile file = parseCameraJson(R"({"eye": [0,0,5], "target": [0,0,0], "focal_length_mm": 50, "f_number": 2,
+      "chromatic": {"abbe_number": 40}})", "p.json");
+  const auto expected = inverseFocusShiftsFromAbbe(40, 0.05);
+  EXPECT_DOUBLE_EQ(file.camera.effects.chromatic.inverseFocusShiftRed, expected[0]);
+  EXPECT_DOUBLE_EQ(file.camera.effects.chromatic.inverseFocusShiftBlue, expected[1]);
+}
+
+TEST(FieldCurvature, CornerFocusDistanceSetsTheCurvature) {
+  const CameraFile file = parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.8,0.6,0.8],
+      "aperture_radius": 0.05, "field_curvature": {"corner_focus_distance": 1.6}})", "f.json");
+  const Camera& camera = file.camera;
+  const glm::dvec2 corner(0.3, 0.4);  // normalised: window corner / PRP.n, radius 0.5
+  EXPECT_NEAR(camera.inverseFocusDistance() + camera.effects.inverseFocusShift(Channel::Green, corner), 1.0 / 1.6, 1e-12);
+  EXPECT_NEAR(camera.effects.inverseFocusShift(Channel::Green, {0.0, 0.0}), 0.0, 1e-15);
+  const CameraFile again = parseCameraJson(toCameraJson(camera), "again.json");
+  EXPECT_NEAR(again.camera.effects.fieldCurvature.inverseFocusPerRadius2, camera.effects.fieldCurvature.inverseFocusPerRadius2, 1e-12);
+}
+
+TEST(LensEffectsJson, BadKeysAndFormsGiveOneLineErrors) {
+  const std::string base = R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4], )";
+  const auto message = [&](const std::string& tail) {
+    try {
+      parseCameraJson(base + tail + "}", "e.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(message(R"("distortion": {"k4": 0.1})").find("distortion.k4"), std::string::npos);
+  EXPECT_NE(message(R"("distortion": [0.1, 0.2])").find("[k1, k2, p1, p2]"), std::string::npos);
+  EXPECT_NE(message(R"("distortion": {"k1": "x"})").find("distortion.k1"), std::string::npos);
+  EXPECT_NE(message(R"("chromatic": {"abbe_number": 40})").find("physical form"), std::string::npos);
+  EXPECT_NE(message(R"("chromatic": {"lateral_red": 0.7})").find("lateral_red"), std::string::npos);
+  EXPECT_NE(message(R"("field_curvature": {})").find("corner_focus_distance"), std::string::npos);
+  EXPECT_NE(message(R"("field_curvature": {"corner_focus_distance": -1})").find("corner_focus_distance"), std::string::npos);
+  const std::string parallel = R"({"projection": "parallel", "far": 10, "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2],
+                                   "window": [-0.6,-0.4,0.6,0.4], "distortion": {"k1": -0.1}})";
+  EXPECT_THROW(parseCameraJson(parallel, "p.json"), InputError);
+  EXPECT_THROW(parseCameraJson(R"({"eye": [0,0,0], "target": [0,0,-1], "intrinsics": {"fx": 500, "fy": 500, "cx": 320,
+                                  "cy": 240, "width": 640}})", "i.json"), InputError);
+}
+
+Scene oneQuad() {
+  Scene scene;
+  addUnlitQuad(scene, glm::dmat4(1.0), 1.0, 1.0, glm::vec3(1.0f));
+  scene.bounds.max = {1.0, 1.0, 0.0};
+  scene.bounds.min = {-1.0, -1.0, -1.0};
+  return scene;
+}
+
+TEST(FramePlanEffects, ZeroStrengthCostsNothing) {
+  const Scene scene = oneQuad();
+  Camera plain = narrowCamera(0.0);
+  plain.apertureRadius = 0.05;
+  Camera zeros = plain;
+  zeros.effects = LensEffects{};  // all zero, as a camera file with "distortion": {"k1": 0} gives
+  const ImageSize size{120, 80};
+  const FramePlan a = makeFramePlan(scene, plain, size), b = makeFramePlan(scene, zeros, size);
+  ASSERT_EQ(a.passes.size(), b.passes.size());
+  for (std::size_t i = 0; i < a.passes.size(); ++i) {
+    EXPECT_EQ(a.passes[i].name, b.passes[i].name);
+    EXPECT_TRUE(b.passes[i].variants.empty());
+  }
+  EXPECT_FALSE(b.remap);
+  EXPECT_EQ(b.viewsPerSample, 1);
+  EXPECT_FALSE(b.fieldCurvature);
+  EXPECT_EQ(b.overscan.size.widthPx, size.widthPx);
+}
+
+TEST(FramePlanEffects, EachEffectAddsOnlyItsOwnPassOrVariant) {
+  const Scene scene = oneQuad();
+  const ImageSize size{120, 80};
+  Camera lens = narrowCamera(-0.2);
+  FramePlan plan = makeFramePlan(scene, lens, size);  // a pinhole with distortion
+  ASSERT_EQ(plan.passes.size(), 2u);
+  EXPECT_EQ(plan.passes[0].name, "scene");
+  EXPECT_EQ(plan.passes[1].name, "lens");
+  EXPECT_EQ(plan.passes[1].variants, std::vector<std::string>{"distortion"});
+  EXPECT_GT(plan.overscan.size.widthPx, size.widthPx);
+
+  Camera axial = narrowCamera(0.0);
+  axial.effects.chromatic.inverseFocusShiftRed = -0.1;
+  plan = makeFramePlan(scene, axial, size);  // a pinhole: axial colour changes nothing
+  EXPECT_EQ(plan.viewsPerSample, 1);
+  EXPECT_FALSE(plan.warnings.empty());
+  axial.apertureRadius = 0.05;
+  plan = makeFramePlan(scene, axial, size);
+  EXPECT_EQ(plan.viewsPerSample, 3);
+  EXPECT_FALSE(plan.remap);
+
+  Camera curved = narrowCamera(0.0);
+  curved.apertureRadius = 0.05;
+  curved.effects.fieldCurvature.inverseFocusPerRadius2 = 0.5;
+  plan = makeFramePlan(scene, curved, size);
+  EXPECT_TRUE(plan.fieldCurvature);
+  EXPECT_EQ(plan.passes[0].variants, std::vector<std::string>{"field-curvature"});
+  EXPECT_FALSE(plan.remap);
+}
+
+}  // namespace
+}  // namespace lenslab

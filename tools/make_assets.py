@@ -354,6 +354,13 @@ def make_rows():
     g.camera_from(camera)
     g.write(camera)
     write_camera("rows", "camera-dof.json", dict(camera, f_number=1.4, focus_distance=2.0))
+    # Every lens effect at once (issue 5): OpenCV-style barrel with tangential terms, lateral and
+    # axial colour, and a focal surface that curves toward the lens at the corners.
+    write_camera("rows", "camera-lens.json", dict(
+        camera, f_number=2.8, focus_distance=2.0,
+        distortion={"k1": -0.15, "k2": 0.03, "p1": 0.001, "p2": -0.0005},
+        chromatic={"lateral_red": 0.004, "lateral_blue": -0.004, "focus_distance_red": 2.2, "focus_distance_blue": 1.85},
+        field_curvature={"corner_focus_distance": 1.6}))
 
 
 def write_camera(scene, name, camera):
@@ -391,6 +398,12 @@ def make_grid():
               "prp": [0.0, 0.0, 3.0], "window": [-2.1, -1.4, 2.1, 1.4], "near": 0.1, "far": 100.0}
     g.camera_from_lecture(camera)
     g.write(camera)
+    # The same view as an OpenCV calibration gives it (pixels, principal point slightly off centre,
+    # barrel with tangential terms), for the distortion tests and the README.
+    write_camera("grid", "camera-distortion.json", {
+        "eye": [0.0, 0.0, 3.001], "target": [0.0, 0.0, 0.001], "up": [0, 1, 0], "near": 0.1, "far": 100.0,
+        "intrinsics": {"fx": 686.0, "fy": 686.0, "cx": 482.5, "cy": 317.5, "width": 960, "height": 640},
+        "distortion": [-0.22, 0.05, 0.002, -0.001]})
 
 
 def make_depth_range():

@@ -8,10 +8,44 @@
 layout(binding = 0) uniform sampler2DArray views;
 layout(location = 0) uniform int viewCount;
 layout(location = 1) uniform vec4 weights[8];
+#ifdef FIELD_CURVATURE
+// The lecture's "curved focal plane" (see src/render/Accumulator.h): pixel x of a view focused on
+// the curved surface is what the flat-focused view shows at x − shift·r(x)², r the normalised
+// radius of x. Sampled with Catmull–Rom.
+layout(location = 9) uniform vec2 shiftPerRadius2[8];
+layout(location = 17) uniform vec2 normalisedAtOrigin;
+layout(location = 18) uniform vec2 normalisedPerPixel;
+#endif
 layout(location = 0) out vec4 sum;
+
+#ifdef FIELD_CURVATURE
+// Catmull–Rom (bicubic) sample of layer `layer` at pixel position p: a bilinear sample would
+// blur every view by its fractional shift.
+vec4 catmullRom(vec2 p, int layer) {
+  vec2 q = p - 0.5;
+  vec2 base = floor(q);
+  vec2 t = q - base;
+  vec2 t2 = t * t, t3 = t2 * t;
+  vec2 w[4] = vec2[4](-0.5 * t3 + t2 - 0.5 * t, 1.5 * t3 - 2.5 * t2 + 1.0, -1.5 * t3 + 2.0 * t2 + 0.5 * t,
+                      0.5 * t3 - 0.5 * t2);
+  ivec2 last = textureSize(views, 0).xy - 1;
+  vec4 s = vec4(0.0);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      s += w[i].x * w[j].y * texelFetch(views, ivec3(clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), last), layer), 0);
+  return s;
+}
+#endif
 
 void main() {
   vec4 total = vec4(0.0);
+#ifdef FIELD_CURVATURE
+  vec2 n = normalisedAtOrigin + gl_FragCoord.xy * normalisedPerPixel;
+  float r2 = dot(n, n);
+  for (int i = 0; i < viewCount; ++i) total += weights[i] * catmullRom(gl_FragCoord.xy - shiftPerRadius2[i] * r2, i);
+  total = max(total, vec4(0.0));
+#else
   for (int i = 0; i < viewCount; ++i) total += weights[i] * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
+#endif
   sum = total;
 }

@@ -2,7 +2,7 @@
 // The lens pass: "points are distorted geometrically from the true perspective position". Each
 // output pixel looks up, in a table computed on the CPU (Newton's method in double precision, once
 // per lens), the true perspective position whose distorted image it is, and samples the
-// overscanned undistorted render there, bilinearly. With lateral colour each channel has its own
+// overscanned undistorted render there (Catmull–Rom). With lateral colour each channel has its own
 // table: red and blue are magnified about the principal point relative to green.
 layout(binding = 0) uniform sampler2D image;
 layout(binding = 1) uniform sampler2D greenMap;
@@ -12,12 +12,35 @@ layout(binding = 3) uniform sampler2D blueMap;
 #endif
 layout(location = 0) out vec4 color;
 
+// Catmull–Rom (bicubic) interpolation: bilinear would blur every pixel that falls between texels
+// (most of them, under distortion); Catmull–Rom reproduces the texel values and keeps edges.
+vec4 catmullRom(vec2 uv) {
+  vec2 size = vec2(textureSize(image, 0));
+  vec2 p = uv * size - 0.5;
+  vec2 base = floor(p);
+  vec2 t = p - base;
+  vec2 t2 = t * t, t3 = t2 * t;
+  vec2 w0 = -0.5 * t3 + t2 - 0.5 * t;
+  vec2 w1 = 1.5 * t3 - 2.5 * t2 + 1.0;
+  vec2 w2 = -1.5 * t3 + 2.0 * t2 + 0.5 * t;
+  vec2 w3 = 0.5 * t3 - 0.5 * t2;
+  vec2 w[4] = vec2[4](w0, w1, w2, w3);
+  ivec2 last = textureSize(image, 0) - 1;
+  vec4 sum = vec4(0.0);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      ivec2 texel = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), last);
+      sum += w[i].x * w[j].y * texelFetch(image, texel, 0);
+    }
+  return max(sum, vec4(0.0));  // Catmull–Rom overshoots a little at hard edges; light is never negative
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 green = texture(image, texelFetch(greenMap, pixel, 0).xy);
+  vec4 green = catmullRom(texelFetch(greenMap, pixel, 0).xy);
 #ifdef LATERAL_COLOUR
-  float red = texture(image, texelFetch(redMap, pixel, 0).xy).r;
-  float blue = texture(image, texelFetch(blueMap, pixel, 0).xy).b;
+  float red = catmullRom(texelFetch(redMap, pixel, 0).xy).r;
+  float blue = catmullRom(texelFetch(blueMap, pixel, 0).xy).b;
   color = vec4(red, green.g, blue, green.a);
 #else
   color = green;

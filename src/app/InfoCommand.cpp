@@ -65,7 +65,7 @@ int runInfo(const std::string& path) {
 
   if (scene.triangleCount() > 0) {
     const SelectedCamera selected = selectCamera(scene, std::nullopt, 0.0);
-    const ImageSize size = resolveImageSize(selected.camera.view.window, std::nullopt, std::nullopt);
+    const ImageSize size = resolveImageSize(selected.camera, std::nullopt, std::nullopt);
     const FramePlan plan = makeFramePlan(scene, selected.camera, size);
     out << "render      camera: " << selected.camera.source << ", " << size.widthPx << "x" << size.heightPx << "\n";
     out << "            aperture samples: " << plan.apertureSamples << " (" << plan.samplesWhy << ")\n";

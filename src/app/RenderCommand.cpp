@@ -118,7 +118,7 @@ int runRender(const RenderOptions& o) {
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
   Camera camera = applyLensOptions(selectCamera(scene, cameraPath, requestedAspect).camera, o.lens);
-  const ImageSize size = resolveImageSize(camera.view.window, o.width, o.height);
+  const ImageSize size = resolveImageSize(camera, o.width, o.height);
   if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
     std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx
               << ") differs from the window's; pixels will not be square (give only --width or --height)\n";

@@ -38,7 +38,7 @@ int runSweepCommand(SweepCommandOptions& o) {
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera-dof.json");
   const Scene scene = loadGltf(scenePath);
   const Camera camera = applyLensOptions(selectCamera(scene, cameraPath, 0.0).camera, o.lens);
-  const ImageSize size = resolveImageSize(camera.view.window, o.width ? o.width : std::optional<int>(320), o.height);
+  const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
   const fs::path out = o.outDir;
   std::error_code error;
   fs::create_directories(out, error);

@@ -12,15 +12,16 @@ namespace {
 constexpr int kMaxBatch = 8;
 constexpr double kBatchMemoryBytes = 256.0 * 1024 * 1024;  // at most this much for the view layers
 
-void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture) {
+void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture, GLuint sampler = 0) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glUseProgram(program);
   glBindTextureUnit(0, texture);
-  glBindSampler(0, 0);
+  glBindSampler(0, sampler);
   glBindVertexArray(vertexArray);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+  glBindSampler(0, 0);
 }
 
 void nearestClamp(GLuint texture) {
@@ -35,9 +36,19 @@ void nearestClamp(GLuint texture) {
 Accumulator::Accumulator()
     : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
       resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
-      emptyVertexArray_(gl::VertexArray::create()) {}
+      bilinear_(gl::Sampler::create()),
+      emptyVertexArray_(gl::VertexArray::create()) {
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
 
-void Accumulator::start(int widthPx, int heightPx) {
+void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature) {
+  curved_ = curvature != nullptr;
+  if (curvature) curvature_ = *curvature;
+  if (curved_ && !accumulateCurved_)
+    accumulateCurved_ = gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag", {"FIELD_CURVATURE"});
   if (!sum_ || sum_->width() != widthPx || sum_->height() != heightPx) {
     sum_ = std::make_unique<gl::RenderTarget>(widthPx, heightPx);
     const double bytesPerLayer = 16.0 * widthPx * heightPx;
@@ -64,9 +75,10 @@ void Accumulator::start(int widthPx, int heightPx) {
   count_ = 0;
   weightSum_ = glm::vec4(0.0f);
   pendingWeights_.assign(static_cast<std::size_t>(batchSize()), glm::vec4(0.0f));
+  pendingShifts_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
 }
 
-gl::DrawTarget Accumulator::nextView(glm::vec3 channels) {
+gl::DrawTarget Accumulator::nextView(glm::vec3 channels, glm::vec2 curvatureShiftPx) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
   if (pending_ == batchSize()) flush();
   ++count_;
@@ -74,6 +86,7 @@ gl::DrawTarget Accumulator::nextView(glm::vec3 channels) {
   const float channelCount = channels.r + channels.g + channels.b;
   const glm::vec4 weight(channels, channelCount / 3.0f);
   pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
+  pendingShifts_[static_cast<std::size_t>(pending_)] = curvatureShiftPx;
   weightSum_ += weight;
   return {framebuffers_[static_cast<std::size_t>(pending_++)].id(), sum_->width(), sum_->height()};
 }
@@ -84,9 +97,15 @@ void Accumulator::flush() {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  glProgramUniform1i(accumulate_.id(), 0, pending_);
-  glProgramUniform4fv(accumulate_.id(), 1, pending_, &pendingWeights_[0].x);
-  drawFullScreen(accumulate_.id(), emptyVertexArray_.id(), views_.id());
+  const GLuint program = curved_ ? accumulateCurved_.id() : accumulate_.id();
+  glProgramUniform1i(program, 0, pending_);
+  glProgramUniform4fv(program, 1, pending_, &pendingWeights_[0].x);
+  if (curved_) {
+    glProgramUniform2fv(program, 9, pending_, &pendingShifts_[0].x);
+    glProgramUniform2fv(program, 17, 1, &curvature_.normalisedAtOrigin.x);
+    glProgramUniform2fv(program, 18, 1, &curvature_.normalisedPerPixel.x);
+  }
+  drawFullScreen(program, emptyVertexArray_.id(), views_.id(), curved_ ? bilinear_.id() : 0);
   glDisable(GL_BLEND);
   pending_ = 0;
 }

@@ -21,12 +21,23 @@ class Accumulator {
  public:
   Accumulator();  // builds the programs (needs a current context)
 
-  void start(int widthPx, int heightPx);  // clears the sum
+  // Field curvature, applied when views are summed. A view from lens offset δ focused at inverse
+  // distance φ puts a point of depth Z at window position d·X/Z + δ·d·(φ − 1/Z), so focusing pixel
+  // x at φ + κ·r(x)² instead of φ shows what the flat-focused view has at x − δ·d·κ·r(x)²: a
+  // smooth warp of each view that does not depend on depth. Summing the views through that warp
+  // (bilinear) gives the curved focal surface exactly, up to the resampling.
+  struct Curvature {
+    glm::vec2 normalisedAtOrigin;  // normalised image coordinates of GL pixel corner (0, 0)
+    glm::vec2 normalisedPerPixel;  // and their step per pixel (x right, y up)
+  };
+
+  void start(int widthPx, int heightPx, const Curvature* curvature = nullptr);  // clears the sum
   // Where to draw the next view; it counts as added once drawn. Adds the previous batch to the
   // sum first when the batch is full. `channels` says which colour channels the view contributes
   // (axial chromatic aberration draws one view per channel); resolve divides each channel by the
   // number of views that contributed to it.
-  gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f));
+  // `curvatureShiftPx`: δ·d·κ of this view in pixels (GL orientation), used with start's Curvature.
+  gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f));
   int count() const { return count_; }
   int batchSize() const { return static_cast<int>(framebuffers_.size()); }
   // The mean so far, into `out` (same size).
@@ -36,7 +47,9 @@ class Accumulator {
   void flush();  // adds the pending views to the sum
 
   gl::Program accumulate_;
+  gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
   gl::Program resolve_;
+  gl::Sampler bilinear_;
   gl::VertexArray emptyVertexArray_;  // core profile needs one bound even without attributes
   std::unique_ptr<gl::RenderTarget> sum_;
   gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
@@ -45,6 +58,9 @@ class Accumulator {
   int pending_ = 0;
   int count_ = 0;
   std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share
+  std::vector<glm::vec2> pendingShifts_;   // per view of the batch: field-curvature shift at r = 1
+  bool curved_ = false;
+  Curvature curvature_{};
   glm::vec4 weightSum_{0.0f};
 };
 

@@ -1,6 +1,9 @@
 #include "render/Renderer.h"
 
+#include "camera/LensMap.h"
 #include "camera/Projection.h"
+
+#include <cmath>
 
 #include <algorithm>
 #include <optional>
@@ -32,7 +35,15 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   } else {
     samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
     if (!accumulator_) accumulator_ = std::make_unique<Accumulator>();
-    accumulator_->start(size_.widthPx, size_.heightPx);
+    if (plan.fieldCurvature) {
+      const Window& w = camera_.view.window;
+      const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
+      const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
+      const Accumulator::Curvature curvature{glm::vec2(origin), glm::vec2(step)};
+      accumulator_->start(size_.widthPx, size_.heightPx, &curvature);
+    } else {
+      accumulator_->start(size_.widthPx, size_.heightPx);
+    }
   }
 }
 
@@ -45,18 +56,15 @@ int Renderer::addSamples(int count) {
     // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
     const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
     const glm::dvec2 lensOffset = s.lens * camera_.apertureRadius;
-    std::optional<FocusWarp> warp;
-    if (plan_.fieldCurvature) {
-      // The move at r = 1 of a plane of focus bent by κ: δ·d·κ window units (ScenePass.h).
-      const double d = camera_.view.prp.z;
-      const glm::dvec2 windowShift = lensOffset * d * camera_.effects.fieldCurvature.inverseFocusPerRadius2;
-      warp = FocusWarp{eyeFromView(camera_.view) * viewFromWorld(camera_.view),
-                       2.0 * windowShift / glm::dvec2(w.width(), w.height())};
-    }
+    // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h).
+    const glm::vec2 curvatureShift(lensOffset * camera_.view.prp.z * camera_.effects.fieldCurvature.inverseFocusPerRadius2 /
+                                   pixelSize);
+    const auto clip = [&](const Camera& focused) {
+      return clipFromWorld(viewThroughLens(focused, lensOffset, pixelOffset));
+    };
     if (samplesPlanned() == 1) {
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
-      scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset)), out.drawTarget(),
-                      warp ? &*warp : nullptr);
+      scenePass_.draw(gpuScene_, clip(camera_), out.drawTarget());
     } else if (plan_.viewsPerSample == 3) {
       // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
       for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue}) {
@@ -64,12 +72,10 @@ int Renderer::addSamples(int count) {
         focused.inverseFocusShift += camera_.effects.chromatic.inverseFocusShift(c);
         glm::vec3 mask(0.0f);
         mask[static_cast<int>(c)] = 1.0f;
-        scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(focused, lensOffset, pixelOffset)),
-                        accumulator_->nextView(mask), warp ? &*warp : nullptr);
+        scenePass_.draw(gpuScene_, clip(focused), accumulator_->nextView(mask, curvatureShift));
       }
     } else {
-      scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset)),
-                      accumulator_->nextView(), warp ? &*warp : nullptr);
+      scenePass_.draw(gpuScene_, clip(camera_), accumulator_->nextView(glm::vec3(1.0f), curvatureShift));
     }
   }
   return added;

@@ -20,8 +20,6 @@ enum Location : GLint {
   kToLight = 8,
   kAmbient = 9,
   kDiffuse = 10,
-  kEyeFromModel = 11,
-  kNdcShiftPerRadius2 = 12,
 };
 
 const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaque, single-sided
@@ -30,10 +28,8 @@ const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaq
 
 ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
 
-void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
-                     const FocusWarp* warp) {
-  if (warp && curvedProgram_.id() == 0)
-    curvedProgram_ = gl::buildProgram("scene/scene.vert", "scene/scene.frag", {"FIELD_CURVATURE"});
+void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld,
+                     const gl::DrawTarget& target) const {
   const Scene& scene = gpuScene.scene();
   target.bind();
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -47,11 +43,7 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glClearBufferfv(GL_COLOR, 0, clearColor);
   glClearBufferfv(GL_DEPTH, 0, &clearDepth);
 
-  const GLuint program = warp ? curvedProgram_.id() : program_.id();
-  if (warp) {
-    const glm::vec2 shift(warp->ndcShiftPerRadius2);
-    glProgramUniform2fv(program, kNdcShiftPerRadius2, 1, glm::value_ptr(shift));
-  }
+  const GLuint program = program_.id();
   glUseProgram(program);
   glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
   glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
@@ -68,10 +60,6 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     const glm::mat3 normalFromModel(glm::transpose(glm::inverse(linear)));
     glProgramUniformMatrix4fv(program, kClipFromModel, 1, GL_FALSE, glm::value_ptr(clipFromModel));
     glProgramUniformMatrix3fv(program, kWorldNormalFromModel, 1, GL_FALSE, glm::value_ptr(normalFromModel));
-    if (warp) {
-      const glm::mat4 eyeFromModel(warp->eyeFromWorld * instance.worldFromModel);
-      glProgramUniformMatrix4fv(program, kEyeFromModel, 1, GL_FALSE, glm::value_ptr(eyeFromModel));
-    }
     glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
     const bool textured = material.baseColorTexture >= 0;
     glProgramUniform1i(program, kHasBaseColorTexture, textured);

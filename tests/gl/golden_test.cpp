@@ -51,7 +51,7 @@ TEST_P(Golden, MatchesTheStoredImage) {
   const Scene scene = loadGltf(assets / c.scene);
   const CameraFile cameraFile = loadCameraJson(assets / c.camera);
   const Camera& camera = cameraFile.camera;
-  const ImageSize size = resolveImageSize(camera.view.window, kGoldenWidth, std::nullopt);
+  const ImageSize size = resolveImageSize(camera, kGoldenWidth, std::nullopt);
   Renderer renderer(scene);
   const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 0, c.maxSamples, 1}), size);
 
@@ -87,7 +87,11 @@ INSTANTIATE_TEST_SUITE_P(BundledScenes, Golden,
                                            GoldenCase{"depth-range", "depth-range/depth-range.gltf",
                                                       "depth-range/camera.json"},
                                            GoldenCase{"rows-dof", "rows/rows.gltf", "rows/camera-dof.json"},
-                                           GoldenCase{"occluder-dof", "occluder/occluder.gltf", "occluder/camera-dof.json"}),
+                                           GoldenCase{"occluder-dof", "occluder/occluder.gltf", "occluder/camera-dof.json"},
+                                           // Lens effects: OpenCV-calibrated barrel + tangential on the dots;
+                                           // every effect (distortion, lateral + axial colour, field curvature) on rows.
+                                           GoldenCase{"grid-distortion", "grid/grid.gltf", "grid/camera-distortion.json"},
+                                           GoldenCase{"rows-lens", "rows/rows.gltf", "rows/camera-lens.json", 32}),
                          [](const ::testing::TestParamInfo<GoldenCase>& param) {
                            std::string name = param.param.name;
                            for (char& ch : name)

@@ -9,6 +9,7 @@
 #include "lens/LensEffects.h"
 #include "plan/FramePlan.h"
 #include "scene/ProceduralScenes.h"
+#include "../common/opencv_model.h"
 
 #include <gtest/gtest.h>
 
@@ -18,21 +19,7 @@
 namespace lenslab {
 namespace {
 
-// OpenCV's projectPoints for a camera looking down its +z axis (x right, y down), written from
-// its documentation rather than taken from the code under test: returns OpenCV pixel coordinates
-// (pixel centres on integers).
-struct OpenCvCamera {
-  double fx, fy, cx, cy;
-  double k1 = 0, k2 = 0, p1 = 0, p2 = 0, k3 = 0;
-  glm::dvec2 project(glm::dvec3 cameraPoint) const {
-    const double x = cameraPoint.x / cameraPoint.z, y = cameraPoint.y / cameraPoint.z;
-    const double r2 = x * x + y * y;
-    const double radial = 1 + k1 * r2 + k2 * r2 * r2 + k3 * r2 * r2 * r2;
-    const double xd = x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
-    const double yd = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y;
-    return {fx * xd + cx, fy * yd + cy};
-  }
-};
+using test::OpenCvCamera;
 
 const OpenCvCamera kBarrel{520, 515, 330.2, 236.7, -0.28, 0.09, 0, 0, 0};
 const OpenCvCamera kPincushion{520, 520, 319.5, 239.5, 0.18, 0.02, 0, 0, 0};
@@ -178,7 +165,9 @@ TEST(Overscan, BarrelFromMinusHalfToZeroNeverSamplesOutsideTheRender) {
         ASSERT_LE(t.y, 1.0 - halfTexel.y) << "k1 " << k1;
       }
     }
-    if (k1 < -0.01) EXPECT_GT(o.padPx.x, 2) << "barrel needs more than the bilinear margin";
+    if (k1 < -0.01) {
+      EXPECT_GT(o.padPx.x, 2) << "barrel needs more than the bilinear margin";
+    }
   }
 }
 

@@ -404,6 +404,15 @@ def make_grid():
         "eye": [0.0, 0.0, 3.001], "target": [0.0, 0.0, 0.001], "up": [0, 1, 0], "near": 0.1, "far": 100.0,
         "intrinsics": {"fx": 686.0, "fy": 686.0, "cx": 482.5, "cy": 317.5, "width": 960, "height": 640},
         "distortion": [-0.22, 0.05, 0.002, -0.001]})
+    # The same lens with chromatic aberration and an aperture: colour fringes growing toward the
+    # corners (lateral) and coloured halos around every dot (axial: red focused behind the dots,
+    # blue in front of them). For the README.
+    write_camera("grid", "camera-lens.json", {
+        "eye": [0.0, 0.0, 3.001], "target": [0.0, 0.0, 0.001], "up": [0, 1, 0], "near": 0.1, "far": 100.0,
+        "intrinsics": {"fx": 686.0, "fy": 686.0, "cx": 482.5, "cy": 317.5, "width": 960, "height": 640},
+        "aperture_radius": 0.08,
+        "distortion": [-0.22, 0.05, 0.002, -0.001],
+        "chromatic": {"lateral_red": 0.006, "lateral_blue": -0.006, "focus_distance_red": 3.3, "focus_distance_blue": 2.75}})
 
 
 def make_depth_range():

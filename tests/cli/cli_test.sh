@@ -108,5 +108,28 @@ expect_refusal "bad extension" "use .png" -- render --out "$work/out.jpg"
 expect_refusal "bad width" "--width" -- render --width 0 --out "$work/out.png"
 expect_refusal "missing output folder" "does not exist" -- render --width 32 --out "$work/nowhere/out.png"
 
+# Lens effects: the passes that ran are listed, a zero-strength effect adds none, the ray caster
+# takes the same camera, bad lens input is refused in one line.
+if "$lenslab" render "$src/assets/grid/grid.gltf" --camera "$src/assets/grid/camera-distortion.json" --width 160 \
+    --out "$work/distorted.png" --stats "$work/distorted.json" -q; then
+  if grep -qF '"name": "lens"' "$work/distorted.json" && grep -qF '"distortion"' "$work/distorted.json"; then pass; else fail "lens pass not in stats"; fi
+else
+  fail "distorted render"
+fi
+if "$lenslab" render --camera "$src/assets/rows/camera-lens.json" --width 96 --aperture-samples 4 --out "$work/lens.png" --stats "$work/lens.json" -q &&
+   grep -qF '"channel-focus"' "$work/lens.json" && grep -qF '"lateral-colour"' "$work/lens.json" && grep -qF '"views_per_sample": 3' "$work/lens.json"; then pass; else fail "lens camera stats"; fi
+echo '{ "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-1,-1,1,1], "distortion": {"k1": 0, "k2": 0}, "chromatic": {"lateral_red": 0} }' >"$work/zero-lens.json"
+if "$lenslab" render --camera "$work/zero-lens.json" "$src/assets/grid/grid.gltf" --width 64 --out "$work/zero.png" --stats "$work/zero.json" -q &&
+   ! grep -qF '"name": "lens"' "$work/zero.json" && grep -qF '"render_size": [' "$work/zero.json"; then pass; else fail "zero-strength effects added a pass"; fi
+if "$lenslab" raycast "$src/assets/grid/grid.gltf" --camera "$src/assets/grid/camera-distortion.json" --width 48 --spp 1 --out "$work/distorted-rc.png" -q &&
+   [ -s "$work/distorted-rc.png" ]; then pass; else fail "raycast with lens effects"; fi
+echo '{ "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-2.1,-1.4,2.1,1.4], "distortion": {"k1": -0.9} }' >"$work/fold.json"
+echo '{ "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-1,-1,1,1], "distortion": {"k1": -0.1, "q1": 2} }' >"$work/bad-lens-key.json"
+echo '{ "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-1,-1,1,1], "chromatic": {"abbe_number": 40} }' >"$work/abbe-lecture.json"
+expect_refusal "fold-over" "folds over" -- render --camera "$work/fold.json" --out "$work/out.png"
+expect_refusal "fold-over raycast" "folds over" -- raycast --camera "$work/fold.json" --out "$work/out.png"
+expect_refusal "unknown distortion key" "distortion.q1" -- render --camera "$work/bad-lens-key.json" --out "$work/out.png"
+expect_refusal "abbe in lecture form" "abbe_number" -- render --camera "$work/abbe-lecture.json" --out "$work/out.png"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -40,6 +40,9 @@ class Renderer {
   // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
   std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);
 
+  // How many times the lens pass built its lookup tables (once per lens, window and size).
+  int lensTablesBuilt() const { return lensPass_ ? lensPass_->tablesBuilt() : 0; }
+
   // The pinhole view from the PRP (colour and depth), drawn and finished; valid until the next call.
   const gl::RenderTarget& renderPinhole(const Camera& camera, ImageSize size);
 

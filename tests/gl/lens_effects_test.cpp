@@ -128,6 +128,74 @@ INSTANTIATE_TEST_SUITE_P(Pincushion, DistortedDots, ::testing::Values(OpenCvCame
 INSTANTIATE_TEST_SUITE_P(MixedTangential, DistortedDots,
                          ::testing::Values(OpenCvCamera{255, 259, 162.0, 117.0, -0.21, 0.06, 0.0021, -0.0013, -0.01}));
 
+// The bundled grid through its OpenCV-calibrated camera (assets/grid/camera-distortion.json): each
+// octagonal dot's centroid lands where OpenCV's model puts it (the area-weighted centroid of the
+// distorted octagon, computed here).
+TEST(LensEffectsGl, GridDotsLandWhereOpenCvPutsThem) {
+  LENSLAB_REQUIRE_GL();
+  const std::filesystem::path assets = LENSLAB_TEST_ASSET_DIR;
+  const Scene scene = loadGltf(assets / "grid" / "grid.gltf");
+  Camera camera = loadCameraJson(assets / "grid" / "camera-distortion.json").camera;
+  // The file's numbers (see tools/make_assets.py): 686 px focal length, principal point
+  // (482.5, 317.5), 960×640, distortion [-0.22, 0.05, 0.002, -0.001]; dots 3 m from the eye.
+  const OpenCvCamera cv{686.0, 686.0, 482.5, 317.5, -0.22, 0.05, 0.002, -0.001, 0.0};
+  constexpr int kScale = 2;
+  const ImageSize size = resolveImageSize(camera, 960 * kScale, std::nullopt);
+  ASSERT_EQ(size.heightPx, 640 * kScale);
+  camera.apertureRadius = 1e-9;  // 16 jittered views of the pinhole image: antialiased edges
+  Renderer renderer(scene);
+  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
+  const auto pixel = [&](glm::dvec2 world) {  // a point of the dot plane (z = 0.001) → lenslab pixel
+    return cv.project({world.x, -world.y, 3.0}) + glm::dvec2(0.5);
+  };
+  const auto insideOctagon = [](glm::dvec2 p) {  // regular, circumradius 4 cm, a vertex on +x
+    for (int k = 0; k < 8; ++k) {
+      const double a = 2.0 * M_PI * (k + 0.5) / 8.0;  // the edge normals sit between the vertices
+      if (p.x * std::cos(a) + p.y * std::sin(a) > 0.04 * std::cos(M_PI / 8.0)) return false;
+    }
+    return true;
+  };
+  double worst = 0.0;
+  int measured = 0;
+  for (int j = -7; j <= 7; ++j)
+    for (int i = -10; i <= 10; ++i) {
+      const glm::dvec2 centre(0.25 * i, 0.25 * j);
+      // Expected: the area-weighted mean of the distorted octagon.
+      constexpr int kN = 40;
+      double area = 0.0;
+      glm::dvec2 sum(0.0);
+      for (int b = 0; b < kN; ++b)
+        for (int a = 0; a < kN; ++a) {
+          const glm::dvec2 offset(-0.04 + (a + 0.5) * 0.08 / kN, -0.04 + (b + 0.5) * 0.08 / kN);
+          if (!insideOctagon(offset)) continue;
+          const glm::dvec2 p = centre + offset;
+          const glm::dvec2 dx = (pixel(p + glm::dvec2(1e-7, 0)) - pixel(p - glm::dvec2(1e-7, 0))) / 2e-7;
+          const glm::dvec2 dy = (pixel(p + glm::dvec2(0, 1e-7)) - pixel(p - glm::dvec2(0, 1e-7))) / 2e-7;
+          const double w = std::abs(dx.x * dy.y - dx.y * dy.x);
+          area += w;
+          sum += w * pixel(p);
+        }
+      const glm::dvec2 expected = sum / area;
+      if (expected.x < 14 || expected.y < 14 || expected.x > 960 - 14 || expected.y > 640 - 14) continue;  // cut by the edge
+      // Measured: the centroid of the dot's brightness above the plane's, near the expectation.
+      double weight = 0.0;
+      glm::dvec2 weighted(0.0);
+      for (int y = static_cast<int>((expected.y - 13) * kScale); y < static_cast<int>((expected.y + 13) * kScale); ++y)
+        for (int x = static_cast<int>((expected.x - 13) * kScale); x < static_cast<int>((expected.x + 13) * kScale); ++x) {
+          const double w = std::max(0.0, static_cast<double>(image.at(x, y).g) - 0.04);
+          weight += w;
+          weighted += w * glm::dvec2(x + 0.5, y + 0.5);
+        }
+      const glm::dvec2 got = weighted / weight / static_cast<double>(kScale);
+      worst = std::max({worst, std::abs(got.x - expected.x), std::abs(got.y - expected.y)});
+      EXPECT_NEAR(got.x, expected.x, 0.1) << "dot (" << i << ", " << j << ")";
+      EXPECT_NEAR(got.y, expected.y, 0.1) << "dot (" << i << ", " << j << ")";
+      ++measured;
+    }
+  EXPECT_GT(measured, 200);  // 221 of the 315 lie wholly inside the image
+  std::cout << "grid: " << measured << " dots, worst error " << worst << " px\n";
+}
+
 TEST(LensEffectsGl, LateralColourMovesRedAndBlueByTheConfiguredScale) {
   LENSLAB_REQUIRE_GL();
   const OpenCvCamera cv{260, 260, 159.5, 119.5, -0.12, 0.0};
@@ -169,6 +237,19 @@ TEST(LensEffectsGl, StrongBarrelLeavesNoBlackBorder) {
       for (int x = 0; x < size.widthPx; ++x) dark += image.at(x, y).g < 0.49f;
     EXPECT_EQ(dark, 0) << "k1 " << k1;
   }
+}
+
+TEST(LensEffectsGl, LookupTablesAreBuiltOncePerLens) {
+  LENSLAB_REQUIRE_GL();
+  const Scene scene = dotScene();
+  Camera camera = parseCameraJson(intrinsicsJson(OpenCvCamera{260, 258, 161.3, 118.2, -0.28, 0.09}), "test camera").camera;
+  const ImageSize size = resolveImageSize(camera, std::nullopt, std::nullopt);
+  Renderer renderer(scene);
+  for (int frame = 0; frame < 3; ++frame) renderer.render(camera, makeFramePlan(scene, camera, size), size);
+  EXPECT_EQ(renderer.lensTablesBuilt(), 1);
+  camera.effects.distortion.k1 = -0.27;  // a new lens: new tables
+  renderer.render(camera, makeFramePlan(scene, camera, size), size);
+  EXPECT_EQ(renderer.lensTablesBuilt(), 2);
 }
 
 // Vertical bars at depth z filling the view (same angular size at every depth).

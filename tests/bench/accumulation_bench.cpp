@@ -2,7 +2,13 @@
 //   BM_ScenePass        one bare scene pass (draw + glFinish), the unit of work
 //   BM_Accumulate/N     N aperture samples: N scene passes + N accumulate passes (+ glFinish)
 // The accumulation overhead is BM_Accumulate/N ÷ (N × BM_ScenePass).
+//   BM_LensFrame/E      a whole 16-sample frame (begin, samples, resolve with read-back) with lens
+//                       effect set E: 0 none, 1 all zero (must cost what 0 costs), 2 distortion +
+//                       lateral colour (the lens pass), 3 axial colour (three views per sample),
+//                       4 field curvature (the warped sum), 5 all of them (from camera-lens.json)
+//   BM_LensTables       building the lens pass's lookup tables (CPU, Newton), 3 channels
 // Run:  build/tests/lenslab_bench [--backend=egl]   (OSMesa by default)
+#include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "gl/GlContext.h"
 #include "io/CameraJson.h"
@@ -76,6 +82,47 @@ void BM_Accumulate(benchmark::State& state) {
       static_cast<double>(n) * 1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+Camera withEffects(const Camera& base, int set) {
+  Camera c = base;
+  const LensEffects all = loadCameraJson(assetDir() + "/rows/camera-lens.json").camera.effects;
+  c.effects = {};
+  if (set == 2) {
+    c.effects.distortion = all.distortion;
+    c.effects.chromatic.lateralRed = all.chromatic.lateralRed;
+    c.effects.chromatic.lateralBlue = all.chromatic.lateralBlue;
+  } else if (set == 3) {
+    c.effects.chromatic.inverseFocusShiftRed = all.chromatic.inverseFocusShiftRed;
+    c.effects.chromatic.inverseFocusShiftBlue = all.chromatic.inverseFocusShiftBlue;
+  } else if (set == 4) {
+    c.effects.fieldCurvature = all.fieldCurvature;
+  } else if (set == 5) {
+    c.effects = all;
+  }
+  return c;
+}
+
+void BM_LensFrame(benchmark::State& state) {
+  Fixture& f = fixture();
+  const Camera camera = withEffects(f.camera, static_cast<int>(state.range(0)));
+  const FramePlan plan = makeFramePlan(f.scene, camera, kSize, PlanOptions{AperturePattern::Concentric, 16, 16, 1});
+  std::string passes;
+  for (const PlannedPass& p : plan.passes) {
+    passes += (passes.empty() ? "" : " ") + p.name;
+    for (const std::string& v : p.variants) passes += "+" + v;
+  }
+  state.SetLabel(passes);
+  f.renderer->render(camera, plan, kSize);  // tables and variants built outside the timing
+  for (auto _ : state) benchmark::DoNotOptimize(f.renderer->render(camera, plan, kSize));
+}
+
+void BM_LensTables(benchmark::State& state) {
+  const Camera camera = withEffects(fixture().camera, 2);
+  const Overscan overscan = overscanFor(camera, kSize);
+  for (auto _ : state) benchmark::DoNotOptimize(makeRemapTable(camera, kSize, overscan));
+}
+
+BENCHMARK(BM_LensFrame)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+BENCHMARK(BM_LensTables)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 BENCHMARK(BM_ScenePass)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 BENCHMARK(BM_Accumulate)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 

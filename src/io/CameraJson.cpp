@@ -115,6 +115,14 @@ class Reader {
   std::string prefix_;  // "distortion." inside a nested object
 };
 
+// "aperture_radius" (world units), 0 when absent: a pinhole.
+double apertureRadiusOf(const Reader& r) {
+  if (!r.has("aperture_radius")) return 0.0;
+  const double aperture = r.number("aperture_radius");
+  if (aperture < 0.0) r.fail("aperture_radius", cat("is ", aperture, "; give a radius ≥ 0 in world units (0 = pinhole)"));
+  return aperture;
+}
+
 CameraFile parseLecture(const Reader& r) {
   for (const char* key : {"vrp", "vpn", "prp", "window"}) r.require(key, "lecture");
   ViewSpec spec;
@@ -135,11 +143,7 @@ CameraFile parseLecture(const Reader& r) {
   if (r.has("far")) spec.farDistance = r.distance("far");
   else if (!perspective) r.require("far", "parallel-projection lecture");
   validate(spec, r.where());
-  double aperture = 0.0;
-  if (r.has("aperture_radius")) {
-    aperture = r.number("aperture_radius");
-    if (aperture < 0.0) r.fail("aperture_radius", cat("is ", aperture, "; give a radius ≥ 0 in world units (0 = pinhole)"));
-  }
+  const double aperture = apertureRadiusOf(r);
   CameraFile file;
   file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
   return file;
@@ -198,11 +202,7 @@ CameraFile parseIntrinsics(const Reader& r) {
   spec.nearDistance = r.has("near") ? r.distance("near") : 0.05;
   if (r.has("far")) spec.farDistance = r.distance("far");
   validate(spec, r.where());
-  double aperture = 0.0;
-  if (r.has("aperture_radius")) {
-    aperture = r.number("aperture_radius");
-    if (aperture < 0.0) r.fail("aperture_radius", cat("is ", aperture, "; give a radius ≥ 0 in world units (0 = pinhole)"));
-  }
+  const double aperture = apertureRadiusOf(r);
   CameraFile file;
   file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
   file.camera.focusAtInfinity = std::isinf(focus);

@@ -36,13 +36,8 @@ void nearestClamp(GLuint texture) {
 Accumulator::Accumulator()
     : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
       resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
-      bilinear_(gl::Sampler::create()),
-      emptyVertexArray_(gl::VertexArray::create()) {
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
+      bilinear_(gl::makeBilinearClampSampler()),
+      emptyVertexArray_(gl::VertexArray::create()) {}
 
 void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature) {
   curved_ = curvature != nullptr;

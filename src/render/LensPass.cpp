@@ -21,13 +21,7 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
 
 LensPass::LensPass()
     : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")),
-      emptyVertexArray_(gl::VertexArray::create()),
-      bilinear_(gl::Sampler::create()) {
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
+      emptyVertexArray_(gl::VertexArray::create()) {}
 
 void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan) {
   std::vector<double> key = keyOf(camera, size, overscan);
@@ -57,7 +51,6 @@ void LensPass::apply(const gl::RenderTarget& undistorted, const gl::RenderTarget
   const bool perChannel = tables_.size() == 3;
   glUseProgram(perChannel ? perChannelProgram_.id() : program_.id());
   glBindTextureUnit(0, undistorted.colorTexture());
-  glBindSampler(0, bilinear_.id());
   if (perChannel) {
     glBindTextureUnit(1, tables_[1].id());  // green
     glBindTextureUnit(2, tables_[0].id());  // red
@@ -65,11 +58,10 @@ void LensPass::apply(const gl::RenderTarget& undistorted, const gl::RenderTarget
   } else {
     glBindTextureUnit(1, tables_[0].id());
   }
-  for (GLuint unit = 1; unit <= 3; ++unit) glBindSampler(unit, 0);
+  for (GLuint unit = 0; unit <= 3; ++unit) glBindSampler(unit, 0);  // texelFetch only
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glBindSampler(0, 0);
 }
 
 }  // namespace lenslab

@@ -27,7 +27,6 @@ class LensPass {
   gl::Program program_;
   gl::Program perChannelProgram_;  // the lateral-colour variant, built on first use
   gl::VertexArray emptyVertexArray_;
-  gl::Sampler bilinear_;
   std::vector<gl::Texture> tables_;  // RG32F texture coordinates: green, or red, green, blue
   std::vector<double> key_;          // what the tables were made for
   int tablesBuilt_ = 0;

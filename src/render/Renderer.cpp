@@ -70,4 +70,11 @@ std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) 
   return renderPinhole(camera, size).readDepth();
 }
 
+const gl::RenderTarget& Renderer::resolveOnGpu() {
+  if (done_ == 0) throw std::logic_error("Renderer::resolveOnGpu before any sample");
+  const gl::RenderTarget& out = target(output_, size_);
+  if (samplesPlanned() > 1) accumulator_->resolve(out);
+  return out;
+}
+
 }  // namespace lenslab

@@ -4,6 +4,7 @@
 layout(binding = 0) uniform sampler2D image;
 layout(location = 0) uniform vec4 viewportRect;  // x, y, width, height in framebuffer pixels (GL origin)
 layout(location = 1) uniform int encodeSrgb;
+layout(location = 2) uniform float gain;         // < 1 dims the scene under the outside view's diagram
 layout(location = 0) out vec4 fragColor;
 
 vec3 srgbFromLinear(vec3 c) {
@@ -13,6 +14,6 @@ vec3 srgbFromLinear(vec3 c) {
 
 void main() {
   vec2 uv = (gl_FragCoord.xy - viewportRect.xy) / viewportRect.zw;
-  vec3 c = texture(image, uv).rgb;
+  vec3 c = gain * texture(image, uv).rgb;
   fragColor = vec4(encodeSrgb != 0 ? srgbFromLinear(c) : c, 1.0);
 }

@@ -16,7 +16,7 @@ ImageDrawer::ImageDrawer()
   glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void ImageDrawer::draw(GLuint texture, const PixelRect& r) const {
+void ImageDrawer::draw(GLuint texture, const PixelRect& r, float gain) const {
   if (r.empty()) return;
   glViewport(r.x, r.y, r.width, r.height);
   glDisable(GL_DEPTH_TEST);
@@ -26,6 +26,7 @@ void ImageDrawer::draw(GLuint texture, const PixelRect& r) const {
   glProgramUniform4f(program, 0, static_cast<float>(r.x), static_cast<float>(r.y), static_cast<float>(r.width),
                      static_cast<float>(r.height));
   glProgramUniform1i(program, 1, 1);
+  glProgramUniform1f(program, 2, gain);
   glUseProgram(program);
   glBindTextureUnit(0, texture);
   glBindSampler(0, linear_.id());
@@ -67,16 +68,21 @@ void LineDrawer::draw(const std::vector<DiagramLine>& lines, const glm::dmat4& c
   }
   glNamedBufferSubData(vertices_.id(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data());
 
-  glViewport(r.x, r.y, r.width, r.height);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
+  glEnable(GL_SCISSOR_TEST);  // the shifted copies must not spill out of the rectangle
+  glScissor(r.x, r.y, r.width, r.height);
   const glm::mat4 clip(clipFromWorld);
   glProgramUniformMatrix4fv(program_.id(), 0, 1, GL_FALSE, glm::value_ptr(clip));
   glUseProgram(program_.id());
   glBindVertexArray(vertexArray_.id());
-  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(data.size() / 6));
+  for (const glm::ivec2 shift : {glm::ivec2(0, 0), glm::ivec2(1, 0), glm::ivec2(0, 1), glm::ivec2(1, 1)}) {
+    glViewport(r.x + shift.x, r.y + shift.y, r.width, r.height);
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(data.size() / 6));
+  }
   glBindVertexArray(0);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace lenslab::view

@@ -23,7 +23,8 @@ class ImageDrawer {
  public:
   ImageDrawer();  // builds the program (needs a current context)
   // Draws `texture` (a linear RGBA float texture, GL row order) filling `rect`, bilinearly filtered.
-  void draw(GLuint texture, const PixelRect& rect) const;
+  // `gain` scales the linear values (dimming, so that lines drawn over the image stand out).
+  void draw(GLuint texture, const PixelRect& rect, float gain = 1.0f) const;
 
  private:
   gl::Program program_;
@@ -35,7 +36,8 @@ class LineDrawer {
  public:
   LineDrawer();
   // Draws the segments through `clipFromWorld` into `rect` (no depth test: the diagram stays
-  // visible behind scene objects, as on the lecture's slides).
+  // visible behind scene objects, as on the lecture's slides), two pixels wide: the core profile
+  // has no wide lines, so the segments are drawn again one pixel over and up.
   void draw(const std::vector<DiagramLine>& lines, const glm::dmat4& clipFromWorld, const PixelRect& rect);
 
  private:

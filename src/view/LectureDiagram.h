@@ -44,6 +44,6 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
 
 // An aperture scale that draws the disk at least `fraction` of the window's height across (1 when
 // it is already that large, or for a pinhole).
-double readableApertureScale(const Camera& camera, double fraction = 0.08);
+double readableApertureScale(const Camera& camera, double fraction = 0.25);
 
 }  // namespace lenslab::view

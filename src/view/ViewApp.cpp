@@ -222,9 +222,9 @@ class Viewer {
 
   // The outside view: an orbit camera around the lecture camera.
   bool showOutside_;
-  double outsideAzimuth_ = 1.15;    // radians from behind the camera toward its right
-  double outsideElevation_ = 0.45;  // radians above the horizon
-  double outsideZoom_ = 1.0;
+  double outsideAzimuth_ = 0.8;     // radians from behind the camera toward its right
+  double outsideElevation_ = 0.5;   // radians above the horizon
+  double outsideZoom_ = 0.8;
   bool enlargeAperture_ = true;     // draw the (mm-sized) aperture large enough to see
   bool outsideDirty_ = true;
   gl::Texture outsideTexture_;
@@ -431,7 +431,7 @@ void Viewer::drawOutside(const PixelRect& rect) {
     outsideDirty_ = false;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  imageDrawer_.draw(outsideTexture_.id(), rect);
+  imageDrawer_.draw(outsideTexture_.id(), rect, 0.45f);
   DiagramStyle style;
   style.apertureScale = enlargeAperture_ ? readableApertureScale(cam_.camera) : 1.0;
   const std::vector<DiagramLine> lines = lectureDiagram(cam_.camera, renderer_.plannedSamples(), renderer_.samplesDone(), style);

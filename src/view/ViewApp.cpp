@@ -212,6 +212,8 @@ class Viewer {
   Clock::time_point restartTime_ = Clock::now();
   double convergedAfterMs_ = -1.0;
   int frames_ = 0;
+  double frameMsMax_ = 0.0;       // the slowest frame (input to panel drawn), for --stats
+  double frameMsSum_ = 0.0;
   std::optional<double> focusDistance_;  // the last click's
 
   // The post-process baseline, for comparison.
@@ -238,6 +240,7 @@ class Viewer {
   Region pressRegion_ = Region::None;
   bool dragged_ = false;
 
+  bool saveWindowPending_ = false;
   std::string error_;   // shown in red in the panel (and on stderr)
   std::string status_;  // the last thing saved
   std::array<char, 512> cameraPath_{}, imagePath_{}, windowPath_{};
@@ -287,7 +290,7 @@ void Viewer::focusAt(glm::dvec2 pixel) {
   cam_.camera = focused;
   if (cam_.physical) cam_.physical->focusDistance = distance;
   focusDistance_ = distance;
-  std::cout << "lenslab: focus distance " << cat(distance) << " (pixel " << cat(pixel.x) << "," << cat(pixel.y) << ")\n";
+  std::cout << "lenslab: focus distance " << cat(distance) << " (pixel " << cat(pixel.x) << "," << cat(pixel.y) << ")" << std::endl;
   dirty_ = true;
 }
 
@@ -670,16 +673,7 @@ void Viewer::sectionFiles() {
   }
   ImGui::InputText("##window", windowPath_.data(), windowPath_.size());
   ImGui::SameLine();
-  if (ImGui::Button("Save window")) {
-    try {
-      checkImageExtension(windowPath_.data());
-      // The panel is drawn after this frame's read: the file shows the previous frame's panel.
-      writeImage(windowPath_.data(), readWindow(fbWidth_, fbHeight_));
-      status_ = cat("wrote ", windowPath_.data());
-    } catch (const std::exception& e) {
-      reportError(e.what());
-    }
-  }
+  if (ImGui::Button("Save window")) saveWindowPending_ = true;  // read once this frame is drawn
   if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
 }
 
@@ -732,6 +726,8 @@ void Viewer::finishScripted() {
     j["samples_why"] = plan_.samplesWhy;
     j["ms_per_sample"] = accumulationMs_ / std::max(renderer_.samplesDone(), 1);
     j["accumulation_ms"] = accumulationMs_;
+    j["frame_ms_mean"] = frameMsSum_ / std::max(frames_, 1);
+    j["frame_ms_max"] = frameMsMax_;  // the first frames include shader compilation
     j["focus_distance"] = focusDistance_ ? nlohmann::json(*focusDistance_) : nlohmann::json(nullptr);
     j["camera"] = cam_.camera.source;
     writeTextFileAtomically(options_.statsFile, j.dump(2) + "\n");
@@ -740,6 +736,8 @@ void Viewer::finishScripted() {
 
 int Viewer::run() {
   glfwSwapInterval(scripted() ? 0 : 1);  // vsync when a person watches; as fast as possible in tests
+  // Sticky keys: a press and release between two frames still reads as pressed once (Escape).
+  glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
   layout();
   restart();
   // Scripted clicks act as a click on the first frame would.
@@ -754,6 +752,7 @@ int Viewer::run() {
       glfwWaitEvents();  // minimised: no work until something happens
       continue;
     }
+    const auto frameStart = Clock::now();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -771,6 +770,20 @@ int Viewer::run() {
     }
     ImGui::Render();
     if (!options_.noUi) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (saveWindowPending_) {
+      saveWindowPending_ = false;
+      try {
+        checkImageExtension(windowPath_.data());
+        writeImage(windowPath_.data(), readWindow(fbWidth_, fbHeight_));
+        status_ = cat("wrote ", windowPath_.data());
+      } catch (const std::exception& e) {
+        reportError(e.what());
+      }
+    }
+    if (scripted()) glFinish();  // scripted frames are timed with the GPU done
+    const double frameMs = msSince(frameStart);
+    frameMsMax_ = std::max(frameMsMax_, frameMs);
+    frameMsSum_ += frameMs;
     ++frames_;
     if (scripted() && frames_ >= options_.frames && renderer_.samplesDone() >= renderer_.samplesPlanned()) {
       finishScripted();

@@ -40,6 +40,7 @@ std::function<int()> addViewCommand(CLI::App& app) {
                   "scripted: .png or .exr; the window with the panel, or with --no-ui the image as render writes it");
   cmd->add_flag("--no-ui", o->noUi, "no panel and no outside view: the window shows the image only");
   cmd->add_flag("!--no-outside-view", o->outsideView, "start without the outside view");
+  cmd->add_flag("--baseline", o->showBaseline, "start showing the post-process gather depth of field (for comparison)");
   cmd->add_option_function<std::string>("--click", parsePair("--click", o->click, "320,200"),
                                         "scripted: click image pixel X,Y on the first frame (focus there)");
   cmd->add_option_function<std::string>("--window-size", parsePair("--window-size", o->windowSize, "1440,900"),

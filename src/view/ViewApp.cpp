@@ -150,7 +150,8 @@ class Viewer {
   Viewer(const ViewOptions& options, GLFWwindow* window, const Scene& scene, EditableCamera camera, ImageSize size,
          PlanOptions planOptions)
       : options_(options), window_(window), scene_(scene), size_(size), planOptions_(planOptions), cam_(std::move(camera)),
-        lastGood_(cam_), renderer_(scene), showOutside_(options.outsideView && !options.noUi) {
+        lastGood_(cam_), baseSource_(cam_.camera.source), renderer_(scene), showBaseline_(options.showBaseline && !options.noUi),
+        showOutside_(options.outsideView && !options.noUi) {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_, &xs, &ys);
     uiScale_ = std::max(1.0f, xs);
@@ -198,6 +199,7 @@ class Viewer {
   PlanOptions planOptions_;
   EditableCamera cam_;
   EditableCamera lastGood_;  // what to go back to when an edit makes the camera invalid
+  std::string baseSource_;   // where the camera came from, before any click
   FramePlan plan_;
   Renderer renderer_;
   ImageDrawer imageDrawer_;
@@ -217,7 +219,7 @@ class Viewer {
   std::optional<double> focusDistance_;  // the last click's
 
   // The post-process baseline, for comparison.
-  bool showBaseline_ = false;
+  bool showBaseline_;
   int baselineTaps_ = 32;
   bool baselineValid_ = false;
   gl::Texture baselineTexture_;
@@ -284,7 +286,10 @@ std::optional<glm::dvec2> Viewer::imagePixelAt(ImVec2 mouse) const {
 }
 
 void Viewer::focusAt(glm::dvec2 pixel) {
-  const Camera focused = focusOnPixel(cam_.camera, size_, pixel, rasterDepth(renderer_, size_));
+  // The camera's source names only the latest click, not every click since the start.
+  Camera current = cam_.camera;
+  current.source = baseSource_;
+  const Camera focused = focusOnPixel(current, size_, pixel, rasterDepth(renderer_, size_));
   // refocused() moves the view plane to the new plane of focus: PRP.n is the focus distance.
   const double distance = focused.view.prp.z;
   cam_.camera = focused;
@@ -321,7 +326,10 @@ void Viewer::handleInput() {
           try {
             focusAt(*pixel);
           } catch (const InputError& e) {
-            reportError(e.what());
+            // focusOnPixel speaks of the command-line option; here it was a click.
+            std::string message = e.what();
+            if (message.rfind("--focus-at ", 0) == 0) message = "click at image pixel " + message.substr(11);
+            reportError(message);
           }
         }
       }
@@ -492,6 +500,7 @@ void Viewer::sectionProgress() {
   ImGui::Text("%.2f ms per sample, %.0f ms accumulated", msPerSample_, accumulationMs_);
   if (convergedAfterMs_ >= 0.0) ImGui::Text("converged %.0f ms after the last change", convergedAfterMs_);
   else ImGui::Text("converging (%.1f fps)", static_cast<double>(ImGui::GetIO().Framerate));
+  if (showBaseline_) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing the post-process baseline (%d taps)", baselineTaps_);
   ImGui::Text("image %d x %d; focus distance %.4g", size_.widthPx, size_.heightPx,
               cam_.camera.focusAtInfinity ? std::numeric_limits<double>::infinity() : cam_.camera.view.prp.z);
 }

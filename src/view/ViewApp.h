@@ -22,6 +22,7 @@ struct ViewOptions {
   std::string screenshot;             // written at the end of a scripted run (.png or .exr)
   bool noUi = false;                  // no panel, no outside view: the screenshot is the image alone
   bool outsideView = true;            // start with the outside view shown
+  bool showBaseline = false;          // start showing the post-process gather baseline
   std::optional<glm::dvec2> click;    // a scripted click in the image (image pixels)
   std::string statsFile;              // what a scripted run did, as JSON
   std::optional<glm::ivec2> windowSize;  // window size in screen coordinates

@@ -97,10 +97,19 @@ if "$lenslab" view --camera "$dof" --width 320 --max-samples 8 --frames 3 --wind
      --screenshot "$work/ui.png" >"$work/ui.out" 2>&1; then
   if "$check" busy "$work/ui.png" 800 0 1200 800 0.05; then pass; else fail "no panel in the UI screenshot"; fi
   if "$check" busy "$work/ui.png" 0 420 760 800 0.05; then pass; else fail "no outside view in the UI screenshot"; fi
+  # The control: the margin beside the letterboxed image is a flat fill, and the check says so.
+  if ! "$check" busy "$work/ui.png" 0 0 60 380 0.05 >/dev/null; then pass; else fail "the busy check passes a flat region"; fi
 else
   fail "view with UI failed: $(cat "$work/ui.out")"
 fi
-# Without the UI the same region is empty: the check above can fail.
+# The post-process baseline shown in place of the accumulated image.
+if "$lenslab" view --camera "$dof" --width 320 --max-samples 8 --frames 2 --window-size 1200,800 --baseline \
+     --screenshot "$work/baseline.png" >"$work/baseline.out" 2>&1; then
+  if "$check" busy "$work/baseline.png" 100 0 700 400 0.05; then pass; else fail "baseline: flat image"; fi
+else
+  fail "view --baseline failed: $(cat "$work/baseline.out")"
+fi
+# Without the UI the image alone:
 if "$lenslab" view --camera "$dof" --width 320 --max-samples 8 --frames 3 --window-size 1200,800 --no-ui \
      --screenshot "$work/noui.png" >/dev/null 2>&1; then
   if "$check" busy "$work/noui.png" 0 0 320 213 0.05 >/dev/null; then pass; else fail "--no-ui screenshot is flat"; fi

@@ -48,6 +48,7 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_option("--frame-budget-ms", o->frameBudgetMs, "accumulation work per frame, at least one sample")
       ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
+  cmd->add_option("--save-camera", o->saveCamera, "scripted: write the final camera as JSON (lecture form), as the panel's Save camera does");
   cmd->add_option("--stats", o->statsFile, "scripted: write frames, samples, ms per sample and focus distance as JSON");
   return [cmd, o]() { return cmd->parsed() ? view::runView(*o) : -1; };
 }

@@ -722,6 +722,7 @@ void Viewer::finishScripted() {
     // --no-ui: the image itself, as `render` writes it; with the UI: the whole window.
     writeImage(options_.screenshot, options_.noUi ? renderer_.resolve() : readWindow(fbWidth_, fbHeight_));
   }
+  if (!options_.saveCamera.empty()) writeTextFileAtomically(options_.saveCamera, toCameraJson(cam_.camera));
   if (!options_.statsFile.empty()) {
     nlohmann::json j;
     j["command"] = "view";

@@ -25,6 +25,7 @@ struct ViewOptions {
   bool showBaseline = false;          // start showing the post-process gather baseline
   std::optional<glm::dvec2> click;    // a scripted click in the image (image pixels)
   std::string statsFile;              // what a scripted run did, as JSON
+  std::string saveCamera;             // scripted: the camera at the end, as the panel's "Save camera" writes it
   std::optional<glm::ivec2> windowSize;  // window size in screen coordinates
   double frameBudgetMs = 16.0;        // accumulation work per frame (at least one sample)
 };

@@ -90,6 +90,15 @@ else
   fail "view --click failed: $(cat "$work/click.out")"
 fi
 
+# The camera after the click, saved as the panel saves it, renders the same image with `render`.
+if "$lenslab" view --camera "$dof" --width 240 --aperture-samples 16 --frames 2 --no-ui --click "$click_x,$click_y" \
+     --save-camera "$work/saved.json" --screenshot "$work/clicked.exr" >/dev/null 2>&1 &&
+   "$lenslab" render --camera "$work/saved.json" --width 240 --aperture-samples 16 --out "$work/saved.exr" -q; then
+  if "$check" psnr "$work/clicked.exr" "$work/saved.exr" 35; then pass; else fail "the saved camera renders differently"; fi
+else
+  fail "view --save-camera, or render of the saved camera, failed"
+fi
+
 # ---- 3. the panel is in the screenshot ----
 # The panel takes the right 430 points of a 1200 x 800 window (scale 1 under Xvfb); left of it the
 # image and the outside view. Both regions must hold content, not a flat fill.

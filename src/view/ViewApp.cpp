@@ -343,7 +343,7 @@ void Viewer::handleInput() {
         cam_ = flown(cam_, {0.0, 0.0, 0.1 * io.MouseWheel * cam_.camera.view.prp.z});
         dirty_ = true;
       } else if (outsideRect_.contains(mouse)) {
-        outsideZoom_ *= std::pow(0.9, io.MouseWheel);
+        outsideZoom_ = std::clamp(outsideZoom_ * std::pow(0.9, io.MouseWheel), 0.05, 50.0);
         outsideDirty_ = true;
       }
     }
@@ -421,7 +421,8 @@ Camera Viewer::outsideCamera(double aspect) const {
   p.up = std::abs(dir.y) > 0.99 ? -back : glm::dvec3(0.0, 1.0, 0.0);
   p.focalLengthMm = 20.0;
   p.sensorMm = {24.0 * aspect, 24.0};
-  p.focusDistance = distance;
+  // A pinhole: infinity focus puts no bound on how close it may come (no focus inside f).
+  p.focusDistance = std::numeric_limits<double>::infinity();
   p.nearDistance = 1e-3 * distance;
   return toCamera(p, "outside view");
 }
@@ -772,8 +773,6 @@ int Viewer::run() {
       accumulate();
       if (!options_.noUi) panel();  // after accumulating, so it shows this frame's count; its edits restart the next
       draw();
-    } catch (const InputError&) {
-      throw;
     } catch (const std::exception& e) {
       if (scripted()) throw;
       reportError(e.what());  // shown in the panel; the window stays up

@@ -12,5 +12,6 @@ std::function<int()> addRenderCommand(CLI::App& app);
 std::function<int()> addRaycastCommand(CLI::App& app);
 std::function<int()> addSweepCommand(CLI::App& app);
 std::function<int()> addInfoCommand(CLI::App& app);
+std::function<int()> addViewCommand(CLI::App& app);  // src/app/ViewCommand.cpp
 
 }  // namespace lenslab

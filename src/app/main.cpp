@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
     return std::string("lenslab: error: ") + e.what() + " (see --help)\n";
   });
   std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app), lenslab::addRaycastCommand(app),
-                                                lenslab::addSweepCommand(app), lenslab::addInfoCommand(app)};
+                                                lenslab::addSweepCommand(app), lenslab::addInfoCommand(app),
+                                                lenslab::addViewCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

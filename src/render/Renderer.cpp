@@ -82,15 +82,7 @@ int Renderer::addSamples(int count) {
 }
 
 Image Renderer::resolve() {
-  if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
-  const gl::RenderTarget& out = target(output_, outSize_);
-  if (plan_.remap) {
-    const gl::RenderTarget& undistorted = target(undistorted_, size_);
-    if (samplesPlanned() > 1) accumulator_->resolve(undistorted);
-    lensPass_->apply(undistorted, out);
-  } else if (samplesPlanned() > 1) {
-    accumulator_->resolve(out);
-  }
+  const gl::RenderTarget& out = resolveOnGpu();
   glFinish();
   return out.readColor();
 }
@@ -110,6 +102,19 @@ const gl::RenderTarget& Renderer::renderPinhole(const Camera& camera, ImageSize 
 
 std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) {
   return renderPinhole(camera, size).readDepth();
+}
+
+const gl::RenderTarget& Renderer::resolveOnGpu() {
+  if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
+  const gl::RenderTarget& out = target(output_, outSize_);
+  if (plan_.remap) {
+    const gl::RenderTarget& undistorted = target(undistorted_, size_);
+    if (samplesPlanned() > 1) accumulator_->resolve(undistorted);
+    lensPass_->apply(undistorted, out);
+  } else if (samplesPlanned() > 1) {
+    accumulator_->resolve(out);
+  }
+  return out;
 }
 
 }  // namespace lenslab

@@ -46,6 +46,11 @@ class Renderer {
   // The pinhole view from the PRP (colour and depth), drawn and finished; valid until the next call.
   const gl::RenderTarget& renderPinhole(const Camera& camera, ImageSize size);
 
+  // For the interactive view (src/view): the mean so far left on the GPU (no read-back, no
+  // glFinish), valid until the next call; and the aperture samples planned by begin().
+  const gl::RenderTarget& resolveOnGpu();
+  const std::vector<LensSample>& plannedSamples() const { return samples_; }
+
  private:
   const gl::RenderTarget& target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size);
 

@@ -1,0 +1,56 @@
+// lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
+#include "app/Commands.h"
+#include "app/LensOptions.h"
+#include "view/ViewApp.h"
+
+#include <memory>
+#include <sstream>
+
+namespace lenslab {
+namespace {
+
+// "X,Y" → two numbers, for --click and --window-size.
+template <class Vec>
+std::function<void(const std::string&)> parsePair(const std::string& option, std::optional<Vec>& into,
+                                                 const std::string& example) {
+  return [&into, option, example](const std::string& text) {
+    typename Vec::value_type x{}, y{};
+    char comma = 0;
+    std::istringstream in(text);
+    if (!(in >> x >> comma >> y) || comma != ',' || !in.eof())
+      throw CLI::ValidationError(option, "give two numbers as X,Y (e.g. " + example + ")");
+    into = Vec(x, y);
+  };
+}
+
+}  // namespace
+
+std::function<int()> addViewCommand(CLI::App& app) {
+  auto o = std::make_shared<view::ViewOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Open a window: the image converging, every camera and lens parameter, click to focus, the lecture's diagram");
+  cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
+  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture or physical form); default as for render");
+  cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
+  cmd->add_option("--height", o->height, "image height in pixels");
+  addLensOptions(*cmd, o->lens);
+  cmd->add_option("--frames", o->frames,
+                  "scripted: run at least N frames (and on until the accumulation is complete), write --screenshot, exit");
+  cmd->add_option("--screenshot", o->screenshot,
+                  "scripted: .png or .exr; the window with the panel, or with --no-ui the image as render writes it");
+  cmd->add_flag("--no-ui", o->noUi, "no panel and no outside view: the window shows the image only");
+  cmd->add_flag("!--no-outside-view", o->outsideView, "start without the outside view");
+  cmd->add_flag("--baseline", o->showBaseline, "start showing the post-process gather depth of field (for comparison)");
+  cmd->add_option_function<std::string>("--click", parsePair("--click", o->click, "320,200"),
+                                        "scripted: click image pixel X,Y on the first frame (focus there)");
+  cmd->add_option_function<std::string>("--window-size", parsePair("--window-size", o->windowSize, "1440,900"),
+                                        "window size W,H in screen coordinates");
+  cmd->add_option("--frame-budget-ms", o->frameBudgetMs, "accumulation work per frame, at least one sample")
+      ->check(CLI::Range(1.0, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--save-camera", o->saveCamera, "scripted: write the final camera as JSON (lecture form), as the panel's Save camera does");
+  cmd->add_option("--stats", o->statsFile, "scripted: write frames, samples, ms per sample and focus distance as JSON");
+  return [cmd, o]() { return cmd->parsed() ? view::runView(*o) : -1; };
+}
+
+}  // namespace lenslab

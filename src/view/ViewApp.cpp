@@ -15,6 +15,7 @@
 
 #include "app/CameraSelection.h"
 #include "camera/ImageSize.h"
+#include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -187,6 +188,8 @@ class Viewer {
   void sectionMatrices();
   void sectionPhysical();
   void sectionSamples();
+  void sectionLensEffects();
+  void adoptPhysical(const PhysicalCamera& physical);  // keeps the lens effects and calibrated size
   void sectionCompare();
   void sectionFiles();
   void sectionHelp();
@@ -364,6 +367,7 @@ void Viewer::handleInput() {
 void Viewer::restart() {
   try {
     validate(cam_.camera.view, "the panel's camera");
+    validateLensEffects(cam_.camera, "the panel's camera");
     if (!(cam_.camera.apertureRadius >= 0.0) || !std::isfinite(cam_.camera.apertureRadius))
       throw InputError("the panel's camera: aperture radius must be 0 (a pinhole) or positive");
     plan_ = makeFramePlan(scene_, cam_.camera, size_, planOptions_);
@@ -488,6 +492,13 @@ void matrixTable(const char* name, const glm::dmat4& m) {
     ImGui::Text("  %9.4f %9.4f %9.4f %9.4f", m[0][row], m[1][row], m[2][row], m[3][row]);
 }
 
+void Viewer::adoptPhysical(const PhysicalCamera& physical) {
+  const Camera before = cam_.camera;
+  cam_ = fromPhysical(physical, before.source);
+  cam_.camera.effects = before.effects;
+  cam_.camera.calibratedSize = before.calibratedSize;
+}
+
 void Viewer::cameraEdited(const Camera& camera) {
   cam_.camera = camera;
   cam_.physical.reset();
@@ -578,7 +589,7 @@ void Viewer::sectionPhysical() {
         if (cam_.camera.apertureRadius > 0.0)
           p.fNumber = p.focalLengthMm * kMetresPerMillimetre / (2.0 * cam_.camera.apertureRadius);
         if (cam_.camera.focusAtInfinity) p.focusDistance = std::numeric_limits<double>::infinity();
-        cam_ = fromPhysical(p, cam_.camera.source);
+        adoptPhysical(p);
         dirty_ = true;
       } catch (const InputError& e) {
         reportError(e.what());
@@ -608,7 +619,7 @@ void Viewer::sectionPhysical() {
   if (!infinityFocus) changed |= dragDouble("focus distance (m)", p.focusDistance, step, 1e-3, 1e9);
   if (changed) {
     try {
-      cam_ = fromPhysical(p, cam_.camera.source);
+      adoptPhysical(p);
       dirty_ = true;
     } catch (const InputError& e) {
       reportError(e.what());
@@ -640,8 +651,65 @@ void Viewer::sectionSamples() {
   }
   ImGui::TextWrapped("N = %d: %s", plan_.apertureSamples, plan_.samplesWhy.c_str());
   ImGui::Text("circle of confusion in view: %.2f to %.2f px", plan_.cocMinPx, plan_.cocMaxPx);
-  // Distortion, chromatic aberration and field curvature (issue #5) get their own section next
-  // to this one when they land.
+}
+
+// The lecture's last part: distortion, chromatic aberration, the curved focal plane. Each adds a
+// pass or shader variant only when it is not zero; the plan's passes are listed to show it.
+void Viewer::sectionLensEffects() {
+  if (!ImGui::CollapsingHeader("Lens effects", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  Camera c = cam_.camera;
+  LensEffects& e = c.effects;
+  bool changed = false;
+  ImGui::TextWrapped("Distortion: Brown-Conrady in OpenCV's order (normalised coordinates about the principal point)");
+  changed |= dragDouble("k1", e.distortion.k1, 0.002f, -2.0, 2.0);
+  changed |= dragDouble("k2", e.distortion.k2, 0.002f, -2.0, 2.0);
+  changed |= dragDouble("k3", e.distortion.k3, 0.002f, -2.0, 2.0);
+  changed |= dragDouble("p1", e.distortion.p1, 0.0002f, -0.2, 0.2);
+  changed |= dragDouble("p2", e.distortion.p2, 0.0002f, -0.2, 0.2);
+  if (ImGui::TreeNode("the lecture's series: rho = rho'(1 + a rho' + b rho'^2 + c rho'^3)")) {
+    changed |= dragDouble("alpha", e.distortion.alpha, 0.002f, -2.0, 2.0);
+    changed |= dragDouble("beta", e.distortion.beta, 0.002f, -2.0, 2.0);
+    changed |= dragDouble("gamma", e.distortion.gamma, 0.002f, -2.0, 2.0);
+    ImGui::TreePop();
+  }
+  ImGui::TextWrapped("Chromatic aberration: lateral = red/blue magnification relative to green; axial = "
+                     "each colour's plane of focus, as a change of 1/focus distance (1/world unit)");
+  changed |= dragDouble("lateral red", e.chromatic.lateralRed, 0.0002f, -0.1, 0.1);
+  changed |= dragDouble("lateral blue", e.chromatic.lateralBlue, 0.0002f, -0.1, 0.1);
+  changed |= dragDouble("axial red (1/m)", e.chromatic.inverseFocusShiftRed, 0.002f, -10.0, 10.0);
+  changed |= dragDouble("axial blue (1/m)", e.chromatic.inverseFocusShiftBlue, 0.002f, -10.0, 10.0);
+  const double focus = cam_.camera.inverseFocusDistance();
+  const auto distance = [](double inverse) { return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity(); };
+  if (e.chromatic.hasAxial())
+    ImGui::Text("red in focus at %.4g, green %.4g, blue %.4g", distance(focus + e.chromatic.inverseFocusShiftRed),
+                distance(focus), distance(focus + e.chromatic.inverseFocusShiftBlue));
+  ImGui::TextWrapped("Field curvature: 1/focus distance grows by this times r^2 toward the corners");
+  changed |= dragDouble("curvature (1/m per r^2)", e.fieldCurvature.inverseFocusPerRadius2, 0.005f, -20.0, 20.0);
+  if (!e.fieldCurvature.isZero()) {
+    const double corner = normalisedWindow(c.view).cornerRadius();
+    ImGui::Text("centre in focus at %.4g, corners at %.4g", distance(focus),
+                distance(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner));
+  }
+  if (ImGui::Button("no lens effects")) {
+    e = LensEffects{};
+    changed = true;
+  }
+  if (changed) {
+    try {
+      validateLensEffects(c, "the panel's lens");
+      cam_.camera = c;
+      dirty_ = true;
+    } catch (const InputError& error) {
+      reportError(error.what());
+    }
+  }
+  std::string passes;
+  for (const PlannedPass& pass : plan_.passes) {
+    passes += (passes.empty() ? "" : ", ") + pass.name;
+    for (const std::string& variant : pass.variants) passes += "+" + variant;
+  }
+  ImGui::TextWrapped("passes: %s", passes.c_str());
+  for (const std::string& warning : plan_.warnings) ImGui::TextWrapped("note: %s", warning.c_str());
 }
 
 void Viewer::sectionCompare() {
@@ -711,6 +779,7 @@ void Viewer::panel() {
   sectionMatrices();
   sectionPhysical();
   sectionSamples();
+  sectionLensEffects();
   sectionCompare();
   sectionFiles();
   sectionHelp();

@@ -62,6 +62,15 @@ else
   fail "view/render with auto samples failed"
 fi
 
+# The same with every lens effect (the lens pass, per-channel views, the curvature warp).
+lens="$src/assets/rows/camera-lens.json"
+if "$lenslab" view --camera "$lens" --width 200 --aperture-samples 8 --frames 2 --no-ui --screenshot "$work/lens.exr" >/dev/null 2>&1 &&
+   "$lenslab" render --camera "$lens" --width 200 --aperture-samples 8 --out "$work/lens-render.exr" -q; then
+  if "$check" psnr "$work/lens.exr" "$work/lens-render.exr" 35; then pass; else fail "lens effects: view differs from render"; fi
+else
+  fail "view/render with lens effects failed"
+fi
+
 # ---- 2. click to focus ----
 # The centre of the front face of the 4 m box of `rows` (x 0.75, half size 0.25, centre z −1, so
 # the face is at z −0.75, y 0.25), projected by the lecture's formula through camera-dof.json

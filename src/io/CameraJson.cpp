@@ -20,7 +20,7 @@ using nlohmann::json;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
-                                            "aperture_radius"};
+                                            "aperture_radius", "focus_distance"};
 const std::set<std::string> kPhysicalKeys = {"eye", "target", "up", "focal_length_mm", "sensor_mm",
                                              "f_number", "focus_distance", "near", "far"};
 const std::set<std::string> kIntrinsicsFormKeys = {"eye", "target", "up", "intrinsics", "focus_distance",
@@ -146,6 +146,13 @@ CameraFile parseLecture(const Reader& r) {
   const double aperture = apertureRadiusOf(r);
   CameraFile file;
   file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
+  // The view plane is the plane of focus; only infinity, which no view plane can be, is said apart.
+  if (r.has("focus_distance")) {
+    if (!std::isinf(r.distance("focus_distance")) || spec.projection != Projection::Perspective)
+      r.fail("focus_distance", "in the lecture form can only be \"infinity\" (perspective): the view plane is the "
+                               "plane of focus, so move the VRP/PRP to focus elsewhere");
+    file.camera.focusAtInfinity = true;
+  }
   return file;
 }
 
@@ -345,6 +352,7 @@ std::string toCameraJson(const Camera& camera) {
   j["window"] = {s.window.umin, s.window.vmin, s.window.umax, s.window.vmax};
   j["near"] = s.nearDistance;
   if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (camera.focusAtInfinity) j["focus_distance"] = "infinity";
   if (std::isinf(s.farDistance)) j["far"] = "infinity";
   else j["far"] = s.farDistance;
   if (camera.calibratedSize) j["image_size"] = {camera.calibratedSize->widthPx, camera.calibratedSize->heightPx};

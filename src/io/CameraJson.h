@@ -10,8 +10,9 @@
 //    "near": d, "far": d | "infinity",              defaults: near = prp.n / 1000 (perspective)
 //                                                   or 0 (parallel); far = infinity
 //                                                   (perspective; required for parallel)
-//    "aperture_radius": r}                          default 0 (a pinhole); the view plane is the
+//    "aperture_radius": r,                          default 0 (a pinhole); the view plane is the
 //                                                   plane of focus
+//    "focus_distance": "infinity"}                  only infinity (no view plane can be there)
 // Physical form — a photographer's description (world units are metres):
 //   {"eye": [x, y, z], "target": [x, y, z],         required
 //    "up": [x, y, z],                               default [0, 1, 0]

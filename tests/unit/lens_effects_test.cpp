@@ -313,3 +313,21 @@ TEST(FramePlanEffects, EachEffectAddsOnlyItsOwnPassOrVariant) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+TEST(LectureForm, FocusAtInfinityIsReadAndSaved) {
+  const std::string lecture = R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
+                                  "aperture_radius": 0.01, "focus_distance": "infinity"})";
+  const CameraFile file = parseCameraJson(lecture, "inf.json");
+  EXPECT_TRUE(file.camera.focusAtInfinity);
+  EXPECT_EQ(file.camera.inverseFocusDistance(), 0.0);
+  EXPECT_TRUE(parseCameraJson(toCameraJson(file.camera), "again.json").camera.focusAtInfinity);
+  // A finite focus distance would contradict the view plane, which is the plane of focus.
+  EXPECT_THROW(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1],
+                                  "focus_distance": 3})", "f.json"), InputError);
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -161,7 +161,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
       ? app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model")
       : app.add_subcommand("raycast", "Ray cast a glTF scene on the CPU: the reference for `render`, same camera and shading");
   cmd->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--camera", options->cameraFile, "camera JSON (lecture or physical form); default: the scene's first glTF camera, else an automatic framing");
+  cmd->add_option("--camera", options->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default: the scene's first glTF camera, else an automatic framing");
   cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")->capture_default_str();
   cmd->add_option("--width", options->width, "image width in pixels (default 960; height follows the window's aspect)");
   cmd->add_option("--height", options->height, "image height in pixels");

@@ -30,7 +30,7 @@ std::function<int()> addViewCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window: the image converging, every camera and lens parameter, click to focus, the lecture's diagram");
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture or physical form); default as for render");
+  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default as for render");
   cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
   cmd->add_option("--height", o->height, "image height in pixels");
   addLensOptions(*cmd, o->lens);

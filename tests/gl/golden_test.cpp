@@ -91,6 +91,7 @@ INSTANTIATE_TEST_SUITE_P(BundledScenes, Golden,
                                            // Lens effects: OpenCV-calibrated barrel + tangential on the dots;
                                            // every effect (distortion, lateral + axial colour, field curvature) on rows.
                                            GoldenCase{"grid-distortion", "grid/grid.gltf", "grid/camera-distortion.json"},
+                                           GoldenCase{"grid-lens", "grid/grid.gltf", "grid/camera-lens.json"},
                                            GoldenCase{"rows-lens", "rows/rows.gltf", "rows/camera-lens.json", 32}),
                          [](const ::testing::TestParamInfo<GoldenCase>& param) {
                            std::string name = param.param.name;

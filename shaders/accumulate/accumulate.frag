@@ -19,20 +19,19 @@ layout(location = 18) uniform vec2 normalisedPerPixel;
 layout(location = 0) out vec4 sum;
 
 #ifdef FIELD_CURVATURE
-// Catmull–Rom (bicubic) sample of layer `layer` at pixel position p: a bilinear sample would
-// blur every view by its fractional shift.
+#include "../common/catmull_rom.glsl"
+
+// Layer `layer` at pixel position p, Catmull–Rom (bilinear would blur every view by its
+// fractional shift).
 vec4 catmullRom(vec2 p, int layer) {
-  vec2 q = p - 0.5;
-  vec2 base = floor(q);
-  vec2 t = q - base;
-  vec2 t2 = t * t, t3 = t2 * t;
-  vec2 w[4] = vec2[4](-0.5 * t3 + t2 - 0.5 * t, 1.5 * t3 - 2.5 * t2 + 1.0, -1.5 * t3 + 2.0 * t2 + 0.5 * t,
-                      0.5 * t3 - 0.5 * t2);
+  ivec2 first;
+  vec2 w[4];
+  catmullRomTaps(p, first, w);
   ivec2 last = textureSize(views, 0).xy - 1;
   vec4 s = vec4(0.0);
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i)
-      s += w[i].x * w[j].y * texelFetch(views, ivec3(clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), last), layer), 0);
+      s += w[i].x * w[j].y * texelFetch(views, ivec3(clamp(first + ivec2(i, j), ivec2(0), last), layer), 0);
   return s;
 }
 #endif

@@ -12,26 +12,18 @@ layout(binding = 3) uniform sampler2D blueMap;
 #endif
 layout(location = 0) out vec4 color;
 
-// Catmull–Rom (bicubic) interpolation: bilinear would blur every pixel that falls between texels
-// (most of them, under distortion); Catmull–Rom reproduces the texel values and keeps edges.
+#include "../common/catmull_rom.glsl"
+
+// The undistorted image at texture coordinate uv (under distortion most pixels fall between texels).
 vec4 catmullRom(vec2 uv) {
-  vec2 size = vec2(textureSize(image, 0));
-  vec2 p = uv * size - 0.5;
-  vec2 base = floor(p);
-  vec2 t = p - base;
-  vec2 t2 = t * t, t3 = t2 * t;
-  vec2 w0 = -0.5 * t3 + t2 - 0.5 * t;
-  vec2 w1 = 1.5 * t3 - 2.5 * t2 + 1.0;
-  vec2 w2 = -1.5 * t3 + 2.0 * t2 + 0.5 * t;
-  vec2 w3 = 0.5 * t3 - 0.5 * t2;
-  vec2 w[4] = vec2[4](w0, w1, w2, w3);
+  ivec2 first;
+  vec2 w[4];
+  catmullRomTaps(uv * vec2(textureSize(image, 0)), first, w);
   ivec2 last = textureSize(image, 0) - 1;
   vec4 sum = vec4(0.0);
   for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      ivec2 texel = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), last);
-      sum += w[i].x * w[j].y * texelFetch(image, texel, 0);
-    }
+    for (int i = 0; i < 4; ++i)
+      sum += w[i].x * w[j].y * texelFetch(image, clamp(first + ivec2(i, j), ivec2(0), last), 0);
   return max(sum, vec4(0.0));  // Catmull–Rom overshoots a little at hard edges; light is never negative
 }
 

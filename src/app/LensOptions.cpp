@@ -93,9 +93,8 @@ Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, cons
   double distance = 0.0;
   if (camera.effects.needsRemap()) {
     const glm::dvec2 centre(x + 0.5, y + 0.5);
-    const glm::dvec2 guess = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, centre, size.widthPx, size.heightPx));
     const Overscan o = overscanFor(camera, size);
-    const glm::dvec2 p = undistortedSample(camera, Channel::Green, centre, size, guess).pixel + glm::dvec2(o.padPx);
+    const glm::dvec2 p = undistortedSample(camera, Channel::Green, centre, size).pixel + glm::dvec2(o.padPx);
     distance = depthAt(o.camera, o.size, static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
   } else {
     distance = depthAt(camera, size, x, y);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -105,7 +106,8 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
     visit({0.0, 0.5 * j});
     visit({width, 0.5 * j});
   }
-  // Two more pixels for the bilinear footprint; the same on both sides keeps the window's centre.
+  // Two more pixels for the resampling's footprint (Catmull–Rom reads 2 texels on each side); the
+  // same on both sides keeps the window's centre.
   const double padX = std::max(-lo.x, hi.x - width), padY = std::max(-lo.y, hi.y - height);
   o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2, static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
   o.size = {width + 2 * o.padPx.x, height + 2 * o.padPx.y};
@@ -167,14 +169,28 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
   return table;
 }
 
-ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size, glm::dvec2 guess) {
+namespace {
+
+ChannelSample undistortedFrom(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size,
+                              const std::optional<glm::dvec2>& guess) {
   const Window& w = camera.view.window;
   const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, size.widthPx, size.heightPx));
   ChannelSample s;
-  s.normalised = camera.effects.needsRemap() ? undistortOrThrow(camera.effects, c, distorted, guess) : distorted;
+  s.normalised = camera.effects.needsRemap() ? undistortOrThrow(camera.effects, c, distorted, guess.value_or(distorted))
+                                             : distorted;
   s.pixel = pixelFromWindow(w, windowFromNormalised(camera.view, s.normalised), size.widthPx, size.heightPx);
   s.inverseFocusShift = camera.effects.inverseFocusShift(c, s.normalised);
   return s;
+}
+
+}  // namespace
+
+ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size, glm::dvec2 guess) {
+  return undistortedFrom(camera, c, pixel, size, guess);
+}
+
+ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size) {
+  return undistortedFrom(camera, c, pixel, size, std::nullopt);
 }
 
 }  // namespace lenslab

@@ -58,5 +58,7 @@ struct ChannelSample {
   double inverseFocusShift = 0.0;
 };
 ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size, glm::dvec2 guess);
+// The same, with Newton started from the pixel's own (distorted) position.
+ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size);
 
 }  // namespace lenslab

@@ -6,15 +6,6 @@
 
 namespace lenslab::gl {
 
-Sampler makeBilinearClampSampler() {
-  Sampler s = Sampler::create();
-  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return s;
-}
-
 RenderTarget::RenderTarget(int widthPx, int heightPx)
     : width_(widthPx),
       height_(heightPx),

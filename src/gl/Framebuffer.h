@@ -6,9 +6,6 @@
 
 namespace lenslab::gl {
 
-// A sampler that filters bilinearly and clamps to the edge (for resampling passes).
-Sampler makeBilinearClampSampler();
-
 // Where a pass draws: a framebuffer and its size. Owned elsewhere (RenderTarget, Accumulator).
 struct DrawTarget {
   GLuint framebuffer = 0;

@@ -120,7 +120,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   }
   if (plan.remap) {
     PlannedPass lens{"lens", cat("remaps the image through the inverse lens model (a lookup table per ",
-                                 effects.chromatic.hasLateral() ? "colour channel" : "image", ", bilinear)"), {}};
+                                 effects.chromatic.hasLateral() ? "colour channel" : "image", ", Catmull-Rom)"), {}};
     if (!effects.distortion.isZero()) lens.variants.push_back("distortion");
     if (effects.chromatic.hasLateral()) lens.variants.push_back("lateral-colour");
     plan.passes.push_back(lens);

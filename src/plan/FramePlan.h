@@ -5,7 +5,7 @@
 // lens effect adds its pass or shader variant only when its strength is not zero:
 //   distortion, lateral colour → the "lens" post pass (and an overscanned scene render);
 //   axial colour               → three views per aperture sample, one per colour channel;
-//   field curvature            → the scene pass's field-curvature variant.
+//   field curvature            → the field-curvature variant: views summed through a warp.
 // The last two change nothing through a pinhole, and are left out for one.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
@@ -44,7 +44,7 @@ struct FramePlan {
   double depthMax = 0.0;
   std::vector<std::string> warnings;  // what the plan could not honour, for stderr
   int viewsPerSample = 1;       // 3 with axial chromatic aberration: one per colour channel
-  bool fieldCurvature = false;  // the scene pass bends its plane of focus
+  bool fieldCurvature = false;  // the views are summed through the curved focal surface's warp
   bool remap = false;           // the lens post pass runs (distortion, lateral colour)
   Overscan overscan;            // what the scene passes render: the image, or more for the lens pass
 

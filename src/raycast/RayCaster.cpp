@@ -1,7 +1,6 @@
 #include "raycast/RayCaster.h"
 
 #include "camera/LensMap.h"
-#include "camera/Projection.h"
 
 #include "camera/Ray.h"
 #include "lens/AperturePattern.h"
@@ -220,9 +219,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
             // focused on that channel's (and that radius's) plane of focus.
             glm::dvec2 guess[3];
             for (int c = 0; c < channels; ++c)
-              guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5},
-                                           size, normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx)))
-                             .normalised;
+              guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5}, size).normalised;
             for (const LensSample& s : samples) {
               const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
               for (int c = 0; c < channels; ++c) {

@@ -12,16 +12,15 @@ namespace {
 constexpr int kMaxBatch = 8;
 constexpr double kBatchMemoryBytes = 256.0 * 1024 * 1024;  // at most this much for the view layers
 
-void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture, GLuint sampler = 0) {
+void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glUseProgram(program);
   glBindTextureUnit(0, texture);
-  glBindSampler(0, sampler);
+  glBindSampler(0, 0);
   glBindVertexArray(vertexArray);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glBindSampler(0, 0);
 }
 
 void nearestClamp(GLuint texture) {
@@ -36,13 +35,11 @@ void nearestClamp(GLuint texture) {
 Accumulator::Accumulator()
     : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
       resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
-      bilinear_(gl::makeBilinearClampSampler()),
       emptyVertexArray_(gl::VertexArray::create()) {}
 
 void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature) {
-  curved_ = curvature != nullptr;
-  if (curvature) curvature_ = *curvature;
-  if (curved_ && !accumulateCurved_)
+  curvature_ = curvature ? std::optional<Curvature>(*curvature) : std::nullopt;
+  if (curvature_ && !accumulateCurved_)
     accumulateCurved_ = gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag", {"FIELD_CURVATURE"});
   if (!sum_ || sum_->width() != widthPx || sum_->height() != heightPx) {
     sum_ = std::make_unique<gl::RenderTarget>(widthPx, heightPx);
@@ -92,15 +89,15 @@ void Accumulator::flush() {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  const GLuint program = curved_ ? accumulateCurved_.id() : accumulate_.id();
+  const GLuint program = curvature_ ? accumulateCurved_.id() : accumulate_.id();
   glProgramUniform1i(program, 0, pending_);
   glProgramUniform4fv(program, 1, pending_, &pendingWeights_[0].x);
-  if (curved_) {
+  if (curvature_) {
     glProgramUniform2fv(program, 9, pending_, &pendingShifts_[0].x);
-    glProgramUniform2fv(program, 17, 1, &curvature_.normalisedAtOrigin.x);
-    glProgramUniform2fv(program, 18, 1, &curvature_.normalisedPerPixel.x);
+    glProgramUniform2fv(program, 17, 1, &curvature_->normalisedAtOrigin.x);
+    glProgramUniform2fv(program, 18, 1, &curvature_->normalisedPerPixel.x);
   }
-  drawFullScreen(program, emptyVertexArray_.id(), views_.id(), curved_ ? bilinear_.id() : 0);
+  drawFullScreen(program, emptyVertexArray_.id(), views_.id());
   glDisable(GL_BLEND);
   pending_ = 0;
 }

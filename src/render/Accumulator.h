@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lenslab {
@@ -25,7 +26,7 @@ class Accumulator {
   // distance φ puts a point of depth Z at window position d·X/Z + δ·d·(φ − 1/Z), so focusing pixel
   // x at φ + κ·r(x)² instead of φ shows what the flat-focused view has at x − δ·d·κ·r(x)²: a
   // smooth warp of each view that does not depend on depth. Summing the views through that warp
-  // (bilinear) gives the curved focal surface exactly, up to the resampling.
+  // (Catmull–Rom) gives the curved focal surface exactly, up to the resampling.
   struct Curvature {
     glm::vec2 normalisedAtOrigin;  // normalised image coordinates of GL pixel corner (0, 0)
     glm::vec2 normalisedPerPixel;  // and their step per pixel (x right, y up)
@@ -49,7 +50,6 @@ class Accumulator {
   gl::Program accumulate_;
   gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
   gl::Program resolve_;
-  gl::Sampler bilinear_;
   gl::VertexArray emptyVertexArray_;  // core profile needs one bound even without attributes
   std::unique_ptr<gl::RenderTarget> sum_;
   gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
@@ -59,8 +59,7 @@ class Accumulator {
   int count_ = 0;
   std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share
   std::vector<glm::vec2> pendingShifts_;   // per view of the batch: field-curvature shift at r = 1
-  bool curved_ = false;
-  Curvature curvature_{};
+  std::optional<Curvature> curvature_;  // set by start: the field-curvature variant sums the views
   glm::vec4 weightSum_{0.0f};
 };
 

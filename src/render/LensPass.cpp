@@ -7,12 +7,14 @@
 namespace lenslab {
 namespace {
 
+// What the tables depend on. The window enters in normalised coordinates, so moving the camera or
+// refocusing it (which scales the window with PRP.n) keeps the tables.
 std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& overscan) {
   const LensEffects& e = camera.effects;
   const Distortion& d = e.distortion;
-  const ViewSpec& v = camera.view;
+  const NormalisedRect n = normalisedWindow(camera.view);
   return {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed, e.chromatic.lateralBlue,
-          v.prp.x, v.prp.y, v.prp.z, v.window.umin, v.window.vmin, v.window.umax, v.window.vmax,
+          n.min.x, n.min.y, n.max.x, n.max.y,
           static_cast<double>(size.widthPx), static_cast<double>(size.heightPx),
           static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx)};
 }

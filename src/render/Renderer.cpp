@@ -25,6 +25,12 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   size_ = plan.remap ? plan.overscan.size : size;
   outSize_ = size;
   done_ = 0;
+  // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
+  for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue}) {
+    Camera& focused = channelCameras_[static_cast<std::size_t>(c)];
+    focused = camera_;
+    focused.inverseFocusShift += camera_.effects.chromatic.inverseFocusShift(c);
+  }
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(camera, size, plan.overscan);
@@ -66,13 +72,10 @@ int Renderer::addSamples(int count) {
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
       scenePass_.draw(gpuScene_, clip(camera_), out.drawTarget());
     } else if (plan_.viewsPerSample == 3) {
-      // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
-      for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue}) {
-        Camera focused = camera_;
-        focused.inverseFocusShift += camera_.effects.chromatic.inverseFocusShift(c);
+      for (int c = 0; c < 3; ++c) {
         glm::vec3 mask(0.0f);
-        mask[static_cast<int>(c)] = 1.0f;
-        scenePass_.draw(gpuScene_, clip(focused), accumulator_->nextView(mask, curvatureShift));
+        mask[c] = 1.0f;
+        scenePass_.draw(gpuScene_, clip(channelCameras_[static_cast<std::size_t>(c)]), accumulator_->nextView(mask, curvatureShift));
       }
     } else {
       scenePass_.draw(gpuScene_, clip(camera_), accumulator_->nextView(glm::vec3(1.0f), curvatureShift));

@@ -4,7 +4,7 @@
 // scene from its aperture point (the PRP moved across the lens, the window kept on the plane of
 // focus, shifted by the sample's sub-pixel offset) and is added into the accumulator. Lens effects,
 // when the plan has them: one view per colour channel, each focused for its colour (axial
-// chromatic aberration); the field-curvature variant of the scene pass; the lens post pass
+// chromatic aberration); the views summed through the field-curvature warp; the lens post pass
 // (distortion, lateral colour) from an overscanned render into the output.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
@@ -17,6 +17,7 @@
 #include "render/LensPass.h"
 #include "render/ScenePass.h"
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -64,6 +65,7 @@ class Renderer {
 
   FramePlan plan_;
   Camera camera_;      // the camera the scene passes use (overscanned when the lens pass runs)
+  std::array<Camera, 3> channelCameras_;  // camera_ focused for red, green, blue (axial colour)
   ImageSize size_;     // the size they render at
   ImageSize outSize_;  // the image's size
   std::vector<LensSample> samples_;

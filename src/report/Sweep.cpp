@@ -160,8 +160,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
       const glm::dvec2 centre(x + 0.5, y + 0.5);
       glm::dvec2 p = centre;
       if (camera.effects.needsRemap()) {
-        const glm::dvec2 guess = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, centre, size.widthPx, size.heightPx));
-        p = undistortedSample(camera, Channel::Green, centre, size, guess).pixel + glm::dvec2(overscan.padPx);
+        p = undistortedSample(camera, Channel::Green, centre, size).pixel + glm::dvec2(overscan.padPx);
       }
       const int px = std::clamp(static_cast<int>(p.x), 0, overscan.size.widthPx - 1);
       const int py = std::clamp(static_cast<int>(p.y), 0, overscan.size.heightPx - 1);

@@ -247,6 +247,9 @@ TEST(LensEffectsGl, LookupTablesAreBuiltOncePerLens) {
   Renderer renderer(scene);
   for (int frame = 0; frame < 3; ++frame) renderer.render(camera, makeFramePlan(scene, camera, size), size);
   EXPECT_EQ(renderer.lensTablesBuilt(), 1);
+  camera = refocused(camera, 2.5, "test");  // the same lens focused elsewhere: the same tables
+  renderer.render(camera, makeFramePlan(scene, camera, size), size);
+  EXPECT_EQ(renderer.lensTablesBuilt(), 1);
   camera.effects.distortion.k1 = -0.27;  // a new lens: new tables
   renderer.render(camera, makeFramePlan(scene, camera, size), size);
   EXPECT_EQ(renderer.lensTablesBuilt(), 2);

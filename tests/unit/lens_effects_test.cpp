@@ -264,10 +264,14 @@ Scene oneQuad() {
 
 TEST(FramePlanEffects, ZeroStrengthCostsNothing) {
   const Scene scene = oneQuad();
-  Camera plain = narrowCamera(0.0);
-  plain.apertureRadius = 0.05;
-  Camera zeros = plain;
-  zeros.effects = LensEffects{};  // all zero, as a camera file with "distortion": {"k1": 0} gives
+  const std::string view = R"("vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.72,-0.48,0.72,0.48],
+                              "aperture_radius": 0.05)";
+  const Camera plain = parseCameraJson("{" + view + "}", "plain.json").camera;
+  // Every effect named, each at zero strength (the channels and the corners focused where green
+  // and the centre are).
+  const Camera zeros = parseCameraJson("{" + view + R"(, "distortion": {"k1": 0, "k2": 0, "p1": 0, "p2": 0, "k3": 0},
+      "chromatic": {"lateral_red": 0, "lateral_blue": 0, "focus_distance_red": 2, "focus_distance_blue": 2},
+      "field_curvature": {"corner_focus_distance": 2}})", "zeros.json").camera;
   const ImageSize size{120, 80};
   const FramePlan a = makeFramePlan(scene, plain, size), b = makeFramePlan(scene, zeros, size);
   ASSERT_EQ(a.passes.size(), b.passes.size());

@@ -14,6 +14,10 @@ layout(location = 7) uniform bool doubleSided;
 layout(location = 8) uniform vec3 toLight;
 layout(location = 9) uniform float ambient;
 layout(location = 10) uniform float diffuse;
+// Added to GL's level of detail. N jittered views sample each pixel N times, so each lookup should
+// filter over its own 1/√N of the pixel (λ − ½·log2 N), not over the whole pixel: the mean of the
+// views then converges to the pixel integral of the unfiltered texture, not to a pixel-blurred one.
+layout(location = 11) uniform float lodBias;
 
 layout(binding = 0) uniform sampler2D baseColorTexture;
 
@@ -21,7 +25,7 @@ layout(location = 0) out vec4 outColor;
 
 void main() {
   vec4 base = baseColorFactor * vertexColor;
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
   if (alphaMask && base.a < alphaCutoff) discard;
 
   vec3 n = normalize(worldNormal);

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -51,16 +52,66 @@ struct RayCaster::Impl {
   RTCScene rtcScene = nullptr;
   struct Geometry {
     int instance;
-    const float* worldPositions;  // Embree's vertex buffer: 3 floats per vertex
+    const float* relativePositions;  // Embree's vertex buffer: 3 floats per vertex, world − origin
     glm::mat3 normalFromModel;
     bool mirrored;
   };
   std::vector<Geometry> geometries;           // by Embree geometry ID
   std::vector<TextureSampler> samplers;       // by Scene texture index
+  // Embree works in float. Its geometry is stored relative to `origin` (the camera's lens centre,
+  // subtracted in double), so that a scene 1e7 from the world origin keeps the precision it has at
+  // the origin: float's relative error then applies to distances from the camera, not from (0,0,0).
+  glm::dvec3 origin{std::numeric_limits<double>::quiet_NaN()};
+  std::mutex rebaseMutex;
 
   ~Impl() {
-    if (rtcScene) rtcReleaseScene(rtcScene);
+    release();
     if (device) rtcReleaseDevice(device);
+  }
+
+  void release() {
+    if (rtcScene) rtcReleaseScene(rtcScene);
+    rtcScene = nullptr;
+  }
+
+  // (Re)builds the Embree scene with its geometry relative to `newOrigin`, unless it already is.
+  void rebase(const glm::dvec3& newOrigin) {
+    const std::lock_guard lock(rebaseMutex);
+    if (rtcScene && newOrigin == origin) return;
+    release();
+    geometries.clear();
+    origin = newOrigin;
+    rtcScene = rtcNewScene(device);
+    rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
+    for (std::size_t k = 0; k < scene->instances.size(); ++k) {
+      const Instance& instance = scene->instances[k];
+      const Mesh& mesh = scene->meshes[static_cast<std::size_t>(instance.mesh)];
+      RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+      auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                   3 * sizeof(float), mesh.vertices.size()));
+      for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const glm::dvec3 p = glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin;
+        positions[i * 3] = static_cast<float>(p.x);
+        positions[i * 3 + 1] = static_cast<float>(p.y);
+        positions[i * 3 + 2] = static_cast<float>(p.z);
+      }
+      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                    3 * sizeof(unsigned), mesh.indices.size() / 3));
+      std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
+      rtcCommitGeometry(geometry);
+      const unsigned id = rtcAttachGeometry(rtcScene, geometry);
+      rtcReleaseGeometry(geometry);
+      const glm::dmat3 linear(instance.worldFromModel);
+      if (id != geometries.size()) throw std::logic_error("Embree geometry IDs are not sequential");
+      geometries.push_back({static_cast<int>(k), positions, glm::mat3(glm::transpose(glm::inverse(linear))),
+                            glm::determinant(linear) < 0.0});
+    }
+    rtcCommitScene(rtcScene);
+  }
+
+  // The origin the geometry is kept relative to for `camera`: its lens centre.
+  static glm::dvec3 originFor(const Camera& camera, ImageSize size) {
+    return lensRay(camera, {0.0, 0.0}, {0.5 * size.widthPx, 0.5 * size.heightPx}, size).origin;
   }
 
   struct Hit {
@@ -70,9 +121,13 @@ struct RayCaster::Impl {
   };
 
   // First visible surface along `ray` (single-sided back faces and masked-out texels are passed
-  // through, as the rasterizer culls and discards them), shaded.
-  Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) const {
-    const Ray ray = lensRay(camera, lensOffset, pixel, size);
+  // through, as the rasterizer culls and discards them), shaded. Textures are filtered over
+  // `footprintPx` pixels: the part of the pixel this sample stands for (see render), not the
+  // whole pixel, so that the mean of the samples converges to the pixel integral of the
+  // unfiltered texture instead of to a pixel-blurred one. The returned ray is relative to `origin`.
+  Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double footprintPx) const {
+    Ray ray = lensRay(camera, lensOffset, pixel, size);
+    ray.origin -= origin;
     Hit miss{scene->lighting.background, std::numeric_limits<double>::infinity(), ray};
     double tNear = ray.tNear;
     for (int layer = 0; layer < 64; ++layer) {
@@ -99,8 +154,8 @@ struct RayCaster::Impl {
       const Material& material = mesh.material >= 0 ? scene->materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
       const std::uint32_t i0 = mesh.indices[rh.hit.primID * 3], i1 = mesh.indices[rh.hit.primID * 3 + 1],
                           i2 = mesh.indices[rh.hit.primID * 3 + 2];
-      auto world = [&](std::uint32_t i) {
-        return glm::dvec3(g.worldPositions[i * 3], g.worldPositions[i * 3 + 1], g.worldPositions[i * 3 + 2]);
+      auto world = [&](std::uint32_t i) {  // relative to `origin`, as the ray is
+        return glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
       };
       const glm::dvec3 p0 = world(i0), p1 = world(i1), p2 = world(i2);
       // Front-facing as GL decides it: counter-clockwise on screen, i.e. the model's winding seen
@@ -120,15 +175,17 @@ struct RayCaster::Impl {
       glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
       if (material.baseColorTexture >= 0) {
         const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
-        // Ray differentials: the same lens point, one pixel over in x and in y.
+        // Ray differentials: the same lens point, one footprint over in x and in y.
         auto uvAt = [&](glm::dvec2 offset) {
-          const glm::dvec2 b = barycentricOnPlane(lensRay(camera, lensOffset, pixel + offset, size), p0, p1, p2);
+          Ray r = lensRay(camera, lensOffset, pixel + offset, size);
+          r.origin -= origin;
+          const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
           return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
         };
         const glm::vec2 uvHere = uvAt({0.0, 0.0});
         const Texture& texture = scene->textures[static_cast<std::size_t>(material.baseColorTexture)];
         base *= samplers[static_cast<std::size_t>(material.baseColorTexture)].sample(
-            texture.sampler, uv, uvAt({1.0, 0.0}) - uvHere, uvAt({0.0, 1.0}) - uvHere);
+            texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere);
       }
       if (material.alphaMode == AlphaMode::Mask && base.a < material.alphaCutoff) {
         tNear = skipTo;
@@ -147,32 +204,8 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   m.scene = &scene;
   m.device = rtcNewDevice(nullptr);
   if (!m.device) throw std::runtime_error("Embree: could not create a device");
-  m.rtcScene = rtcNewScene(m.device);
-  rtcSetSceneBuildQuality(m.rtcScene, RTC_BUILD_QUALITY_HIGH);
-  for (std::size_t k = 0; k < scene.instances.size(); ++k) {
-    const Instance& instance = scene.instances[k];
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-    RTCGeometry geometry = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 3 * sizeof(float), mesh.vertices.size()));
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const glm::dvec3 p(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0));
-      positions[i * 3] = static_cast<float>(p.x);
-      positions[i * 3 + 1] = static_cast<float>(p.y);
-      positions[i * 3 + 2] = static_cast<float>(p.z);
-    }
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                  3 * sizeof(unsigned), mesh.indices.size() / 3));
-    std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
-    rtcCommitGeometry(geometry);
-    const unsigned id = rtcAttachGeometry(m.rtcScene, geometry);
-    rtcReleaseGeometry(geometry);
-    const glm::dmat3 linear(instance.worldFromModel);
-    if (id != m.geometries.size()) throw std::logic_error("Embree geometry IDs are not sequential");
-    m.geometries.push_back({static_cast<int>(k), positions, glm::mat3(glm::transpose(glm::inverse(linear))),
-                            glm::determinant(linear) < 0.0});
-  }
-  rtcCommitScene(m.rtcScene);
+  // Built relative to the scene's centre until a camera asks for its own origin.
+  m.rebase(scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center());
   // Mip chains where the GPU makes them: any sampler of the image minifies with mipmaps.
   for (const Texture& t : scene.textures) {
     const bool mipmaps = t.sampler.minFilter != Filter::Nearest && t.sampler.minFilter != Filter::Linear;
@@ -182,12 +215,15 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
 
 RayCaster::~RayCaster() = default;
 
-glm::vec3 RayCaster::trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) const {
-  return impl_->shadeAlong(camera, lensOffset, pixel, size).color;
+glm::vec3 RayCaster::trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size,
+                           double footprintPx) const {
+  impl_->rebase(Impl::originFor(camera, size));
+  return impl_->shadeAlong(camera, lensOffset, pixel, size, footprintPx).color;
 }
 
 double RayCaster::depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const {
-  const Impl::Hit hit = impl_->shadeAlong(camera, {0.0, 0.0}, pixel, size);
+  impl_->rebase(Impl::originFor(camera, size));
+  const Impl::Hit hit = impl_->shadeAlong(camera, {0.0, 0.0}, pixel, size, 1.0);
   if (std::isinf(hit.t)) return hit.t;
   return -glm::dot(hit.t * hit.ray.direction, viewBasis(camera.view).n);
 }
@@ -196,6 +232,11 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
                         const std::function<void(int, int)>& progress) const {
   Image image(size.widthPx, size.heightPx);
   const int spp = std::max(1, options.samplesPerPixel);
+  impl_->rebase(Impl::originFor(camera, size));
+  const Impl& m = *impl_;
+  // The samples' pixel positions are stratified, one stratum of 1/√spp × 1/√spp pixels each: that
+  // is the area a sample stands for, so its texture lookups filter over that and no more.
+  const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
   const bool lensEffects = !camera.effects.isZero();
   // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
   const int channels = camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1;
@@ -225,7 +266,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
               for (int c = 0; c < channels; ++c) {
                 const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
                 focused.inverseFocusShift = cs.inverseFocusShift;
-                const glm::vec3 colour = trace(focused, s.lens * camera.apertureRadius, cs.pixel, size);
+                const glm::vec3 colour = m.shadeAlong(focused, s.lens * camera.apertureRadius, cs.pixel, size, footprintPx).color;
                 if (channels == 3) sum[c] += colour[c];
                 else sum += glm::dvec3(colour);
               }
@@ -233,7 +274,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
           } else {
             for (const LensSample& s : samples) {
               const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-              sum += glm::dvec3(trace(camera, s.lens * camera.apertureRadius, pixel, size));
+              sum += glm::dvec3(m.shadeAlong(camera, s.lens * camera.apertureRadius, pixel, size, footprintPx).color);
             }
           }
           image.set(x, y, glm::vec4(glm::vec3(sum / static_cast<double>(samples.size())), 1.0f));

@@ -17,7 +17,10 @@
 namespace lenslab {
 
 struct RaycastOptions {
-  int samplesPerPixel = 64;  // stratified pixel × lens samples (Shirley–Chiu concentric on the lens)
+  // Stratified pixel × lens samples (Shirley–Chiu concentric on the lens). Each sample's texture
+  // lookups are filtered over its own stratum (1/√spp of a pixel), so the image converges to the
+  // pixel integral of the unfiltered (level-0) texture as spp grows.
+  int samplesPerPixel = 64;
   std::uint32_t seed = 1;
 };
 
@@ -33,8 +36,10 @@ class RayCaster {
                const std::function<void(int, int)>& progress = {}) const;
 
   // The shaded colour seen along one ray through continuous pixel position `pixel` from aperture
-  // offset `lensOffset` (linear RGB; the background where nothing is hit).
-  glm::vec3 trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) const;
+  // offset `lensOffset` (linear RGB; the background where nothing is hit). Textures are filtered
+  // over `footprintPx` pixels around the ray (1: a whole pixel, as one GL view would).
+  glm::vec3 trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size,
+                  double footprintPx = 1.0) const;
 
   // Depth (world units from the PRP along −n) of the first visible surface under pixel centre
   // `pixel` seen from the lens centre; +infinity where nothing is hit. For --focus-at.

@@ -6,8 +6,8 @@
 //
 // Minification: the level of detail is GL's λ = log2 ρ with ρ the larger of the lengths of the
 // texel-space derivatives along image x and y (OpenGL 4.5 §8.14.1). The ray caster gets those
-// derivatives from ray differentials: the rays through the neighbouring pixel positions, cut with
-// the plane of the hit triangle.
+// derivatives from ray differentials: the rays one sample footprint over (a pixel for one sample,
+// 1/√spp of a pixel for spp stratified samples), cut with the plane of the hit triangle.
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -21,8 +21,8 @@ class TextureSampler {
   TextureSampler() = default;
   TextureSampler(const TextureImage& image, bool mipmaps);
 
-  // uv in glTF's convention (0, 0 at the image's top-left); dUvDx, dUvDy: derivatives of uv along
-  // image x and y (per pixel). Returns linear RGBA.
+  // uv in glTF's convention (0, 0 at the image's top-left); dUvDx, dUvDy: how far uv moves across
+  // the sample's footprint along image x and y. Returns linear RGBA.
   glm::vec4 sample(const Sampler& sampler, glm::vec2 uv, glm::vec2 dUvDx, glm::vec2 dUvDy) const;
 
   int levels() const { return static_cast<int>(levels_.size()); }

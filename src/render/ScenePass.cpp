@@ -20,6 +20,7 @@ enum Location : GLint {
   kToLight = 8,
   kAmbient = 9,
   kDiffuse = 10,
+  kLodBias = 11,
 };
 
 const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaque, single-sided
@@ -28,8 +29,8 @@ const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaq
 
 ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
 
-void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld,
-                     const gl::DrawTarget& target) const {
+void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
+                     float lodBias) const {
   const Scene& scene = gpuScene.scene();
   target.bind();
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -48,6 +49,7 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld,
   glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
   glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
   glProgramUniform1f(program, kDiffuse, scene.lighting.diffuse);
+  glProgramUniform1f(program, kLodBias, lodBias);
 
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];

@@ -12,7 +12,10 @@ namespace lenslab {
 class ScenePass {
  public:
   ScenePass();  // builds the program (needs a current context)
-  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target) const;
+  // `lodBias` is added to the textures' level of detail: −½·log2 N when this view is one of N
+  // sub-pixel-jittered views of a pixel (scene.frag says why).
+  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
+            float lodBias = 0.0f) const;
 
  private:
   gl::Program program_;

@@ -46,8 +46,19 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   const bool visible = plan.depthMax >= plan.depthMin && plan.depthMax > 0.0;
 
   if (camera.isPinhole()) {
-    plan.apertureSamples = 1;
-    plan.samplesWhy = "pinhole camera: one view from the PRP";
+    // Every view of a pinhole is the same view; only the sub-pixel jitter differs. An explicit
+    // count is honoured as that many jittered views (anti-aliasing: the box-filtered pixel
+    // integral); auto asks for none.
+    if (options.pattern == AperturePattern::Lecture17) {
+      plan.apertureSamples = 17;
+      plan.samplesWhy = "pinhole camera: the lecture's 17-point pattern as 17 sub-pixel-jittered views (anti-aliasing)";
+    } else if (options.apertureSamples > 1) {
+      plan.apertureSamples = options.apertureSamples;
+      plan.samplesWhy = cat("pinhole camera: ", options.apertureSamples, " sub-pixel-jittered views as asked (anti-aliasing)");
+    } else {
+      plan.apertureSamples = 1;
+      plan.samplesWhy = "pinhole camera: one view from the PRP";
+    }
   } else {
     const double pxPerWindowUnit = size.widthPx / camera.view.window.width();
     if (visible) {
@@ -94,7 +105,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   }
 
   const LensEffects& effects = camera.effects;
-  if (plan.apertureSamples > 1) {
+  if (plan.apertureSamples > 1 && !camera.isPinhole()) {
     plan.viewsPerSample = effects.chromatic.hasAxial() ? 3 : 1;
     plan.fieldCurvature = !effects.fieldCurvature.isZero();
   }
@@ -110,7 +121,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     PlannedPass scenePass{"scene", cat(plan.apertureSamples * plan.viewsPerSample, " views of ", triangles, " triangles, ",
                                        plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "
                                                                 : "one from each ",
-                                       patternName(plan.pattern), " aperture point, with sub-pixel jitter", where), {}};
+                                       patternName(plan.pattern), camera.isPinhole() ? " sample" : " aperture point", ", with sub-pixel jitter", where), {}};
     if (plan.fieldCurvature) scenePass.variants.push_back("field-curvature");
     if (plan.viewsPerSample == 3) scenePass.variants.push_back("channel-focus");
     plan.passes.push_back(scenePass);

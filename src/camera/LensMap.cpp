@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <mutex>
 #include <stdexcept>
@@ -21,6 +22,25 @@ constexpr Channel kChannels[] = {Channel::Red, Channel::Green, Channel::Blue};
 std::vector<Channel> remappedChannels(const LensEffects& effects) {
   if (effects.chromatic.hasLateral()) return {Channel::Red, Channel::Green, Channel::Blue};
   return {Channel::Green};
+}
+
+// Runs `rows(first, last)` over [0, height) in one band per core, rethrowing the first failure.
+void forEachRowBand(int height, const std::function<void(int, int)>& rows) {
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 16);
+  std::vector<std::thread> workers;
+  std::exception_ptr failure;
+  std::mutex failureMutex;
+  for (int t = 0; t < threads; ++t)
+    workers.emplace_back([&, t] {
+      try {
+        rows(height * t / threads, height * (t + 1) / threads);
+      } catch (...) {
+        const std::lock_guard lock(failureMutex);
+        failure = std::current_exception();
+      }
+    });
+  for (std::thread& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
 }
 
 glm::dvec2 undistortOrThrow(const LensEffects& effects, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
@@ -149,23 +169,55 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
     };
     // Rows are independent: one band per core (the table is rebuilt only when the lens changes,
     // but a 4K table is 8 million Newton solves).
-    const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 16);
-    std::vector<std::thread> workers;
-    std::exception_ptr failure;
-    std::mutex failureMutex;
-    for (int t = 0; t < threads; ++t)
-      workers.emplace_back([&, t] {
-        try {
-          rows(height * t / threads, height * (t + 1) / threads);
-        } catch (...) {
-          const std::lock_guard lock(failureMutex);
-          failure = std::current_exception();
-        }
-      });
-    for (std::thread& worker : workers) worker.join();
-    if (failure) std::rethrow_exception(failure);
+    forEachRowBand(height, rows);
     table.channels.push_back(std::move(map));
   }
+  return table;
+}
+
+ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan) {
+  ForwardTable table;
+  table.size = overscan.size;
+  const int width = size.widthPx, height = size.heightPx;
+  const int viewWidth = overscan.size.widthPx, viewHeight = overscan.size.heightPx;
+  const Window& w = camera.view.window;
+  const Window& ow = overscan.camera.view.window;
+  // View position (GL) → normalised → green's distorted position → output position (GL).
+  const auto forward = [&](glm::dvec2 q) {
+    const glm::dvec2 n = normalisedFromWindow(overscan.camera.view, windowFromPixel(ow, {q.x, viewHeight - q.y}, viewWidth, viewHeight));
+    const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, camera.effects.distortChannel(Channel::Green, n)), width, height);
+    return glm::dvec2(p.x, height - p.y);
+  };
+  const std::size_t texels = static_cast<std::size_t>(viewWidth) * static_cast<std::size_t>(viewHeight);
+  table.position.resize(texels);
+  table.jacobian.resize(texels);
+  std::vector<double> halfExtent(static_cast<std::size_t>(viewHeight), 0.0);  // per row, then the largest
+  forEachRowBand(viewHeight, [&](int first, int last) {
+    for (int y = first; y < last; ++y)
+      for (int x = 0; x < viewWidth; ++x) {
+        const glm::dvec2 q(x + 0.5, y + 0.5);
+        const glm::dvec2 p = forward(q);
+        // Central differences over one texel: exact for the quadratic part of the map.
+        const glm::dvec2 dx = forward(q + glm::dvec2(0.5, 0.0)) - forward(q - glm::dvec2(0.5, 0.0));
+        const glm::dvec2 dy = forward(q + glm::dvec2(0.0, 0.5)) - forward(q - glm::dvec2(0.0, 0.5));
+        const double det = dx.x * dy.y - dy.x * dx.y;
+        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(viewWidth) + static_cast<std::size_t>(x);
+        table.position[i] = glm::vec4(p.x, p.y, std::abs(det), 0.0);
+        table.jacobian[i] = glm::vec4(dx.x, dx.y, dy.x, dy.y);
+        // The pre-image of an output pixel ([-½, ½]² about p) is J⁻¹ of it: its half-extent per axis.
+        if (p.x > -1.0 && p.x < width + 1.0 && p.y > -1.0 && p.y < height + 1.0 && det > 0.0) {
+          const double hx = 0.5 * (std::abs(dy.y) + std::abs(dy.x)) / det;
+          const double hy = 0.5 * (std::abs(dx.y) + std::abs(dx.x)) / det;
+          halfExtent[static_cast<std::size_t>(y)] = std::max({halfExtent[static_cast<std::size_t>(y)], hx, hy});
+        }
+      }
+  });
+  // Red and blue are green's image magnified by (1 + lateral): their pre-images are smaller or
+  // larger by that factor.
+  const double smallestScale = std::min({1.0, 1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue});
+  table.reachPx = *std::max_element(halfExtent.begin(), halfExtent.end()) * 1.01 / smallestScale + 1.0;
+  const glm::dvec2 principal = pixelFromWindow(w, windowFromNormalised(camera.view, {0.0, 0.0}), width, height);
+  table.principalPointPx = {principal.x, height - principal.y};
   return table;
 }
 

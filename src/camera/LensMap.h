@@ -48,6 +48,23 @@ struct RemapTable {
 };
 RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan);
 
+// Forward, for the raster's per-view gather (render/LensPass.h): the overscan render's texel
+// centres carried through green's distortion into the output image. A view's texel t shows the
+// scene at t + 0.5 + jitter; its distorted position is position + jacobian · jitter (the map is
+// smooth: the second-order term is below 1e-3 px for any validated lens). Everything in GL
+// orientation (x right, y up, origin at the bottom-left corner), output positions in output pixels.
+struct ForwardTable {
+  ImageSize size;                    // the overscan render's
+  std::vector<glm::vec4> position;   // per texel, GL row order: distorted x, y; |det J|; 0
+  std::vector<glm::vec4> jacobian;   // per texel: ∂position/∂x (x, y), ∂position/∂y (z, w)
+  // How far (view pixels, per axis) from the pre-image of an output pixel's centre a texel centre
+  // can be and still have a jittered sample land in that pixel: the largest half-extent of an
+  // output pixel's pre-image, plus one pixel for the jitter and the texel centre.
+  double reachPx = 0.0;
+  glm::dvec2 principalPointPx{0.0};  // the principal point in the output image, for lateral colour
+};
+ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan);
+
 // Exact, for the ray caster: channel `c` of output pixel position `pixel` (continuous, origin top
 // left) shows the true perspective pixel position returned (same image grid, may lie outside it),
 // focused at the camera's inverse focus distance plus `inverseFocusShift`. `guess` is a true

@@ -37,12 +37,40 @@ Accumulator::Accumulator()
       resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
       emptyVertexArray_(gl::VertexArray::create()) {}
 
-void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature) {
+void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens) {
   curvature_ = curvature ? std::optional<Curvature>(*curvature) : std::nullopt;
+  lens_ = lens ? std::optional<LensGather>(*lens) : std::nullopt;
   if (curvature_ && !accumulateCurved_)
     accumulateCurved_ = gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag", {"FIELD_CURVATURE"});
-  if (!sum_ || sum_->width() != widthPx || sum_->height() != heightPx) {
-    sum_ = std::make_unique<gl::RenderTarget>(widthPx, heightPx);
+  if (lens_) {
+    gl::Program& gather = gatherLens_[(curvature_ ? 2 : 0) + (lens_->lateral ? 1 : 0)];
+    if (!gather) {
+      std::vector<std::string> defines;
+      if (curvature_) defines.push_back("FIELD_CURVATURE");
+      if (lens_->lateral) defines.push_back("LATERAL_COLOUR");
+      gather = gl::buildProgram("common/fullscreen.vert", "accumulate/gather_lens.frag", defines);
+    }
+    if (!resolvePerPixel_)
+      resolvePerPixel_ = gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag", {"PER_PIXEL_WEIGHT"});
+  }
+  const int sumWidth = lens_ ? lens_->outWidthPx : widthPx, sumHeight = lens_ ? lens_->outHeightPx : heightPx;
+  if (!sum_ || sum_->width() != sumWidth || sum_->height() != sumHeight) {
+    sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+    weight_.reset();
+  }
+  if (lens_ && !weight_) {
+    weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+    gatherFramebuffer_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(gatherFramebuffer_.id(), GL_COLOR_ATTACHMENT0, sum_->colorTexture(), 0);
+    glNamedFramebufferTexture(gatherFramebuffer_.id(), GL_COLOR_ATTACHMENT1, weight_->colorTexture(), 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(gatherFramebuffer_.id(), 2, buffers);
+    if (glCheckNamedFramebufferStatus(gatherFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("accumulator: the lens gather's framebuffer is incomplete");
+  }
+  if (viewWidth_ != widthPx || viewHeight_ != heightPx) {
+    viewWidth_ = widthPx;
+    viewHeight_ = heightPx;
     const double bytesPerLayer = 16.0 * widthPx * heightPx;
     const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
     views_ = gl::TextureArray::create();
@@ -60,17 +88,22 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature) {
       framebuffers_.push_back(std::move(fb));
     }
   }
-  sum_->bind();
   const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  sum_->bind();
   glClearBufferfv(GL_COLOR, 0, zero);
+  if (weight_) {
+    weight_->bind();
+    glClearBufferfv(GL_COLOR, 0, zero);
+  }
   pending_ = 0;
   count_ = 0;
   weightSum_ = glm::vec4(0.0f);
   pendingWeights_.assign(static_cast<std::size_t>(batchSize()), glm::vec4(0.0f));
   pendingShifts_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
+  pendingJitters_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
 }
 
-gl::DrawTarget Accumulator::nextView(glm::vec3 channels, glm::vec2 curvatureShiftPx) {
+gl::DrawTarget Accumulator::nextView(glm::vec3 channels, glm::vec2 curvatureShiftPx, glm::vec2 jitterPx) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
   if (pending_ == batchSize()) flush();
   ++count_;
@@ -79,23 +112,44 @@ gl::DrawTarget Accumulator::nextView(glm::vec3 channels, glm::vec2 curvatureShif
   const glm::vec4 weight(channels, channelCount / 3.0f);
   pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
   pendingShifts_[static_cast<std::size_t>(pending_)] = curvatureShiftPx;
+  pendingJitters_[static_cast<std::size_t>(pending_)] = jitterPx;
   weightSum_ += weight;
-  return {framebuffers_[static_cast<std::size_t>(pending_++)].id(), sum_->width(), sum_->height()};
+  return {framebuffers_[static_cast<std::size_t>(pending_++)].id(), viewWidth_, viewHeight_};
 }
 
 void Accumulator::flush() {
   if (pending_ == 0) return;
-  sum_->bind();
+  if (lens_) {
+    const gl::DrawTarget both{gatherFramebuffer_.id(), sum_->width(), sum_->height()};
+    both.bind();
+  } else {
+    sum_->bind();
+  }
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  const GLuint program = curvature_ ? accumulateCurved_.id() : accumulate_.id();
+  const GLuint program = lens_ ? gatherLens_[(curvature_ ? 2 : 0) + (lens_->lateral ? 1 : 0)].id()
+                       : curvature_ ? accumulateCurved_.id() : accumulate_.id();
   glProgramUniform1i(program, 0, pending_);
   glProgramUniform4fv(program, 1, pending_, &pendingWeights_[0].x);
   if (curvature_) {
     glProgramUniform2fv(program, 9, pending_, &pendingShifts_[0].x);
     glProgramUniform2fv(program, 17, 1, &curvature_->normalisedAtOrigin.x);
     glProgramUniform2fv(program, 18, 1, &curvature_->normalisedPerPixel.x);
+  }
+  if (lens_) {
+    glProgramUniform2fv(program, 19, pending_, &pendingJitters_[0].x);
+    glProgramUniform1f(program, 27, lens_->reachPx);
+    if (lens_->lateral) {
+      glProgramUniform2fv(program, 28, 1, &lens_->principalPointPx.x);
+      glProgramUniform2fv(program, 29, 1, &lens_->lateralScale.x);
+    }
+    glBindTextureUnit(1, lens_->forwardPosition);
+    glBindTextureUnit(2, lens_->forwardJacobian);
+    glBindTextureUnit(3, lens_->inverse[1]);
+    glBindTextureUnit(4, lens_->inverse[0]);
+    glBindTextureUnit(5, lens_->inverse[2]);
+    for (GLuint unit = 1; unit <= 5; ++unit) glBindSampler(unit, 0);  // texelFetch only
   }
   drawFullScreen(program, emptyVertexArray_.id(), views_.id());
   glDisable(GL_BLEND);
@@ -107,6 +161,12 @@ void Accumulator::resolve(const gl::RenderTarget& out) {
   flush();
   out.bind();
   glDisable(GL_BLEND);
+  if (lens_) {
+    glBindTextureUnit(1, weight_->colorTexture());
+    glBindSampler(1, 0);
+    drawFullScreen(resolvePerPixel_.id(), emptyVertexArray_.id(), sum_->colorTexture());
+    return;
+  }
   const glm::vec4 inverseWeight = glm::vec4(1.0f) / glm::max(weightSum_, glm::vec4(1e-30f));
   glProgramUniform4fv(resolve_.id(), 0, 1, &inverseWeight.x);
   drawFullScreen(resolve_.id(), emptyVertexArray_.id(), sum_->colorTexture());

@@ -32,16 +32,33 @@ class Accumulator {
     glm::vec2 normalisedPerPixel;  // and their step per pixel (x right, y up)
   };
 
-  void start(int widthPx, int heightPx, const Curvature* curvature = nullptr);  // clears the sum
+  // Distortion and lateral colour applied to each view as it is summed (gather_lens.frag): the
+  // sum is then at the output's size, the views at the overscan's. Made by LensPass.
+  struct LensGather {
+    GLuint forwardPosition = 0;      // RGBA32F at the views' size (camera/LensMap.h ForwardTable)
+    GLuint forwardJacobian = 0;
+    GLuint inverse[3] = {0, 0, 0};   // RG32F remap tables at the output size: red, green, blue (all green's without lateral colour)
+    bool lateral = false;
+    int outWidthPx = 0;
+    int outHeightPx = 0;
+    float reachPx = 0.0f;
+    glm::vec2 principalPointPx{0.0f};
+    glm::vec2 lateralScale{1.0f};    // 1 + lateral, red and blue
+  };
+
+  // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
+  void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr);
   // Where to draw the next view; it counts as added once drawn. Adds the previous batch to the
   // sum first when the batch is full. `channels` says which colour channels the view contributes
   // (axial chromatic aberration draws one view per channel); resolve divides each channel by the
   // number of views that contributed to it.
   // `curvatureShiftPx`: δ·d·κ of this view in pixels (GL orientation), used with start's Curvature.
-  gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f));
+  // `jitterPx`: the view's sub-pixel offset (GL orientation), used with start's LensGather.
+  gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f),
+                          glm::vec2 jitterPx = glm::vec2(0.0f));
   int count() const { return count_; }
   int batchSize() const { return static_cast<int>(framebuffers_.size()); }
-  // The mean so far, into `out` (same size).
+  // The mean so far, into `out` (the sum's size).
   void resolve(const gl::RenderTarget& out);
 
  private:
@@ -49,9 +66,14 @@ class Accumulator {
 
   gl::Program accumulate_;
   gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
+  gl::Program gatherLens_[4];     // the lens gather: [field curvature · 2 + lateral colour], built on first use
   gl::Program resolve_;
+  gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
   gl::VertexArray emptyVertexArray_;  // core profile needs one bound even without attributes
   std::unique_ptr<gl::RenderTarget> sum_;
+  std::unique_ptr<gl::RenderTarget> weight_;  // the lens gather's per-pixel weights
+  gl::Framebuffer gatherFramebuffer_;         // sum_ and weight_ as two colour attachments
+  std::optional<LensGather> lens_;
   gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
   gl::Texture depth_;                 // shared by the views (each clears it)
   std::vector<gl::Framebuffer> framebuffers_;
@@ -59,6 +81,9 @@ class Accumulator {
   int count_ = 0;
   std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share
   std::vector<glm::vec2> pendingShifts_;   // per view of the batch: field-curvature shift at r = 1
+  std::vector<glm::vec2> pendingJitters_;  // per view of the batch: sub-pixel offset (lens gather)
+  int viewWidth_ = 0;
+  int viewHeight_ = 0;
   std::optional<Curvature> curvature_;  // set by start: the field-curvature variant sums the views
   glm::vec4 weightSum_{0.0f};
 };

@@ -38,6 +38,27 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
     glTextureSubImage2D(t.id(), 0, 0, 0, size.widthPx, size.heightPx, GL_RG, GL_FLOAT, map.data());
     tables_.push_back(std::move(t));
   }
+  const auto texture = [](GLenum format, ImageSize at, GLenum layout, const void* data) {
+    gl::Texture t = gl::Texture::create();
+    glTextureStorage2D(t.id(), 1, format, at.widthPx, at.heightPx);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureSubImage2D(t.id(), 0, 0, 0, at.widthPx, at.heightPx, layout, GL_FLOAT, data);
+    return t;
+  };
+  const ForwardTable forward = makeForwardTable(camera, size, overscan);
+  forwardPosition_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.position.data());
+  forwardJacobian_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.jacobian.data());
+  gather_ = {};
+  gather_.forwardPosition = forwardPosition_.id();
+  gather_.forwardJacobian = forwardJacobian_.id();
+  for (int c = 0; c < 3; ++c) gather_.inverse[c] = tables_[table.perChannel() ? static_cast<std::size_t>(c) : 0].id();
+  gather_.lateral = table.perChannel();
+  gather_.outWidthPx = size.widthPx;
+  gather_.outHeightPx = size.heightPx;
+  gather_.reachPx = static_cast<float>(forward.reachPx);
+  gather_.principalPointPx = glm::vec2(forward.principalPointPx);
+  gather_.lateralScale = glm::vec2(1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue);
   if (table.perChannel() && !perChannelProgram_)
     perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
   key_ = std::move(key);

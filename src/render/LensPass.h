@@ -1,13 +1,15 @@
 #pragma once
-// The lens post pass: distortion and lateral chromatic aberration applied to the finished
-// (accumulated) true perspective image, through lookup tables of the inverse lens model
-// (camera/LensMap.h). The tables are rebuilt only when the lens, the window or the sizes change,
-// not per frame.
+// The lens pass: distortion and lateral chromatic aberration. The tables of the inverse and the
+// forward lens model (camera/LensMap.h) are built here and rebuilt only when the lens, the window
+// or the sizes change, not per frame. With many aperture views the accumulator uses them to carry
+// each view's samples to where the lens puts them (Accumulator::LensGather, exact in the limit);
+// a single view is remapped here, bilinearly, through the inverse table.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "camera/LensMap.h"
 #include "gl/Framebuffer.h"
 #include "gl/Object.h"
+#include "render/Accumulator.h"
 
 #include <vector>
 
@@ -19,8 +21,10 @@ class LensPass {
 
   // Makes the tables for this camera and image size; a no-op when nothing changed since the last call.
   void prepare(const Camera& camera, ImageSize size, const Overscan& overscan);
-  // Remaps `undistorted` (the overscanned render) into `out` (the image size).
+  // Remaps `undistorted` (one overscanned view) into `out` (the image size), bilinearly.
   void apply(const gl::RenderTarget& undistorted, const gl::RenderTarget& out);
+  // The tables for the accumulator's per-view gather (after prepare).
+  const Accumulator::LensGather& gather() const { return gather_; }
   int tablesBuilt() const { return tablesBuilt_; }  // how many times prepare rebuilt the tables
 
  private:
@@ -28,6 +32,9 @@ class LensPass {
   gl::Program perChannelProgram_;  // the lateral-colour variant, built on first use
   gl::VertexArray emptyVertexArray_;
   std::vector<gl::Texture> tables_;  // RG32F texture coordinates: green, or red, green, blue
+  gl::Texture forwardPosition_;      // RGBA32F at the overscan size (ForwardTable)
+  gl::Texture forwardJacobian_;
+  Accumulator::LensGather gather_;
   std::vector<double> key_;          // what the tables were made for
   int tablesBuilt_ = 0;
 };

@@ -41,21 +41,26 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   } else {
     samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
     if (!accumulator_) accumulator_ = std::make_unique<Accumulator>();
+    std::optional<Accumulator::Curvature> curvature;
     if (plan.fieldCurvature) {
       const Window& w = camera_.view.window;
       const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
       const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
-      const Accumulator::Curvature curvature{glm::vec2(origin), glm::vec2(step)};
-      accumulator_->start(size_.widthPx, size_.heightPx, &curvature);
-    } else {
-      accumulator_->start(size_.widthPx, size_.heightPx);
+      curvature = Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
     }
+    // With distortion or lateral colour each view's samples go straight to where the lens puts
+    // them, as the views are summed: no resampling of the mean afterwards.
+    accumulator_->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr,
+                        plan.remap ? &lensPass_->gather() : nullptr);
   }
 }
 
 int Renderer::addSamples(int count) {
   const Window& w = camera_.view.window;
   const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
+  // Each view is one of samplesPlanned() jittered samples of every pixel: its texture lookups
+  // filter over its share of the pixel (scene.frag).
+  const float lodBias = -0.5f * std::log2(static_cast<float>(samplesPlanned()));
   int added = 0;
   for (; added < count && done_ < samplesPlanned(); ++added, ++done_) {
     const LensSample& s = samples_[static_cast<std::size_t>(done_)];
@@ -65,20 +70,22 @@ int Renderer::addSamples(int count) {
     // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h).
     const glm::vec2 curvatureShift(lensOffset * camera_.view.prp.z * camera_.effects.fieldCurvature.inverseFocusPerRadius2 /
                                    pixelSize);
+    // The same offset in view pixels, GL orientation, for the lens gather.
+    const glm::vec2 jitter(static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y));
     const auto clip = [&](const Camera& focused) {
       return clipFromWorld(viewThroughLens(focused, lensOffset, pixelOffset));
     };
     if (samplesPlanned() == 1) {
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
-      scenePass_.draw(gpuScene_, clip(camera_), out.drawTarget());
+      scenePass_.draw(gpuScene_, clip(camera_), out.drawTarget(), lodBias);
     } else if (plan_.viewsPerSample == 3) {
       for (int c = 0; c < 3; ++c) {
         glm::vec3 mask(0.0f);
         mask[c] = 1.0f;
-        scenePass_.draw(gpuScene_, clip(channelCameras_[static_cast<std::size_t>(c)]), accumulator_->nextView(mask, curvatureShift));
+        scenePass_.draw(gpuScene_, clip(channelCameras_[static_cast<std::size_t>(c)]), accumulator_->nextView(mask, curvatureShift, jitter), lodBias);
       }
     } else {
-      scenePass_.draw(gpuScene_, clip(camera_), accumulator_->nextView(glm::vec3(1.0f), curvatureShift));
+      scenePass_.draw(gpuScene_, clip(camera_), accumulator_->nextView(glm::vec3(1.0f), curvatureShift, jitter), lodBias);
     }
   }
   return added;
@@ -110,11 +117,9 @@ std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) 
 const gl::RenderTarget& Renderer::resolveOnGpu() {
   if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
   const gl::RenderTarget& out = target(output_, outSize_);
-  if (plan_.remap) {
-    const gl::RenderTarget& undistorted = target(undistorted_, size_);
-    if (samplesPlanned() > 1) accumulator_->resolve(undistorted);
-    lensPass_->apply(undistorted, out);
-  } else if (samplesPlanned() > 1) {
+  if (plan_.remap && samplesPlanned() == 1) {
+    lensPass_->apply(target(undistorted_, size_), out);
+  } else if (samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed
     accumulator_->resolve(out);
   }
   return out;

@@ -36,6 +36,22 @@ void addLensOptions(CLI::App& cmd, LensOptions& o) {
      "focus on the depth under pixel X,Y of the image");
 }
 
+void addBackgroundOption(CLI::App& cmd, std::optional<glm::vec3>& background) {
+  cmd.add_option_function<std::vector<double>>("--background", [&background](const std::vector<double>& rgb) {
+       for (const double v : rgb)
+         if (!std::isfinite(v) || v < 0.0 || v > 65504.0)
+           throw CLI::ValidationError("--background", "give three linear values, each from 0 to 65504 (e.g. 0.5,0.6,0.8)");
+       background = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]));
+     },
+     "colour where no surface is seen, linear R,G,B (e.g. 0,0,0); default: the scene's (a dark blue grey, 0.05,0.06,0.08)")
+      ->delimiter(',')
+      ->expected(3);
+}
+
+void applyBackground(Scene& scene, const std::optional<glm::vec3>& background) {
+  if (background) scene.lighting.background = *background;
+}
+
 PlanOptions toPlanOptions(const LensOptions& o) {
   PlanOptions p;
   const auto pattern = patternFromName(o.pattern);

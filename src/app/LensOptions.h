@@ -4,6 +4,7 @@
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "plan/FramePlan.h"
+#include "scene/Scene.h"
 
 #include <CLI/CLI.hpp>
 
@@ -26,6 +27,11 @@ struct LensOptions {
 };
 
 void addLensOptions(CLI::App& command, LensOptions& options);
+
+// --background R,G,B: the colour (linear RGB, each finite and ≥ 0) where no surface is seen; it
+// replaces the scene's. Shared by render, raycast, sweep and view.
+void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);
+void applyBackground(Scene& scene, const std::optional<glm::vec3>& background);
 
 // Throws InputError for a bad --pattern or --aperture-samples.
 PlanOptions toPlanOptions(const LensOptions& options);

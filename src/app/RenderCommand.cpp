@@ -38,6 +38,7 @@ struct RenderOptions {
   std::string statsFile;
   bool quiet = false;
   LensOptions lens;
+  std::optional<glm::vec3> background;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -113,7 +114,8 @@ int runRender(const RenderOptions& o) {
 
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
 
-  const Scene scene = loadGltf(scenePath);
+  Scene scene = loadGltf(scenePath);
+  applyBackground(scene, o.background);
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
@@ -175,6 +177,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->capture_default_str();
   }
   addLensOptions(*cmd, options->lens);
+  addBackgroundOption(*cmd, options->background);
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
   return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };

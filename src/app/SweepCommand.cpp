@@ -31,12 +31,14 @@ struct SweepCommandOptions {
   std::optional<int> height;
   std::string backend = "osmesa";
   LensOptions lens;
+  std::optional<glm::vec3> background;
   SweepOptions sweep;
 };
 
 int runSweepCommand(SweepCommandOptions& o) {
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera-dof.json");
-  const Scene scene = loadGltf(scenePath);
+  Scene scene = loadGltf(scenePath);
+  applyBackground(scene, o.background);
   const Camera camera = applyLensOptions(selectCamera(scene, cameraPath, 0.0).camera, o.lens);
   const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
   const fs::path out = o.outDir;
@@ -99,6 +101,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("--max-views", o->sweep.maxViews, "largest raster budget (views)")->check(CLI::Range(1, 65536))->capture_default_str();
   cmd->add_option("--max-spp", o->sweep.maxSpp, "largest ray-cast budget (spp)")->check(CLI::Range(1, 1 << 20))->capture_default_str();
   cmd->add_option("--seed", o->lens.seed, "seed for every sampler")->capture_default_str();
+  addBackgroundOption(*cmd, o->background);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
 }

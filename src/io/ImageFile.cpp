@@ -51,7 +51,11 @@ void writeImage(const fs::path& path, const Image& image) {
   AtomicOutput output(path);
   auto out = OIIO::ImageOutput::create(output.temporaryPath().string());
   if (!out) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(OIIO::geterror())));
-  const int channels = 4;
+  // PNG: RGB only, already over the background (an alpha channel would make viewers composite it
+  // a second time). EXR: RGBA, A the coverage (the fraction of the pixel × aperture that sees a
+  // surface); RGB includes the background over 1 − A, so with --background 0,0,0 it is
+  // premultiplied RGBA in OpenEXR's convention, ready to composite.
+  const int channels = png ? 3 : 4;
   OIIO::ImageSpec spec(image.width, image.height, channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
   spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
   spec.attribute("Software", "lenslab");
@@ -59,12 +63,9 @@ void writeImage(const fs::path& path, const Image& image) {
     throw InputError(cat(path.string(), ": cannot write it: ", oneLine(out->geterror())));
   bool ok = false;
   if (png) {
-    std::vector<std::uint8_t> encoded(image.rgba.size());
-    for (std::size_t i = 0; i < image.rgba.size(); ++i) {
-      const bool alpha = i % 4 == 3;
-      const float v = alpha ? std::clamp(image.rgba[i], 0.0f, 1.0f) : srgbFromLinear(image.rgba[i]);
-      encoded[i] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
-    }
+    std::vector<std::uint8_t> encoded(image.rgba.size() / 4 * 3);
+    for (std::size_t i = 0; i < encoded.size(); ++i)
+      encoded[i] = static_cast<std::uint8_t>(std::lround(srgbFromLinear(image.rgba[i / 3 * 4 + i % 3]) * 255.0f));
     ok = out->write_image(OIIO::TypeDesc::UINT8, encoded.data());
   } else {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());

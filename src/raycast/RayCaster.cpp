@@ -116,6 +116,7 @@ struct RayCaster::Impl {
 
   struct Hit {
     glm::vec3 color{0.0f};
+    bool surface = false;  // false: the background
     double t = std::numeric_limits<double>::infinity();  // along the unit ray direction
     Ray ray;
   };
@@ -128,7 +129,7 @@ struct RayCaster::Impl {
   Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double footprintPx) const {
     Ray ray = lensRay(camera, lensOffset, pixel, size);
     ray.origin -= origin;
-    Hit miss{scene->lighting.background, std::numeric_limits<double>::infinity(), ray};
+    Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
     double tNear = ray.tNear;
     for (int layer = 0; layer < 64; ++layer) {
       RTCIntersectContext context;
@@ -193,7 +194,7 @@ struct RayCaster::Impl {
       }
       glm::vec3 normal = glm::normalize(g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal));
       if (material.doubleSided && !front) normal = -normal;
-      return {shade(glm::vec3(base), normal, material.unlit, scene->lighting), tHit, ray};
+      return {shade(glm::vec3(base), normal, material.unlit, scene->lighting), true, tHit, ray};
     }
     return miss;
   }
@@ -254,6 +255,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
           const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(y * size.widthPx + x) * 40503u;
           const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
           glm::dvec3 sum(0.0);
+          double covered = 0.0;  // rays that met a surface: alpha is the pixel's coverage
           if (lensEffects) {
             // Exactly, per sample: each channel's ray goes through the true perspective position
             // that the inverse lens model gives for this sample's point of the distorted image,
@@ -266,18 +268,22 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
               for (int c = 0; c < channels; ++c) {
                 const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
                 focused.inverseFocusShift = cs.inverseFocusShift;
-                const glm::vec3 colour = m.shadeAlong(focused, s.lens * camera.apertureRadius, cs.pixel, size, footprintPx).color;
-                if (channels == 3) sum[c] += colour[c];
-                else sum += glm::dvec3(colour);
+                const Impl::Hit hit = m.shadeAlong(focused, s.lens * camera.apertureRadius, cs.pixel, size, footprintPx);
+                if (channels == 3) sum[c] += hit.color[c];
+                else sum += glm::dvec3(hit.color);
+                covered += hit.surface ? 1.0 / channels : 0.0;
               }
             }
           } else {
             for (const LensSample& s : samples) {
               const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-              sum += glm::dvec3(m.shadeAlong(camera, s.lens * camera.apertureRadius, pixel, size, footprintPx).color);
+              const Impl::Hit hit = m.shadeAlong(camera, s.lens * camera.apertureRadius, pixel, size, footprintPx);
+              sum += glm::dvec3(hit.color);
+              covered += hit.surface ? 1.0 : 0.0;
             }
           }
-          image.set(x, y, glm::vec4(glm::vec3(sum / static_cast<double>(samples.size())), 1.0f));
+          const double n = static_cast<double>(samples.size());
+          image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(covered / n)));
         }
     });
     if (progress) progress(end, size.heightPx);

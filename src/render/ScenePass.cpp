@@ -39,7 +39,9 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   const glm::vec3& bg = scene.lighting.background;
-  const float clearColor[] = {bg.r, bg.g, bg.b, 1.0f};
+  // Alpha is coverage: 0 where no surface is drawn (the background shows), 1 where one is; the
+  // mean of the views is then the fraction of the pixel (× aperture) that sees a surface.
+  const float clearColor[] = {bg.r, bg.g, bg.b, 0.0f};
   const float clearDepth = 0.0f;  // reverse-Z: far is 0
   glClearBufferfv(GL_COLOR, 0, clearColor);
   glClearBufferfv(GL_DEPTH, 0, &clearDepth);

@@ -79,7 +79,8 @@ int runView(const ViewOptions& o) {
   if (!o.screenshot.empty() && o.frames == 0) throw InputError("--screenshot needs --frames N (scripted mode)");
   const PlanOptions planOptions = toPlanOptions(o.lens);
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
-  const Scene scene = loadGltf(scenePath);
+  Scene scene = loadGltf(scenePath);
+  applyBackground(scene, o.background);
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0;
   const SelectedCamera selected = selectCamera(scene, cameraPath, requestedAspect);

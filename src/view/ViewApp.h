@@ -18,6 +18,7 @@ struct ViewOptions {
   std::optional<int> width;           // the rendered image, as in `render`
   std::optional<int> height;
   LensOptions lens;
+  std::optional<glm::vec3> background;
   int frames = 0;                     // > 0: scripted; run at least this many frames, then exit
   std::string screenshot;             // written at the end of a scripted run (.png or .exr)
   bool noUi = false;                  // no panel, no outside view: the screenshot is the image alone

@@ -45,6 +45,21 @@ else
 fi
 # EXR output.
 if "$lenslab" render --width 64 --out "$work/default.exr" -q && [ -s "$work/default.exr" ]; then pass; else fail "exr render"; fi
+# --background (linear R,G,B) for render and raycast; PNG is RGB, EXR RGBA (alpha = coverage).
+for cmd in render raycast; do
+  if "$lenslab" $cmd --width 48 --spp 4 --background 1,0,0 --out "$work/bg-$cmd.exr" -q 2>/dev/null ||
+     "$lenslab" $cmd --width 48 --background 1,0,0 --out "$work/bg-$cmd.exr" -q; then
+    # the sky: red at full strength, alpha 0; the floor: alpha 1
+    stats=$(oiiotool "$work/bg-$cmd.exr" --printstats 2>&1)
+    if grep -Eq "Stats Min: [0-9.]+ [0-9.]+ [0-9.]+ 0.000000" <<<"$stats" && grep -Eq "Stats Max: 1.000000 [0-9.]+ [0-9.]+ 1.000000" <<<"$stats"; then pass
+    else fail "$cmd --background: alpha (coverage) never 0: $(oiiotool "$work/bg-$cmd.exr" --printstats 2>&1 | grep Stats)"; fi
+  else
+    fail "$cmd --background 1,0,0"
+  fi
+done
+if "$lenslab" render --width 48 --out "$work/rgb.png" -q && oiiotool --info "$work/rgb.png" | grep -q "3 channel"; then pass; else fail "PNG is not RGB: $(oiiotool --info "$work/rgb.png")"; fi
+expect_refusal "background with two values" "--background" -- render --background 1,2 --out "$work/out.png"
+expect_refusal "negative background" "--background" -- raycast --background -1,0,0 --out "$work/out.png"
 
 # EGL (Mesa's surfaceless platform here; a GPU where there is one) draws what OSMesa draws.
 if "$lenslab" render --width 120 --backend egl --out "$work/egl.png" --stats "$work/egl.json" -q; then

@@ -32,6 +32,17 @@ Image ramp() {
   return image;
 }
 
+// EXR carries coverage in alpha; PNG is RGB only (its colour is already over the background, so
+// an alpha channel would make a viewer composite it twice).
+TEST_F(ImageFileTest, ExrKeepsCoverageInAlphaAndPngHasNoAlpha) {
+  Image image = ramp();
+  image.set(2, 1, {0.5f, 0.5f, 0.5f, 0.25f});
+  writeImage(dir_ / "a.exr", image);
+  writeImage(dir_ / "a.png", image);
+  EXPECT_EQ(readImage(dir_ / "a.exr").at(2, 1).a, 0.25f);
+  EXPECT_EQ(readImage(dir_ / "a.png").at(2, 1).a, 1.0f);
+}
+
 TEST_F(ImageFileTest, ExrKeepsLinearValuesExactly) {
   Image image = ramp();
   image.set(3, 3, {4.5f, -0.25f, 1e-6f, 1.0f});  // HDR and negative values survive in EXR

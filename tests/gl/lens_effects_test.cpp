@@ -302,31 +302,38 @@ TEST(LensEffectsGl, AxialColourFocusesEachChannelAtItsOwnDistance) {
       }
 }
 
-// The bundled rows scene through a lens with every effect, rasterized (post pass, per-channel
-// views, field-curvature variant) and ray cast exactly: the post approach's error is bounded.
-TEST(LensEffectsGl, PostPipelineIsCloseToTheExactRayCastLens) {
+// The bundled rows scene through a lens with every effect, rasterized (lens applied per view,
+// per-channel views, field-curvature warp) and ray cast exactly. Both are noisy estimates of the
+// same pixel integral; the ray caster is the noisier, so its noise is measured (two independent
+// casts) and taken out: MSE(raster, A) − ½·MSE(A, B) estimates the raster's squared error
+// against the converged exact lens, without its noise.
+TEST(LensEffectsGl, RasterWithEveryEffectConvergesToTheExactRayCastLens) {
   LENSLAB_REQUIRE_GL();
   const std::filesystem::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / "rows" / "rows.gltf");
   const Camera camera = loadCameraJson(assets / "rows" / "camera-lens.json").camera;
-  const ImageSize size = resolveImageSize(camera, 192, std::nullopt);
+  const ImageSize size = resolveImageSize(camera, 120, std::nullopt);
   Renderer renderer(scene);
-  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 128, 128, 1});
+  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 1024, 1024, 1});
   ASSERT_TRUE(plan.remap);
   ASSERT_TRUE(plan.fieldCurvature);
   ASSERT_EQ(plan.viewsPerSample, 3);
   const Image raster = renderer.render(camera, plan, size);
   const RayCaster caster(scene);
-  const Image exact = caster.render(camera, size, RaycastOptions{128, 3});
-  const double psnr = compareImages(raster, exact, 0.0).psnrDb;
-  std::cout << "post pipeline vs exact lens: " << psnr << " dB\n";
+  const Image exactA = caster.render(camera, size, RaycastOptions{256, 3});
+  const Image exactB = caster.render(camera, size, RaycastOptions{256, 4});
+  const double raw = compareImages(raster, exactA, 0.0).rmse, noise = compareImages(exactA, exactB, 0.0).rmse;
+  const double corrected = std::sqrt(std::max(raw * raw - 0.5 * noise * noise, 1e-12));
+  const double psnr = -20.0 * std::log10(corrected);
+  std::cout << "[ measure  ] rows/camera-lens.json, raster 1024 views vs exact ray cast 256 spp: " << -20.0 * std::log10(raw)
+            << " dB as measured, " << psnr << " dB with the ray caster's noise taken out\n";
   RecordProperty("psnr_db", cat(psnr));
-  EXPECT_GT(psnr, 34.0);  // measured 36.8 dB; the lens pass's resampling dominates (distortion alone: 37.7 dB)
+  EXPECT_GE(psnr, 45.0);  // before the lens was applied per view: 36.8 dB (post pass on the mean, Catmull–Rom)
   // And the effects matter: the same raster without them is far from the exact lens.
   Camera plain = camera;
   plain.effects = {};
   const Image withoutEffects = renderer.render(plain, makeFramePlan(scene, plain, size, PlanOptions{AperturePattern::Concentric, 128, 128, 1}), size);
-  EXPECT_LT(compareImages(withoutEffects, exact, 0.0).psnrDb, psnr - 8.0);
+  EXPECT_LT(compareImages(withoutEffects, exactA, 0.0).psnrDb, psnr - 8.0);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
 
+#include <cmath>
 #include <chrono>
 #include <iostream>
 #include <map>
@@ -61,7 +62,10 @@ int runSweepCommand(SweepCommandOptions& o) {
       "- scene `", scenePath.string(), "`, camera ", camera.source, ", ", size.widthPx, "x", size.heightPx, "\n",
       "- renderer: ", context->renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
       "- reference: ray cast at ", o.sweep.referenceSpp, " spp",
-      result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"), "\n",
+      result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"),
+      " (the pixel integral: each sample's texture filtered over its own stratum); its own noise, from its two ",
+      "halves: RMSE ", result.referenceNoiseRmse, ", so no method can show more than about ",
+      -20.0 * std::log10(result.referenceNoiseRmse), " dB here\n",
       "- GL context creation ", contextSeconds, " s; scene upload, shader compilation and a warm-up frame ",
       result.setupSeconds, " s; neither is in the rows, which time each frame with the GPU finished and read back ",
       "(median of 3 for raster and post-process)\n",

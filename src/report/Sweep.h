@@ -47,6 +47,7 @@ struct SweepResult {
   std::vector<SweepRow> rows;
   double referenceSeconds = 0.0;  // 0 when it came from the cache
   bool referenceCached = false;
+  double referenceNoiseRmse = 0.0;  // the reference's RMSE against its own converged limit (from its two halves)
   double setupSeconds = 0.0;      // scene upload, shader compilation and a warm-up frame (not in rows)
   double edgeFraction = 0.0;      // share of pixels in the occlusion-edge mask
 };
@@ -61,7 +62,7 @@ std::vector<bool> occlusionEdgeMask(const Camera& camera, ImageSize size, const 
 
 double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask);
 
-// sweep.md: the rows' summary, the equal-error table (time to reach 30 / 35 / 40 dB) and the
+// sweep.md: the rows' summary, the equal-error table (time to reach 30 / 35 / 40 / 45 dB) and the
 // convergence slope of each series (d log RMSE / d log samples).
 std::string sweepMarkdown(const SweepResult& result, const std::string& header);
 std::string sweepCsv(const SweepResult& result);

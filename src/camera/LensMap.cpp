@@ -126,8 +126,8 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
     visit({0.0, 0.5 * j});
     visit({width, 0.5 * j});
   }
-  // Two more pixels for the resampling's footprint (Catmull–Rom reads 2 texels on each side); the
-  // same on both sides keeps the window's centre.
+  // Two more pixels for the lens pass's footprint (the per-view gather reaches about 1.5 texels,
+  // the field-curvature warp's Catmull–Rom 2); the same on both sides keeps the window's centre.
   const double padX = std::max(-lo.x, hi.x - width), padY = std::max(-lo.y, hi.y - height);
   o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2, static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
   o.size = {width + 2 * o.padPx.x, height + 2 * o.padPx.y};

@@ -4,7 +4,8 @@
 //
 // The raster path renders the true perspective image (with depth of field) over a window a little
 // larger than the camera's (overscan: same centre, same pixel pitch, whole pixels added on each
-// side) and then remaps it in a post pass through a table of these positions. The ray caster casts
+// side) and carries each view's samples forward to where the lens puts them (ForwardTable), or
+// remaps a single view through a table of the inverse positions (RemapTable). The ray caster casts
 // each output sample's ray through the same inverse mapping, exactly, per sample.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"

@@ -130,8 +130,12 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
                                                                : "divides the sum by the sample count", {}});
   }
   if (plan.remap) {
-    PlannedPass lens{"lens", cat("remaps the image through the inverse lens model (a lookup table per ",
-                                 effects.chromatic.hasLateral() ? "colour channel" : "image", ", Catmull-Rom)"), {}};
+    PlannedPass lens{"lens", plan.apertureSamples > 1
+        ? cat("carries each view's samples to where the lens puts them as the views are summed (forward table with "
+              "Jacobian; inverse table per ", effects.chromatic.hasLateral() ? "colour channel" : "image",
+              "); each pixel the mean of the samples landing in it")
+        : cat("remaps the image through the inverse lens model (a lookup table per ",
+              effects.chromatic.hasLateral() ? "colour channel" : "image", ", bilinear)"), {}};
     if (!effects.distortion.isZero()) lens.variants.push_back("distortion");
     if (effects.chromatic.hasLateral()) lens.variants.push_back("lateral-colour");
     plan.passes.push_back(lens);

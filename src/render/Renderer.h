@@ -4,8 +4,9 @@
 // scene from its aperture point (the PRP moved across the lens, the window kept on the plane of
 // focus, shifted by the sample's sub-pixel offset) and is added into the accumulator. Lens effects,
 // when the plan has them: one view per colour channel, each focused for its colour (axial
-// chromatic aberration); the views summed through the field-curvature warp; the lens post pass
-// (distortion, lateral colour) from an overscanned render into the output.
+// chromatic aberration); the views summed through the field-curvature warp; distortion and lateral
+// colour applied to each overscanned view as it is summed into the output (a single view: remapped
+// afterwards by the lens pass).
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"

@@ -1,9 +1,9 @@
 // lenslab info: what a scene holds and what a render of it would need.
-#include "app/CameraSelection.h"
 #include "app/Commands.h"
 #include "camera/ImageSize.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
+#include "io/CameraSelection.h"
 #include "plan/FramePlan.h"
 #include "scene/GltfLoader.h"
 

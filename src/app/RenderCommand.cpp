@@ -1,16 +1,19 @@
 // lenslab render: one image of a scene through the lecture's camera, rasterized headless.
 // lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
-#include "app/CameraSelection.h"
+#include "app/CliOptions.h"
 #include "app/Commands.h"
-#include "app/LensOptions.h"
 #include "app/Stats.h"
+#include "camera/FocusOnPixel.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
+#include "io/CameraSelection.h"
 #include "io/ImageFile.h"
+#include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
+#include "render/RasterDepth.h"
 #include "render/Renderer.h"
 #include "scene/GltfLoader.h"
 

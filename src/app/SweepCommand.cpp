@@ -1,19 +1,19 @@
 // lenslab sweep: error against run time for every method, against the ray-cast reference.
-#include "app/CameraSelection.h"
+#include "app/CliOptions.h"
 #include "app/Commands.h"
-#include "app/LensOptions.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
 #include "io/AtomicFile.h"
+#include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "report/Plot.h"
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
 
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <memory>

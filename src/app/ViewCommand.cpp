@@ -1,29 +1,12 @@
 // lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
+#include "app/CliOptions.h"
 #include "app/Commands.h"
-#include "app/LensOptions.h"
 #include "view/ViewApp.h"
 
+#include <cmath>
 #include <memory>
-#include <sstream>
 
 namespace lenslab {
-namespace {
-
-// "X,Y" → two numbers, for --click and --window-size.
-template <class Vec>
-std::function<void(const std::string&)> parsePair(const std::string& option, std::optional<Vec>& into,
-                                                 const std::string& example) {
-  return [&into, option, example](const std::string& text) {
-    typename Vec::value_type x{}, y{};
-    char comma = 0;
-    std::istringstream in(text);
-    if (!(in >> x >> comma >> y) || comma != ',' || !in.eof())
-      throw CLI::ValidationError(option, "give two numbers as X,Y (e.g. " + example + ")");
-    into = Vec(x, y);
-  };
-}
-
-}  // namespace
 
 std::function<int()> addViewCommand(CLI::App& app) {
   auto o = std::make_shared<view::ViewOptions>();
@@ -42,10 +25,15 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_flag("--no-ui", o->noUi, "no panel and no outside view: the window shows the image only");
   cmd->add_flag("!--no-outside-view", o->outsideView, "start without the outside view");
   cmd->add_flag("--baseline", o->showBaseline, "start showing the post-process gather depth of field (for comparison)");
-  cmd->add_option_function<std::string>("--click", parsePair("--click", o->click, "320,200"),
-                                        "scripted: click image pixel X,Y on the first frame (focus there)");
-  cmd->add_option_function<std::string>("--window-size", parsePair("--window-size", o->windowSize, "1440,900"),
-                                        "window size W,H in screen coordinates");
+  addPairOption(*cmd, "--click", [o](double x, double y) { o->click = glm::dvec2(x, y); },
+                "scripted: click image pixel X,Y on the first frame (focus there)");
+  addPairOption(*cmd, "--window-size", [o](double w, double h) { o->windowSize = glm::ivec2(static_cast<int>(w), static_cast<int>(h)); },
+                "window size W,H in screen coordinates")
+      ->check([](const std::string& text) {
+        double v = 0.0;
+        return CLI::detail::lexical_cast(text, v) && v >= 1.0 && v <= 16384.0 && v == std::floor(v)
+                   ? std::string() : std::string("give the window size as two whole numbers from 1 to 16384");
+      });
   cmd->add_option("--frame-budget-ms", o->frameBudgetMs, "accumulation work per frame, at least one sample")
       ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();

@@ -13,7 +13,6 @@
 #include "render/Renderer.h"
 #include "report/Plot.h"
 
-#include <glad/gl.h>
 
 #include <algorithm>
 #include <chrono>
@@ -53,7 +52,13 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
     h.addVector(m.indices);
     h.add(&m.material, sizeof m.material);
   }
-  for (const Instance& i : scene.instances) h.add(&i, sizeof i);
+  // Field by field: a struct's padding bytes are unspecified, so hashing whole structs could give
+  // another key for the same scene on another run.
+  static_assert(sizeof(Vertex) == 12 * sizeof(float), "Vertex is hashed as its bytes: it must have no padding");
+  for (const Instance& i : scene.instances) {
+    h.add(&i.mesh, sizeof i.mesh);
+    h.add(&i.worldFromModel, sizeof i.worldFromModel);
+  }
   for (const Material& m : scene.materials) {
     h.add(&m.baseColorFactor, sizeof m.baseColorFactor);
     const int flags[] = {m.baseColorTexture, m.unlit, static_cast<int>(m.alphaMode), m.doubleSided};
@@ -61,8 +66,14 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
     h.add(&m.alphaCutoff, sizeof m.alphaCutoff);
   }
   for (const TextureImage& i : scene.images) h.addVector(i.rgba8);
-  for (const Texture& t : scene.textures) h.add(&t, sizeof t);
-  h.add(&scene.lighting, sizeof scene.lighting);
+  for (const Texture& t : scene.textures) {
+    const int fields[] = {t.image, static_cast<int>(t.sampler.wrapS), static_cast<int>(t.sampler.wrapT),
+                          static_cast<int>(t.sampler.magFilter), static_cast<int>(t.sampler.minFilter)};
+    h.add(fields, sizeof fields);
+  }
+  const Lighting& l = scene.lighting;
+  const float lighting[] = {l.toLight.x, l.toLight.y, l.toLight.z, l.ambient, l.diffuse, l.background.r, l.background.g, l.background.b};
+  h.add(lighting, sizeof lighting);
   h.addString(toCameraJson(camera));
   h.add(&camera.apertureRadius, sizeof camera.apertureRadius);
   h.add(&camera.focusAtInfinity, sizeof camera.focusAtInfinity);

@@ -6,10 +6,10 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
-#include "app/CameraSelection.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
+#include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "scene/GltfLoader.h"
 

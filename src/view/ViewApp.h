@@ -3,7 +3,7 @@
 // camera's image converging by progressive accumulation, a Dear ImGui panel with every camera and
 // lens parameter, and an outside view that draws the lecture's diagram of the camera in the scene.
 // Scripted mode (--frames) runs a fixed number of frames and writes a screenshot, for tests.
-#include "app/LensOptions.h"
+#include "plan/UserOptions.h"
 
 #include <glm/glm.hpp>
 

@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include "camera/FocusOnPixel.h"
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
@@ -15,7 +16,8 @@
 #include "io/AtomicFile.h"
 #include "io/CameraJson.h"
 #include "io/ImageFile.h"
-#include "app/LensOptions.h"
+#include "io/Progress.h"
+#include "render/RasterDepth.h"
 #include "view/LectureDiagram.h"
 
 #include <nlohmann/json.hpp>

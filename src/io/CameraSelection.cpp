@@ -1,4 +1,4 @@
-#include "app/CameraSelection.h"
+#include "io/CameraSelection.h"
 
 #include "camera/GltfCamera.h"
 #include "core/Error.h"

@@ -33,7 +33,8 @@ struct SceneAndCamera {
 SceneAndCamera resolveSceneAndCamera(const std::string& sceneArgument, const std::string& cameraArgument,
                                      const std::string& defaultCamera);
 
-// Where the bundled assets are: LENSLAB_ASSET_DIR, else the source tree's assets/.
+// Where the bundled assets are: LENSLAB_ASSET_DIR in the environment, else the source tree's
+// assets/ (compiled in as LENSLAB_DEFAULT_ASSET_DIR).
 std::filesystem::path assetDirectory();
 
 }  // namespace lenslab

@@ -1,0 +1,25 @@
+#pragma once
+// The command-line options that render, raycast, sweep and view share, registered with CLI11:
+// aperture pattern, sample count, seed, focus (plan/UserOptions.h holds what they mean), the
+// background colour, and X,Y pairs.
+#include "plan/UserOptions.h"
+
+#include <CLI/CLI.hpp>
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace lenslab {
+
+void addLensOptions(CLI::App& command, LensOptions& options);
+
+// --background R,G,B: the colour (linear RGB, each finite, 0 to 65504) where no surface is seen.
+void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);
+
+// An option that takes two numbers as X,Y (CLI11 splits and converts them), e.g. --focus-at.
+CLI::Option* addPairOption(CLI::App& command, const std::string& name, std::function<void(double, double)> set,
+                           const std::string& description);
+
+}  // namespace lenslab

@@ -1,0 +1,32 @@
+#include "camera/FocusOnPixel.h"
+
+#include "camera/LensMap.h"
+#include "core/Error.h"
+#include "core/Text.h"
+
+#include <cmath>
+
+namespace lenslab {
+
+Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt) {
+  const int x = static_cast<int>(std::floor(pixel.x)), y = static_cast<int>(std::floor(pixel.y));
+  if (x < 0 || y < 0 || x >= size.widthPx || y >= size.heightPx)
+    throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
+                         size.heightPx, " image"));
+  double distance = 0.0;
+  if (camera.effects.needsRemap()) {
+    const glm::dvec2 centre(x + 0.5, y + 0.5);
+    const Overscan o = overscanFor(camera, size);
+    const glm::dvec2 p = undistortedSample(camera, Channel::Green, centre, size).pixel + glm::dvec2(o.padPx);
+    distance = depthAt(o.camera, o.size, static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
+  } else {
+    distance = depthAt(camera, size, x, y);
+  }
+  if (!std::isfinite(distance) || !(distance > 0.0))
+    throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": nothing of the scene is under that pixel to focus on"));
+  Camera c = refocused(camera, distance, "--focus-at");
+  c.source += cat(", focused at pixel ", pixel.x, ",", pixel.y, " (depth ", distance, ")");
+  return c;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,23 @@
+#pragma once
+// Focus on what a pixel shows: the lecture's plane of focus moved to the depth of the surface
+// under it (--focus-at, the view's click).
+#include "camera/Camera.h"
+#include "camera/ImageSize.h"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+
+namespace lenslab {
+
+// Depth (world units from the PRP along −n; +infinity for the background) of pixel (x, y) of a
+// pinhole view of `camera` at `size`: the rasterizer's depth buffer or the ray caster provide it.
+using DepthAtPixel = std::function<double(const Camera&, ImageSize, int x, int y)>;
+
+// Focuses on the depth under pixel (x, y); throws InputError when nothing is there or the pixel
+// is outside the image. With distortion or lateral colour the pixel is first taken back to the
+// true perspective image (green's), which is looked up in the overscanned pinhole view the lens
+// pass would sample.
+Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt);
+
+}  // namespace lenslab

@@ -1,0 +1,57 @@
+#include "plan/UserOptions.h"
+
+#include "core/Error.h"
+#include "core/Text.h"
+#include "lens/AperturePattern.h"
+
+#include <charconv>
+#include <exception>
+#include <limits>
+#include <string>
+
+namespace lenslab {
+
+PlanOptions toPlanOptions(const LensOptions& o) {
+  PlanOptions p;
+  const auto pattern = patternFromName(o.pattern);
+  if (!pattern) throw InputError(cat("--pattern ", o.pattern, ": use one of ", patternNames()));
+  p.pattern = *pattern;
+  // The command line has checked it (auto, or a whole number from 1 to 65536); the panel and
+  // tests set it directly.
+  if (o.apertureSamples != "auto") {
+    int n = 0;
+    const char* end = o.apertureSamples.data() + o.apertureSamples.size();
+    const auto [stop, error] = std::from_chars(o.apertureSamples.data(), end, n);
+    if (error != std::errc() || stop != end || n < 1 || n > 65536)
+      throw InputError(cat("--aperture-samples ", o.apertureSamples, ": give a whole number from 1 to 65536, or auto"));
+    p.apertureSamples = n;
+  }
+  p.maxSamples = o.maxSamples;
+  p.seed = o.seed;
+  return p;
+}
+
+Camera applyLensOptions(const Camera& camera, const LensOptions& o) {
+  if (o.focusDistance.empty()) return camera;
+  double d = 0.0;
+  if (o.focusDistance == "infinity") {
+    d = std::numeric_limits<double>::infinity();
+  } else {
+    std::size_t used = 0;
+    try {
+      d = std::stod(o.focusDistance, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != o.focusDistance.size()) throw InputError(cat("--focus-distance ", o.focusDistance, ": give a distance or infinity"));
+  }
+  Camera c = refocused(camera, d, "--focus-distance");
+  c.source += cat(", refocused to ", o.focusDistance);
+  return c;
+}
+
+void applyBackground(Scene& scene, const std::optional<glm::vec3>& background) {
+  if (background) scene.lighting.background = *background;
+}
+
+}  // namespace lenslab

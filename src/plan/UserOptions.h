@@ -1,0 +1,35 @@
+#pragma once
+// What a user asks of a frame in words (the command line's strings; the view's panel edits the
+// same), turned into the plan's options and the camera: aperture pattern, sample count, seed,
+// focus, background. No command-line library here: src/app registers these as options.
+#include "camera/Camera.h"
+#include "plan/FramePlan.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace lenslab {
+
+struct LensOptions {
+  std::string pattern = "concentric";
+  std::string apertureSamples = "auto";
+  int maxSamples = 256;
+  std::uint32_t seed = 1;
+  std::string focusDistance;              // a number or "infinity"; empty = the camera's
+  std::optional<glm::dvec2> focusAt;      // pixel (x, y), from "X,Y"
+};
+
+// Throws InputError for a bad pattern or sample count.
+PlanOptions toPlanOptions(const LensOptions& options);
+
+// The focus distance applied to the camera.
+Camera applyLensOptions(const Camera& camera, const LensOptions& options);
+
+// The background colour (linear RGB) where no surface is seen, replacing the scene's.
+void applyBackground(Scene& scene, const std::optional<glm::vec3>& background);
+
+}  // namespace lenslab

@@ -61,7 +61,7 @@ class Reader {
   // A number, or the string "infinity".
   double distance(const std::string& key) const {
     const json& v = object_.at(key);
-    if (v.is_string() && (v.get<std::string>() == "infinity" || v.get<std::string>() == "inf")) return kInfinity;
+    if (v.is_string() && v.get<std::string>() == "infinity") return kInfinity;
     if (!v.is_number()) fail(key, cat("must be a number or \"infinity\", not ", v.dump()));
     return number(key);
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Camera files (JSON), in one of two forms.
+// Camera files (JSON), in one of three forms: lecture, physical, OpenCV intrinsics.
 //
 // Lecture form — the viewing description itself:
 //   {"projection": "perspective" | "parallel",      default "perspective"

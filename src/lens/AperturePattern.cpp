@@ -1,30 +1,48 @@
 #include "lens/AperturePattern.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
 
 namespace lenslab {
 
+namespace {
+
+// The one list of the patterns' names: the command line, the panel and the reports read it.
+constexpr std::array<std::pair<AperturePattern, const char*>, 4> kNames{{
+    {AperturePattern::Lecture17, "lecture17"},
+    {AperturePattern::Concentric, "concentric"},
+    {AperturePattern::R2, "r2"},
+    {AperturePattern::Random, "random"},
+}};
+
+}  // namespace
+
 const char* patternName(AperturePattern p) {
-  switch (p) {
-    case AperturePattern::Lecture17: return "lecture17";
-    case AperturePattern::Concentric: return "concentric";
-    case AperturePattern::R2: return "r2";
-    case AperturePattern::Random: return "random";
-  }
+  for (const auto& [pattern, name] : kNames)
+    if (pattern == p) return name;
   return "?";
 }
 
 std::optional<AperturePattern> patternFromName(const std::string& name) {
-  for (AperturePattern p : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2,
-                            AperturePattern::Random})
-    if (name == patternName(p)) return p;
+  for (const auto& [pattern, text] : kNames)
+    if (name == text) return pattern;
   return std::nullopt;
 }
 
-std::string patternNames() { return "lecture17, concentric, r2, random"; }
+std::vector<std::string> patternNameList() {
+  std::vector<std::string> names;
+  for (const auto& entry : kNames) names.emplace_back(entry.second);
+  return names;
+}
+
+std::string patternNames() {
+  std::string joined;
+  for (const auto& entry : kNames) joined += (joined.empty() ? "" : ", ") + std::string(entry.second);
+  return joined;
+}
 
 glm::dvec2 concentricDisk(glm::dvec2 u) {
   const glm::dvec2 offset = 2.0 * u - 1.0;
@@ -92,7 +110,7 @@ std::vector<LensSample> concentric(int count, std::uint32_t seed) {
 }
 
 std::vector<LensSample> r2(int count, std::uint32_t seed) {
-  // Roberts' R_d for d = 4: g is the root of x^5 = x + 1; alpha_i = 1 / g^(i+1).
+  // Roberts' R-sequence in d = 4 dimensions: g is the root of x^5 = x + 1; alpha_i = 1 / g^(i+1).
   constexpr double g = 1.1673039782614187;
   const double alpha[4] = {1.0 / g, 1.0 / (g * g), 1.0 / (g * g * g), 1.0 / (g * g * g * g)};
   std::mt19937 rng(seed);

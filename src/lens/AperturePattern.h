@@ -16,13 +16,14 @@ namespace lenslab {
 enum class AperturePattern {
   Lecture17,   // the lecture's 17: centre + radii 1/2 and 1 every 45°
   Concentric,  // stratified (jittered grid) through Shirley–Chiu's concentric square→disk map
-  R2,          // Roberts' R4 low-discrepancy sequence: lens from two dimensions, pixel from two
+  R2,          // Roberts' R-sequence (here in four dimensions): lens from two, pixel from two
   Random,      // independent uniform points, for comparison
 };
 
 const char* patternName(AperturePattern pattern);
 std::optional<AperturePattern> patternFromName(const std::string& name);
 std::string patternNames();  // "lecture17, concentric, r2, random"
+std::vector<std::string> patternNameList();  // the same, one name each, in AperturePattern's order
 
 struct LensSample {
   glm::dvec2 lens;   // on the unit disk; scale by the aperture radius

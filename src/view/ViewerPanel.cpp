@@ -20,7 +20,6 @@
 namespace lenslab::view {
 namespace {
 
-const char* const kPatterns[] = {"lecture17", "concentric", "r2", "random"};
 
 bool dragDouble3(const char* label, glm::dvec3& v, float speed) {
   return ImGui::DragScalarN(label, ImGuiDataType_Double, &v.x, 3, speed, nullptr, nullptr, "%.4g");
@@ -174,7 +173,12 @@ void Viewer::sectionPhysical() {
 void Viewer::sectionSamples() {
   if (!ImGui::CollapsingHeader("Aperture samples", ImGuiTreeNodeFlags_DefaultOpen)) return;
   int pattern = static_cast<int>(planOptions_.pattern);
-  if (ImGui::Combo("pattern", &pattern, kPatterns, 4)) {
+  static const std::vector<std::string> names = patternNameList();  // in AperturePattern's order
+  const auto name = [](void* list, int i, const char** out) {
+    *out = (*static_cast<const std::vector<std::string>*>(list))[static_cast<std::size_t>(i)].c_str();
+    return true;
+  };
+  if (ImGui::Combo("pattern", &pattern, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()))) {
     planOptions_.pattern = static_cast<AperturePattern>(pattern);
     dirty_ = true;
   }

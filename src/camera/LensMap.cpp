@@ -4,14 +4,15 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <functional>
 #include <optional>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
 namespace lenslab {
 namespace {
@@ -24,23 +25,11 @@ std::vector<Channel> remappedChannels(const LensEffects& effects) {
   return {Channel::Green};
 }
 
-// Runs `rows(first, last)` over [0, height) in one band per core, rethrowing the first failure.
+// Runs `rows(first, last)` over bands of [0, height) on every core (TBB; an exception in a band
+// reaches the caller).
 void forEachRowBand(int height, const std::function<void(int, int)>& rows) {
-  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 16);
-  std::vector<std::thread> workers;
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  for (int t = 0; t < threads; ++t)
-    workers.emplace_back([&, t] {
-      try {
-        rows(height * t / threads, height * (t + 1) / threads);
-      } catch (...) {
-        const std::lock_guard lock(failureMutex);
-        failure = std::current_exception();
-      }
-    });
-  for (std::thread& worker : workers) worker.join();
-  if (failure) std::rethrow_exception(failure);
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 8),
+                    [&](const tbb::blocked_range<int>& band) { rows(band.begin(), band.end()); });
 }
 
 glm::dvec2 undistortOrThrow(const LensEffects& effects, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
@@ -167,7 +156,7 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
         }
       }
     };
-    // Rows are independent: one band per core (the table is rebuilt only when the lens changes,
+    // Rows are independent: bands on every core (the table is rebuilt only when the lens changes,
     // but a 4K table is 8 million Newton solves).
     forEachRowBand(height, rows);
     table.channels.push_back(std::move(map));

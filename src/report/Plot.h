@@ -1,6 +1,7 @@
 #pragma once
-// A small log–log line plot drawn straight into an image (no plotting library on the machine):
-// axes with decade ticks and labels, one coloured polyline with markers per series, a legend.
+// A log–log line plot for the sweep report, drawn with OpenImageIO (lines, boxes, and text in a
+// TrueType font: DejaVu Sans from Debian's fonts-dejavu-core): axes with decade ticks and labels,
+// one coloured polyline with markers per series, a legend.
 #include "core/Image.h"
 
 #include <glm/glm.hpp>
@@ -16,10 +17,12 @@ struct PlotSeries {
   std::vector<glm::dvec2> points;  // (x, y), both > 0
 };
 
+// Throws std::runtime_error when no TrueType font can be found (see plotFontPath).
 Image logLogPlot(const std::vector<PlotSeries>& series, const std::string& xLabel, const std::string& yLabel,
                  const std::string& title, int widthPx = 960, int heightPx = 640);
 
-// Draws `text` (ASCII; letters shown in capitals) with a 5×7 pixel font scaled by `scale`.
-void drawText(Image& image, int x, int y, const std::string& text, const glm::vec3& color, int scale = 2);
+// The font the plot writes with: LENSLAB_PLOT_FONT if set, else DejaVu Sans where Debian puts it;
+// empty when neither exists.
+std::string plotFontPath();
 
 }  // namespace lenslab

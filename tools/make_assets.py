@@ -1,9 +1,9 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Writes lenslab's bundled scenes and their camera files into assets/.
 
-    python3 tools/make_assets.py            # then: bash tools/validate-assets.sh
+    /usr/bin/python3 tools/make_assets.py   # Debian's Python, which has python3-pil; then: bash tools/validate-assets.sh
 
-Standard library only, deterministic (the same bytes every run). World units are metres, +Y up,
+Python's standard library and Pillow (python3-pil), deterministic (the same bytes every run). World units are metres, +Y up,
 glTF's conventions throughout. Each scene is assets/<name>/<name>.gltf with one .bin and its PNG
 textures beside it, and assets/<name>/camera.json, the default camera of `lenslab render`.
 
@@ -20,7 +20,8 @@ import json
 import math
 import os
 import struct
-import zlib
+
+from PIL import Image  # Debian: python3-pil
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets")
 
@@ -33,19 +34,8 @@ LINEAR, LINEAR_MIPMAP_LINEAR, NEAREST = 9729, 9987, 9728
 # ---------------------------------------------------------------- PNG
 
 def write_png(path, width, height, pixels):
-    """pixels: bytes of RGBA8, rows from the top."""
-    raw = b"".join(b"\x00" + pixels[y * width * 4:(y + 1) * width * 4] for y in range(height))
-
-    def chunk(kind, data):
-        body = kind + data
-        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
-
-    png = b"\x89PNG\r\n\x1a\n"
-    png += chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
-    png += chunk(b"IDAT", zlib.compress(raw, 9))
-    png += chunk(b"IEND", b"")
-    with open(path, "wb") as f:
-        f.write(png)
+    """pixels: bytes of RGBA8, rows from the top. Pillow writes it (deterministic: no timestamp)."""
+    Image.frombytes("RGBA", (width, height), bytes(pixels)).save(path, format="PNG", optimize=False, compress_level=9)
 
 
 def image(width, height, fn):

@@ -29,12 +29,12 @@ ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std
   return resolveImageSize(camera.view.window, w, h);
 }
 
-ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset) {
+ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset, double inverseFocusShift) {
   ViewSpec v = camera.view;
   v.prp.x += lensOffset.x;
   v.prp.y += lensOffset.y;
   double windowTravel = 0.0;
-  if (v.projection == Projection::Perspective) windowTravel = 1.0 - v.prp.z * camera.inverseFocusDistance();
+  if (v.projection == Projection::Perspective) windowTravel = 1.0 - v.prp.z * (camera.inverseFocusDistance() + inverseFocusShift);
   const glm::dvec2 shift = windowTravel * lensOffset + pixelOffset;
   v.window.umin += shift.x;
   v.window.umax += shift.x;
@@ -43,11 +43,11 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
   return v;
 }
 
-double cocDiameterOnWindow(const Camera& camera, double depth) {
+double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift) {
   const double r = camera.apertureRadius;
   const double d = camera.view.prp.z;
   if (camera.view.projection == Projection::Parallel) return 2.0 * r * std::abs(depth - d) / d;
-  return 2.0 * r * d * std::abs(camera.inverseFocusDistance() - 1.0 / depth);
+  return 2.0 * r * d * std::abs(camera.inverseFocusDistance() + inverseFocusShift - 1.0 / depth);
 }
 
 Camera refocused(const Camera& camera, double distance, const std::string& where) {

@@ -27,15 +27,12 @@ struct Camera {
   std::string source;           // "assets/rows/camera.json", "glTF camera 0 (Main)", ...
   // Distortion, chromatic aberration, field curvature (perspective only; see lens/LensEffects.h).
   LensEffects effects;
-  // Added to the inverse focus distance: how one colour channel (axial chromatic aberration) or one
-  // part of the image (field curvature) is focused. 0 in a camera as loaded.
-  double inverseFocusShift = 0.0;
   // The image size the camera was calibrated for (OpenCV intrinsics), the default render size.
   std::optional<ImageSize> calibratedSize;
 
   bool isPinhole() const { return !(apertureRadius > 0.0); }
-  // 1/z_f, from the PRP along −n: 1/PRP.n, or 0 at infinity focus (plus inverseFocusShift).
-  double inverseFocusDistance() const { return (focusAtInfinity ? 0.0 : 1.0 / view.prp.z) + inverseFocusShift; }
+  // 1/z_f, from the PRP along −n: 1/PRP.n, or 0 at infinity focus.
+  double inverseFocusDistance() const { return focusAtInfinity ? 0.0 : 1.0 / view.prp.z; }
 };
 
 // The image size for a camera: a calibrated camera's own size (scaled to a given width or height),
@@ -49,14 +46,17 @@ Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std
 // plane, the window kept on the plane of focus, and the window also shifted by pixelOffset
 // (window units) for sub-pixel jitter. For focus at inverse distance φ and view plane at d = PRP.n
 // the window moves by lensOffset·(1 − d·φ): not at all when the view plane is the plane of focus,
-// with the PRP when focus is at infinity.
-ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset);
+// with the PRP when focus is at infinity. `inverseFocusShift` is added to φ: how one colour
+// channel (axial chromatic aberration) or one part of the image (field curvature) is focused.
+ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset,
+                         double inverseFocusShift = 0.0);
 
 // Diameter, in window units on the view plane, of the circle of confusion of a point at `depth`
 // (world units from the PRP along −n): every aperture point sees it through a different window
 // point. Perspective: 2R·d·|1/z_f − 1/z| with d = PRP.n (2R·|z − z_f|/z when the view plane is the
 // plane of focus). Parallel: the DOP tilts by the lens offset over PRP.n, so 2R·|z − PRP.n|/PRP.n.
-double cocDiameterOnWindow(const Camera& camera, double depth);
+// `inverseFocusShift` as for viewThroughLens.
+double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift = 0.0);
 
 // Moves the plane of focus to `distance` (world units along −n from the PRP; +infinity allowed for
 // perspective). Lecture-form cameras keep their field of view: the view plane moves and the window

@@ -30,8 +30,8 @@ Ray primaryRay(const ViewSpec& spec, glm::dvec2 uv) {
   return ray;
 }
 
-Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size) {
-  const ViewSpec view = viewThroughLens(camera, lensOffset, {0.0, 0.0});
+Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double inverseFocusShift) {
+  const ViewSpec view = viewThroughLens(camera, lensOffset, {0.0, 0.0}, inverseFocusShift);
   return primaryRay(view, windowFromPixel(view.window, pixel, size.widthPx, size.heightPx));
 }
 

@@ -29,6 +29,7 @@ Ray primaryRay(const ViewSpec& spec, glm::dvec2 uv);
 // from aperture offset `lensOffset` (u, v; world units) — viewThroughLens, then primaryRay. All
 // rays of one pixel meet on the plane of focus (the lecture's "fire rays from every lens surface
 // point toward this point").
-Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size);
+// `inverseFocusShift` as for viewThroughLens.
+Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double inverseFocusShift = 0.0);
 
 }  // namespace lenslab

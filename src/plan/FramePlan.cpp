@@ -73,13 +73,11 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
       plan.cocMaxPx = 0.0;
       plan.cocMinPx = std::numeric_limits<double>::infinity();
       for (const double shift : shifts) {
-        Camera shifted = camera;
-        shifted.inverseFocusShift += shift;
-        const double atNear = cocDiameterOnWindow(shifted, plan.depthMin) * pxPerWindowUnit;
-        const double atFar = cocDiameterOnWindow(shifted, plan.depthMax) * pxPerWindowUnit;
+        const double atNear = cocDiameterOnWindow(camera, plan.depthMin, shift) * pxPerWindowUnit;
+        const double atFar = cocDiameterOnWindow(camera, plan.depthMax, shift) * pxPerWindowUnit;
         plan.cocMaxPx = std::max({plan.cocMaxPx, atNear, atFar});
         // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
-        const double inverse = shifted.inverseFocusDistance();
+        const double inverse = camera.inverseFocusDistance() + shift;
         const double focus = camera.view.projection == Projection::Parallel ? camera.view.prp.z
                            : inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
         plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));

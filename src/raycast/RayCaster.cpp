@@ -126,8 +126,10 @@ struct RayCaster::Impl {
   // `footprintPx` pixels: the part of the pixel this sample stands for (see render), not the
   // whole pixel, so that the mean of the samples converges to the pixel integral of the
   // unfiltered texture instead of to a pixel-blurred one. The returned ray is relative to `origin`.
-  Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double footprintPx) const {
-    Ray ray = lensRay(camera, lensOffset, pixel, size);
+  // `inverseFocusShift` focuses the ray for one colour or one radius (viewThroughLens).
+  Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double footprintPx,
+                 double inverseFocusShift = 0.0) const {
+    Ray ray = lensRay(camera, lensOffset, pixel, size, inverseFocusShift);
     ray.origin -= origin;
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
     double tNear = ray.tNear;
@@ -178,7 +180,7 @@ struct RayCaster::Impl {
         const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
         // Ray differentials: the same lens point, one footprint over in x and in y.
         auto uvAt = [&](glm::dvec2 offset) {
-          Ray r = lensRay(camera, lensOffset, pixel + offset, size);
+          Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
           r.origin -= origin;
           const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
           return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
@@ -267,8 +269,8 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
               const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
               for (int c = 0; c < channels; ++c) {
                 const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
-                focused.inverseFocusShift = cs.inverseFocusShift;
-                const Impl::Hit hit = m.shadeAlong(focused, s.lens * camera.apertureRadius, cs.pixel, size, footprintPx);
+                const Impl::Hit hit =
+                    m.shadeAlong(focused, s.lens * camera.apertureRadius, cs.pixel, size, footprintPx, cs.inverseFocusShift);
                 if (channels == 3) sum[c] += hit.color[c];
                 else sum += glm::dvec3(hit.color);
                 covered += hit.surface ? 1.0 / channels : 0.0;

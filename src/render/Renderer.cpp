@@ -26,11 +26,8 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   outSize_ = size;
   done_ = 0;
   // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
-  for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue}) {
-    Camera& focused = channelCameras_[static_cast<std::size_t>(c)];
-    focused = camera_;
-    focused.inverseFocusShift += camera_.effects.chromatic.inverseFocusShift(c);
-  }
+  for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue})
+    channelFocusShifts_[static_cast<std::size_t>(c)] = camera_.effects.chromatic.inverseFocusShift(c);
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(camera, size, plan.overscan);
@@ -72,20 +69,20 @@ int Renderer::addSamples(int count) {
                                    pixelSize);
     // The same offset in view pixels, GL orientation, for the lens gather.
     const glm::vec2 jitter(static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y));
-    const auto clip = [&](const Camera& focused) {
-      return clipFromWorld(viewThroughLens(focused, lensOffset, pixelOffset));
+    const auto clip = [&](double inverseFocusShift) {
+      return clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset, inverseFocusShift));
     };
     if (samplesPlanned() == 1) {
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
-      scenePass_.draw(gpuScene_, clip(camera_), out.drawTarget(), lodBias);
+      scenePass_.draw(gpuScene_, clip(0.0), out.drawTarget(), lodBias);
     } else if (plan_.viewsPerSample == 3) {
       for (int c = 0; c < 3; ++c) {
         glm::vec3 mask(0.0f);
         mask[c] = 1.0f;
-        scenePass_.draw(gpuScene_, clip(channelCameras_[static_cast<std::size_t>(c)]), accumulator_->nextView(mask, curvatureShift, jitter), lodBias);
+        scenePass_.draw(gpuScene_, clip(channelFocusShifts_[static_cast<std::size_t>(c)]), accumulator_->nextView(mask, curvatureShift, jitter), lodBias);
       }
     } else {
-      scenePass_.draw(gpuScene_, clip(camera_), accumulator_->nextView(glm::vec3(1.0f), curvatureShift, jitter), lodBias);
+      scenePass_.draw(gpuScene_, clip(0.0), accumulator_->nextView(glm::vec3(1.0f), curvatureShift, jitter), lodBias);
     }
   }
   return added;

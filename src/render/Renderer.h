@@ -66,7 +66,7 @@ class Renderer {
 
   FramePlan plan_;
   Camera camera_;      // the camera the scene passes use (overscanned when the lens pass runs)
-  std::array<Camera, 3> channelCameras_;  // camera_ focused for red, green, blue (axial colour)
+  std::array<double, 3> channelFocusShifts_{};  // inverse focus shifts of red, green, blue (axial colour)
   ImageSize size_;     // the size they render at
   ImageSize outSize_;  // the image's size
   std::vector<LensSample> samples_;

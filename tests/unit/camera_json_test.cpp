@@ -79,6 +79,8 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
   expectRefused(R"({"projection": "fisheye", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1]})", "\"projection\"");
   expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1], "near": 5, "far": 2})", "near");
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "focus_distance": 0.01})", "focus_distance");
+  // One spelling of infinity: "inf" is refused, naming the key.
+  expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "f_number": 2, "focus_distance": "inf"})", "focus_distance");
 }
 
 }  // namespace

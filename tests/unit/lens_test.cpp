@@ -238,6 +238,24 @@ TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
   EXPECT_EQ(makeFramePlan(planeAt(10.0), lens, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1}).apertureSamples, 17);
 }
 
+// An explicit count with a pinhole is honoured: N sub-pixel-jittered views of the same PRP (the
+// box-filtered pixel integral, i.e. anti-aliasing); auto stays one view. (It used to be ignored.)
+TEST(FramePlan, AnExplicitCountWithAPinholeGivesJitteredViews) {
+  ViewSpec v;
+  v.vrp = {0, 0, -5};
+  v.prp = {0, 0, 5};
+  v.window = {-1, -1, 1, 1};
+  const Camera pinhole = cameraFocusedOnViewPlane(v, 0.0, "test");
+  const FramePlan asked = makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Concentric, 16, 256, 1});
+  EXPECT_EQ(asked.apertureSamples, 16) << asked.samplesWhy;
+  EXPECT_EQ(asked.viewsPerSample, 1);
+  ASSERT_EQ(asked.passes.size(), 3u);
+  EXPECT_EQ(asked.passes[1].name, "accumulate");
+  EXPECT_NE(asked.samplesWhy.find("anti-aliasing"), std::string::npos);
+  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}).apertureSamples, 1);
+  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1}).apertureSamples, 17);
+}
+
 }  // namespace
 }  // namespace lenslab
 

@@ -159,7 +159,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
       }
     }
     result.referenceCached = false;
-    say(o, cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp / 2, " spp (half ", k + 1, " of 2)"));
+    say(o, cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp / 2, " spp (half ", k + 1,
+               " of 2", cached.empty() ? std::string() : cat(", cached as ", cached.filename().string()), ")"));
     const auto t = std::chrono::steady_clock::now();
     halves[k] = caster.render(camera, size, RaycastOptions{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)});
     result.referenceSeconds += secondsSince(t);

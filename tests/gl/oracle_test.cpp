@@ -141,11 +141,8 @@ std::vector<Row> rayCasterRows(const Scene& scene, const Camera& camera, const I
 }
 
 std::vector<Row> rasterRows(const Scene& scene, const Camera& camera, const Image& truth, const std::vector<int>& views) {
-  // Today a pinhole's plan draws one view whatever N asks for (a bug being fixed on main: an
-  // explicit N is to be N sub-pixel jittered views). An aperture of 1e-9 m gets the N jittered
-  // views and moves no view by anything measurable.
-  Camera jittered = camera;
-  if (jittered.isPinhole()) jittered.apertureRadius = 1e-9;
+  // An explicit N with a pinhole is N sub-pixel-jittered views (anti-aliasing), as with a lens.
+  const Camera& jittered = camera;
   Renderer renderer(scene);
   std::vector<Row> rows;
   for (const int n : views) {
@@ -204,8 +201,8 @@ TEST(Oracle, NearestTexelsOnAGrazingFloor) {
 }
 
 // LINEAR without mips: nothing is pre-filtered, so both renderers converge to the bilinear
-// oracle today. This checks the oracle itself, and leaves the mips as the only difference in the
-// next test.
+// oracle whatever their level of detail. This checks the oracle itself, and leaves the mips as the
+// only difference in the next test.
 TEST(Oracle, BilinearTexelsWithoutMipsOnAGrazingFloor) {
   LENSLAB_REQUIRE_GL();
   const TextureImage image = randomTexture(16, 16, 3);
@@ -218,7 +215,8 @@ TEST(Oracle, BilinearTexelsWithoutMipsOnAGrazingFloor) {
 
 // glTF's default sampler (LINEAR / LINEAR_MIPMAP_LINEAR, mips on the GPU): the truth is still
 // the pixel integral of the bilinear level-0 reconstruction, the mips being only a way to it. A
-// texture footprint of a whole pixel, averaged over the pixel again, plateaus here.
+// texture footprint of a whole pixel, averaged over the pixel again, plateaus here: both renderers
+// stayed at 26 dB from 16 samples on before each sample's footprint was its own share of the pixel.
 TEST(Oracle, BilinearTexelsOnAGrazingFloor) {
   LENSLAB_REQUIRE_GL();
   const TextureImage image = randomTexture(16, 16, 3);

@@ -13,6 +13,7 @@
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
+#include "gl/GlContext.h"
 #include "io/AtomicFile.h"
 #include "io/CameraJson.h"
 #include "io/ImageFile.h"
@@ -42,29 +43,21 @@ WindowRect fitted(const WindowRect& area, double aspect) {
   return r;
 }
 
-// Reads the window's back buffer (what is about to be shown), as a linear image.
+// Reads the window's back buffer (what is about to be shown), as a linear image: the framebuffer
+// holds display (sRGB) values.
 Image readWindow(int widthPx, int heightPx) {
-  std::vector<unsigned char> rgba(static_cast<std::size_t>(widthPx) * static_cast<std::size_t>(heightPx) * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, widthPx, heightPx, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  Image image(widthPx, heightPx);
-  for (int y = 0; y < heightPx; ++y) {
-    for (int x = 0; x < widthPx; ++x) {
-      // GL rows start at the bottom; the framebuffer holds display (sRGB) values.
-      const unsigned char* p = &rgba[(static_cast<std::size_t>(heightPx - 1 - y) * static_cast<std::size_t>(widthPx) + static_cast<std::size_t>(x)) * 4];
-      image.set(x, y, {linearFromSrgb(p[0] / 255.0f), linearFromSrgb(p[1] / 255.0f), linearFromSrgb(p[2] / 255.0f), 1.0f});
-    }
-  }
+  Image image = gl::readDefaultFramebuffer(widthPx, heightPx);
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    for (std::size_t k = 0; k < 3; ++k) image.rgba[i + k] = linearFromSrgb(image.rgba[i + k]);
   return image;
 }
 
-// A float texture of the given size, for images that are drawn more than once.
-gl::Texture floatTexture(int widthPx, int heightPx) {
-  gl::Texture t = gl::Texture::create();
-  glTextureStorage2D(t.id(), 1, GL_RGBA32F, widthPx, heightPx);
-  return t;
+// The diagram's lines as the line drawer takes them.
+std::vector<LineSegment> segments(const std::vector<DiagramLine>& lines) {
+  std::vector<LineSegment> out;
+  out.reserve(lines.size());
+  for (const DiagramLine& l : lines) out.push_back({l.from, l.to, l.color});
+  return out;
 }
 
 }  // namespace
@@ -74,7 +67,7 @@ void Viewer::reportError(const std::string& message) {
   std::cerr << "lenslab: error: " << message << "\n";
 }
 
-PixelRect Viewer::toPixels(const WindowRect& r) const {
+gl::PixelRect Viewer::toPixels(const WindowRect& r) const {
   const double sx = fbWidth_ / std::max(1.0, static_cast<double>(windowWidth_));
   const double sy = fbHeight_ / std::max(1.0, static_cast<double>(windowHeight_));
   const int x0 = static_cast<int>(std::lround(r.x * sx)), x1 = static_cast<int>(std::lround((r.x + r.width) * sx));
@@ -215,7 +208,7 @@ void Viewer::accumulate() {
       : 1;
   const auto t = Clock::now();
   const int added = renderer_.addSamples(count);
-  glFinish();  // honest timing: the scene passes are done
+  finishGpuWork();  // honest timing: the scene passes are done
   const double ms = msSince(t);
   msPerSample_ = ms / std::max(added, 1);
   accumulationMs_ += ms;
@@ -249,27 +242,23 @@ Camera Viewer::outsideCamera(double aspect) const {
   return toCamera(p, "outside view");
 }
 
-void Viewer::drawOutside(const PixelRect& rect) {
+void Viewer::drawOutside(const gl::PixelRect& rect) {
   if (rect.empty()) return;
   outsideCamera_ = outsideCamera(static_cast<double>(rect.width) / rect.height);
-  if (outsideDirty_ || outsideTextureSize_.width != rect.width || outsideTextureSize_.height != rect.height) {
+  const bool resized = outsideTexture_.width() != rect.width || outsideTexture_.height() != rect.height;
+  if (outsideDirty_ || resized) {
     // The scene from outside changes only with the cameras: drawn once, kept in a texture.
-    const ImageSize size{rect.width, rect.height};
-    const gl::RenderTarget& view = renderer_.renderPinhole(outsideCamera_, size);
-    if (outsideTextureSize_.width != rect.width || outsideTextureSize_.height != rect.height) {
-      outsideTexture_ = floatTexture(rect.width, rect.height);
-      outsideTextureSize_ = {0, 0, rect.width, rect.height};
-    }
-    glCopyImageSubData(view.colorTexture(), GL_TEXTURE_2D, 0, 0, 0, 0, outsideTexture_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       rect.width, rect.height, 1);
+    const gl::RenderTarget& view = renderer_.renderPinhole(outsideCamera_, ImageSize{rect.width, rect.height});
+    if (resized) outsideTexture_ = gl::ImageTexture(rect.width, rect.height);
+    outsideTexture_.copyColor(view);
     outsideDirty_ = false;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  imageDrawer_.draw(outsideTexture_.id(), rect, 0.45f);
+  gl::bindDefaultFramebuffer(fbWidth_, fbHeight_);
+  imageDrawer_.draw(outsideTexture_, rect, 0.45f);
   DiagramStyle style;
   style.apertureScale = enlargeAperture_ ? readableApertureScale(cam_.camera) : 1.0;
   const std::vector<DiagramLine> lines = lectureDiagram(cam_.camera, renderer_.plannedSamples(), renderer_.samplesDone(), style);
-  lineDrawer_.draw(lines, clipFromWorld(outsideCamera_.view), rect);
+  lineDrawer_.draw(segments(lines), clipFromWorld(outsideCamera_.view), rect);
 }
 
 void Viewer::draw() {
@@ -277,23 +266,16 @@ void Viewer::draw() {
   if (showBaseline_ && !baselineValid_) {
     if (!gather_) gather_ = std::make_unique<GatherDof>();
     const Image image = gather_->apply(cam_.camera, renderer_.renderPinhole(cam_.camera, size_), baselineTaps_);
-    if (!baselineTexture_) baselineTexture_ = floatTexture(size_.widthPx, size_.heightPx);
-    for (int y = 0; y < image.height; ++y)  // Image rows run from the top, GL's from the bottom
-      glTextureSubImage2D(baselineTexture_.id(), 0, 0, image.height - 1 - y, image.width, 1, GL_RGBA, GL_FLOAT,
-                          &image.rgba[image.offset(0, y)]);
+    if (!baselineTexture_) baselineTexture_ = gl::ImageTexture(image.width, image.height);
+    baselineTexture_.upload(image);
     baselineValid_ = true;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fbWidth_, fbHeight_);
-  glDisable(GL_SCISSOR_TEST);
-  const float background[] = {0.08f, 0.08f, 0.09f, 1.0f};
-  glClearBufferfv(GL_COLOR, 0, background);
-  const PixelRect imageRect = toPixels(imageRect_);
-  if (showBaseline_ && baselineValid_) imageDrawer_.draw(baselineTexture_.id(), imageRect);
-  else if (resolved_) imageDrawer_.draw(resolved_->colorTexture(), imageRect);
+  gl::clearDefaultFramebuffer(fbWidth_, fbHeight_, {0.08f, 0.08f, 0.09f, 1.0f});
+  const gl::PixelRect imageRect = toPixels(imageRect_);
+  if (showBaseline_ && baselineValid_) imageDrawer_.draw(baselineTexture_, imageRect);
+  else if (resolved_) imageDrawer_.draw(*resolved_, imageRect);
   if (showOutside_) drawOutside(toPixels(outsideRect_));
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fbWidth_, fbHeight_);
+  gl::bindDefaultFramebuffer(fbWidth_, fbHeight_);  // for the panel
 }
 
 void Viewer::finishScripted() {
@@ -309,7 +291,7 @@ void Viewer::finishScripted() {
     j["width"] = size_.widthPx;
     j["height"] = size_.heightPx;
     j["framebuffer"] = {fbWidth_, fbHeight_};
-    j["renderer"] = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    j["renderer"] = currentRenderer();
     j["samples_done"] = renderer_.samplesDone();
     j["samples_planned"] = renderer_.samplesPlanned();
     j["samples_why"] = plan_.samplesWhy;
@@ -367,7 +349,7 @@ int Viewer::run() {
         reportError(e.what());
       }
     }
-    if (scripted()) glFinish();  // scripted frames are timed with the GPU done
+    if (scripted()) finishGpuWork();  // scripted frames are timed with the GPU done
     const double frameMs = msSince(frameStart);
     frameMsMax_ = std::max(frameMsMax_, frameMs);
     frameMsSum_ += frameMs;

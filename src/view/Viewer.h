@@ -2,22 +2,23 @@
 // The interactive demo's window state: one Viewer per `lenslab view` run. Its frame loop and
 // drawing are in Viewer.cpp, the Dear ImGui panel in ViewerPanel.cpp; ViewApp.cpp owns GLFW and
 // ImGui's lifetimes and builds it. Internal to src/view.
-#include <glad/gl.h>  // before any other GL header
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "camera/PhysicalCamera.h"
-#include "gl/Object.h"
+#include "gl/DefaultFramebuffer.h"
+#include "gl/ImageTexture.h"
 #include "plan/FramePlan.h"
 #include "render/GatherDof.h"
+#include "render/ImageDrawer.h"
+#include "render/LineDrawer.h"
 #include "render/Renderer.h"
 #include "scene/Scene.h"
-#include "view/GlDraw.h"
 #include "view/Navigation.h"
 #include "view/ViewApp.h"
+
+#define GLFW_INCLUDE_NONE  // no GL header from GLFW: glad's (through gl/) must be the only one
+#include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <glm/glm.hpp>
 
@@ -66,9 +67,9 @@ class Viewer {
   void restart();
   void accumulate();
   void draw();
-  void drawOutside(const PixelRect& rect);
+  void drawOutside(const gl::PixelRect& rect);
   Camera outsideCamera(double aspect) const;
-  PixelRect toPixels(const WindowRect& r) const;
+  gl::PixelRect toPixels(const WindowRect& r) const;
   std::optional<glm::dvec2> imagePixelAt(ImVec2 mouse) const;
   void finishScripted();
   void reportError(const std::string& message);
@@ -117,7 +118,7 @@ class Viewer {
   bool showBaseline_;
   int baselineTaps_ = 32;
   bool baselineValid_ = false;
-  gl::Texture baselineTexture_;
+  gl::ImageTexture baselineTexture_;
 
   // The outside view: an orbit camera around the lecture camera.
   bool showOutside_;
@@ -126,8 +127,7 @@ class Viewer {
   double outsideZoom_ = 0.8;
   bool enlargeAperture_ = true;     // draw the (mm-sized) aperture large enough to see
   bool outsideDirty_ = true;
-  gl::Texture outsideTexture_;
-  PixelRect outsideTextureSize_;
+  gl::ImageTexture outsideTexture_;
   Camera outsideCamera_;
 
   // Layout and input.

@@ -22,6 +22,8 @@ std::string glString(GLenum name) {
 
 std::string GlContext::renderer() const { return glString(GL_RENDERER); }
 std::string GlContext::version() const { return glString(GL_VERSION); }
+std::string currentRenderer() { return glString(GL_RENDERER); }
+void finishGpuWork() { glFinish(); }
 
 void loadGlFunctions(GlProc (*getProcAddress)(const char*), const char* what) {
   const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(getProcAddress));

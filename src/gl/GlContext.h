@@ -26,6 +26,11 @@ class GlContext {
   std::string version() const;
 };
 
+// GL_RENDERER of whichever context is current: a headless one or a window's (the view's).
+std::string currentRenderer();
+// Waits until the GPU has done all it was given (glFinish): wall time around GPU work is honest.
+void finishGpuWork();
+
 // Throws std::runtime_error with the reason (library missing, 4.5 core unavailable, ...).
 std::unique_ptr<GlContext> createHeadlessContext(Backend backend);
 

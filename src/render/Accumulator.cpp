@@ -12,15 +12,12 @@ namespace {
 constexpr int kMaxBatch = 8;
 constexpr double kBatchMemoryBytes = 256.0 * 1024 * 1024;  // at most this much for the view layers
 
-void drawFullScreen(GLuint program, GLuint vertexArray, GLuint texture) {
+void drawFullScreen(const gl::FullScreenPass& pass, GLuint program, GLuint texture) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
-  glUseProgram(program);
   glBindTextureUnit(0, texture);
   glBindSampler(0, 0);
-  glBindVertexArray(vertexArray);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  pass.draw(program);
 }
 
 void nearestClamp(GLuint texture) {
@@ -34,8 +31,7 @@ void nearestClamp(GLuint texture) {
 
 Accumulator::Accumulator()
     : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
-      resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")),
-      emptyVertexArray_(gl::VertexArray::create()) {}
+      resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")) {}
 
 void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens) {
   curvature_ = curvature ? std::optional<Curvature>(*curvature) : std::nullopt;
@@ -151,7 +147,7 @@ void Accumulator::flush() {
     glBindTextureUnit(5, lens_->inverse[2]);
     for (GLuint unit = 1; unit <= 5; ++unit) glBindSampler(unit, 0);  // texelFetch only
   }
-  drawFullScreen(program, emptyVertexArray_.id(), views_.id());
+  drawFullScreen(fullScreen_, program, views_.id());
   glDisable(GL_BLEND);
   pending_ = 0;
 }
@@ -164,12 +160,12 @@ void Accumulator::resolve(const gl::RenderTarget& out) {
   if (lens_) {
     glBindTextureUnit(1, weight_->colorTexture());
     glBindSampler(1, 0);
-    drawFullScreen(resolvePerPixel_.id(), emptyVertexArray_.id(), sum_->colorTexture());
+    drawFullScreen(fullScreen_, resolvePerPixel_.id(), sum_->colorTexture());
     return;
   }
   const glm::vec4 inverseWeight = glm::vec4(1.0f) / glm::max(weightSum_, glm::vec4(1e-30f));
   glProgramUniform4fv(resolve_.id(), 0, 1, &inverseWeight.x);
-  drawFullScreen(resolve_.id(), emptyVertexArray_.id(), sum_->colorTexture());
+  drawFullScreen(fullScreen_, resolve_.id(), sum_->colorTexture());
 }
 
 }  // namespace lenslab

@@ -8,6 +8,7 @@
 // one overwrites). start / nextView / resolve let the samples spread over frames (the interactive
 // demo converges progressively).
 #include "gl/Framebuffer.h"
+#include "gl/FullScreenPass.h"
 #include "gl/Object.h"
 
 #include <glm/glm.hpp>
@@ -69,7 +70,7 @@ class Accumulator {
   gl::Program gatherLens_[4];     // the lens gather: [field curvature · 2 + lateral colour], built on first use
   gl::Program resolve_;
   gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
-  gl::VertexArray emptyVertexArray_;  // core profile needs one bound even without attributes
+  gl::FullScreenPass fullScreen_;
   std::unique_ptr<gl::RenderTarget> sum_;
   std::unique_ptr<gl::RenderTarget> weight_;  // the lens gather's per-pixel weights
   gl::Framebuffer gatherFramebuffer_;         // sum_ and weight_ as two colour attachments

@@ -9,8 +9,7 @@
 namespace lenslab {
 
 GatherDof::GatherDof()
-    : program_(gl::buildProgram("common/fullscreen.vert", "postdof/gather.frag")),
-      emptyVertexArray_(gl::VertexArray::create()) {}
+    : program_(gl::buildProgram("common/fullscreen.vert", "postdof/gather.frag")) {}
 
 Image GatherDof::apply(const Camera& camera, const gl::RenderTarget& pinhole, int tapCount) {
   const int w = pinhole.width(), h = pinhole.height();
@@ -40,16 +39,13 @@ Image GatherDof::apply(const Camera& camera, const gl::RenderTarget& pinhole, in
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
-  glUseProgram(program_.id());
   glProgramUniform1i(program_.id(), 0, tapCount);
   glProgramUniform1f(program_.id(), 1, maxRadius);
   glBindTextureUnit(0, pinhole.colorTexture());
   glBindTextureUnit(1, coc_.id());
   glBindSampler(0, 0);
   glBindSampler(1, 0);
-  glBindVertexArray(emptyVertexArray_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  fullScreen_.draw(program_);
   glFinish();
   return out_->readColor();
 }

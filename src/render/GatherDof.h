@@ -5,6 +5,7 @@
 #include "camera/Camera.h"
 #include "core/Image.h"
 #include "gl/Framebuffer.h"
+#include "gl/FullScreenPass.h"
 #include "gl/Object.h"
 
 #include <memory>
@@ -24,7 +25,7 @@ class GatherDof {
 
  private:
   gl::Program program_;
-  gl::VertexArray emptyVertexArray_;
+  gl::FullScreenPass fullScreen_;
   gl::Texture coc_;
   std::unique_ptr<gl::RenderTarget> out_;
 };

@@ -22,8 +22,7 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
 }  // namespace
 
 LensPass::LensPass()
-    : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")),
-      emptyVertexArray_(gl::VertexArray::create()) {}
+    : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")) {}
 
 void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan) {
   std::vector<double> key = keyOf(camera, size, overscan);
@@ -72,7 +71,6 @@ void LensPass::apply(const gl::RenderTarget& undistorted, const gl::RenderTarget
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   const bool perChannel = tables_.size() == 3;
-  glUseProgram(perChannel ? perChannelProgram_.id() : program_.id());
   glBindTextureUnit(0, undistorted.colorTexture());
   if (perChannel) {
     glBindTextureUnit(1, tables_[1].id());  // green
@@ -82,9 +80,7 @@ void LensPass::apply(const gl::RenderTarget& undistorted, const gl::RenderTarget
     glBindTextureUnit(1, tables_[0].id());
   }
   for (GLuint unit = 0; unit <= 3; ++unit) glBindSampler(unit, 0);  // texelFetch only
-  glBindVertexArray(emptyVertexArray_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  fullScreen_.draw(perChannel ? perChannelProgram_ : program_);
 }
 
 }  // namespace lenslab

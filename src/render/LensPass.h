@@ -8,6 +8,7 @@
 #include "camera/ImageSize.h"
 #include "camera/LensMap.h"
 #include "gl/Framebuffer.h"
+#include "gl/FullScreenPass.h"
 #include "gl/Object.h"
 #include "render/Accumulator.h"
 
@@ -30,7 +31,7 @@ class LensPass {
  private:
   gl::Program program_;
   gl::Program perChannelProgram_;  // the lateral-colour variant, built on first use
-  gl::VertexArray emptyVertexArray_;
+  gl::FullScreenPass fullScreen_;
   std::vector<gl::Texture> tables_;  // RG32F texture coordinates: green, or red, green, blue
   gl::Texture forwardPosition_;      // RGBA32F at the overscan size (ForwardTable)
   gl::Texture forwardJacobian_;

@@ -1,25 +1,21 @@
 #pragma once
-// The interactive demo's window state: one Viewer per `lenslab view` run. Its frame loop and
-// drawing are in Viewer.cpp, the Dear ImGui panel in ViewerPanel.cpp; ViewApp.cpp owns GLFW and
-// ImGui's lifetimes and builds it. Internal to src/view.
-#include <glad/gl.h>  // before any other GL header
-#define GLFW_INCLUDE_NONE
+// The interactive demo's window: one Viewer per `lenslab view` run, the shell around ViewerModel
+// (the state and its rules, ViewerModel.h). The shell reads GLFW input, draws the Dear ImGui panel,
+// runs the Renderer and shows its images; its frame loop and drawing are in Viewer.cpp, the panel
+// in ViewerPanel.cpp. ViewApp.cpp owns GLFW and ImGui's lifetimes and builds it. Internal to
+// src/view.
+#include "gl/DefaultFramebuffer.h"
+#include "gl/ImageTexture.h"
+#include "render/GatherDof.h"
+#include "render/ImageDrawer.h"
+#include "render/LineDrawer.h"
+#include "render/Renderer.h"
+#include "view/ViewApp.h"
+#include "view/ViewerModel.h"
+
+#define GLFW_INCLUDE_NONE  // no GL header from GLFW: glad's (through gl/) must be the only one
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-
-#include "camera/Camera.h"
-#include "camera/ImageSize.h"
-#include "camera/PhysicalCamera.h"
-#include "gl/Object.h"
-#include "plan/FramePlan.h"
-#include "render/GatherDof.h"
-#include "render/Renderer.h"
-#include "scene/Scene.h"
-#include "view/GlDraw.h"
-#include "view/Navigation.h"
-#include "view/ViewApp.h"
-
-#include <glm/glm.hpp>
 
 #include <array>
 #include <chrono>
@@ -42,19 +38,7 @@ enum class Region { None, Image, Outside };
 class Viewer {
  public:
   Viewer(const ViewOptions& options, GLFWwindow* window, const Scene& scene, EditableCamera camera, ImageSize size,
-         PlanOptions planOptions)
-      : options_(options), window_(window), scene_(scene), size_(size), planOptions_(planOptions), cam_(std::move(camera)),
-        lastGood_(cam_), baseSource_(cam_.camera.source), renderer_(scene), showBaseline_(options.showBaseline && !options.noUi),
-        showOutside_(options.outsideView && !options.noUi) {
-    float xs = 1.0f, ys = 1.0f;
-    glfwGetWindowContentScale(window_, &xs, &ys);
-    uiScale_ = std::max(1.0f, xs);
-    ImGui::GetStyle().ScaleAllSizes(uiScale_);
-    ImGui::GetIO().FontGlobalScale = uiScale_;
-    std::snprintf(cameraPath_.data(), cameraPath_.size(), "%s", "camera-view.json");
-    std::snprintf(imagePath_.data(), imagePath_.size(), "%s", "view.png");
-    std::snprintf(windowPath_.data(), windowPath_.size(), "%s", "view-window.png");
-  }
+         PlanOptions planOptions);
 
   int run();
 
@@ -66,12 +50,10 @@ class Viewer {
   void restart();
   void accumulate();
   void draw();
-  void drawOutside(const PixelRect& rect);
-  Camera outsideCamera(double aspect) const;
-  PixelRect toPixels(const WindowRect& r) const;
+  void drawOutside(const gl::PixelRect& rect);
+  gl::PixelRect toPixels(const WindowRect& r) const;
   std::optional<glm::dvec2> imagePixelAt(ImVec2 mouse) const;
   void finishScripted();
-  void reportError(const std::string& message);
 
   // Panel sections, one function each (ViewerPanel.cpp).
   void panel();
@@ -81,54 +63,34 @@ class Viewer {
   void sectionPhysical();
   void sectionSamples();
   void sectionLensEffects();
-  void adoptPhysical(const PhysicalCamera& physical);  // keeps the lens effects and calibrated size
   void sectionCompare();
   void sectionFiles();
   void sectionHelp();
-  void cameraEdited(const Camera& camera);  // a lecture-form edit: the physical form is dropped
 
   const ViewOptions& options_;
   GLFWwindow* window_;
-  const Scene& scene_;
-  ImageSize size_;
-  PlanOptions planOptions_;
-  EditableCamera cam_;
-  EditableCamera lastGood_;  // what to go back to when an edit makes the camera invalid
-  std::string baseSource_;   // where the camera came from, before any click
-  FramePlan plan_;
+  ViewerModel model_;
   Renderer renderer_;
   ImageDrawer imageDrawer_;
   LineDrawer lineDrawer_;
   std::unique_ptr<GatherDof> gather_;  // made when the baseline is first shown
-  bool dirty_ = true;                  // the accumulation must restart
   const gl::RenderTarget* resolved_ = nullptr;
 
-  // Progress, for the panel and --stats.
-  double msPerSample_ = 0.0;      // the last frame's, the next frame's estimate
-  double accumulationMs_ = 0.0;   // scene passes of this accumulation, GPU finished
-  Clock::time_point restartTime_ = Clock::now();
-  double convergedAfterMs_ = -1.0;
+  // Frame times, for --stats.
   int frames_ = 0;
-  double frameMsMax_ = 0.0;       // the slowest frame (input to panel drawn), for --stats
+  double frameMsMax_ = 0.0;       // the slowest frame (input to panel drawn)
   double frameMsSum_ = 0.0;
-  std::optional<double> focusDistance_;  // the last click's
 
   // The post-process baseline, for comparison.
   bool showBaseline_;
   int baselineTaps_ = 32;
   bool baselineValid_ = false;
-  gl::Texture baselineTexture_;
+  gl::ImageTexture baselineTexture_;
 
-  // The outside view: an orbit camera around the lecture camera.
+  // The outside view: the scene from the model's orbit camera, drawn once per change and kept.
   bool showOutside_;
-  double outsideAzimuth_ = 0.8;     // radians from behind the camera toward its right
-  double outsideElevation_ = 0.5;   // radians above the horizon
-  double outsideZoom_ = 0.8;
-  bool enlargeAperture_ = true;     // draw the (mm-sized) aperture large enough to see
   bool outsideDirty_ = true;
-  gl::Texture outsideTexture_;
-  PixelRect outsideTextureSize_;
-  Camera outsideCamera_;
+  gl::ImageTexture outsideTexture_;
 
   // Layout and input.
   float uiScale_ = 1.0f;
@@ -138,7 +100,6 @@ class Viewer {
   bool dragged_ = false;
 
   bool saveWindowPending_ = false;
-  std::string error_;   // shown in red in the panel (and on stderr)
   std::string status_;  // the last thing saved
   std::array<char, 512> cameraPath_{}, imagePath_{}, windowPath_{};
 };

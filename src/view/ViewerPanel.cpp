@@ -1,16 +1,15 @@
 // lenslab view: the Dear ImGui panel, one function per section (progress, the viewing
 // description and its matrices, the physical lens, aperture samples, lens effects, comparison and
-// outside view, saving, controls). Edits mark the accumulation for a restart.
+// outside view, saving, controls). Edits go to the model (ViewerModel.h), which checks them and
+// marks the accumulation for a restart.
 #include "view/Viewer.h"
 
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
-#include "core/Error.h"
 #include "core/Text.h"
 #include "io/AtomicFile.h"
 #include "io/CameraJson.h"
 #include "io/ImageFile.h"
-#include "view/LectureDiagram.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -19,7 +18,6 @@
 
 namespace lenslab::view {
 namespace {
-
 
 bool dragDouble3(const char* label, glm::dvec3& v, float speed) {
   return ImGui::DragScalarN(label, ImGuiDataType_Double, &v.x, 3, speed, nullptr, nullptr, "%.4g");
@@ -35,34 +33,23 @@ void matrixTable(const char* name, const glm::dmat4& m) {
 
 }  // namespace
 
-void Viewer::adoptPhysical(const PhysicalCamera& physical) {
-  const Camera before = cam_.camera;
-  cam_ = fromPhysical(physical, before.source);
-  cam_.camera.effects = before.effects;
-  cam_.camera.calibratedSize = before.calibratedSize;
-}
-
-void Viewer::cameraEdited(const Camera& camera) {
-  cam_.camera = camera;
-  cam_.physical.reset();
-  dirty_ = true;
-}
-
 void Viewer::sectionProgress() {
   const int done = renderer_.samplesDone(), planned = renderer_.samplesPlanned();
   ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0),
                      cat(done, " / ", planned, " samples").c_str());
-  ImGui::Text("%.2f ms per sample, %.0f ms accumulated", msPerSample_, accumulationMs_);
-  if (convergedAfterMs_ >= 0.0) ImGui::Text("converged %.0f ms after the last change", convergedAfterMs_);
+  const SampleBudget& budget = model_.budget();
+  ImGui::Text("%.2f ms per sample, %.0f ms accumulated", budget.msPerSample(), budget.accumulationMs());
+  if (budget.convergedAfterMs() >= 0.0) ImGui::Text("converged %.0f ms after the last change", budget.convergedAfterMs());
   else ImGui::Text("converging (%.1f fps)", static_cast<double>(ImGui::GetIO().Framerate));
   if (showBaseline_) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing the post-process baseline (%d taps)", baselineTaps_);
-  ImGui::Text("image %d x %d; focus distance %.4g", size_.widthPx, size_.heightPx,
-              cam_.camera.focusAtInfinity ? std::numeric_limits<double>::infinity() : cam_.camera.view.prp.z);
+  const Camera& c = model_.camera().camera;
+  ImGui::Text("image %d x %d; focus distance %.4g", model_.size().widthPx, model_.size().heightPx,
+              c.focusAtInfinity ? std::numeric_limits<double>::infinity() : c.view.prp.z);
 }
 
 void Viewer::sectionLecture() {
   if (!ImGui::CollapsingHeader("Viewing description (lecture)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  Camera c = cam_.camera;
+  Camera c = model_.camera().camera;
   ViewSpec& s = c.view;
   const float step = static_cast<float>(0.005 * std::max(1.0, s.prp.z));
   bool changed = false;
@@ -86,23 +73,15 @@ void Viewer::sectionLecture() {
   }
   if (!farInfinite) changed |= dragDouble("far", s.farDistance, step * 10.0f, 0.0, 1e12);
   changed |= dragDouble("aperture radius", c.apertureRadius, step * 0.01f, 0.0, 1e6);
-  if (changed) cameraEdited(c);
+  if (changed) model_.editLecture(c);  // checked at the restart: an invalid camera is rolled back
   // Focus distance: moves the view plane (the plane of focus), keeping the field of view.
-  double focus = cam_.camera.view.prp.z;
-  if (dragDouble("focus distance", focus, step, 1e-4, 1e9)) {
-    try {
-      cam_.camera = refocused(cam_.camera, focus, "focus distance");
-      if (cam_.physical) cam_.physical->focusDistance = focus;
-      dirty_ = true;
-    } catch (const InputError& e) {
-      reportError(e.what());
-    }
-  }
+  double focus = model_.camera().camera.view.prp.z;
+  if (dragDouble("focus distance", focus, step, 1e-4, 1e9)) model_.refocus(focus);
 }
 
 void Viewer::sectionMatrices() {
   if (!ImGui::CollapsingHeader("Matrices (clipFromWorld = clipFromEye * eyeFromView * viewFromWorld)")) return;
-  const ViewSpec& s = cam_.camera.view;
+  const ViewSpec& s = model_.camera().camera.view;
   const ViewBasis b = viewBasis(s);
   ImGui::Text("u = (%.3f %.3f %.3f)", b.u.x, b.u.y, b.u.z);
   ImGui::Text("v = (%.3f %.3f %.3f)", b.v.x, b.v.y, b.v.z);
@@ -116,31 +95,16 @@ void Viewer::sectionMatrices() {
 
 void Viewer::sectionPhysical() {
   if (!ImGui::CollapsingHeader("Physical lens", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (!cam_.physical) {
-    const ViewSpec& s = cam_.camera.view;
-    const bool centred = s.projection == Projection::Perspective &&
-                         glm::length(glm::dvec2(s.prp.x, s.prp.y) - s.window.center()) < 1e-9 * std::max(1.0, s.prp.z);
+  if (!model_.camera().physical) {
     ImGui::TextWrapped("The camera is in the lecture form.");
-    if (!centred) {
+    if (!model_.canDescribeAsLens()) {
       ImGui::TextWrapped("(A physical lens needs a perspective projection with the PRP over the window centre.)");
       return;
     }
-    if (ImGui::Button("Describe it as a lens (35 mm)")) {
-      try {
-        const glm::dvec2 sensor(36.0, 36.0 * s.window.height() / s.window.width());
-        PhysicalCamera p = toPhysical(s, sensor);
-        if (cam_.camera.apertureRadius > 0.0)
-          p.fNumber = p.focalLengthMm * kMetresPerMillimetre / (2.0 * cam_.camera.apertureRadius);
-        if (cam_.camera.focusAtInfinity) p.focusDistance = std::numeric_limits<double>::infinity();
-        adoptPhysical(p);
-        dirty_ = true;
-      } catch (const InputError& e) {
-        reportError(e.what());
-      }
-    }
+    if (ImGui::Button("Describe it as a lens (35 mm)")) model_.describeAsLens();
     return;
   }
-  PhysicalCamera p = *cam_.physical;
+  PhysicalCamera p = *model_.camera().physical;
   bool changed = false;
   const float step = static_cast<float>(0.005 * std::max(1.0, glm::length(p.target - p.eye)));
   changed |= dragDouble3("eye", p.eye, step);
@@ -160,53 +124,50 @@ void Viewer::sectionPhysical() {
     changed = true;
   }
   if (!infinityFocus) changed |= dragDouble("focus distance (m)", p.focusDistance, step, 1e-3, 1e9);
-  if (changed) {
-    try {
-      adoptPhysical(p);
-      dirty_ = true;
-    } catch (const InputError& e) {
-      reportError(e.what());
-    }
-  }
+  if (changed) model_.editPhysical(p);
 }
 
 void Viewer::sectionSamples() {
   if (!ImGui::CollapsingHeader("Aperture samples", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  int pattern = static_cast<int>(planOptions_.pattern);
+  PlanOptions o = model_.planOptions();
+  const FramePlan& plan = model_.plan();
+  bool changed = false;
+  int pattern = static_cast<int>(o.pattern);
   static const std::vector<std::string> names = patternNameList();  // in AperturePattern's order
   const auto name = [](void* list, int i, const char** out) {
     *out = (*static_cast<const std::vector<std::string>*>(list))[static_cast<std::size_t>(i)].c_str();
     return true;
   };
   if (ImGui::Combo("pattern", &pattern, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()))) {
-    planOptions_.pattern = static_cast<AperturePattern>(pattern);
-    dirty_ = true;
+    o.pattern = static_cast<AperturePattern>(pattern);
+    changed = true;
   }
-  bool automatic = planOptions_.apertureSamples == 0;
+  bool automatic = o.apertureSamples == 0;
   if (ImGui::Checkbox("auto sample count", &automatic)) {
-    planOptions_.apertureSamples = automatic ? 0 : std::max(plan_.apertureSamples, 1);
-    dirty_ = true;
+    o.apertureSamples = automatic ? 0 : std::max(plan.apertureSamples, 1);
+    changed = true;
   }
   if (automatic) {
-    dirty_ |= ImGui::SliderInt("max samples", &planOptions_.maxSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderInt("max samples", &o.maxSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
   } else {
-    dirty_ |= ImGui::SliderInt("samples", &planOptions_.apertureSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderInt("samples", &o.apertureSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
   }
-  int seed = static_cast<int>(planOptions_.seed);
+  int seed = static_cast<int>(o.seed);
   if (ImGui::InputInt("seed", &seed)) {
-    planOptions_.seed = static_cast<std::uint32_t>(std::max(seed, 0));
-    dirty_ = true;
+    o.seed = static_cast<std::uint32_t>(std::max(seed, 0));
+    changed = true;
   }
-  ImGui::TextWrapped("N = %d: %s", plan_.apertureSamples, plan_.samplesWhy.c_str());
-  ImGui::Text("circle of confusion in view: %.2f to %.2f px", plan_.cocMinPx, plan_.cocMaxPx);
+  if (changed) model_.setPlanOptions(o);
+  ImGui::TextWrapped("N = %d: %s", plan.apertureSamples, plan.samplesWhy.c_str());
+  ImGui::Text("circle of confusion in view: %.2f to %.2f px", plan.cocMinPx, plan.cocMaxPx);
 }
 
 // The lecture's last part: distortion, chromatic aberration, the curved focal plane. Each adds a
 // pass or shader variant only when it is not zero; the plan's passes are listed to show it.
 void Viewer::sectionLensEffects() {
   if (!ImGui::CollapsingHeader("Lens effects", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  Camera c = cam_.camera;
-  LensEffects& e = c.effects;
+  const Camera& c = model_.camera().camera;
+  LensEffects e = c.effects;
   bool changed = false;
   ImGui::TextWrapped("Distortion: Brown-Conrady in OpenCV's order (normalised coordinates about the principal point)");
   changed |= dragDouble("k1", e.distortion.k1, 0.002f, -2.0, 2.0);
@@ -226,7 +187,7 @@ void Viewer::sectionLensEffects() {
   changed |= dragDouble("lateral blue", e.chromatic.lateralBlue, 0.0002f, -0.1, 0.1);
   changed |= dragDouble("axial red (1/m)", e.chromatic.inverseFocusShiftRed, 0.002f, -10.0, 10.0);
   changed |= dragDouble("axial blue (1/m)", e.chromatic.inverseFocusShiftBlue, 0.002f, -10.0, 10.0);
-  const double focus = cam_.camera.inverseFocusDistance();
+  const double focus = c.inverseFocusDistance();
   const auto distance = [](double inverse) { return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity(); };
   if (e.chromatic.hasAxial())
     ImGui::Text("red in focus at %.4g, green %.4g, blue %.4g", distance(focus + e.chromatic.inverseFocusShiftRed),
@@ -242,22 +203,14 @@ void Viewer::sectionLensEffects() {
     e = LensEffects{};
     changed = true;
   }
-  if (changed) {
-    try {
-      validateLensEffects(c, "the panel's lens");
-      cam_.camera = c;
-      dirty_ = true;
-    } catch (const InputError& error) {
-      reportError(error.what());
-    }
-  }
+  if (changed) model_.editLensEffects(e);  // checked here: an invalid lens is reported and not taken
   std::string passes;
-  for (const PlannedPass& pass : plan_.passes) {
+  for (const PlannedPass& pass : model_.plan().passes) {
     passes += (passes.empty() ? "" : ", ") + pass.name;
     for (const std::string& variant : pass.variants) passes += "+" + variant;
   }
   ImGui::TextWrapped("passes: %s", passes.c_str());
-  for (const std::string& warning : plan_.warnings) ImGui::TextWrapped("note: %s", warning.c_str());
+  for (const std::string& warning : model_.plan().warnings) ImGui::TextWrapped("note: %s", warning.c_str());
 }
 
 void Viewer::sectionCompare() {
@@ -268,9 +221,11 @@ void Viewer::sectionCompare() {
   if (showOutside_) {
     ImGui::TextWrapped("Yellow: PRP. White: window on the view plane (plane of focus). Grey: view volume. "
                        "Cyan: aperture; orange: samples done. Red: rays through the window centre.");
-    ImGui::Checkbox("enlarge the aperture in the diagram", &enlargeAperture_);
-    if (enlargeAperture_ && !cam_.camera.isPinhole())
-      ImGui::Text("aperture drawn x%.0f (radius %.4g)", readableApertureScale(cam_.camera), cam_.camera.apertureRadius);
+    bool enlarge = model_.enlargeAperture();
+    if (ImGui::Checkbox("enlarge the aperture in the diagram", &enlarge)) model_.setEnlargeAperture(enlarge);
+    const Camera& c = model_.camera().camera;
+    if (enlarge && !c.isPinhole())
+      ImGui::Text("aperture drawn x%.0f (radius %.4g)", model_.diagramApertureScale(), c.apertureRadius);
   }
 }
 
@@ -280,10 +235,10 @@ void Viewer::sectionFiles() {
   ImGui::SameLine();
   if (ImGui::Button("Save camera")) {
     try {
-      writeTextFileAtomically(cameraPath_.data(), toCameraJson(cam_.camera));
+      writeTextFileAtomically(cameraPath_.data(), toCameraJson(model_.camera().camera));
       status_ = cat("wrote ", cameraPath_.data(), " (lenslab render --camera loads it)");
     } catch (const std::exception& e) {
-      reportError(e.what());
+      model_.reportError(e.what());
     }
   }
   ImGui::InputText("##image", imagePath_.data(), imagePath_.size());
@@ -294,7 +249,7 @@ void Viewer::sectionFiles() {
       writeImage(imagePath_.data(), renderer_.resolve());
       status_ = cat("wrote ", imagePath_.data(), " (", renderer_.samplesDone(), " samples)");
     } catch (const std::exception& e) {
-      reportError(e.what());
+      model_.reportError(e.what());
     }
   }
   ImGui::InputText("##window", windowPath_.data(), windowPath_.size());
@@ -316,12 +271,12 @@ void Viewer::panel() {
   ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(windowHeight_)));
   ImGui::Begin("lenslab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);  // room for the labels on the right
-  if (!error_.empty()) {
+  if (!model_.error().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.35f, 1.0f));
-    ImGui::TextWrapped("%s", error_.c_str());
+    ImGui::TextWrapped("%s", model_.error().c_str());
     ImGui::PopStyleColor();
   }
-  ImGui::TextWrapped("%s", cam_.camera.source.c_str());
+  ImGui::TextWrapped("%s", model_.camera().camera.source.c_str());
   sectionProgress();
   sectionLecture();
   sectionMatrices();

@@ -1,40 +1,10 @@
-#include "view/GlDraw.h"
+#include "render/LineDrawer.h"
 
 #include "gl/Shader.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
-namespace lenslab::view {
-
-ImageDrawer::ImageDrawer()
-    : program_(gl::buildProgram("common/fullscreen.vert", "view/display.frag")),
-      emptyVertexArray_(gl::VertexArray::create()),
-      linear_(gl::Sampler::create()) {
-  glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
-void ImageDrawer::draw(GLuint texture, const PixelRect& r, float gain) const {
-  if (r.empty()) return;
-  glViewport(r.x, r.y, r.width, r.height);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  const GLuint program = program_.id();
-  glProgramUniform4f(program, 0, static_cast<float>(r.x), static_cast<float>(r.y), static_cast<float>(r.width),
-                     static_cast<float>(r.height));
-  glProgramUniform1i(program, 1, 1);
-  glProgramUniform1f(program, 2, gain);
-  glUseProgram(program);
-  glBindTextureUnit(0, texture);
-  glBindSampler(0, linear_.id());
-  glBindVertexArray(emptyVertexArray_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glBindSampler(0, 0);
-}
+namespace lenslab {
 
 LineDrawer::LineDrawer()
     : program_(gl::buildProgram("view/lines.vert", "view/lines.frag")), vertexArray_(gl::VertexArray::create()) {
@@ -47,12 +17,12 @@ LineDrawer::LineDrawer()
   glVertexArrayAttribBinding(vao, 1, 0);
 }
 
-void LineDrawer::draw(const std::vector<DiagramLine>& lines, const glm::dmat4& clipFromWorld, const PixelRect& r) {
+void LineDrawer::draw(const std::vector<LineSegment>& lines, const glm::dmat4& clipFromWorld, const gl::PixelRect& r) {
   if (lines.empty() || r.empty()) return;
   // Positions relative to nothing but the world: fine in float for the scenes' metre scale.
   std::vector<float> data;
   data.reserve(lines.size() * 12);
-  for (const DiagramLine& l : lines) {
+  for (const LineSegment& l : lines) {
     for (const glm::dvec3& p : {l.from, l.to}) {
       data.insert(data.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z), l.color.r,
                                l.color.g, l.color.b});
@@ -85,4 +55,4 @@ void LineDrawer::draw(const std::vector<DiagramLine>& lines, const glm::dmat4& c
   glDisable(GL_SCISSOR_TEST);
 }
 
-}  // namespace lenslab::view
+}  // namespace lenslab

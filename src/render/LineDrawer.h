@@ -1,0 +1,36 @@
+#pragma once
+// Draws world-space line segments (the interactive view's lecture diagram) into a rectangle of
+// the bound framebuffer (shaders/view/lines.*).
+#include "gl/DefaultFramebuffer.h"
+#include "gl/Object.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace lenslab {
+
+struct LineSegment {
+  glm::dvec3 from;  // world
+  glm::dvec3 to;
+  glm::vec3 color;  // display (sRGB-encoded) colour
+};
+
+class LineDrawer {
+ public:
+  LineDrawer();  // builds the program (needs a current context)
+
+  // Draws the segments through `clipFromWorld` into `rect` (no depth test: the diagram stays
+  // visible behind scene objects, as on the lecture's slides), two pixels wide: the core profile
+  // has no wide lines, so the segments are drawn again one pixel over and up.
+  void draw(const std::vector<LineSegment>& lines, const glm::dmat4& clipFromWorld, const gl::PixelRect& rect);
+
+ private:
+  gl::Program program_;
+  gl::VertexArray vertexArray_;
+  gl::Buffer vertices_;
+  std::size_t capacity_ = 0;  // floats the buffer holds
+};
+
+}  // namespace lenslab

@@ -1,6 +1,7 @@
-// The glTF loader: over the Khronos sample models and the glTF-Validator's test files in the
-// shared folder (skipped where it is absent), and over small files written here that each test
-// one rule with a known answer.
+// The glTF loader: over the Khronos sample models and the glTF-Validator's test files of the
+// external corpus (LENSLAB_GLTF_CORPUS_DIR; the suites GltfSamples, GltfSampleVariant and
+// GltfValidatorFile, which ctest runs as the entry `corpus`, not `unit`), and over small files
+// written here that each test one rule with a known answer.
 #include "core/Error.h"
 #include "core/Text.h"
 #include "scene/GltfLoader.h"
@@ -54,21 +55,23 @@ TEST(SceneTotals, TrianglesAndBoundsCountEveryInstance) {
   }
 }
 
-// ---- the shared test data ----
+// ---- the external glTF corpus ----
+// A suite that reads it belongs in LENSLAB_CORPUS_SUITES (tests/CMakeLists.txt): those run as the
+// ctest entry `corpus`, which ctest shows as not run when the corpus is absent.
 
 // The environment variable wins over the path compiled in, so a build can be pointed elsewhere.
-fs::path sharedDirectory() {
-  if (const char* env = std::getenv("LENSLAB_SHARED_DIR"); env && *env) return env;
-  return LENSLAB_SHARED_DIR;
+fs::path corpusDirectory() {
+  if (const char* env = std::getenv("LENSLAB_GLTF_CORPUS_DIR"); env && *env) return env;
+  return LENSLAB_GLTF_CORPUS_DIR;
 }
 
-fs::path samplesDirectory() { return sharedDirectory() / "gltf/samples"; }
-fs::path invalidDirectory() { return sharedDirectory() / "gltf/invalid"; }
+fs::path samplesDirectory() { return corpusDirectory() / "samples"; }
+fs::path invalidDirectory() { return corpusDirectory() / "invalid"; }
 
 #define SKIP_UNLESS_EXISTS(path)                                                              \
   do {                                                                                        \
-    if (!fs::exists(path)) GTEST_SKIP() << (path) << " is absent (the shared glTF test data)"; \
-  } while (false)
+    if (!fs::exists(path)) GTEST_SKIP() << (path) << " is absent (the external glTF corpus)"; \
+} while (false)
 
 Scene loadSample(const std::string& relative) { return loadGltf(samplesDirectory() / relative); }
 
@@ -150,7 +153,7 @@ const std::map<std::string, std::string> kRefusedSamples = {{"Box/glTF-Draco/Box
 class GltfSampleVariant : public testing::TestWithParam<std::string> {};
 
 TEST_P(GltfSampleVariant, LoadsWithTrianglesOrIsRefusedWithOneLine) {
-  if (GetParam().empty()) GTEST_SKIP() << samplesDirectory() << " is absent (the shared glTF test data)";
+  if (GetParam().empty()) GTEST_SKIP() << samplesDirectory() << " is absent (the external glTF corpus)";
   const fs::path file = samplesDirectory() / GetParam();
   const auto refused = kRefusedSamples.find(GetParam());
   try {
@@ -442,7 +445,7 @@ std::vector<ValidatorCase> validatorCases() {
 class GltfValidatorFile : public testing::TestWithParam<ValidatorCase> {};
 
 TEST_P(GltfValidatorFile, ErrorsAreRefusedWithOneLineAndNothingCrashesOrHangs) {
-  if (GetParam().file.empty()) GTEST_SKIP() << invalidDirectory() / "expected.json" << " is absent (the shared glTF test data)";
+  if (GetParam().file.empty()) GTEST_SKIP() << invalidDirectory() / "expected.json" << " is absent (the external glTF corpus)";
   const fs::path file = invalidDirectory() / GetParam().file;
   const auto start = std::chrono::steady_clock::now();
   try {

@@ -1,0 +1,213 @@
+#include "scene/gltf/SceneBuilder.h"
+
+#include "scene/gltf/Images.h"
+#include "scene/gltf/Limits.h"
+#include "scene/gltf/Primitives.h"
+#include "scene/gltf/Problems.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace lenslab::gltf {
+
+namespace {
+
+// A node's transform: its matrix (column-major, as GLM stores it) or T * R * S.
+glm::dmat4 localTransform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3) m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+  if (node.rotation.size() == 4) {
+    const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // GLM: w first
+    m = m * glm::mat4_cast(glm::normalize(q));  // writers round their quaternions; rotate, never shear
+  }
+  if (node.scale.size() == 3)
+    m = m * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0), glm::dvec4(0, node.scale[1], 0, 0), glm::dvec4(0, 0, node.scale[2], 0),
+                       glm::dvec4(0, 0, 0, 1));
+  return m;
+}
+
+Sampler convertSampler(const tinygltf::Sampler& s) {
+  Sampler sampler;  // Scene.h's defaults stand where the file leaves a filter undefined
+  sampler.wrapS = static_cast<Wrap>(s.wrapS);
+  sampler.wrapT = static_cast<Wrap>(s.wrapT);
+  if (s.magFilter != -1) sampler.magFilter = static_cast<Filter>(s.magFilter);
+  if (s.minFilter != -1) sampler.minFilter = static_cast<Filter>(s.minFilter);
+  return sampler;
+}
+
+// Walks the default scene's node trees and fills the Scene with what they draw; meshes,
+// materials, textures and images are added when first used, so indices come out compact.
+class SceneBuilder {
+ public:
+  SceneBuilder(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents, Scene& scene)
+      : model_(model), reader_(reader), parents_(parents), scene_(scene), converter_(model, reader, scene.notes) {}
+
+  void build() {
+    placeNodes(drawnRoots());
+    checkUndrawnMeshes();
+    noteIgnoredFeatures();
+  }
+
+ private:
+  // The `scene` index, else scene 0, else every root node.
+  std::vector<int> drawnRoots() {
+    if (model_.scenes.empty()) {
+      std::vector<int> roots;
+      for (std::size_t i = 0; i < parents_.size(); ++i)
+        if (parents_[i] == -1) roots.push_back(static_cast<int>(i));
+      if (!roots.empty()) noteOnce(scene_.notes, "the file has no scenes: all root nodes are drawn");
+      return roots;
+    }
+    const int index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+    if (model_.scenes.size() > 1)
+      noteOnce(scene_.notes, cat("the file has ", model_.scenes.size(), " scenes; scene ", index,
+                                 model_.defaultScene >= 0 ? " (its default)" : " (the first: no default is given)", " is drawn"));
+    return model_.scenes[toIndex(index)].nodes;
+  }
+
+  // Depth first, without recursion (a hierarchy may be deeper than the stack): the checks made
+  // it a forest, so each node is met once.
+  void placeNodes(const std::vector<int>& roots) {
+    std::vector<std::pair<int, glm::dmat4>> pending;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.emplace_back(*it, glm::dmat4(1.0));
+    while (!pending.empty()) {
+      const auto [index, worldFromParent] = pending.back();
+      pending.pop_back();
+      const tinygltf::Node& node = model_.nodes[toIndex(index)];
+      const glm::dmat4 worldFromNode = worldFromParent * localTransform(node);
+      for (int i = 0; i < 16; ++i)
+        if (!std::isfinite(glm::value_ptr(worldFromNode)[i])) refuse("node ", index, ": its world transform is not finite");
+      placeNode(node, worldFromNode);
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) pending.emplace_back(*it, worldFromNode);
+    }
+  }
+
+  void placeNode(const tinygltf::Node& node, const glm::dmat4& worldFromNode) {
+    if (node.mesh >= 0) {
+      const std::size_t primitives = model_.meshes[toIndex(node.mesh)].primitives.size();
+      for (std::size_t k = 0; k < primitives; ++k)
+        if (const int mesh = meshFor(node.mesh, k); mesh >= 0) scene_.instances.push_back({mesh, worldFromNode});
+    }
+    if (node.camera >= 0) addCamera(node.camera, worldFromNode);
+    if (node.skin >= 0) noteOnce(scene_.notes, "skins are ignored: skinned meshes are drawn in their bind pose");
+  }
+
+  // The Scene mesh of a glTF primitive, converted on first use; -1 where nothing is drawn.
+  int meshFor(int meshIndex, std::size_t k) {
+    const auto key = std::make_pair(meshIndex, k);
+    if (const auto found = meshes_.find(key); found != meshes_.end()) return found->second;
+    int index = -1;
+    if (std::optional<Mesh> mesh = converter_.convert(meshIndex, k)) {
+      const int material = model_.meshes[toIndex(meshIndex)].primitives[k].material;
+      mesh->material = material >= 0 ? materialFor(material) : -1;  // -1: glTF's default material
+      scene_.meshes.push_back(std::move(*mesh));
+      index = static_cast<int>(scene_.meshes.size()) - 1;
+    }
+    meshes_.emplace(key, index);
+    return index;
+  }
+
+  int materialFor(int gltfIndex) {
+    if (const auto found = materials_.find(gltfIndex); found != materials_.end()) return found->second;
+    const tinygltf::Material& m = model_.materials[toIndex(gltfIndex)];
+    Material material;
+    material.name = m.name;
+    const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
+    material.baseColorFactor = glm::vec4(f[0], f[1], f[2], f[3]);
+    material.unlit = m.extensions.count("KHR_materials_unlit") > 0;
+    material.alphaMode = m.alphaMode == "MASK" ? AlphaMode::Mask : m.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+    if (material.alphaMode == AlphaMode::Blend) noteOnce(scene_.notes, "alphaMode BLEND is drawn opaque (lenslab sorts no transparency)");
+    material.alphaCutoff = static_cast<float>(m.alphaCutoff);
+    material.doubleSided = m.doubleSided;
+    const tinygltf::TextureInfo& base = m.pbrMetallicRoughness.baseColorTexture;
+    if (base.index >= 0 && base.texCoord != 0)
+      noteOnce(scene_.notes, cat("material ", gltfIndex, " samples its base colour texture with TEXCOORD_", base.texCoord,
+                                 "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
+    else if (base.index >= 0)
+      material.baseColorTexture = textureFor(base.index);
+    if (m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 || m.emissiveTexture.index >= 0 ||
+        m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
+      noteOnce(scene_.notes, "normal, occlusion, emissive and metallic-roughness inputs are ignored (lenslab shades base colour x Lambert)");
+    scene_.materials.push_back(std::move(material));
+    return materials_[gltfIndex] = static_cast<int>(scene_.materials.size()) - 1;
+  }
+
+  int textureFor(int gltfIndex) {
+    if (const auto found = textures_.find(gltfIndex); found != textures_.end()) return found->second;
+    const tinygltf::Texture& t = model_.textures[toIndex(gltfIndex)];
+    if (t.source < 0) refuse("texture ", gltfIndex, " has no source image (lenslab reads PNG and JPEG through \"source\")");
+    Texture texture;
+    texture.image = imageFor(t.source);
+    if (t.sampler >= 0) texture.sampler = convertSampler(model_.samplers[toIndex(t.sampler)]);
+    scene_.textures.push_back(texture);
+    return textures_[gltfIndex] = static_cast<int>(scene_.textures.size()) - 1;
+  }
+
+  int imageFor(int gltfIndex) {
+    if (const auto found = images_.find(gltfIndex); found != images_.end()) return found->second;
+    scene_.images.push_back(decodeImage(model_, gltfIndex));
+    return images_[gltfIndex] = static_cast<int>(scene_.images.size()) - 1;
+  }
+
+  void addCamera(int index, const glm::dmat4& worldFromCamera) {
+    const tinygltf::Camera& c = model_.cameras[toIndex(index)];  // values checked by ModelCheck
+    SceneCamera camera;
+    camera.name = c.name;
+    camera.worldFromCamera = worldFromCamera;
+    camera.perspective = c.type == "perspective";
+    if (camera.perspective) {
+      camera.yfovRadians = c.perspective.yfov;
+      camera.aspectRatio = c.perspective.aspectRatio;
+      camera.znear = c.perspective.znear;
+      if (c.perspective.zfar != 0.0) camera.zfar = c.perspective.zfar;
+    } else {
+      camera.xmag = c.orthographic.xmag;
+      camera.ymag = c.orthographic.ymag;
+      camera.znear = c.orthographic.znear;
+      camera.zfar = c.orthographic.zfar;
+    }
+    scene_.cameras.push_back(camera);
+  }
+
+  // Primitives the drawn scene does not reach are converted too, and dropped, so that a broken
+  // file is refused whichever of its scenes it would draw. Their notes are not the scene's.
+  void checkUndrawnMeshes() {
+    std::vector<std::string> ignoredNotes;
+    const PrimitiveConverter quiet(model_, reader_, ignoredNotes);
+    for (std::size_t i = 0; i < model_.meshes.size(); ++i)
+      for (std::size_t k = 0; k < model_.meshes[i].primitives.size(); ++k)
+        if (!meshes_.count({static_cast<int>(i), k})) (void)quiet.convert(static_cast<int>(i), k);
+  }
+
+  void noteIgnoredFeatures() {
+    if (!model_.animations.empty())
+      noteOnce(scene_.notes, cat(model_.animations.size(), " animation(s) ignored: the scene is drawn at rest"));
+    for (const std::string& used : model_.extensionsUsed)
+      if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), used) == kSupportedExtensions.end())
+        noteOnce(scene_.notes, cat("extension ", used, " is used but not supported by lenslab; it is ignored"));
+  }
+
+  const tinygltf::Model& model_;
+  const AccessorReader& reader_;
+  const std::vector<int>& parents_;
+  Scene& scene_;
+  PrimitiveConverter converter_;
+  std::map<std::pair<int, std::size_t>, int> meshes_;
+  std::map<int, int> materials_, textures_, images_;
+};
+
+}  // namespace
+
+void buildScene(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents, Scene& scene) {
+  SceneBuilder(model, reader, parents, scene).build();
+}
+
+}  // namespace lenslab::gltf

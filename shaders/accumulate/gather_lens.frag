@@ -64,8 +64,10 @@ vec4 viewAt(ivec2 t, int i) {
 // magnification about the principal point (1 for green). Only texels within `reach` can send a
 // jittered sample here: |t + ½ − centre| ≤ reach − ½ per axis. Where the lens magnifies, a batch
 // may land no sample in a pixel: its nearest sample still counts, with a weight (1e-6) that any
-// real sample outweighs, so that no pixel is ever left without a value.
-void gather(vec2 centre, float scale, out vec4 s, out vec4 w) {
+// real sample outweighs, so that no pixel is ever left without a value. With lateral colour each
+// channel gathers only the views that carry it (`channel`; −1: every view): with axial colour
+// too, a view focused for red adds nothing to green's or blue's sums.
+void gather(vec2 centre, float scale, int channel, out vec4 s, out vec4 w) {
   s = vec4(0.0);
   w = vec4(0.0);
   ivec2 last = textureSize(forwardPosition, 0) - 1;
@@ -80,6 +82,7 @@ void gather(vec2 centre, float scale, out vec4 s, out vec4 w) {
       vec4 j = texelFetch(forwardJacobian, t, 0);
       mat2 jacobian = mat2(j.xy, j.zw);
       for (int i = 0; i < viewCount; ++i) {
+        if (channel >= 0 && weights[i][channel] == 0.0) continue;
         vec2 landed = p.xy + jacobian * jitter[i];
 #ifdef LATERAL_COLOUR
         landed = principalPoint + scale * (landed - principalPoint);
@@ -107,13 +110,15 @@ void main() {
   vec2 viewSize = vec2(textureSize(forwardPosition, 0));
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 s, w;
-  gather(texelFetch(greenMap, pixel, 0).xy * viewSize, 1.0, s, w);
 #ifdef LATERAL_COLOUR
+  gather(texelFetch(greenMap, pixel, 0).xy * viewSize, 1.0, 1, s, w);  // alpha from green's views
   vec4 sr, wr, sb, wb;
-  gather(texelFetch(redMap, pixel, 0).xy * viewSize, lateralScale.x, sr, wr);
-  gather(texelFetch(blueMap, pixel, 0).xy * viewSize, lateralScale.y, sb, wb);
+  gather(texelFetch(redMap, pixel, 0).xy * viewSize, lateralScale.x, 0, sr, wr);
+  gather(texelFetch(blueMap, pixel, 0).xy * viewSize, lateralScale.y, 2, sb, wb);
   s = vec4(sr.r, s.g, sb.b, s.a);
   w = vec4(wr.r, w.g, wb.b, w.a);
+#else
+  gather(texelFetch(greenMap, pixel, 0).xy * viewSize, 1.0, -1, s, w);
 #endif
   sum = s;
   weight = w;

@@ -342,4 +342,29 @@ Image thinLensRectsImage(const MovingRect& front, const std::vector<MovingRect>&
   return out;
 }
 
+Camera axisCamera(double focusM, double halfWidth, double apertureRadius, ImageSize size) {
+  ViewSpec v;
+  v.vrp = {0.0, 0.0, -focusM};
+  v.prp = {0.0, 0.0, focusM};
+  const double halfHeight = halfWidth * size.heightPx / size.widthPx;
+  v.window = {-halfWidth, -halfHeight, halfWidth, halfHeight};
+  v.nearDistance = 0.01;
+  return cameraFocusedOnViewPlane(v, apertureRadius, "oracle");
+}
+
+TextureImage randomTexture(int width, int height, std::uint32_t seed) {
+  TextureImage image;
+  image.name = "random";
+  image.width = width;
+  image.height = height;
+  for (int i = 0; i < width * height; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      seed = seed * 1664525u + 1013904223u;
+      image.rgba8.push_back(static_cast<std::uint8_t>(seed >> 24));
+    }
+    image.rgba8.push_back(255);
+  }
+  return image;
+}
+
 }  // namespace lenslab::test

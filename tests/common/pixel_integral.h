@@ -124,4 +124,11 @@ struct MovingRect {
 Image thinLensRectsImage(const MovingRect& front, const std::vector<MovingRect>& back, ImageSize size,
                          glm::dvec3 background, double apertureRadius, int quadraturePoints = 12);
 
+// Fixtures shared by the oracle and its own checks.
+// Camera at the origin looking down −z; the view plane (= plane of focus) at `focusM`, the window
+// `halfWidth` wide on each side of the axis, as tall as `size`'s aspect makes its pixels square.
+Camera axisCamera(double focusM, double halfWidth, double apertureRadius, ImageSize size);
+// Texels of independent random sRGB colours (opaque): neighbours differ, so blurring shows.
+TextureImage randomTexture(int width, int height, std::uint32_t seed);
+
 }  // namespace lenslab::test

@@ -30,33 +30,11 @@ using test::TexturedPlane;
 // Small, so that 4096 rays per pixel stay a few seconds; 3:2 like the window below.
 constexpr ImageSize kSize{48, 32};
 
-// Camera at the origin looking down −z; the view plane (= plane of focus) at `focusM`, the window
-// `halfWidth` wide on each side of the axis, as tall as kSize's aspect makes its pixels square.
 Camera cameraAt(double focusM, double halfWidth, double apertureRadius) {
-  ViewSpec v;
-  v.vrp = {0.0, 0.0, -focusM};
-  v.prp = {0.0, 0.0, focusM};
-  const double halfHeight = halfWidth * kSize.heightPx / kSize.widthPx;
-  v.window = {-halfWidth, -halfHeight, halfWidth, halfHeight};
-  v.nearDistance = 0.01;
-  return cameraFocusedOnViewPlane(v, apertureRadius, "oracle");
+  return test::axisCamera(focusM, halfWidth, apertureRadius, kSize);
 }
 
-// Texels of independent random sRGB colours: neighbours differ, so blurring shows.
-TextureImage randomTexture(int width, int height, std::uint32_t seed) {
-  TextureImage image;
-  image.name = "random";
-  image.width = width;
-  image.height = height;
-  for (int i = 0; i < width * height; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      seed = seed * 1664525u + 1013904223u;
-      image.rgba8.push_back(static_cast<std::uint8_t>(seed >> 24));
-    }
-    image.rgba8.push_back(255);
-  }
-  return image;
-}
+using test::randomTexture;
 
 Scene planeScene(const TexturedPlane& plane, const Sampler& sampler) {
   Scene scene;

@@ -16,24 +16,7 @@ namespace {
 constexpr ImageSize kSize{96, 64};
 
 Camera cameraAt(double focusM, double halfWidth, double apertureRadius) {
-  ViewSpec v;
-  v.vrp = {0.0, 0.0, -focusM};
-  v.prp = {0.0, 0.0, focusM};
-  const double halfHeight = halfWidth * kSize.heightPx / kSize.widthPx;
-  v.window = {-halfWidth, -halfHeight, halfWidth, halfHeight};
-  v.nearDistance = 0.01;
-  return cameraFocusedOnViewPlane(v, apertureRadius, "oracle");
-}
-
-TextureImage randomTexture(int width, int height, std::uint32_t seed) {
-  TextureImage image;
-  image.width = width;
-  image.height = height;
-  for (int i = 0; i < width * height * 4; ++i) {
-    seed = seed * 1664525u + 1013904223u;
-    image.rgba8.push_back(i % 4 == 3 ? 255 : static_cast<std::uint8_t>(seed >> 24));
-  }
-  return image;
+  return axisCamera(focusM, halfWidth, apertureRadius, kSize);
 }
 
 double maxDifference(const Image& a, const Image& b) {

@@ -1,5 +1,6 @@
 // The interactive view's pure parts (no window, no GL): navigation is a rigid motion that keeps
 // the camera valid and its pivot or PRP fixed, and the lecture diagram's geometry is the camera's.
+#include "view_fixtures.h"
 #include "camera/PhysicalCamera.h"
 #include "camera/Projection.h"
 #include "lens/AperturePattern.h"
@@ -13,15 +14,7 @@
 namespace lenslab::view {
 namespace {
 
-PhysicalCamera rowsDof() {
-  PhysicalCamera p;
-  p.eye = {0.0, 1.0, 3.0};
-  p.target = {0.0, 0.55, -2.0};
-  p.focalLengthMm = 35.0;
-  p.fNumber = 1.4;
-  p.focusDistance = 2.0;
-  return p;
-}
+using test::rowsDof;
 
 void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
   EXPECT_NEAR(glm::length(a - b), 0.0, tolerance) << "(" << a.x << " " << a.y << " " << a.z << ") vs (" << b.x << " "

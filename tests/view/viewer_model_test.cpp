@@ -1,6 +1,7 @@
 // The interactive view's model (no window, no GL): an invalid edit goes back to the last valid
 // camera and says why; the sample budget follows the measured cost; every change restarts the
 // accumulation; the outside view's orbit camera keeps the lecture camera in sight.
+#include "view_fixtures.h"
 #include "camera/PhysicalCamera.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
@@ -18,15 +19,7 @@
 namespace lenslab::view {
 namespace {
 
-PhysicalCamera rowsDof() {
-  PhysicalCamera p;
-  p.eye = {0.0, 1.0, 3.0};
-  p.target = {0.0, 0.55, -2.0};
-  p.focalLengthMm = 35.0;
-  p.fNumber = 1.4;
-  p.focusDistance = 2.0;
-  return p;
-}
+using test::rowsDof;
 
 // Three boxes at different depths, so that the auto sample count has something to blur.
 Scene boxes() {

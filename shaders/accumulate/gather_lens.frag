@@ -33,30 +33,43 @@ layout(location = 0) out vec4 sum;
 layout(location = 1) out vec4 weight;
 
 #ifdef FIELD_CURVATURE
-#include "../common/catmull_rom.glsl"
-
-// The field-curvature warp of view `layer` (accumulate.frag): Catmull–Rom at p.
-vec4 catmullRom(vec2 p, int layer) {
-  ivec2 first;
-  vec2 w[4];
-  catmullRomTaps(p, first, w);
-  ivec2 last = textureSize(views, 0).xy - 1;
-  vec4 s = vec4(0.0);
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i)
-      s += w[i].x * w[j].y * texelFetch(views, ivec3(clamp(first + ivec2(i, j), ivec2(0), last), layer), 0);
-  return max(s, vec4(0.0));
+// The lecture's "curved focal plane" (src/render/Accumulator.h): a view focused on the curved
+// surface shows at x what the flat-focused view shows at x − shift·r(x)². So the flat view's
+// sample at y belongs at y + shift·r(y)² (r² varies too slowly across a pixel's shift for the
+// difference to matter): the warp moves each sample's position before the lens carries it on —
+// nothing is resampled.
+float radius2(vec2 p) {
+  vec2 n = normalisedAtOrigin + p * normalisedPerPixel;
+  return dot(n, n);
 }
 #endif
 
-// View `i` at texel t (through the field-curvature warp when there is one).
-vec4 viewAt(ivec2 t, int i) {
-#ifdef FIELD_CURVATURE
-  vec2 n = normalisedAtOrigin + (vec2(t) + 0.5) * normalisedPerPixel;
-  return catmullRom(vec2(t) + 0.5 - shiftPerRadius2[i] * dot(n, n), i);
-#else
-  return texelFetch(views, ivec3(t, i), 0);
+// One sample: view `i`'s texel t, landing at `landed` in the output. Adds it when it lands inside
+// this pixel (a sample exactly on an edge: measure zero), and remembers the nearest.
+void visit(ivec2 t, int i, float area, vec2 landed, inout vec4 s, inout vec4 w, inout float nearest,
+           inout ivec3 nearestSample) {
+  vec2 d = landed - gl_FragCoord.xy;
+  if (max(abs(d.x), abs(d.y)) < 0.5) {
+    vec4 share = weights[i] * area;
+    s += share * texelFetch(views, ivec3(t, i), 0);
+    w += share;
+  }
+  float d2 = dot(d, d);
+  if (d2 < nearest) {
+    nearest = d2;
+    nearestSample = ivec3(t, i);
+  }
+}
+
+// Where texel t's sample of view i lands: its centre's distorted position carried by the
+// Jacobian over the sample's offset (jitter, and the field-curvature shift), then the channel's
+// magnification about the principal point.
+vec2 land(vec4 p, vec4 j, vec2 offset, float scale) {
+  vec2 landed = p.xy + mat2(j.xy, j.zw) * offset;
+#ifdef LATERAL_COLOUR
+  landed = principalPoint + scale * (landed - principalPoint);
 #endif
+  return landed;
 }
 
 // The weighted sums of this pixel's samples, for one channel's mapping: `centre` is the view
@@ -71,37 +84,40 @@ void gather(vec2 centre, float scale, int channel, out vec4 s, out vec4 w) {
   s = vec4(0.0);
   w = vec4(0.0);
   ivec2 last = textureSize(forwardPosition, 0) - 1;
-  ivec2 lo = clamp(ivec2(ceil(centre - reach)), ivec2(0), last);
-  ivec2 hi = clamp(ivec2(floor(centre + reach - 1.0)), ivec2(0), last);
   float nearest = 1e30;
   ivec3 nearestSample = ivec3(0);
+#ifdef FIELD_CURVATURE
+  // Each view's samples are shifted by its own amount: each view gets its own window.
+  float centreRadius2 = radius2(centre);
+  for (int i = 0; i < viewCount; ++i) {
+    if (channel >= 0 && weights[i][channel] == 0.0) continue;
+    vec2 c = centre - shiftPerRadius2[i] * centreRadius2;
+    ivec2 lo = clamp(ivec2(ceil(c - reach)), ivec2(0), last);
+    ivec2 hi = clamp(ivec2(floor(c + reach - 1.0)), ivec2(0), last);
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) {
+        ivec2 t = ivec2(x, y);
+        vec4 p = texelFetch(forwardPosition, t, 0);
+        vec2 offset = jitter[i] + shiftPerRadius2[i] * radius2(vec2(t) + 0.5);
+        visit(t, i, p.z, land(p, texelFetch(forwardJacobian, t, 0), offset, scale), s, w, nearest, nearestSample);
+      }
+  }
+#else
+  ivec2 lo = clamp(ivec2(ceil(centre - reach)), ivec2(0), last);
+  ivec2 hi = clamp(ivec2(floor(centre + reach - 1.0)), ivec2(0), last);
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) {
       ivec2 t = ivec2(x, y);
       vec4 p = texelFetch(forwardPosition, t, 0);
       vec4 j = texelFetch(forwardJacobian, t, 0);
-      mat2 jacobian = mat2(j.xy, j.zw);
       for (int i = 0; i < viewCount; ++i) {
         if (channel >= 0 && weights[i][channel] == 0.0) continue;
-        vec2 landed = p.xy + jacobian * jitter[i];
-#ifdef LATERAL_COLOUR
-        landed = principalPoint + scale * (landed - principalPoint);
-#endif
-        vec2 d = landed - gl_FragCoord.xy;
-        if (max(abs(d.x), abs(d.y)) < 0.5) {  // inside this pixel (a sample exactly on an edge: measure zero)
-          vec4 share = weights[i] * p.z;
-          s += share * viewAt(t, i);
-          w += share;
-        }
-        float d2 = dot(d, d);
-        if (d2 < nearest) {
-          nearest = d2;
-          nearestSample = ivec3(t, i);
-        }
+        visit(t, i, p.z, land(p, j, jitter[i], scale), s, w, nearest, nearestSample);
       }
     }
+#endif
   if (nearest < 1e30) {
-    s += 1e-6 * weights[nearestSample.z] * viewAt(nearestSample.xy, nearestSample.z);
+    s += 1e-6 * weights[nearestSample.z] * texelFetch(views, ivec3(nearestSample.xy, nearestSample.z), 0);
     w += 1e-6 * weights[nearestSample.z];
   }
 }

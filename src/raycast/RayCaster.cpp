@@ -207,8 +207,8 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   m.scene = &scene;
   m.device = rtcNewDevice(nullptr);
   if (!m.device) throw std::runtime_error("Embree: could not create a device");
-  // Built relative to the scene's centre until a camera asks for its own origin.
-  m.rebase(scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center());
+  // The Embree scene is built on first use, relative to that camera (rebase): building it here too
+  // would build it twice for every render.
   // Mip chains where the GPU makes them: any sampler of the image minifies with mipmaps.
   for (const Texture& t : scene.textures) {
     const bool mipmaps = t.sampler.minFilter != Filter::Nearest && t.sampler.minFilter != Filter::Linear;

@@ -167,15 +167,21 @@ void expectBothConverge(const std::string& name, const Scene& scene, const Camer
   expectConverges(raster, name + ": raster", floorDb);
 }
 
+// The grazing floor of 16×16 random texels through `sampler`, against its exact pixel integral
+// (nearest texels, or the bilinear level-0 reconstruction for any LINEAR filter).
+void expectFloorConverges(const std::string& name, const Sampler& sampler) {
+  const TextureImage image = randomTexture(16, 16, 3);
+  const TexturedPlane plane = floorPlane(image, sampler.magFilter == Filter::Nearest);
+  const Scene scene = planeScene(plane, sampler);
+  const Camera camera = floorCamera();
+  const Image truth = test::planeImage(plane, PinholeProjection(camera, kSize), kSize, scene.lighting.background);
+  expectBothConverge(name, scene, camera, truth);
+}
+
 // NEAREST, no mip levels: each texel is a convex quad in the image, its colour constant.
 TEST(Oracle, NearestTexelsOnAGrazingFloor) {
   LENSLAB_REQUIRE_GL();
-  const TextureImage image = randomTexture(16, 16, 3);
-  const TexturedPlane plane = floorPlane(image, true);
-  const Scene scene = planeScene(plane, Sampler{Wrap::Repeat, Wrap::Repeat, Filter::Nearest, Filter::Nearest});
-  const Camera camera = floorCamera();
-  const Image truth = test::planeImage(plane, PinholeProjection(camera, kSize), kSize, scene.lighting.background);
-  expectBothConverge("nearest floor", scene, camera, truth);
+  expectFloorConverges("nearest floor", Sampler{Wrap::Repeat, Wrap::Repeat, Filter::Nearest, Filter::Nearest});
 }
 
 // LINEAR without mips: nothing is pre-filtered, so both renderers converge to the bilinear
@@ -183,12 +189,7 @@ TEST(Oracle, NearestTexelsOnAGrazingFloor) {
 // only difference in the next test.
 TEST(Oracle, BilinearTexelsWithoutMipsOnAGrazingFloor) {
   LENSLAB_REQUIRE_GL();
-  const TextureImage image = randomTexture(16, 16, 3);
-  const TexturedPlane plane = floorPlane(image, false);
-  const Scene scene = planeScene(plane, Sampler{Wrap::Repeat, Wrap::Repeat, Filter::Linear, Filter::Linear});
-  const Camera camera = floorCamera();
-  const Image truth = test::planeImage(plane, PinholeProjection(camera, kSize), kSize, scene.lighting.background);
-  expectBothConverge("bilinear floor, no mips", scene, camera, truth);
+  expectFloorConverges("bilinear floor, no mips", Sampler{Wrap::Repeat, Wrap::Repeat, Filter::Linear, Filter::Linear});
 }
 
 // glTF's default sampler (LINEAR / LINEAR_MIPMAP_LINEAR, mips on the GPU): the truth is still
@@ -197,12 +198,7 @@ TEST(Oracle, BilinearTexelsWithoutMipsOnAGrazingFloor) {
 // stayed at 26 dB from 16 samples on before each sample's footprint was its own share of the pixel.
 TEST(Oracle, BilinearTexelsOnAGrazingFloor) {
   LENSLAB_REQUIRE_GL();
-  const TextureImage image = randomTexture(16, 16, 3);
-  const TexturedPlane plane = floorPlane(image, false);
-  const Scene scene = planeScene(plane, Sampler{});
-  const Camera camera = floorCamera();
-  const Image truth = test::planeImage(plane, PinholeProjection(camera, kSize), kSize, scene.lighting.background);
-  expectBothConverge("bilinear mipmapped floor", scene, camera, truth);
+  expectFloorConverges("bilinear mipmapped floor", Sampler{});
 }
 
 struct FlatQuad {

@@ -204,11 +204,17 @@ Scene planeAt(double depth) {
   return scene;
 }
 
-TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
+// Looking down −z from the origin, the view plane (= plane of focus) 5 away, a window 2 wide.
+ViewSpec viewFiveAway() {
   ViewSpec v;
   v.vrp = {0, 0, -5};
   v.prp = {0, 0, 5};
   v.window = {-1, -1, 1, 1};
+  return v;
+}
+
+TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
+  const ViewSpec v = viewFiveAway();
   const Camera pinhole = cameraFocusedOnViewPlane(v, 0.0, "test");
   FramePlan plan = makeFramePlan(planeAt(5.0), pinhole, {100, 100});
   EXPECT_EQ(plan.apertureSamples, 1);
@@ -241,10 +247,7 @@ TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
 // An explicit count with a pinhole is honoured: N sub-pixel-jittered views of the same PRP (the
 // box-filtered pixel integral, i.e. anti-aliasing); auto stays one view. (It used to be ignored.)
 TEST(FramePlan, AnExplicitCountWithAPinholeGivesJitteredViews) {
-  ViewSpec v;
-  v.vrp = {0, 0, -5};
-  v.prp = {0, 0, 5};
-  v.window = {-1, -1, 1, 1};
+  const ViewSpec v = viewFiveAway();
   const Camera pinhole = cameraFocusedOnViewPlane(v, 0.0, "test");
   const FramePlan asked = makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Concentric, 16, 256, 1});
   EXPECT_EQ(asked.apertureSamples, 16) << asked.samplesWhy;

@@ -3,6 +3,7 @@
 #include "app/CliOptions.h"
 #include "app/Commands.h"
 #include "app/Stats.h"
+#include "camera/DepthRange.h"
 #include "camera/FocusOnPixel.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
@@ -122,7 +123,7 @@ int runRender(const RenderOptions& o) {
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
-  Camera camera = applyLensOptions(selectCamera(scene, cameraPath, requestedAspect).camera, o.lens);
+  Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, requestedAspect), o.lens).camera, scene.bounds);
   const ImageSize size = resolveImageSize(camera, o.width, o.height);
   if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
     std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx

@@ -1,6 +1,7 @@
 // lenslab sweep: error against run time for every method, against the ray-cast reference.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -40,7 +41,7 @@ int runSweepCommand(SweepCommandOptions& o) {
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera-dof.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
-  const Camera camera = applyLensOptions(selectCamera(scene, cameraPath, 0.0).camera, o.lens);
+  const Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, 0.0), o.lens).camera, scene.bounds);
   const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
   const fs::path out = o.outDir;
   std::error_code error;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lenslab {
 
@@ -29,13 +30,29 @@ ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std
   return resolveImageSize(camera.view.window, w, h);
 }
 
+double Camera::focusDistance() const {
+  const double inverse = inverseFocusDistance();
+  return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+}
+
 ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset, double inverseFocusShift) {
   ViewSpec v = camera.view;
   v.prp.x += lensOffset.x;
   v.prp.y += lensOffset.y;
-  double windowTravel = 0.0;
-  if (v.projection == Projection::Perspective) windowTravel = 1.0 - v.prp.z * (camera.inverseFocusDistance() + inverseFocusShift);
+  // Perspective and parallel alike: a point at depth z_f lands on the same window point from every
+  // aperture point when the window moves by 1 − d/z_f of the lens offset (0 on the view plane).
+  // Parallel cameras have no lens effects, so no shift.
+  const double shift0 = v.projection == Projection::Perspective ? inverseFocusShift : 0.0;
+  const double windowTravel = !camera.inverseFocusOffPlane && shift0 == 0.0
+                                  ? 0.0  // exactly, not 1 − d·(1/d)
+                                  : 1.0 - v.prp.z * (camera.inverseFocusDistance() + shift0);
   const glm::dvec2 shift = windowTravel * lensOffset + pixelOffset;
+  // Sub-pixel jitter moves a parallel projection as a whole: with the PRP left behind, the DOP
+  // would tilt and points off the view plane would smear across pixels (a lens nobody asked for).
+  if (v.projection == Projection::Parallel) {
+    v.prp.x += pixelOffset.x;
+    v.prp.y += pixelOffset.y;
+  }
   v.window.umin += shift.x;
   v.window.umax += shift.x;
   v.window.vmin += shift.y;
@@ -46,7 +63,8 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
 double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift) {
   const double r = camera.apertureRadius;
   const double d = camera.view.prp.z;
-  if (camera.view.projection == Projection::Parallel) return 2.0 * r * std::abs(depth - d) / d;
+  // Parallel: the ray from lens offset s meets depth z at s·(1 − z/z_f) from where the pinhole's does.
+  if (camera.view.projection == Projection::Parallel) return 2.0 * r * std::abs(1.0 - depth * camera.inverseFocusDistance());
   return 2.0 * r * d * std::abs(camera.inverseFocusDistance() + inverseFocusShift - 1.0 / depth);
 }
 
@@ -57,8 +75,9 @@ Camera refocused(const Camera& camera, double distance, const std::string& where
   if (c.view.projection == Projection::Parallel) {
     if (std::isinf(distance)) throw InputError(cat(where, ": a parallel projection cannot focus at infinity"));
   }
-  if (std::isinf(distance)) {
-    c.focusAtInfinity = true;
+  if (distance > kMaxViewPlaneMove * c.view.prp.z) {
+    // Computed as 1/z_f: 1/1e300 is a tiny number, not a view plane at 1e300.
+    c.inverseFocusOffPlane = 1.0 / distance;
     return c;
   }
   // Move the view plane to the new plane of focus, keeping the PRP where it is in the world and,
@@ -80,7 +99,7 @@ Camera refocused(const Camera& camera, double distance, const std::string& where
   // New VRP: the PRP's foot on the new plane, minus the PRP's (u, v) so that coordinates carry over.
   c.view.vrp = prp - distance * b.n - c.view.prp.x * b.u - c.view.prp.y * b.v;
   c.view.prp.z = distance;
-  c.focusAtInfinity = false;
+  c.inverseFocusOffPlane.reset();
   return c;
 }
 

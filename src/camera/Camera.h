@@ -21,18 +21,28 @@ namespace lenslab {
 struct Camera {
   ViewSpec view;
   double apertureRadius = 0.0;  // world units; 0 = pinhole
-  // The plane of focus is the view plane, except at infinity focus, which no finite view plane
-  // can hold: the window then travels with the PRP (see viewThroughLens).
-  bool focusAtInfinity = false;
+  // The plane of focus is the view plane, except where no well-conditioned view plane can hold
+  // it: at infinity focus, and at a finite focus far beyond the view plane (a view plane at 1e300
+  // has a window of 1e300 and no precision left). There the focus is carried as an inverse
+  // distance 1/z_f (0 at infinity) and the window travels by 1 − d/z_f of each lens offset (see
+  // viewThroughLens), so a huge focus distance tends to infinity focus smoothly.
+  std::optional<double> inverseFocusOffPlane;
   std::string source;           // "assets/rows/camera.json", "glTF camera 0 (Main)", ...
+  // The camera's file left near / far open: withDepthRangeFitted (camera/DepthRange.h) fits them
+  // to the scene before rendering, so that the depth buffer's precision lands where the scene is.
+  bool nearFromScene = false;
+  bool farFromScene = false;
   // Distortion, chromatic aberration, field curvature (perspective only; see lens/LensEffects.h).
   LensEffects effects;
   // The image size the camera was calibrated for (OpenCV intrinsics), the default render size.
   std::optional<ImageSize> calibratedSize;
 
   bool isPinhole() const { return !(apertureRadius > 0.0); }
-  // 1/z_f, from the PRP along −n: 1/PRP.n, or 0 at infinity focus.
-  double inverseFocusDistance() const { return focusAtInfinity ? 0.0 : 1.0 / view.prp.z; }
+  // 1/z_f, from the PRP along −n: 1/PRP.n on the view plane, 0 at infinity focus.
+  double inverseFocusDistance() const { return inverseFocusOffPlane ? *inverseFocusOffPlane : 1.0 / view.prp.z; }
+  bool focusAtInfinity() const { return inverseFocusDistance() == 0.0; }
+  // z_f, +infinity at infinity focus.
+  double focusDistance() const;
 };
 
 // The image size for a camera: a calibrated camera's own size (scaled to a given width or height),
@@ -58,10 +68,15 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
 // `inverseFocusShift` as for viewThroughLens.
 double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift = 0.0);
 
+// How far beyond the current view plane refocused() still moves the view plane; beyond this the
+// focus is carried as 1/z_f with the view plane left where it is (as at infinity).
+constexpr double kMaxViewPlaneMove = 1e3;
+
 // Moves the plane of focus to `distance` (world units along −n from the PRP; +infinity allowed for
-// perspective). Lecture-form cameras keep their field of view: the view plane moves and the window
-// scales about the principal point. Throws InputError naming `where` for a distance ≤ 0, or a
-// parallel projection focused anywhere but a finite distance.
+// perspective). Up to kMaxViewPlaneMove × PRP.n the view plane moves to the plane of focus and the
+// window scales about the principal point (the field of view is kept); further out the view plane
+// stays and the focus is held as 1/z_f. Throws InputError naming `where` for a distance ≤ 0, or a
+// parallel projection focused at infinity.
 Camera refocused(const Camera& camera, double distance, const std::string& where);
 
 }  // namespace lenslab

@@ -32,12 +32,15 @@ void forEachRowBand(int height, const std::function<void(int, int)>& rows) {
                     [&](const tbb::blocked_range<int>& band) { rows(band.begin(), band.end()); });
 }
 
-glm::dvec2 undistortOrThrow(const LensEffects& effects, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
-  auto undistorted = effects.undistortChannel(c, distorted, guess);
+glm::dvec2 undistortOrThrow(const Camera& camera, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
+  auto undistorted = camera.effects.undistortChannel(c, distorted, guess);
   if (!undistorted) {
-    // validateLensEffects rules out folds inside the image, so this is a bug or an unvalidated camera.
-    throw std::runtime_error(cat("lens distortion: Newton's method did not converge at normalised (",
-                                 distorted.x, ", ", distorted.y, ")"));
+    // The inverse follows the branch that contains the centre (continuation, LensEffects.cpp), so it
+    // fails only where that branch folds; validateLensEffects refuses folds inside the image, so
+    // this is a point the lens cannot show.
+    throw InputError(cat(camera.source, ": distortion: no true position on the lens's branch lands at normalised (",
+                         distorted.x, ", ", distorted.y,
+                         ") (the distortion folds before it); use weaker distortion coefficients or a narrower field of view"));
   }
   return *undistorted;
 }
@@ -101,7 +104,7 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
   const auto visit = [&](glm::dvec2 pixel) {
     for (const Channel c : remappedChannels(camera.effects)) {
       const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, width, height));
-      const glm::dvec2 truth = undistortOrThrow(camera.effects, c, distorted, distorted);
+      const glm::dvec2 truth = undistortOrThrow(camera, c, distorted, distorted);
       const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height);
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
@@ -148,7 +151,7 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
           const glm::dvec2 distorted =
               normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
           // Neighbouring pixels' solutions are close: start from the previous one.
-          const glm::dvec2 truth = undistortOrThrow(camera.effects, c, distorted, x == 0 ? distorted : guess);
+          const glm::dvec2 truth = undistortOrThrow(camera, c, distorted, x == 0 ? distorted : guess);
           guess = truth;
           const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
           map[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
@@ -217,7 +220,7 @@ ChannelSample undistortedFrom(const Camera& camera, Channel c, glm::dvec2 pixel,
   const Window& w = camera.view.window;
   const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, size.widthPx, size.heightPx));
   ChannelSample s;
-  s.normalised = camera.effects.needsRemap() ? undistortOrThrow(camera.effects, c, distorted, guess.value_or(distorted))
+  s.normalised = camera.effects.needsRemap() ? undistortOrThrow(camera, c, distorted, guess.value_or(distorted))
                                              : distorted;
   s.pixel = pixelFromWindow(w, windowFromNormalised(camera.view, s.normalised), size.widthPx, size.heightPx);
   s.inverseFocusShift = camera.effects.inverseFocusShift(c, s.normalised);

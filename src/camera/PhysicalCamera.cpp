@@ -50,21 +50,26 @@ double imageDistance(double focalLength, double focusDistance) {
   return imageDistanceFromInverse(focalLength, 1.0 / focusDistance);
 }
 
+double viewPlaneDistance(const PhysicalCamera& c) {
+  const double toTarget = glm::length(c.target - c.eye);
+  return c.focusDistance <= kMaxViewPlaneMove * toTarget ? c.focusDistance : toTarget;
+}
+
 ViewSpec toViewSpec(const PhysicalCamera& c) {
   const double f = c.focalLengthMm * kMetresPerMillimetre;
-  // At infinity focus the window goes on a plane at the target's distance (any would do).
-  const double zf = std::isinf(c.focusDistance) ? glm::length(c.target - c.eye) : c.focusDistance;
-  const double zi = imageDistance(f, c.focusDistance);
-  // The sensor seen back through the lens centre, on the plane of focus.
-  const glm::dvec2 windowSize = c.sensorMm * kMetresPerMillimetre * (zf / zi);
+  const double d = viewPlaneDistance(c);
+  // z_i from 1/z_f (0 at infinity): a focus of 1e300 gives z_i = f, as infinity does.
+  const double zi = imageDistanceFromInverse(f, 1.0 / c.focusDistance);
+  // The sensor seen back through the lens centre, on the view plane.
+  const glm::dvec2 windowSize = c.sensorMm * kMetresPerMillimetre * (d / zi);
   const glm::dvec3 forward = glm::normalize(c.target - c.eye);
 
   ViewSpec spec;
   spec.projection = Projection::Perspective;
-  spec.vrp = c.eye + zf * forward;
+  spec.vrp = c.eye + d * forward;
   spec.vpn = -forward;
   spec.vup = c.up;
-  spec.prp = {0.0, 0.0, zf};
+  spec.prp = {0.0, 0.0, d};
   spec.window = {-0.5 * windowSize.x, -0.5 * windowSize.y, 0.5 * windowSize.x, 0.5 * windowSize.y};
   spec.nearDistance = c.nearDistance;
   spec.farDistance = c.farDistance;
@@ -73,8 +78,21 @@ ViewSpec toViewSpec(const PhysicalCamera& c) {
 
 Camera toCamera(const PhysicalCamera& c, std::string source) {
   Camera camera = cameraFocusedOnViewPlane(toViewSpec(c), apertureRadius(c), std::move(source));
-  camera.focusAtInfinity = std::isinf(c.focusDistance);
+  if (camera.view.prp.z != c.focusDistance) camera.inverseFocusOffPlane = 1.0 / c.focusDistance;
   return camera;
+}
+
+SelectedCamera refocused(const SelectedCamera& camera, double distance, const std::string& where) {
+  if (!camera.physical) return {refocused(camera.camera, distance, where), std::nullopt};
+  PhysicalCamera p = *camera.physical;
+  p.focusDistance = distance;
+  validate(p, where);
+  SelectedCamera out{toCamera(p, camera.camera.source), p};
+  out.camera.effects = camera.camera.effects;
+  out.camera.calibratedSize = camera.camera.calibratedSize;
+  out.camera.nearFromScene = camera.camera.nearFromScene;
+  out.camera.farFromScene = camera.camera.farFromScene;
+  return out;
 }
 
 double apertureRadius(const PhysicalCamera& c) {
@@ -88,17 +106,18 @@ double verticalFovRadians(const PhysicalCamera& c) {
   return 2.0 * std::atan(c.sensorMm.y * kMetresPerMillimetre / (2.0 * zi));
 }
 
-PhysicalCamera toPhysical(const ViewSpec& spec, glm::dvec2 sensorMm) {
+PhysicalCamera toPhysical(const Camera& camera, glm::dvec2 sensorMm) {
+  const ViewSpec& spec = camera.view;
   const ViewBasis b = viewBasis(spec);
   PhysicalCamera c;
   c.eye = prpWorld(spec);
-  c.focusDistance = spec.prp.z;
-  c.target = c.eye - c.focusDistance * b.n;
+  c.focusDistance = camera.focusDistance();
+  c.target = c.eye - spec.prp.z * b.n;
   c.up = b.v;
   c.sensorMm = sensorMm;
-  // window = sensor · z_f / z_i  ⇒  z_i = sensor · z_f / window;  1/f = 1/z_i + 1/z_f.
-  const double zi = sensorMm.x * kMetresPerMillimetre * c.focusDistance / spec.window.width();
-  const double f = zi * c.focusDistance / (zi + c.focusDistance);
+  // window = sensor · d / z_i  ⇒  z_i = sensor · d / window;  1/f = 1/z_i + 1/z_f.
+  const double zi = sensorMm.x * kMetresPerMillimetre * spec.prp.z / spec.window.width();
+  const double f = 1.0 / (1.0 / zi + camera.inverseFocusDistance());
   c.focalLengthMm = f / kMetresPerMillimetre;
   c.nearDistance = spec.nearDistance;
   c.farDistance = spec.farDistance;

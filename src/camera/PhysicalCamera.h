@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -42,13 +43,31 @@ void validate(const PhysicalCamera& camera, std::string_view where);
 // Image distance z_i for focus distance z_f and focal length f (same units).
 double imageDistance(double focalLength, double focusDistance);
 
-// The viewing description with the view plane on the plane of focus. Focus at infinity has no
-// finite plane: the view plane is then put at |target − eye| with the window of that distance
-// (z_i = f), and the Camera's inverse focus distance is 0 (see toCamera).
+// Where toViewSpec puts the view plane: on the plane of focus, unless focus lies further than
+// kMaxViewPlaneMove × |target − eye| (or at infinity), which no well-conditioned view plane can
+// hold: then at |target − eye|, with the focus carried as 1/z_f (see toCamera).
+double viewPlaneDistance(const PhysicalCamera& camera);
+
+// The viewing description: view plane at viewPlaneDistance, window = the sensor seen back through
+// the lens centre on it (sensor × d / z_i).
 ViewSpec toViewSpec(const PhysicalCamera& camera);
 
 // The whole camera: view, aperture radius f/2N and focus.
 Camera toCamera(const PhysicalCamera& camera, std::string source);
+
+// A camera and, when it was given in the physical form, that description: what refocusing and the
+// viewer's lens panel change.
+struct SelectedCamera {
+  Camera camera;
+  std::optional<PhysicalCamera> physical;
+};
+
+// Refocuses at `distance` (+infinity allowed) along the one validation path a camera file's
+// focus_distance takes: a physical camera gets the new focus_distance, is validated (focus beyond
+// the focal length) and converted again, so its field of view follows z_i as a real lens's does;
+// other cameras go through refocused(Camera). Effects, calibrated size and source carry over.
+// Throws InputError naming `where`.
+SelectedCamera refocused(const SelectedCamera& camera, double distance, const std::string& where);
 
 // Aperture radius f / (2N) in world units (0 for a pinhole).
 double apertureRadius(const PhysicalCamera& camera);
@@ -56,8 +75,9 @@ double apertureRadius(const PhysicalCamera& camera);
 // Vertical field of view, 2·atan(sensor_h / (2·z_i)).
 double verticalFovRadians(const PhysicalCamera& camera);
 
-// The inverse of toViewSpec for a perspective ViewSpec whose PRP is over the window centre, given
-// the sensor size (which the viewing description does not hold). Near/far carry over.
-PhysicalCamera toPhysical(const ViewSpec& spec, glm::dvec2 sensorMm);
+// The inverse of toCamera for a perspective camera whose PRP is over the window centre, given
+// the sensor size (which the viewing description does not hold). Near/far carry over; the
+// target is the view plane's centre.
+PhysicalCamera toPhysical(const Camera& camera, glm::dvec2 sensorMm);
 
 }  // namespace lenslab

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -53,6 +54,15 @@ void validate(const ViewSpec& spec, std::string_view where) {
     if (prpN < 0.0) fail(where, cat("prp.n is ", prpN, "; the PRP must be on the viewer's side of the view plane (n > 0)"));
     if (!(spec.nearDistance > 0.0) || !std::isfinite(spec.nearDistance))
       fail(where, cat("near is ", spec.nearDistance, "; a perspective camera needs 0 < near < far"));
+    // Window corners (from the PRP's foot) up to kMaxWindowSlope × PRP.n: a half-angle of 89.9994°.
+    // Beyond, the projection is all but degenerate (every pixel looks along the view plane) and
+    // float clipping cannot keep a near plane that leaves anything in view.
+    const double reach = std::max({std::abs(w.umin - spec.prp.x), std::abs(w.umax - spec.prp.x), std::abs(w.vmin - spec.prp.y),
+                                   std::abs(w.vmax - spec.prp.y)});
+    if (!(reach <= kMaxWindowSlope * prpN))
+      fail(where, cat("the window reaches ", reach, " from the PRP's foot at PRP distance ", prpN,
+                      ", a field of view of nearly 180 degrees; keep it within ", kMaxWindowSlope,
+                      " times prp.n (move the PRP away from the view plane or shrink the window)"));
   } else {
     if (!(prpN > 0.0)) fail(where, cat("prp.n is ", prpN, "; a parallel projection needs n > 0 so that DOP = CW - PRP points into the scene"));
     if (!std::isfinite(spec.nearDistance))

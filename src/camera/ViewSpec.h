@@ -52,6 +52,10 @@ struct ViewBasis {
 
 ViewBasis viewBasis(const ViewSpec& spec);
 
+// The widest perspective lenslab draws: window corners up to this many times PRP.n from the
+// PRP's foot (a half-angle of 89.9994 degrees).
+constexpr double kMaxWindowSlope = 1e5;
+
 // Throws InputError naming `where` (a file or option) and the field when the description is
 // degenerate: non-finite values, zero VPN, VUP parallel to VPN, empty or inverted window, PRP on or
 // behind the view plane, near >= far, near <= 0 (perspective), infinite far (parallel).

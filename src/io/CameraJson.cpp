@@ -146,13 +146,11 @@ CameraFile parseLecture(const Reader& r) {
   const double aperture = apertureRadiusOf(r);
   CameraFile file;
   file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
-  // The view plane is the plane of focus; only infinity, which no view plane can be, is said apart.
-  if (r.has("focus_distance")) {
-    if (!std::isinf(r.distance("focus_distance")) || spec.projection != Projection::Perspective)
-      r.fail("focus_distance", "in the lecture form can only be \"infinity\" (perspective): the view plane is the "
-                               "plane of focus, so move the VRP/PRP to focus elsewhere");
-    file.camera.focusAtInfinity = true;
-  }
+  file.camera.nearFromScene = perspective && !r.has("near");
+  file.camera.farFromScene = !r.has("far");
+  // The view plane is the plane of focus unless focus_distance says otherwise: then the focus goes
+  // through refocused(), the same path as --focus-distance (infinity and far focus as 1/z_f).
+  if (r.has("focus_distance")) file.camera = refocused(file.camera, r.distance("focus_distance"), r.where() + ": focus_distance");
   return file;
 }
 
@@ -173,6 +171,8 @@ CameraFile parsePhysical(const Reader& r) {
   CameraFile file;
   file.physical = c;
   file.camera = toCamera(c, r.where());
+  file.camera.nearFromScene = !r.has("near");
+  file.camera.farFromScene = !r.has("far");
   validate(file.camera.view, r.where());
   return file;
 }
@@ -199,7 +199,8 @@ CameraFile parseIntrinsics(const Reader& r) {
   // foot of the PRP, so the principal point is (0, 0) of the window. OpenCV puts pixel centres on
   // integers with (0, 0) the centre of the top-left pixel; lenslab puts them at i + 0.5 with (0, 0)
   // the top-left corner: lenslab x = OpenCV x + 0.5. OpenCV's y runs down, the window's v up.
-  const double d = std::isinf(focus) ? toTarget : focus;
+  // As for the physical form: a focus beyond kMaxViewPlaneMove × |target − eye| is held as 1/z_f.
+  const double d = focus <= kMaxViewPlaneMove * toTarget ? focus : toTarget;
   ViewSpec spec;
   spec.vpn = glm::normalize(eye - target);
   spec.vup = up;
@@ -212,7 +213,9 @@ CameraFile parseIntrinsics(const Reader& r) {
   const double aperture = apertureRadiusOf(r);
   CameraFile file;
   file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
-  file.camera.focusAtInfinity = std::isinf(focus);
+  if (d != focus) file.camera.inverseFocusOffPlane = 1.0 / focus;
+  file.camera.nearFromScene = !r.has("near");
+  file.camera.farFromScene = !r.has("far");
   file.camera.calibratedSize = ImageSize{width, height};
   return file;
 }
@@ -352,7 +355,7 @@ std::string toCameraJson(const Camera& camera) {
   j["window"] = {s.window.umin, s.window.vmin, s.window.umax, s.window.vmax};
   j["near"] = s.nearDistance;
   if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
-  if (camera.focusAtInfinity) j["focus_distance"] = "infinity";
+  if (camera.inverseFocusOffPlane) j["focus_distance"] = camera.focusAtInfinity() ? json("infinity") : json(camera.focusDistance());
   if (std::isinf(s.farDistance)) j["far"] = "infinity";
   else j["far"] = s.farDistance;
   if (camera.calibratedSize) j["image_size"] = {camera.calibratedSize->widthPx, camera.calibratedSize->heightPx};

@@ -12,7 +12,8 @@
 //                                                   (perspective; required for parallel)
 //    "aperture_radius": r,                          default 0 (a pinhole); the view plane is the
 //                                                   plane of focus
-//    "focus_distance": "infinity"}                  only infinity (no view plane can be there)
+//    "focus_distance": d | "infinity"}              default: the view plane is the plane of focus;
+//                                                   else as --focus-distance (refocused())
 // Physical form — a photographer's description (world units are metres):
 //   {"eye": [x, y, z], "target": [x, y, z],         required
 //    "up": [x, y, z],                               default [0, 1, 0]

@@ -64,11 +64,13 @@ SelectedCamera selectCamera(const Scene& scene, const std::optional<fs::path>& c
         c.perspective ? viewSpecFromGltfPerspective(c.worldFromCamera, c.yfovRadians, aspect, c.znear, c.zfar, focus)
                       : viewSpecFromGltfOrthographic(c.worldFromCamera, c.xmag, c.ymag, c.znear, c.zfar, focus);
     selected.camera = cameraFocusedOnViewPlane(view, 0.0, cat("glTF camera 0", c.name.empty() ? "" : cat(" (", c.name, ")")));
+    selected.camera.farFromScene = std::isinf(c.zfar);  // glTF: an absent zfar is an infinite projection
     validate(selected.camera.view, cat(scene.source, ": ", selected.camera.source));
     return selected;
   }
   const PhysicalCamera c = autoFramingCamera(scene.bounds);
   selected.camera = toCamera(c, "automatic framing of the scene bounds");
+  selected.camera.nearFromScene = selected.camera.farFromScene = true;
   selected.physical = c;
   return selected;
 }

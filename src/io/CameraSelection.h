@@ -11,11 +11,6 @@
 
 namespace lenslab {
 
-struct SelectedCamera {
-  Camera camera;
-  std::optional<PhysicalCamera> physical;
-};
-
 // `imageAspect` is used for a glTF perspective camera that gives no aspectRatio (0 = use 3:2).
 SelectedCamera selectCamera(const Scene& scene, const std::optional<std::filesystem::path>& cameraFile,
                             double imageAspect);

@@ -53,21 +53,51 @@ glm::dmat2 Distortion::jacobian(glm::dvec2 undistorted) const {
   return glm::dmat2(glm::dvec2(dxdx, -dydx), glm::dvec2(-dxdy, dydy));
 }
 
-std::optional<glm::dvec2> Distortion::undistort(glm::dvec2 distorted, glm::dvec2 guess) const {
-  if (isZero()) return distorted;
+namespace {
+
+// Newton's method in double from `guess`; empty when it does not settle on the branch that
+// contains the centre (where the Jacobian's determinant is positive).
+std::optional<glm::dvec2> newton(const Distortion& d, glm::dvec2 distorted, glm::dvec2 guess) {
   glm::dvec2 x = guess;
   for (int i = 0; i < 64; ++i) {
-    const glm::dmat2 j = jacobian(x);
+    const glm::dmat2 j = d.jacobian(x);
     const double det = glm::determinant(j);
     if (!(std::abs(det) > 1e-300)) return std::nullopt;
-    const glm::dvec2 step = glm::inverse(j) * (distort(x) - distorted);
+    const glm::dvec2 step = glm::inverse(j) * (d.distort(x) - distorted);
     x -= step;
     if (!std::isfinite(x.x) || !std::isfinite(x.y)) return std::nullopt;
     if (glm::length(step) <= 1e-13 * std::max(1.0, glm::length(x))) {
-      // Only the branch that contains the centre is the lens's (beyond a fold lies its mirror).
-      if (!(glm::determinant(jacobian(x)) > 0.0)) return std::nullopt;
+      // Only the branch that contains the centre is the lens's: beyond a fold lies its mirror
+      // (det J < 0), beyond the radial factor's zero a point reflection (det J > 0 again, but the
+      // point lands on the other side of the centre), and a polynomial that turns back up has an
+      // outer branch (det J > 0, same side). The segment from the centre must not cross a fold.
+      for (int k = 1; k <= 8; ++k)
+        if (!(glm::determinant(d.jacobian(x * (k / 8.0))) > 0.0)) return std::nullopt;
+      if (!(glm::dot(d.distort(x), x) >= 0.0)) return std::nullopt;
       return x;
     }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<glm::dvec2> Distortion::undistort(glm::dvec2 distorted, glm::dvec2 guess) const {
+  if (isZero()) return distorted;
+  if (const auto x = newton(*this, distorted, guess)) return x;
+  // Strong distortion can throw Newton off its branch from a poor guess. Continuation from the
+  // centre then: the target slides from (0, 0) to `distorted` along the segment, each step solved
+  // from the last solution, so the path never leaves the branch that contains the centre and stops
+  // only at a real fold (a singular Jacobian on the way).
+  for (int steps = 8; steps <= 2048; steps *= 4) {
+    glm::dvec2 x(0.0);
+    bool reached = true;
+    for (int i = 1; i <= steps && reached; ++i) {
+      const auto next = newton(*this, distorted * (static_cast<double>(i) / steps), x);
+      reached = next.has_value();
+      if (next) x = *next;
+    }
+    if (reached) return x;
   }
   return std::nullopt;
 }

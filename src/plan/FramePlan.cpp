@@ -78,8 +78,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
         plan.cocMaxPx = std::max({plan.cocMaxPx, atNear, atFar});
         // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
         const double inverse = camera.inverseFocusDistance() + shift;
-        const double focus = camera.view.projection == Projection::Parallel ? camera.view.prp.z
-                           : inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+        const double focus = inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
         plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
       }
     }

@@ -31,7 +31,7 @@ PlanOptions toPlanOptions(const LensOptions& o) {
   return p;
 }
 
-Camera applyLensOptions(const Camera& camera, const LensOptions& o) {
+SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& o) {
   if (o.focusDistance.empty()) return camera;
   double d = 0.0;
   if (o.focusDistance == "infinity") {
@@ -45,8 +45,8 @@ Camera applyLensOptions(const Camera& camera, const LensOptions& o) {
     }
     if (used != o.focusDistance.size()) throw InputError(cat("--focus-distance ", o.focusDistance, ": give a distance or infinity"));
   }
-  Camera c = refocused(camera, d, "--focus-distance");
-  c.source += cat(", refocused to ", o.focusDistance);
+  SelectedCamera c = refocused(camera, d, "--focus-distance");
+  c.camera.source += cat(", refocused to ", o.focusDistance);
   return c;
 }
 

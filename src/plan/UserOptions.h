@@ -3,6 +3,7 @@
 // same), turned into the plan's options and the camera: aperture pattern, sample count, seed,
 // focus, background. No command-line library here: src/app registers these as options.
 #include "camera/Camera.h"
+#include "camera/PhysicalCamera.h"
 #include "plan/FramePlan.h"
 #include "scene/Scene.h"
 
@@ -26,8 +27,9 @@ struct LensOptions {
 // Throws InputError for a bad pattern or sample count.
 PlanOptions toPlanOptions(const LensOptions& options);
 
-// The focus distance applied to the camera.
-Camera applyLensOptions(const Camera& camera, const LensOptions& options);
+// The focus distance applied to the camera, along the same validation path as a camera file's
+// focus_distance (see refocused(SelectedCamera)).
+SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& options);
 
 // The background colour (linear RGB) where no surface is seen, replacing the scene's.
 void applyBackground(Scene& scene, const std::optional<glm::vec3>& background);

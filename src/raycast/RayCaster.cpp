@@ -3,6 +3,8 @@
 #include "camera/LensMap.h"
 
 #include "camera/Ray.h"
+#include "core/Error.h"
+#include "core/Text.h"
 #include "lens/AperturePattern.h"
 #include "raycast/TextureSampler.h"
 
@@ -58,9 +60,11 @@ struct RayCaster::Impl {
   };
   std::vector<Geometry> geometries;           // by Embree geometry ID
   std::vector<TextureSampler> samplers;       // by Scene texture index
-  // Embree works in float. Its geometry is stored relative to `origin` (the camera's lens centre,
-  // subtracted in double), so that a scene 1e7 from the world origin keeps the precision it has at
-  // the origin: float's relative error then applies to distances from the camera, not from (0,0,0).
+  // Embree works in float. Its geometry is stored relative to `origin` (the point of the scene's
+  // bounds nearest the camera's lens centre, subtracted in double), and each ray starts where it
+  // enters the bounds: a scene 1e7 from the world origin, or a telephoto's subject 1e9 from the
+  // camera, keeps the precision it has at the origin, float's relative error applying to sizes
+  // within the scene and not to its distance from (0,0,0) or from the camera.
   glm::dvec3 origin{std::numeric_limits<double>::quiet_NaN()};
   std::mutex rebaseMutex;
 
@@ -109,9 +113,34 @@ struct RayCaster::Impl {
     rtcCommitScene(rtcScene);
   }
 
-  // The origin the geometry is kept relative to for `camera`: its lens centre.
-  static glm::dvec3 originFor(const Camera& camera, ImageSize size) {
-    return lensRay(camera, {0.0, 0.0}, {0.5 * size.widthPx, 0.5 * size.heightPx}, size).origin;
+  // The origin the geometry is kept relative to for `camera`: the point of the bounds nearest its
+  // lens centre (the lens centre itself when it is inside them).
+  glm::dvec3 originFor(const Camera& camera, ImageSize size) const {
+    const glm::dvec3 lensCentre = lensRay(camera, {0.0, 0.0}, {0.5 * size.widthPx, 0.5 * size.heightPx}, size).origin;
+    if (!finite(lensCentre))
+      throw InputError(cat(camera.source, ": the camera's lens centre is not a finite point; check its VRP, VPN and PRP"));
+    return scene->bounds.empty() ? lensCentre : glm::clamp(lensCentre, scene->bounds.min, scene->bounds.max);
+  }
+
+  static bool finite(const glm::dvec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+
+  // [enter, exit] of `ray` (relative to `origin`) through the scene's bounds, widened by a margin
+  // so that a surface on a face of the box is never missed; empty (enter > exit) on a miss.
+  std::pair<double, double> boundsSpan(const Ray& ray) const {
+    const glm::dvec3 lo = scene->bounds.min - origin, hi = scene->bounds.max - origin;
+    const double pad = 1e-4 * glm::length(hi - lo) + 1e-6 * glm::length(glm::abs(lo) + glm::abs(hi)) + 1e-30;
+    double enter = -std::numeric_limits<double>::infinity(), exit = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      const double o = ray.origin[a], d = ray.direction[a];
+      if (d == 0.0) {
+        if (o < lo[a] - pad || o > hi[a] + pad) return {1.0, 0.0};
+        continue;
+      }
+      const double t0 = (lo[a] - pad - o) / d, t1 = (hi[a] + pad - o) / d;
+      enter = std::max(enter, std::min(t0, t1));
+      exit = std::min(exit, std::max(t0, t1));
+    }
+    return {enter, exit};
   }
 
   struct Hit {
@@ -132,19 +161,32 @@ struct RayCaster::Impl {
     Ray ray = lensRay(camera, lensOffset, pixel, size, inverseFocusShift);
     ray.origin -= origin;
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
+    // Checked here, not left to Embree's assertions: no input may reach an abort.
+    if (!finite(ray.origin) || !finite(ray.direction) || std::isnan(ray.tNear) || std::isnan(ray.tFar))
+      throw InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",",
+                           pixel.y, "; check its window, PRP and focus"));
+    // Embree's ray starts where this one enters the scene's bounds (in double), so that its float
+    // origin is within the scene's size of `origin` however far away the camera stands; a start
+    // before the PRP (a parallel projection's negative near) is fine there too.
+    const auto [enter, exit] = boundsSpan(ray);
+    const double tEnd = std::min(ray.tFar, exit);
+    if (!(enter <= exit) || !(std::max(ray.tNear, enter) <= tEnd)) return miss;
+    const double base = std::max(ray.tNear, enter);
+    const glm::dvec3 start = ray.origin + base * ray.direction;
     double tNear = ray.tNear;
     for (int layer = 0; layer < 64; ++layer) {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
       RTCRayHit rh{};
-      rh.ray.org_x = static_cast<float>(ray.origin.x);
-      rh.ray.org_y = static_cast<float>(ray.origin.y);
-      rh.ray.org_z = static_cast<float>(ray.origin.z);
+      rh.ray.org_x = static_cast<float>(start.x);
+      rh.ray.org_y = static_cast<float>(start.y);
+      rh.ray.org_z = static_cast<float>(start.z);
       rh.ray.dir_x = static_cast<float>(ray.direction.x);
       rh.ray.dir_y = static_cast<float>(ray.direction.y);
       rh.ray.dir_z = static_cast<float>(ray.direction.z);
-      rh.ray.tnear = static_cast<float>(tNear);
-      rh.ray.tfar = std::isinf(ray.tFar) ? std::numeric_limits<float>::infinity() : static_cast<float>(ray.tFar);
+      rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - base));
+      rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>(tEnd - base);
+      if (!(rh.ray.tnear <= rh.ray.tfar)) return miss;
       rh.ray.mask = 0xFFFFFFFFu;
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -165,8 +207,10 @@ struct RayCaster::Impl {
       // from the normal's side; a mirroring transform turns it around (glFrontFace(GL_CW)).
       bool front = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) < 0.0;
       if (g.mirrored) front = !front;
-      const double tHit = rh.ray.tfar;
-      const double skipTo = tHit * (1.0 + 1e-6) + 1e-9;
+      const double tHit = base + rh.ray.tfar;
+      // Past this surface, measured from Embree's start (a skip relative to the camera's distance
+      // would jump a telephoto's whole subject).
+      const double skipTo = base + rh.ray.tfar * (1.0 + 1e-6) + 1e-9;
       if (!front && !material.doubleSided) {
         tNear = skipTo;
         continue;
@@ -220,12 +264,12 @@ RayCaster::~RayCaster() = default;
 
 glm::vec3 RayCaster::trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size,
                            double footprintPx) const {
-  impl_->rebase(Impl::originFor(camera, size));
+  impl_->rebase(impl_->originFor(camera, size));
   return impl_->shadeAlong(camera, lensOffset, pixel, size, footprintPx).color;
 }
 
 double RayCaster::depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const {
-  impl_->rebase(Impl::originFor(camera, size));
+  impl_->rebase(impl_->originFor(camera, size));
   const Impl::Hit hit = impl_->shadeAlong(camera, {0.0, 0.0}, pixel, size, 1.0);
   if (std::isinf(hit.t)) return hit.t;
   return -glm::dot(hit.t * hit.ray.direction, viewBasis(camera.view).n);
@@ -235,7 +279,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
                         const std::function<void(int, int)>& progress) const {
   Image image(size.widthPx, size.heightPx);
   const int spp = std::max(1, options.samplesPerPixel);
-  impl_->rebase(Impl::originFor(camera, size));
+  impl_->rebase(impl_->originFor(camera, size));
   const Impl& m = *impl_;
   // The samples' pixel positions are stratified, one stratum of 1/√spp × 1/√spp pixels each: that
   // is the area a sample stands for, so its texture lookups filter over that and no more.

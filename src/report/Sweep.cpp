@@ -76,7 +76,8 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
   h.add(lighting, sizeof lighting);
   h.addString(toCameraJson(camera));
   h.add(&camera.apertureRadius, sizeof camera.apertureRadius);
-  h.add(&camera.focusAtInfinity, sizeof camera.focusAtInfinity);
+  const double inverseFocus = camera.inverseFocusDistance();
+  h.add(&inverseFocus, sizeof inverseFocus);
   const long long ints[] = {size.widthPx, size.heightPx, o.referenceSpp, o.seed};
   h.add(ints, sizeof ints);
   std::ostringstream s;

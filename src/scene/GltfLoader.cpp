@@ -34,6 +34,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Vertices beyond ±kMaxWorldCoordinate after their node transforms: one line naming the mesh.
+void refuseFarPositions(const Scene& scene) {
+  const auto within = [](const glm::dvec3& p) { return glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxWorldCoordinate))); };
+  if (scene.bounds.empty() || (within(scene.bounds.min) && within(scene.bounds.max))) return;
+  for (const Instance& instance : scene.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    for (const Vertex& v : mesh.vertices) {
+      const glm::dvec3 p(instance.worldFromModel * glm::dvec4(glm::dvec3(v.position), 1.0));
+      if (!within(p))
+        gltf::refuse("mesh ", instance.mesh, mesh.name.empty() ? "" : cat(" (", mesh.name, ")"), " has a vertex at (", p.x, ", ",
+                     p.y, ", ", p.z, ") in world space, beyond +-", kMaxWorldCoordinate,
+                     " where lenslab keeps its precision; move the scene nearer the origin or scale it down");
+    }
+  }
+}
+
 Scene load(const fs::path& file) {
   using namespace gltf;
   const std::string bytes = readFile(file);
@@ -42,19 +58,32 @@ Scene load(const fs::path& file) {
     refuse(bytes.empty() ? "the file is empty" : "not a binary glTF", ": a .glb starts with the magic \"glTF\"");
   std::string glb;
   std::string_view jsonText = bytes;
+  GlbChunks chunks;
   if (binary) {
-    const GlbChunks chunks = splitGlb(bytes);
+    chunks = splitGlb(bytes);
     jsonText = chunks.json;
     glb = glbForTinygltf(chunks, bytes.size());
   }
-  precheckJson(parseJson(jsonText), binary);
-  const tinygltf::Model model = parseModel(glb.empty() ? std::string_view(bytes) : std::string_view(glb), binary, file.parent_path());
+  nlohmann::json root = parseJson(jsonText);
+  precheckJson(root, binary);
+  std::string escapedJson;  // tinygltf-2.7: see escapePlusInFileUris
+  if (escapePlusInFileUris(root)) {
+    escapedJson = root.dump();
+    escapedJson.append((4 - escapedJson.size() % 4) % 4, ' ');  // a GLB chunk is 4-byte aligned
+    if (binary) {
+      chunks.json = escapedJson;
+      glb = glbForTinygltf(chunks, 0);  // 0: always rebuilt
+    }
+  }
+  const std::string_view input = !glb.empty() ? std::string_view(glb) : !escapedJson.empty() ? std::string_view(escapedJson) : std::string_view(bytes);
+  const tinygltf::Model model = parseModel(input, binary, file.parent_path());
   const AccessorReader reader(model);
   const std::vector<int> parents = checkModel(model, reader);
   Scene scene;
   scene.source = file.string();
   buildScene(model, reader, parents, scene);
   scene.bounds = computeBounds(scene);
+  refuseFarPositions(scene);
   return scene;
 }
 

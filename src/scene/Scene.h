@@ -75,6 +75,12 @@ struct Instance {
   glm::dmat4 worldFromModel{1.0};
 };
 
+// The largest world coordinate a scene may have. Both renderers carry positions in float
+// relative to a nearby origin (the raster: clipFromModel composed in double; the ray caster:
+// geometry relative to the scene's bounds), which holds to ~1e15; Embree loses triangles beyond
+// ~1e20 and float clip coordinates overflow near 1e38. Loaders refuse vertices beyond it.
+constexpr double kMaxWorldCoordinate = 1e15;
+
 struct Bounds {
   glm::dvec3 min{std::numeric_limits<double>::infinity()};
   glm::dvec3 max{-std::numeric_limits<double>::infinity()};

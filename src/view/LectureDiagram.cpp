@@ -69,7 +69,7 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
   for (int i = 0; i < count; ++i) {
     const LensSample& sample = samples[static_cast<std::size_t>(i) * samples.size() / static_cast<std::size_t>(count)];
     const glm::dvec3 from = lensPoint(sample);
-    const glm::dvec3 through = camera.focusAtInfinity ? centre + (from - prp) : centre;
+    const glm::dvec3 through = camera.focusAtInfinity() ? centre + (from - prp) : centre;
     add(from, from + k * (through - from) * (d > 0.0 ? 1.0 : 0.0), colors.ray);
   }
   return lines;

@@ -84,8 +84,8 @@ int runView(const ViewOptions& o) {
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0;
   const SelectedCamera selected = selectCamera(scene, cameraPath, requestedAspect);
-  EditableCamera camera{applyLensOptions(selected.camera, o.lens), selected.physical};
-  if (!o.lens.focusDistance.empty()) camera.physical.reset();  // refocused in the lecture form
+  const SelectedCamera refocusedCamera = applyLensOptions(selected, o.lens);
+  EditableCamera camera{refocusedCamera.camera, refocusedCamera.physical};
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.
   const std::optional<int> width = o.width || o.height || o.frames > 0 ? o.width : std::optional<int>(640);
   const ImageSize size = resolveImageSize(camera.camera, width, o.height);

@@ -161,7 +161,7 @@ void Viewer::handleInput() {
 
 void Viewer::restart() {
   model_.restart();  // checks the camera (back to the last valid one), plans, restarts the budget
-  renderer_.begin(model_.camera().camera, model_.plan(), model_.size());
+  renderer_.begin(model_.renderCamera(), model_.plan(), model_.size());
   resolved_ = nullptr;
   baselineValid_ = false;
   outsideDirty_ = true;
@@ -198,7 +198,7 @@ void Viewer::draw() {
   // The baseline is computed once per change (one pinhole pass and one gather pass).
   if (showBaseline_ && !baselineValid_) {
     if (!gather_) gather_ = std::make_unique<GatherDof>();
-    const Camera& camera = model_.camera().camera;
+    const Camera camera = model_.renderCamera();
     const Image image = gather_->apply(camera, renderer_.renderPinhole(camera, model_.size()), baselineTaps_);
     if (!baselineTexture_) baselineTexture_ = gl::ImageTexture(image.width, image.height);
     baselineTexture_.upload(image);

@@ -1,6 +1,7 @@
 // lenslab view: the rules behind the window (ViewerModel.h). Nothing here draws or reads input.
 #include "view/ViewerModel.h"
 
+#include "camera/DepthRange.h"
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "camera/ViewSpec.h"
@@ -111,8 +112,9 @@ void ViewerModel::editLecture(const Camera& camera) {
 
 void ViewerModel::refocus(double distance) {
   try {
-    cam_.camera = refocused(cam_.camera, distance, "focus distance");
-    if (cam_.physical) cam_.physical->focusDistance = distance;
+    const SelectedCamera r = refocused(SelectedCamera{cam_.camera, cam_.physical}, distance, "focus distance");
+    cam_.camera = r.camera;
+    cam_.physical = r.physical;
     dirty_ = true;
   } catch (const InputError& e) {
     reportError(e.what());
@@ -141,10 +143,9 @@ void ViewerModel::describeAsLens() {
   try {
     const ViewSpec& s = cam_.camera.view;
     const glm::dvec2 sensor(36.0, 36.0 * s.window.height() / s.window.width());
-    PhysicalCamera p = toPhysical(s, sensor);
+    PhysicalCamera p = toPhysical(cam_.camera, sensor);
     if (cam_.camera.apertureRadius > 0.0)
       p.fNumber = p.focalLengthMm * kMetresPerMillimetre / (2.0 * cam_.camera.apertureRadius);
-    if (cam_.camera.focusAtInfinity) p.focusDistance = std::numeric_limits<double>::infinity();
     editPhysical(p);
   } catch (const InputError& e) {
     reportError(e.what());
@@ -173,10 +174,13 @@ double ViewerModel::focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt) {
   Camera current = cam_.camera;
   current.source = baseSource_;
   const Camera focused = focusOnPixel(current, size_, pixel, depthAt);
-  // refocused() moves the view plane to the new plane of focus: PRP.n is the focus distance.
-  const double distance = focused.view.prp.z;
-  cam_.camera = focused;
-  if (cam_.physical) cam_.physical->focusDistance = distance;
+  const double distance = focused.focusDistance();
+  // The depth found, applied along the one refocusing path (a physical camera's field of view
+  // follows its image distance); the source names the click.
+  SelectedCamera r = refocused(SelectedCamera{cam_.camera, cam_.physical}, distance, "focus distance");
+  r.camera.source = focused.source;
+  cam_.camera = r.camera;
+  cam_.physical = r.physical;
   focusDistance_ = distance;
   dirty_ = true;
   return distance;
@@ -193,6 +197,8 @@ std::optional<double> ViewerModel::clickAt(glm::dvec2 pixel, const DepthAtPixel&
     return std::nullopt;
   }
 }
+
+Camera ViewerModel::renderCamera() const { return withDepthRangeFitted(cam_.camera, scene_.bounds); }
 
 void ViewerModel::restart() {
   try {

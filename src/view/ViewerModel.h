@@ -73,6 +73,8 @@ class ViewerModel {
               double frameBudgetMs, std::ostream& errorLog);
 
   const EditableCamera& camera() const { return cam_; }
+  // The camera as rendered: its open near/far fitted to the scene (camera/DepthRange.h).
+  Camera renderCamera() const;
   ImageSize size() const { return size_; }
   const PlanOptions& planOptions() const { return planOptions_; }
   const FramePlan& plan() const { return plan_; }  // of the last restart

@@ -44,7 +44,7 @@ void Viewer::sectionProgress() {
   if (showBaseline_) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing the post-process baseline (%d taps)", baselineTaps_);
   const Camera& c = model_.camera().camera;
   ImGui::Text("image %d x %d; focus distance %.4g", model_.size().widthPx, model_.size().heightPx,
-              c.focusAtInfinity ? std::numeric_limits<double>::infinity() : c.view.prp.z);
+              c.focusDistance());
 }
 
 void Viewer::sectionLecture() {
@@ -57,7 +57,7 @@ void Viewer::sectionLecture() {
   if (ImGui::Combo("projection", &projection, "perspective\0parallel\0")) {
     s.projection = projection == 0 ? Projection::Perspective : Projection::Parallel;
     if (s.projection == Projection::Parallel && std::isinf(s.farDistance)) s.farDistance = 1000.0 * s.prp.z;
-    if (s.projection == Projection::Parallel) c.focusAtInfinity = false;
+    if (s.projection == Projection::Parallel && c.focusAtInfinity()) c.inverseFocusOffPlane.reset();
     changed = true;
   }
   changed |= dragDouble3("VRP (world)", s.vrp, step);
@@ -75,7 +75,7 @@ void Viewer::sectionLecture() {
   changed |= dragDouble("aperture radius", c.apertureRadius, step * 0.01f, 0.0, 1e6);
   if (changed) model_.editLecture(c);  // checked at the restart: an invalid camera is rolled back
   // Focus distance: moves the view plane (the plane of focus), keeping the field of view.
-  double focus = model_.camera().camera.view.prp.z;
+  double focus = std::min(model_.camera().camera.focusDistance(), 1e9);
   if (dragDouble("focus distance", focus, step, 1e-4, 1e9)) model_.refocus(focus);
 }
 

@@ -75,7 +75,7 @@ QuadratureRule gaussLegendre01(int n) {
 
 PinholeProjection::PinholeProjection(const Camera& camera, ImageSize size, glm::dvec2 lensOffset) {
   const ViewSpec& view = camera.view;
-  if (view.projection != Projection::Perspective || camera.focusAtInfinity)
+  if (view.projection != Projection::Perspective || camera.inverseFocusOffPlane)
     throw std::invalid_argument("PinholeProjection: perspective cameras focused on their view plane only");
   const ViewBasis basis = viewBasis(view);
   u_ = basis.u;

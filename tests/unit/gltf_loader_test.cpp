@@ -535,6 +535,15 @@ class GltfBuilder {
     return file;
   }
 
+  // The buffer in a file `binName` beside the .gltf, its URI `uri` (as written in the JSON).
+  fs::path writeGltfWithExternalBuffer(const fs::path& file, const std::string& binName, const std::string& uri) {
+    json g = gltf;
+    g["buffers"] = {{{"byteLength", bin_.size()}, {"uri", uri}}};
+    std::ofstream(file.parent_path() / binName, std::ios::binary) << bin_;
+    std::ofstream(file, std::ios::binary) << g.dump();
+    return file;
+  }
+
   // A GLB with the JSON, the BIN chunk, then `extra` chunks of other types.
   std::string glb(const std::vector<std::pair<std::uint32_t, std::string>>& extra = {}) const {
     json g = gltf;
@@ -637,6 +646,39 @@ TEST_F(GltfWritten, GlbIsRecognisedByMagicAndUnknownChunksAreIgnored) {
   const Scene renamed = loadGltf(writeBytes("binary.gltf", b.glb()));  // the magic decides, not the name
   EXPECT_EQ(renamed.triangleCount(), 2u);
   EXPECT_THROW(loadGltf(writeBytes("text.glb", square().gltf.dump())), InputError);
+}
+
+// In a URI path only %XX is an escape: "a+b.bin" names a file with a plus sign (tinygltf 2.7
+// alone would look for "a b.bin"); "%2B" is a plus too, and "%20" a space.
+TEST_F(GltfWritten, PlusInABufferUriIsAPlus) {
+  GltfBuilder b = square();
+  EXPECT_EQ(loadGltf(b.writeGltfWithExternalBuffer(dir_ / "plus.gltf", "a+b.bin", "a+b.bin")).triangleCount(), 2u);
+  EXPECT_EQ(loadGltf(b.writeGltfWithExternalBuffer(dir_ / "escaped.gltf", "c+d.bin", "c%2Bd.bin")).triangleCount(), 2u);
+  EXPECT_EQ(loadGltf(b.writeGltfWithExternalBuffer(dir_ / "space.gltf", "e f.bin", "e%20f.bin")).triangleCount(), 2u);
+  fs::remove(dir_ / "a+b.bin");
+  std::ofstream(dir_ / "a b.bin", std::ios::binary) << "not this one";
+  EXPECT_THROW(loadGltf(dir_ / "plus.gltf"), InputError);  // looks for a+b.bin, which is gone
+}
+
+// Positions are refused beyond ±kMaxWorldCoordinate (after the node transforms), in one line
+// naming the mesh; a vertex at 1e38 drew part of its triangle in the raster and nothing in Embree.
+TEST_F(GltfWritten, PositionsBeyondTheBoundAreRefused) {
+  for (const double x : {1e16, 1e38}) {
+    GltfBuilder b;
+    const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {static_cast<float>(x), 1, 0}});
+    b.drawnMesh({{"attributes", {{"POSITION", p}}}});
+    const std::string m = refusal(b);
+    EXPECT_TRUE(contains(m, "mesh 0") && contains(m, "beyond +-1e+15")) << m;
+  }
+  // A node translation carries an in-range mesh out of range too.
+  GltfBuilder b = square();
+  b.gltf["nodes"][0]["translation"] = {0.0, 2e15, 0.0};
+  EXPECT_TRUE(contains(refusal(b), "in world space")) << b.gltf.dump();
+  // At the bound it loads.
+  GltfBuilder edge;
+  const int p = edge.positions({{0, 0, 0}, {1, 0, 0}, {1e15f, 1, 0}});
+  edge.drawnMesh({{"attributes", {{"POSITION", p}}}});
+  EXPECT_EQ(load(edge).triangleCount(), 1u);
 }
 
 TEST_F(GltfWritten, TruncatedGlbIsRefused) {

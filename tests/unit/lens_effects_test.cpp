@@ -325,12 +325,72 @@ TEST(LectureForm, FocusAtInfinityIsReadAndSaved) {
   const std::string lecture = R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
                                   "aperture_radius": 0.01, "focus_distance": "infinity"})";
   const CameraFile file = parseCameraJson(lecture, "inf.json");
-  EXPECT_TRUE(file.camera.focusAtInfinity);
+  EXPECT_TRUE(file.camera.focusAtInfinity());
   EXPECT_EQ(file.camera.inverseFocusDistance(), 0.0);
-  EXPECT_TRUE(parseCameraJson(toCameraJson(file.camera), "again.json").camera.focusAtInfinity);
-  // A finite focus distance would contradict the view plane, which is the plane of focus.
+  EXPECT_TRUE(parseCameraJson(toCameraJson(file.camera), "again.json").camera.focusAtInfinity());
+  // A finite focus distance refocuses as --focus-distance does: the view plane moves there.
+  EXPECT_DOUBLE_EQ(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1],
+                                  "focus_distance": 3})", "f.json").camera.view.prp.z, 3.0);
   EXPECT_THROW(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1],
-                                  "focus_distance": 3})", "f.json"), InputError);
+                                  "focus_distance": -3})", "f.json"), InputError);
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Strong distortion that folds only beyond the image ({"k1": 2, "k2": -2}: r(1 + 2r² − 2r⁴) turns
+// at r ≈ 0.858) was refused with "Newton's method did not converge": Newton from the distorted
+// position overshot off the lens's branch. The inverse now continues from the centre when Newton
+// alone fails, so it finds the true position wherever the branch reaches.
+TEST(DistortionInverse, StrongDistortionFoldingBeyondTheImageIsInvertedOnItsBranch) {
+  Distortion d;
+  d.k1 = 2.0;
+  d.k2 = -2.0;
+  int newtonAloneFails = 0;
+  for (double r = 0.05; r < 0.85; r += 0.05) {
+    for (const double angle : {0.3, 1.9, 4.0}) {
+      const glm::dvec2 truth = r * glm::dvec2(std::cos(angle), std::sin(angle));
+      const glm::dvec2 distorted = d.distort(truth);
+      const auto back = d.undistort(distorted, distorted);
+      ASSERT_TRUE(back.has_value()) << "r = " << r;
+      EXPECT_NEAR(glm::length(*back - truth), 0.0, 1e-10) << "r = " << r;
+      // (How often the old method would have given up from this guess.)
+      Distortion copy = d;
+      glm::dvec2 x = distorted;
+      bool converged = false;
+      for (int i = 0; i < 64 && !converged; ++i) {
+        const glm::dvec2 step = glm::inverse(copy.jacobian(x)) * (copy.distort(x) - distorted);
+        x -= step;
+        converged = glm::length(step) <= 1e-13 && glm::determinant(copy.jacobian(x)) > 0.0;
+      }
+      newtonAloneFails += !converged || glm::length(x - truth) > 1e-6;
+    }
+  }
+  EXPECT_GT(newtonAloneFails, 0) << "the case no longer needs the continuation; pick a stronger one";
+  // A camera whose image ends before the fold is accepted, and its tables build.
+  Camera camera;
+  camera.view.vrp = {0, 0, -1};
+  camera.view.vpn = {0, 0, 1};
+  camera.view.prp = {0, 0, 1};
+  camera.view.window = {-0.5, -0.35, 0.5, 0.35};  // corner radius 0.61 < the fold's distorted 0.91
+  camera.effects.distortion = d;
+  camera.source = "k1 2 k2 -2";
+  EXPECT_NO_THROW(validateLensEffects(camera, "test"));
+  EXPECT_NO_THROW(overscanFor(camera, {64, 45}));
+}
+
+// Beyond the fold no point of the lens's branch lands: the inverse says so (empty), and the
+// tables' error names the camera and what to change, as an InputError (not a runtime_error).
+TEST(DistortionInverse, BeyondTheFoldIsEmptyNotAMirror) {
+  Distortion d;
+  d.k1 = -0.9;  // r(1 − 0.9r²) peaks at r = 1/√2.7, distorted radius 0.406
+  EXPECT_FALSE(d.undistort({0.45, 0.0}, {0.45, 0.0}).has_value());
+  const auto inside = d.undistort({0.3, 0.0}, {0.3, 0.0});
+  ASSERT_TRUE(inside.has_value());
+  EXPECT_NEAR(d.distort(*inside).x, 0.3, 1e-12);
 }
 
 }  // namespace

@@ -158,7 +158,7 @@ TEST(ViewThroughLens, FocusAtInfinityMovesTheWindowWithThePrp) {
   p.fNumber = 2.0;
   p.focusDistance = std::numeric_limits<double>::infinity();
   const Camera cam = toCamera(p, "test");
-  ASSERT_TRUE(cam.focusAtInfinity);
+  ASSERT_TRUE(cam.focusAtInfinity());
   // A star (a very distant point) lands on the same window point from every aperture point.
   const glm::dvec3 star(1e9, 2e9, -1e10);
   // Compared in NDC (where the point lands in the image), since the window itself moves.

@@ -48,7 +48,7 @@ TEST(PhysicalCamera, FocusAtInfinityGivesTheLecturesFieldOfView) {
 TEST(PhysicalCamera, RoundTripsThroughTheLectureForm) {
   const PhysicalCamera c = fiftyMillimetre();
   const ViewSpec s = toViewSpec(c);
-  const PhysicalCamera back = toPhysical(s, c.sensorMm);
+  const PhysicalCamera back = toPhysical(toCamera(c, "test"), c.sensorMm);
   EXPECT_NEAR(back.focalLengthMm, c.focalLengthMm, 1e-9);
   EXPECT_NEAR(back.focusDistance, c.focusDistance, 1e-12);
   EXPECT_NEAR(glm::length(back.eye - c.eye), 0.0, 1e-12);

@@ -127,6 +127,8 @@ TEST(ViewerModel, EveryChangeRestartsTheAccumulation) {
   Fixture f;
   f.model.budget().measured(2, 8.0, true);
   const DepthAtPixel atThree = [](const Camera&, ImageSize, int, int) { return 3.0; };
+  ASSERT_TRUE(f.model.camera().physical);
+  const PhysicalCamera lens = *f.model.camera().physical;  // "lecture edit" drops the physical form
   const std::vector<std::pair<const char*, std::function<void(ViewerModel&)>>> changes = {
       {"orbit", [](ViewerModel& m) { m.orbit(0.1, -0.05); }},
       {"look around", [](ViewerModel& m) { m.lookAround(-0.1, 0.05); }},
@@ -134,7 +136,7 @@ TEST(ViewerModel, EveryChangeRestartsTheAccumulation) {
       {"wheel", [](ViewerModel& m) { m.moveForward(2.0); }},
       {"lecture edit", [](ViewerModel& m) { m.editLecture(m.camera().camera); }},
       {"refocus", [](ViewerModel& m) { m.refocus(2.5); }},
-      {"physical edit", [](ViewerModel& m) { m.editPhysical(*m.camera().physical); }},
+      {"physical edit", [&](ViewerModel& m) { m.editPhysical(lens); }},
       {"lens effects", [](ViewerModel& m) {
          LensEffects e;
          e.distortion.k1 = -0.05;

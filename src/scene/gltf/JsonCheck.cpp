@@ -112,4 +112,21 @@ void precheckJson(const nlohmann::json& root, bool binary) {
       refuse("node ", i, " has both a matrix and translation/rotation/scale; glTF allows one or the other");
 }
 
+bool escapePlusInFileUris(nlohmann::json& root) {
+  bool changed = false;
+  for (const char* list : {"buffers", "images"}) {
+    if (!root.is_object() || !root.contains(list) || !root[list].is_array()) continue;
+    for (nlohmann::json& item : root[list]) {
+      if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
+      std::string uri = item["uri"].get<std::string>();
+      if (uri.starts_with("data:") || uri.find('+') == std::string::npos) continue;
+      std::string escaped;
+      for (const char c : uri) escaped += c == '+' ? std::string("%2B") : std::string(1, c);
+      item["uri"] = escaped;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
 }  // namespace lenslab::gltf

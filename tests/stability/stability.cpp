@@ -1,0 +1,514 @@
+// lenslab_stability: the numerical-stability table. Every row renders a stiff or extreme case
+// through the same paths a user's command takes (camera JSON → refocus → depth range fitted to the
+// scene → raster and/or ray caster), measures it against an answer that does not come from the
+// renderer under test (the same scene nearer the origin, infinity focus, a pinhole, an exact
+// constant, the other renderer, a parallel projection), and checks the row's bound.
+//
+//   lenslab_stability              the default rows (about 20 s on 2 cores); exit 1 if a bound fails
+//   lenslab_stability --long       also the slow rows (the largest image the tiles allow)
+//   lenslab_stability --markdown F writes the table as Markdown to F (README's "Numerical stability"
+//                                  section is this output: tools/update-stability-table.sh)
+//   lenslab_stability --check-readme README.md
+//                                  also fails when a row of README's table differs from this run
+//
+// Measured figures are printed to 3 significant digits so that the table is the same from run to
+// run on one machine (llvmpipe and the seeded ray caster are deterministic).
+#include "camera/Camera.h"
+#include "camera/DepthRange.h"
+#include "camera/LensMap.h"
+#include "camera/PhysicalCamera.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "gl/GlContext.h"
+#include "io/CameraJson.h"
+#include "io/ImageCompare.h"
+#include "io/ImageFile.h"
+#include "plan/FramePlan.h"
+#include "plan/UserOptions.h"
+#include "raycast/RayCaster.h"
+#include "render/Renderer.h"
+#include "scene/GltfLoader.h"
+#include "scene/ProceduralScenes.h"
+#include "scene/Scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace lenslab {
+namespace {
+namespace fs = std::filesystem;
+
+struct Row {
+  std::string group;
+  std::string input;     // the case
+  std::string bound;     // what must hold
+  std::string measured;  // what did
+  bool ok = false;
+};
+
+std::vector<Row> rows;
+
+void record(const std::string& group, const std::string& input, const std::string& bound, const std::string& measured,
+            bool ok) {
+  rows.push_back({group, input, bound, measured, ok});
+  std::cout << (ok ? "[ ok   ] " : "[ FAIL ] ") << group << " | " << input << " | " << bound << " | " << measured
+            << std::endl;
+}
+
+// 3 significant digits, as the table shows them.
+std::string sig(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (std::isnan(v)) return "NaN";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+std::string dB(double v) {
+  if (std::isinf(v)) return "identical";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f dB", v);
+  return b;
+}
+
+bool finite(const Image& image) {
+  for (const float v : image.rgba)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+// Nothing drawn: every pixel the same.
+bool blank(const Image& image) {
+  for (std::size_t i = 4; i < image.rgba.size(); ++i)
+    if (image.rgba[i] != image.rgba[i % 4]) return false;
+  return true;
+}
+
+double psnr(const Image& a, const Image& b) { return compareImages(a, b, 0.0).psnrDb; }
+
+const fs::path kAssets = LENSLAB_STABILITY_ASSET_DIR;
+
+// As `lenslab render`/`raycast` take a camera: the depth range fitted to the scene.
+Camera prepared(const Camera& camera, const Scene& scene) { return withDepthRangeFitted(camera, scene.bounds); }
+
+Image raster(const Scene& scene, const Camera& camera, ImageSize size, int views, std::uint32_t seed = 3) {
+  const Camera c = prepared(camera, scene);
+  const FramePlan plan = makeFramePlan(scene, c, size, PlanOptions{AperturePattern::Concentric, views, views, seed});
+  Renderer renderer(scene);
+  return renderer.render(c, plan, size);
+}
+
+Image raycast(const Scene& scene, const Camera& camera, ImageSize size, int spp, std::uint32_t seed = 3) {
+  return RayCaster(scene).render(prepared(camera, scene), size, RaycastOptions{spp, seed});
+}
+
+// The message of the InputError that `f` throws; empty when it throws none.
+std::string refusal(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+bool oneLine(const std::string& message) { return !message.empty() && message.find('\n') == std::string::npos; }
+
+std::string shortened(const std::string& message) {
+  return message.size() <= 90 ? message : message.substr(0, 87) + "...";
+}
+
+Camera physical(const std::string& extra) {
+  return parseCameraJson(cat(R"({"eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 35)", extra, "}"),
+                         "stability camera")
+      .camera;
+}
+
+Scene moved(const Scene& scene, const glm::dvec3& offset) {
+  Scene s = scene;
+  for (Instance& instance : s.instances) instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
+  s.bounds = computeBounds(s);
+  return s;
+}
+
+// ---- the cases ----
+
+void depthRange() {
+  // Two unlit quads facing the camera, the nearer (red) 1e-5·z in front of the farther (green),
+  // both filling the view; near 1e-5, far at infinity, given (not fitted).
+  double worstRaster = 1.0, worstRaycast = 1.0;
+  for (const double z : {1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6}) {
+    Scene scene;
+    addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -z)), z, z, {1, 0, 0});
+    addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -z * (1.0 + 1e-5))), z, z, {0, 1, 0});
+    scene.bounds = computeBounds(scene);
+    const Camera camera = parseCameraJson(
+        cat(R"({"vrp": [0, 0, -1], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-0.5, -0.5, 0.5, 0.5], "near": 1e-5, "far": "infinity"})"),
+        "depth camera").camera;
+    for (const bool cast : {false, true}) {
+      const Image image = cast ? raycast(scene, camera, {16, 16}, 1) : raster(scene, camera, {16, 16}, 1);
+      int red = 0;
+      for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) red += image.at(x, y).r > 0.5f && image.at(x, y).g < 0.5f;
+      (cast ? worstRaycast : worstRaster) = std::min(cast ? worstRaycast : worstRaster, red / 256.0);
+    }
+  }
+  record("depth range", "near 1e-5, far infinity; two surfaces 1e-5·z apart, z = 1e-4 … 1e6",
+         "the nearer surface covers 100 % of pixels (raster, ray cast)",
+         cat(sig(100 * worstRaster), " %, ", sig(100 * worstRaycast), " % at the worst depth"),
+         worstRaster == 1.0 && worstRaycast == 1.0);
+}
+
+void distanceFromOrigin(const Scene& rowsScene) {
+  const Camera camera = physical(R"(, "focus_distance": 4)");
+  const ImageSize size{96, 64};
+  const Image rasterAtOrigin = raster(rowsScene, camera, size, 4);
+  const Image castAtOrigin = raycast(rowsScene, camera, size, 4);
+  for (const double distance : {1e3, 1e4, 1e5, 1e6, 1e7, 1e8}) {
+    const glm::dvec3 offset(distance, 0.25 * distance, -0.5 * distance);
+    const Scene far = moved(rowsScene, offset);
+    Camera c = camera;
+    c.view.vrp += offset;
+    const double r = psnr(raster(far, c, size, 4), rasterAtOrigin);
+    const double k = psnr(raycast(far, c, size, 4), castAtOrigin);
+    record("distance from the origin", cat("rows and its camera moved by ", sig(distance)),
+           "each renderer vs itself at the origin ≥ 50 dB", cat("raster ", dB(r), ", ray cast ", dB(k)), r >= 50.0 && k >= 50.0);
+  }
+}
+
+void focus(const Scene& rowsScene) {
+  const ImageSize size{96, 64};
+  const double f = 0.035;
+  const Camera infinity = physical(R"(, "f_number": 2.8, "focus_distance": "infinity")");
+  const Image rasterInf = raster(rowsScene, infinity, size, 16);
+  const Image castInf = raycast(rowsScene, infinity, size, 16);
+  for (const double z : {1e6, 1e15, 1e300}) {
+    const Camera c = physical(cat(R"(, "f_number": 2.8, "focus_distance": )", z));
+    const double r = psnr(raster(rowsScene, c, size, 16), rasterInf);
+    const double k = psnr(raycast(rowsScene, c, size, 16), castInf);
+    const double bound = z >= 1e15 ? 60.0 : 40.0;
+    record("focus distance", cat("f/2.8 focused at ", sig(z), " (the same samples as at infinity)"),
+           cat("vs focus at infinity ≥ ", sig(bound), " dB"), cat("raster ", dB(r), ", ray cast ", dB(k)), r >= bound && k >= bound);
+  }
+  // Just beyond the focal length the image distance is huge and the field of view tiny; the
+  // renderers must still agree (and give finite numbers).
+  for (const double z : {f * (1.0 + 1e-6), f * 1.01, 0.5}) {
+    const Camera c = physical(cat(R"(, "f_number": 2.8, "focus_distance": )", z));
+    const Image a = raster(rowsScene, c, size, 64), b = raycast(rowsScene, c, size, 64);
+    const double p = psnr(a, b);
+    record("focus distance", cat("f/2.8 focused at ", sig(z / f), " f"), "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
+           cat(finite(a) && finite(b) ? "finite, " : "NOT FINITE, ", dB(p)), finite(a) && finite(b) && p >= 25.0);
+  }
+  for (const double z : {f, 0.5 * f}) {
+    const std::string m = refusal([&] { physical(cat(R"(, "f_number": 2.8, "focus_distance": )", z)); });
+    record("focus distance", cat("focused at ", sig(z / f), " f (no real image)"), "refused in one line", shortened(m), oneLine(m));
+  }
+}
+
+void fNumber(const Scene& rowsScene) {
+  const ImageSize size{96, 64};
+  const Image pinhole = raster(rowsScene, physical(R"(, "focus_distance": 2)"), size, 64);
+  for (const double n : {0.5, 2.8, 1000.0}) {
+    const Camera c = physical(cat(R"(, "focus_distance": 2, "f_number": )", n));
+    const Image a = raster(rowsScene, c, size, 64), b = raycast(rowsScene, c, size, 64);
+    const double p = psnr(a, b);
+    if (n == 1000.0) {
+      const double q = psnr(a, pinhole);
+      record("f-number", "f/1000", "vs the pinhole ≥ 45 dB; raster vs ray cast ≥ 25 dB", cat(dB(q), "; ", dB(p)), q >= 45.0 && p >= 25.0);
+    } else {
+      record("f-number", cat("f/", sig(n)), "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
+             cat(finite(a) && finite(b) ? "finite, " : "NOT FINITE, ", dB(p)), finite(a) && finite(b) && p >= 25.0);
+    }
+  }
+}
+
+void sampleCounts() {
+  // A constant unlit colour fills the view: every accumulated view adds the same value, so the
+  // mean must be that value exactly but for float rounding.
+  Scene scene;
+  const glm::vec3 colour(0.37f, 0.5f, 0.81f);
+  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -2)), 10, 10, colour);
+  scene.bounds = computeBounds(scene);
+  Camera c = parseCameraJson(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-0.5, -0.5, 0.5, 0.5], "aperture_radius": 0.01})",
+                             "constant camera").camera;
+  const std::vector<int> counts = {1024, 4096, 65536};
+  for (const int n : counts) {
+    const Image image = raster(scene, c, {8, 8}, n);
+    double worst = 0.0;
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x)
+        for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(static_cast<double>(image.at(x, y)[ch]) - colour[ch]));
+    record("sample count", cat(n, " accumulated views of a constant colour"), "|mean − exact| ≤ 1e-4", sig(worst), worst <= 1e-4);
+  }
+}
+
+void distortion(const Scene& rowsScene) {
+  const ImageSize size{96, 64};
+  // The window's farthest corner at normalised (distorted) radius c; a pure k1 < 0 folds where
+  // d(r(1 + k1 r²))/dr = 0, r = 1/√(−3k1), whose distorted radius is (2/3)·r. The fold enters the
+  // image when (2/3)/√(−3k1) < c, i.e. for k1 < −(2/(3c))²/3.
+  const Camera base = physical(R"(, "focus_distance": 4)");
+  const double c = normalisedWindow(base.view).cornerRadius();
+  const double k1Fold = -std::pow(2.0 / (3.0 * c), 2.0) / 3.0;
+  for (const double k1 : {0.99 * k1Fold, -0.2, 0.5}) {
+    const Camera cam = physical(cat(R"(, "focus_distance": 4, "distortion": {"k1": )", k1, "}"));
+    const Image a = raster(rowsScene, cam, size, 16), b = raycast(rowsScene, cam, size, 16);
+    const double p = psnr(a, b);
+    record("distortion", cat("k1 = ", sig(k1), k1 == 0.99 * k1Fold ? " (fold at 99 % of the corner)" : ""),
+           "raster (16 views) vs ray cast (16 spp) ≥ 30 dB", dB(p), finite(a) && finite(b) && p >= 30.0);
+  }
+  {
+    const Camera cam = physical(R"(, "focus_distance": 4, "distortion": {"k1": 2, "k2": -2})");
+    const Image a = raster(rowsScene, cam, size, 16), b = raycast(rowsScene, cam, size, 16);
+    const double p = psnr(a, b);
+    record("distortion", "k1 = 2, k2 = −2 (folds only beyond the image)", "raster vs ray cast ≥ 30 dB", dB(p),
+           finite(a) && finite(b) && p >= 30.0);
+  }
+  const std::string m = refusal([&] { physical(cat(R"(, "focus_distance": 4, "distortion": {"k1": )", 1.01 * k1Fold, "}")); });
+  record("distortion", cat("k1 = ", sig(1.01 * k1Fold), " (the fold 1 % inside the corner)"), "refused in one line", shortened(m),
+         oneLine(m));
+}
+
+// A lecture-form camera as JSON.
+Camera lecture(const std::string& body) { return parseCameraJson("{" + body + "}", "stability lecture camera").camera; }
+
+// Renders `camera` with both renderers; a refusal in one line also counts as handled.
+struct References {
+  Image raster, raycast;
+};
+
+void bothOrRefused(const std::string& group, const std::string& input, const Scene& scene, const std::function<Camera()>& make,
+                   double minimumDb, const References* reference = nullptr, double referenceDb = 60.0) {
+  Camera camera;
+  const std::string m = refusal([&] { camera = make(); });
+  if (!m.empty()) {
+    record(group, input, cat("refused in one line, or raster vs ray cast ≥ ", sig(minimumDb), " dB"), cat("refused: ", shortened(m)),
+           oneLine(m));
+    return;
+  }
+  const ImageSize size{96, 64};
+  Image a, b;
+  const std::string r = refusal([&] {
+    a = raster(scene, camera, size, 16);
+    b = raycast(scene, camera, size, 16);
+  });
+  if (!r.empty()) {
+    record(group, input, "refused in one line, or rendered", cat("refused at render: ", shortened(r)), oneLine(r));
+    return;
+  }
+  if (const char* dir = std::getenv("LENSLAB_STABILITY_IMAGES")) {
+    writeImage(fs::path(dir) / cat(rows.size(), "-raster.png"), a);
+    writeImage(fs::path(dir) / cat(rows.size(), "-raycast.png"), b);
+  }
+  const double p = psnr(a, b);
+  std::string measured = cat(finite(a) && finite(b) ? "" : "NOT FINITE, ", blank(a) || blank(b) ? "BLANK, " : "",
+                             "raster vs ray cast ", dB(p));
+  bool ok = finite(a) && finite(b) && !blank(a) && !blank(b) && p >= minimumDb;
+  if (reference) {
+    const double q = psnr(a, reference->raster), s = psnr(b, reference->raycast);
+    measured += cat("; vs reference: raster ", dB(q), ", ray cast ", dB(s));
+    ok = ok && q >= referenceDb && s >= referenceDb;
+  }
+  record(group, input,
+         cat("raster vs ray cast ≥ ", sig(minimumDb), " dB", reference ? cat("; each vs its reference ≥ ", sig(referenceDb), " dB") : ""),
+         measured, ok);
+}
+
+void degenerateCameras(const Scene& rowsScene) {
+  const std::string g = "near-degenerate camera";
+  for (const double angle : {1e-6, 1e-9}) {
+    bothOrRefused(g, cat("VUP ", sig(angle), " rad from VPN"), rowsScene, [&] {
+      return lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0, 1], "vup": [0, )", std::sin(angle), ", ", std::cos(angle),
+                         R"(], "prp": [0, 0, 5], "window": [-1.5, -1, 1.5, 1], "near": 0.05)"));
+    }, 30.0);
+  }
+  // The window scaled with the PRP's distance: the same picture from the same point.
+  const auto scaled = [](double w) {
+    const double d = 5.0 * w / 3.0;  // window 3 wide at distance 5, scaled to w wide
+    return lecture(cat(R"("vrp": [0, 0.5, )", 3.0 - d, R"(], "vpn": [0, 0, 1], "prp": [0, 0, )", d, R"(], "window": [)", -0.5 * w, ", ",
+                       -w / 3.0, ", ", 0.5 * w, ", ", w / 3.0, R"(], "near": 0.05)"));
+  };
+  const References reference{raster(rowsScene, scaled(3.0), {96, 64}, 16), raycast(rowsScene, scaled(3.0), {96, 64}, 16)};
+  for (const double w : {1e-9, 1e-3, 1e3, 1e6})
+    bothOrRefused(g, cat("window ", sig(w), " wide (PRP distance scaled with it; reference 3 wide)"), rowsScene,
+                  [&] { return scaled(w); }, 30.0, &reference, 60.0);
+  for (const double n : {1e-9, 1e-4, 1e-3, 1e3, 1e9}) {
+    // A PRP n from the view plane through the middle of the rows: from 1e9 away a telephoto.
+    bothOrRefused(g, cat("PRP n = ", sig(n)), rowsScene, [&] {
+      return lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", n, R"(], "window": [-3, -2, 3, 2])"));
+    }, 30.0);
+  }
+  {
+    // At PRP n = 1e9 the projection is all but parallel: compare with the parallel projection.
+    const Camera parallel = lecture(R"("projection": "parallel", "vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, 1e9],
+                                       "window": [-3, -2, 3, 2], "near": 999999950, "far": 1000000050)");
+    const References ref{raster(rowsScene, parallel, {96, 64}, 16), raycast(rowsScene, parallel, {96, 64}, 16)};
+    bothOrRefused(g, "PRP n = 1e9 vs the parallel projection", rowsScene, [&] {
+      return lecture(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, 1e9], "window": [-3, -2, 3, 2])");
+    }, 30.0, &ref, 30.0);
+  }
+  // Oblique parallel: the DOP 89.99° from the view-plane normal.
+  bothOrRefused(g, "oblique parallel, DOP 89.99° from the normal", rowsScene, [&] {
+    // Tilted toward the floor, so that the nearly grazing rays meet it along a strip at z ≈ −2.
+    const double t = std::tan((90.0 - 0.01) * std::numbers::pi / 180.0);
+    return lecture(cat(R"("projection": "parallel", "vrp": [0, 0.5, -2], "vpn": [0, 0, 1], "prp": [0, )", 5.0 * t,
+                       R"(, 5], "window": [-3, -2, 3, 2], "near": -40, "far": 40)"));
+  }, 30.0);
+  bothOrRefused(g, "parallel with near = -1", rowsScene, [&] {
+    return lecture(R"("projection": "parallel", "vrp": [0, 0.5, 0.5], "vpn": [0, 0.3, 1], "prp": [0, 0, 1], "window": [-3, -2, 3, 2], "near": -1, "far": 60)");
+  }, 30.0);
+}
+
+void imageSizes(const Scene& rowsScene) {
+  const Camera camera = physical(R"(, "focus_distance": 4)");
+  const Image a = raster(rowsScene, camera, {1, 1}, 1024), b = raycast(rowsScene, camera, {1, 1}, 1024);
+  const double diff = compareImages(a, b, 0.0).maxAbs;
+  record("image size", "1 × 1", "raster (1024 views) vs ray cast (1024 spp) within 0.01", sig(diff), finite(a) && finite(b) && diff <= 0.01);
+}
+
+// A glTF file with one triangle whose apex is at (0, y, −5): in view it is a band 4 wide, its sides
+// all but vertical however far the apex is.
+fs::path triangleFile(const fs::path& dir, double y) {
+  const float v[9] = {-2.0f, -2.0f, -5.0f, 2.0f, -2.0f, -5.0f, 0.0f, static_cast<float>(y), -5.0f};
+  std::string bytes(reinterpret_cast<const char*>(v), sizeof v);
+  static const char* kB64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string b64;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned n = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (i + 1 < bytes.size() ? static_cast<unsigned char>(bytes[i + 1]) << 8 : 0) |
+                       (i + 2 < bytes.size() ? static_cast<unsigned char>(bytes[i + 2]) : 0);
+    b64 += kB64[(n >> 18) & 63];
+    b64 += kB64[(n >> 12) & 63];
+    b64 += i + 1 < bytes.size() ? kB64[(n >> 6) & 63] : '=';
+    b64 += i + 2 < bytes.size() ? kB64[n & 63] : '=';
+  }
+  const float lo[3] = {-2.0f, -2.0f, -5.0f}, hi[3] = {2.0f, v[7], -5.0f};
+  const fs::path file = dir / cat("triangle-", sig(y), ".gltf");
+  std::ofstream(file) << cat(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [)", lo[0], ", ", lo[1], ", ", lo[2],
+                             "], \"max\": [", hi[0], ", ", hi[1], ", ", hi[2], R"(]}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)", b64, R"("}]})");
+  return file;
+}
+
+void vertexValues() {
+  const fs::path dir = fs::temp_directory_path() / cat("lenslab-stability-", ::getpid());
+  fs::create_directories(dir);
+  const Camera camera = lecture(R"("vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1])");
+  for (const double x : {1e6, 1e12, 1e15}) {
+    const Scene scene = loadGltf(triangleFile(dir, x));
+    const Image a = raster(scene, camera, {64, 64}, 16), b = raycast(scene, camera, {64, 64}, 16);
+    const double p = psnr(a, b);
+    record("vertex values", cat("a triangle with its apex at y = ", sig(x)), "raster vs ray cast ≥ 30 dB",
+           cat(blank(a) || blank(b) ? "BLANK, " : "", dB(p)), finite(a) && finite(b) && !blank(a) && !blank(b) && p >= 30.0);
+  }
+  for (const double x : {1e16, 1e38}) {
+    const std::string m = refusal([&] { loadGltf(triangleFile(dir, x)); });
+    record("vertex values", cat("a vertex at y = ", sig(x), " (beyond ±", sig(kMaxWorldCoordinate), ")"), "refused in one line",
+           shortened(m.substr(m.find(": ") + 2)), oneLine(m));
+  }
+  fs::remove_all(dir);
+}
+
+std::string markdown() {
+  std::ostringstream s;
+  s << "| | case | bound | measured |\n|---|---|---|---|\n";
+  std::string group;
+  for (const Row& r : rows) {
+    s << "| " << (r.group != group ? r.group : "") << " | " << r.input << " | " << r.bound << " | " << r.measured
+      << (r.ok ? "" : " **(fails)**") << " |\n";
+    group = r.group;
+  }
+  return s.str();
+}
+
+// The rows of README's table (between its stability markers) that this run produced differently:
+// the table is this program's output, so a stale row means the README no longer tells the truth.
+int checkReadme(const fs::path& readme) {
+  std::ifstream in(readme);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- stability-table:begin -->", end = "<!-- stability-table:end -->";
+  const auto a = all.find(begin), b = all.find(end);
+  if (a == std::string::npos || b == std::string::npos) {
+    std::cerr << readme.string() << ": no stability table between " << begin << " and " << end << "\n";
+    return 1;
+  }
+  const std::string table = all.substr(a, b - a);
+  int stale = 0;
+  std::istringstream produced(markdown());
+  for (std::string line; std::getline(produced, line);) {
+    // A row is matched without its group cell (the group is named on its first row only).
+    const std::string row = line.substr(line.find(" | ") == std::string::npos ? 0 : line.find(" | "));
+    if (table.find(row) == std::string::npos) {
+      std::cerr << "stale or missing in " << readme.string() << ": " << line << "\n";
+      ++stale;
+    }
+  }
+  if (stale) std::cerr << stale << " rows differ; regenerate the table with tools/update-stability-table.sh\n";
+  else std::cout << readme.string() << ": the stability table matches this run\n";
+  return stale ? 1 : 0;
+}
+
+int run(int argc, char** argv) {
+  bool longRun = false;
+  std::string markdownFile, readme;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--long") longRun = true;
+    else if (a == "--markdown" && i + 1 < argc) markdownFile = argv[++i];
+    else if (a == "--check-readme" && i + 1 < argc) readme = argv[++i];
+    else {
+      std::cerr << "usage: lenslab_stability [--long] [--markdown FILE] [--check-readme README.md]\n";
+      return 2;
+    }
+  }
+  const auto context = createHeadlessContext(Backend::OSMesa);
+  const auto start = std::chrono::steady_clock::now();
+  const Scene rowsScene = loadGltf(kAssets / "rows/rows.gltf");
+  depthRange();
+  distanceFromOrigin(rowsScene);
+  focus(rowsScene);
+  fNumber(rowsScene);
+  sampleCounts();
+  distortion(rowsScene);
+  degenerateCameras(rowsScene);
+  imageSizes(rowsScene);
+  vertexValues();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int failed = 0;
+  for (const Row& r : rows) failed += !r.ok;
+  std::cout << rows.size() << " rows, " << failed << " failed, " << std::lround(seconds) << " s\n";
+  if (!markdownFile.empty()) std::ofstream(markdownFile) << markdown();
+  const int readmeResult = readme.empty() ? 0 : checkReadme(readme);
+  return failed == 0 && readmeResult == 0 ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace lenslab
+
+int main(int argc, char** argv) {
+  try {
+    return lenslab::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "lenslab_stability: " << e.what() << "\n";
+    return 1;
+  }
+}

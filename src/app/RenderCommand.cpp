@@ -11,6 +11,7 @@
 #include "gl/GlContext.h"
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
+#include "io/OutputPath.h"
 #include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
@@ -111,9 +112,9 @@ Image raycast(const RenderOptions& o, const Scene& scene, Camera camera, ImageSi
 int runRender(const RenderOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const fs::path out = o.out;
-  checkImageExtension(out);  // fail before any work
-  if (!o.statsFile.empty() && fs::path(o.statsFile).extension() != ".json")
-    throw InputError(cat("--stats ", o.statsFile, ": give a .json file name"));
+  // Every output checked before any work, so that a bad --stats refuses before the image exists.
+  checkOutputPath(out, OutputKind::Image, "--out");
+  if (!o.statsFile.empty()) checkOutputPath(o.statsFile, OutputKind::Json, "--stats");
   const PlanOptions planOptions = toPlanOptions(o.lens);
 
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
@@ -143,11 +144,14 @@ int runRender(const RenderOptions& o) {
     image = raycast(o, scene, camera, size, stats);
   }
 
+  // The image and the stats appear together or not at all (io/AtomicFile.h).
+  OutputSet outputs;
   auto t = std::chrono::steady_clock::now();
-  writeImage(out, image);
+  writeImage(outputs, out, image);
   stats.writeSeconds = secondsSince(t);
   stats.seconds = secondsSince(start);
-  if (!o.statsFile.empty()) writeStats(o.statsFile, stats);
+  if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
+  outputs.commit();
   if (!o.quiet)
     std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
               << stats.plan.apertureSamples

@@ -1,7 +1,5 @@
 #include "app/Stats.h"
 
-#include "io/AtomicFile.h"
-
 #include <nlohmann/json.hpp>
 
 namespace lenslab {
@@ -35,8 +33,8 @@ std::string toJson(const RunStats& s) {
   return j.dump(2) + "\n";
 }
 
-void writeStats(const std::filesystem::path& path, const RunStats& stats) {
-  writeTextFileAtomically(path, toJson(stats));
+void writeStats(OutputSet& outputs, const std::filesystem::path& path, const RunStats& stats) {
+  outputs.add(path, toJson(stats));
 }
 
 }  // namespace lenslab

@@ -1,6 +1,7 @@
 #pragma once
 // --stats: what a run did, as JSON, for scripts and reports.
 #include "camera/ImageSize.h"
+#include "io/AtomicFile.h"
 #include "plan/FramePlan.h"
 
 #include <filesystem>
@@ -25,6 +26,7 @@ struct RunStats {
 };
 
 std::string toJson(const RunStats& stats);
-void writeStats(const std::filesystem::path& path, const RunStats& stats);
+// Into `outputs`: the file appears with the run's image when the set is committed, or not at all.
+void writeStats(OutputSet& outputs, const std::filesystem::path& path, const RunStats& stats);
 
 }  // namespace lenslab

@@ -9,6 +9,7 @@
 #include "io/AtomicFile.h"
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
+#include "io/OutputPath.h"
 #include "report/Plot.h"
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
@@ -44,14 +45,21 @@ int runSweepCommand(SweepCommandOptions& o) {
   const Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, 0.0), o.lens).camera, scene.bounds);
   const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
   const fs::path out = o.outDir;
-  std::error_code error;
-  fs::create_directories(out, error);
-  if (error) throw InputError(cat("--out ", out.string(), ": cannot create the folder: ", error.message()));
+  // Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a
+  // full disk on the last image) leaves nothing new, not even the folders made here. The folders
+  // are made now, so that each file's place can be checked before the costly reference.
+  OutputSet outputs;
+  outputs.createFolders(out / "images");
+  for (const char* name : {"sweep.csv", "sweep.md"}) checkOutputPath(out / name, OutputKind::Any, "--out");
+  checkOutputPath(out / "error_vs_time.png", OutputKind::Image, "--out");
+  checkOutputPath(out / "reference.exr", OutputKind::Image, "--out");          // the reference's cache
+  checkOutputPath(out / "images" / "raster.png", OutputKind::Image, "--out");  // the rows' images
 
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   const double contextSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   o.sweep.outDir = out;
+  o.sweep.outputs = &outputs;
   o.sweep.seed = o.lens.seed;
   o.sweep.log = [](const std::string& line) { std::cerr << "lenslab: sweep: " << line << "\n"; };
   t = std::chrono::steady_clock::now();
@@ -72,8 +80,8 @@ int runSweepCommand(SweepCommandOptions& o) {
       "(median of 3 for raster and post-process)\n",
       "- occlusion-edge pixels (within their circle of confusion of a depth step): ", result.edgeFraction * 100.0, " %\n",
       "- whole sweep: ", sweepSeconds, " s\n");
-  writeTextFileAtomically(out / "sweep.csv", sweepCsv(result));
-  writeTextFileAtomically(out / "sweep.md", sweepMarkdown(result, header));
+  outputs.add(out / "sweep.csv", sweepCsv(result));
+  outputs.add(out / "sweep.md", sweepMarkdown(result, header));
 
   const std::map<std::string, glm::vec3> colours = {
       {"raster lecture17", {0.8f, 0.1f, 0.6f}}, {"raster concentric", {0.1f, 0.3f, 0.9f}},
@@ -85,7 +93,8 @@ int runSweepCommand(SweepCommandOptions& o) {
     if (series.empty() || series.back().name != key) series.push_back({key, colours.count(key) ? colours.at(key) : glm::vec3(0.0f), {}});
     series.back().points.push_back({row.seconds, row.rmse});
   }
-  writeImage(out / "error_vs_time.png", logLogPlot(series, "seconds", "RMSE", "error against run time"));
+  writeImage(outputs, out / "error_vs_time.png", logLogPlot(series, "seconds", "RMSE", "error against run time"));
+  outputs.commit();
   std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and "
             << result.rows.size() << " images\n";
   return 0;

@@ -1,6 +1,7 @@
 // lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "io/OutputPath.h"
 #include "view/ViewApp.h"
 
 #include <cmath>
@@ -39,7 +40,14 @@ std::function<int()> addViewCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--save-camera", o->saveCamera, "scripted: write the final camera as JSON (lecture form), as the panel's Save camera does");
   cmd->add_option("--stats", o->statsFile, "scripted: write frames, samples, ms per sample and focus distance as JSON");
-  return [cmd, o]() { return cmd->parsed() ? view::runView(*o) : -1; };
+  return [cmd, o]() {
+    if (!cmd->parsed()) return -1;
+    // Each file the scripted run writes is checked before the window opens (io/OutputPath.h).
+    if (!o->screenshot.empty()) checkOutputPath(o->screenshot, OutputKind::Image, "--screenshot");
+    if (!o->saveCamera.empty()) checkOutputPath(o->saveCamera, OutputKind::Any, "--save-camera");
+    if (!o->statsFile.empty()) checkOutputPath(o->statsFile, OutputKind::Json, "--stats");
+    return view::runView(*o);
+  };
 }
 
 }  // namespace lenslab

@@ -3,49 +3,140 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
+#include <algorithm>
 #include <atomic>
-#include <fstream>
+#include <cerrno>
 #include <system_error>
+
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace lenslab {
 namespace fs = std::filesystem;
 
 namespace {
+
 std::atomic<unsigned> counter{0};
+
+fs::path folderOf(const fs::path& file) { return file.has_parent_path() ? file.parent_path() : fs::path("."); }
+
+InputError cannotWrite(const fs::path& target, int error) {
+  return InputError(cat(target.string(), ": cannot write it: ", std::system_category().message(error)));
 }
 
-AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
-  const fs::path folder = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
-  if (!fs::is_directory(folder))
-    throw InputError(cat(target_.string(), ": the folder ", folder.string(), " does not exist"));
-  temporary_ = folder / cat(".", target_.stem().string(), ".tmp-", ::getpid(), "-", counter++,
-                            target_.extension().string());
+// write(2) until every byte is out: a short write is not an error by itself (a signal, a pipe),
+// so go on; the call after it returns the reason (ENOSPC, EFBIG, EIO). Returns 0 or an errno.
+int writeAll(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    if (n == 0) return ENOSPC;  // no progress and no reason: do not spin
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return 0;
 }
 
-AtomicOutput::~AtomicOutput() {
-  if (!committed_) {
-    std::error_code ignored;
-    fs::remove(temporary_, ignored);
+// fsync(2) of a folder makes the renames in it durable. Some file systems cannot sync a folder
+// (EINVAL): the rename is then as durable as that file system makes it, which is not an error.
+int syncFolder(const fs::path& folder) {
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return errno;
+  int error = ::fsync(fd) == 0 || errno == EINVAL ? 0 : errno;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  return error;
+}
+
+}  // namespace
+
+OutputSet::~OutputSet() {
+  if (committed_) return;
+  std::error_code ignored;
+  for (const Entry& e : entries_)
+    if (!e.temporary.empty()) fs::remove(e.temporary, ignored);
+  for (auto folder = createdFolders_.rbegin(); folder != createdFolders_.rend(); ++folder)
+    fs::remove(*folder, ignored);  // only if empty: never what someone else put there
+}
+
+void OutputSet::createFolders(const fs::path& folder) {
+  fs::path f = folder.lexically_normal();
+  if (!f.has_filename()) f = f.parent_path();  // "out/" names the folder "out"
+  std::vector<fs::path> missing;
+  std::error_code error;
+  for (fs::path p = f; !p.empty() && !fs::exists(fs::symlink_status(p, error)); p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  for (auto p = missing.rbegin(); p != missing.rend(); ++p) {
+    const bool made = fs::create_directory(*p, error);
+    if (error) throw InputError(cat(p->string(), ": cannot create the folder: ", error.message()));
+    if (made) createdFolders_.push_back(*p);
   }
 }
 
-void AtomicOutput::commit() {
-  std::error_code error;
-  fs::rename(temporary_, target_, error);
-  if (error) throw InputError(cat(target_.string(), ": cannot write it: ", error.message()));
+void OutputSet::add(const fs::path& target, std::string_view bytes) {
+  entries_.push_back({target, folderOf(target) / cat(".", target.stem().string(), ".tmp-", ::getpid(), "-", counter++,
+                                                     target.extension().string())});
+  const fs::path& temporary = entries_.back().temporary;
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    const int error = errno;
+    entries_.pop_back();  // not ours to remove: O_EXCL found it there, or nothing was made
+    if (error == ENOENT)
+      throw InputError(cat(target.string(), ": the folder ", folderOf(target).string(), " does not exist"));
+    throw cannotWrite(target, error);
+  }
+  int error = writeAll(fd, bytes);
+  // The data reaches the disk before the rename can make the name point at it.
+  if (error == 0 && ::fsync(fd) != 0) error = errno;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);  // at once: on a full disk its pages are what the next file needs
+    entries_.pop_back();
+    throw cannotWrite(target, error);
+  }
+}
+
+void OutputSet::commit() {
+  std::vector<fs::path> created;  // targets that did not exist before this call
+  auto undo = [&] {
+    std::error_code ignored;
+    for (const fs::path& t : created) fs::remove(t, ignored);
+  };
+  std::vector<fs::path> folders;
+  for (Entry& e : entries_) {
+    std::error_code error;
+    const bool existed = fs::exists(fs::symlink_status(e.target, error));
+    if (::rename(e.temporary.c_str(), e.target.c_str()) != 0) {
+      const int reason = errno;
+      undo();
+      throw cannotWrite(e.target, reason);
+    }
+    e.temporary.clear();  // it is the target now: not the destructor's to remove
+    if (!existed) created.push_back(e.target);
+    folders.push_back(folderOf(e.target));
+  }
+  for (const fs::path& f : createdFolders_) folders.push_back(folderOf(f));
+  std::sort(folders.begin(), folders.end());
+  folders.erase(std::unique(folders.begin(), folders.end()), folders.end());
+  for (const fs::path& f : folders)
+    if (const int error = syncFolder(f); error != 0) {
+      undo();
+      throw InputError(cat(f.string(), ": cannot sync the folder after writing into it: ",
+                           std::system_category().message(error)));
+    }
   committed_ = true;
 }
 
-void writeTextFileAtomically(const fs::path& target, std::string_view text) {
-  AtomicOutput output(target);
-  {
-    std::ofstream out(output.temporaryPath(), std::ios::binary);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) throw InputError(cat(target.string(), ": cannot write it"));
-  }
+void writeFileAtomically(const fs::path& target, std::string_view bytes) {
+  OutputSet output;
+  output.add(target, bytes);
   output.commit();
 }
+
+void writeTextFileAtomically(const fs::path& target, std::string_view text) { writeFileAtomically(target, text); }
 
 }  // namespace lenslab

@@ -1,31 +1,53 @@
 #pragma once
-// Output files appear whole or not at all: write to a temporary file beside the target (same
-// folder, so rename is atomic; same extension, so format detection by extension still works),
-// then rename it over the target. If commit() is never reached the temporary file is removed.
+// Output files appear whole or not at all, and the files of one run appear together or not at all.
+//
+// Each file is first written to a temporary file beside its target (same folder, so that rename is
+// atomic; a dot name, so that it does not look like a result). Every write(2), the fsync(2) of the
+// data and the close(2) are checked: a full disk shows as an error here, not as a short file later.
+// commit() then renames every temporary file onto its target and fsyncs the folders, so that after
+// a crash a name points either at the old file or at the whole new one.
+//
+// Until commit() no target is touched. If the set is destroyed uncommitted — a write failed, the
+// disk filled up, any exception on the way — the temporary files are removed, and so are the
+// folders createFolders() made (when empty): nothing new is left.
 #include <filesystem>
 #include <string_view>
+#include <vector>
 
 namespace lenslab {
 
-class AtomicOutput {
+class OutputSet {
  public:
-  explicit AtomicOutput(std::filesystem::path target);
-  ~AtomicOutput();
-  AtomicOutput(const AtomicOutput&) = delete;
-  AtomicOutput& operator=(const AtomicOutput&) = delete;
+  OutputSet() = default;
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
 
-  const std::filesystem::path& temporaryPath() const { return temporary_; }
-  const std::filesystem::path& targetPath() const { return target_; }
-  // Renames the temporary file onto the target; throws InputError if that fails.
+  // Creates `folder` and its missing parents now; those this call made are removed again (if
+  // still empty) when the set is not committed. Throws InputError naming the folder.
+  void createFolders(const std::filesystem::path& folder);
+
+  // Writes `bytes` to a new temporary file beside `target`, fsync'ed. Throws InputError naming the
+  // target and the reason ("No space left on device"); the temporary file is then already gone.
+  void add(const std::filesystem::path& target, std::string_view bytes);
+
+  // Renames each temporary file onto its target (in the order added), then fsyncs their folders.
+  // Should one fail, the targets this call had already created are removed before it throws;
+  // a target that replaced an older file cannot be given its old content back.
   void commit();
 
  private:
-  std::filesystem::path target_;
-  std::filesystem::path temporary_;
+  struct Entry {
+    std::filesystem::path target;
+    std::filesystem::path temporary;
+  };
+  std::vector<Entry> entries_;
+  std::vector<std::filesystem::path> createdFolders_;  // outermost first
   bool committed_ = false;
 };
 
-// Writes `text` to `target` atomically.
+// The set of one file: writes `bytes` to `target` atomically (checked, fsync'ed, renamed).
+void writeFileAtomically(const std::filesystem::path& target, std::string_view bytes);
 void writeTextFileAtomically(const std::filesystem::path& target, std::string_view text);
 
 }  // namespace lenslab

@@ -2,14 +2,15 @@
 
 #include "core/Error.h"
 #include "core/Text.h"
-#include "io/AtomicFile.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace lenslab {
 namespace fs = std::filesystem;
@@ -45,12 +46,15 @@ void checkImageExtension(const fs::path& path) {
                          "'; use .png (8-bit sRGB) or .exr (linear float)"));
 }
 
-void writeImage(const fs::path& path, const Image& image) {
+std::string encodeImage(const fs::path& path, const Image& image) {
   checkImageExtension(path);
   const bool png = lowerExtension(path) == ".png";
-  AtomicOutput output(path);
-  auto out = OIIO::ImageOutput::create(output.temporaryPath().string());
+  auto out = OIIO::ImageOutput::create(path.filename().string());  // the format, by extension
   if (!out) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(OIIO::geterror())));
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory))
+    throw InputError(cat(path.string(), ": cannot write it: this OpenImageIO cannot encode ", lowerExtension(path), " in memory"));
   // PNG: RGB only, already over the background (an alpha channel would make viewers composite it
   // a second time). EXR: RGBA, A the coverage (the fraction of the pixel × aperture that sees a
   // surface); RGB includes the background over 1 − A, so with --background 0,0,0 it is
@@ -59,7 +63,7 @@ void writeImage(const fs::path& path, const Image& image) {
   OIIO::ImageSpec spec(image.width, image.height, channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
   spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
   spec.attribute("Software", "lenslab");
-  if (!out->open(output.temporaryPath().string(), spec))
+  if (!out->open(path.filename().string(), spec))
     throw InputError(cat(path.string(), ": cannot write it: ", oneLine(out->geterror())));
   bool ok = false;
   if (png) {
@@ -70,8 +74,20 @@ void writeImage(const fs::path& path, const Image& image) {
   } else {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
   }
-  if (!ok || !out->close())
-    throw InputError(cat(path.string(), ": cannot write it: ", oneLine(out->geterror())));
+  // has_error() as well: the PNG writer records some failures there and still returns true.
+  ok = ok && !out->has_error();
+  ok = out->close() && ok && !out->has_error();
+  if (!ok) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(out->geterror())));
+  return std::string(bytes.begin(), bytes.end());
+}
+
+void writeImage(OutputSet& outputs, const fs::path& path, const Image& image) {
+  outputs.add(path, encodeImage(path, image));
+}
+
+void writeImage(const fs::path& path, const Image& image) {
+  OutputSet output;
+  writeImage(output, path, image);
   output.commit();
 }
 

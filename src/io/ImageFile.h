@@ -3,8 +3,10 @@
 // applied here, values clamped to [0, 1]); .exr is linear 32-bit float, unclamped.
 // Writing is atomic (see AtomicFile.h): a failed run leaves no partial file.
 #include "core/Image.h"
+#include "io/AtomicFile.h"
 
 #include <filesystem>
+#include <string>
 
 namespace lenslab {
 
@@ -12,7 +14,15 @@ namespace lenslab {
 // long work, so that a typo fails at once.
 void checkImageExtension(const std::filesystem::path& path);
 
+// The file's bytes, encoded in memory. OIIO's PNG writer reports a failed write(2) only through
+// has_error() and still returns true from write_image() and close(), without errno's reason: so
+// OIIO never touches the disk here, and AtomicFile's checked writes do.
+std::string encodeImage(const std::filesystem::path& path, const Image& linear);
+
+// One file, whole or not at all.
 void writeImage(const std::filesystem::path& path, const Image& linear);
+// Into `outputs`: the target appears when the set is committed, with the run's other files.
+void writeImage(OutputSet& outputs, const std::filesystem::path& path, const Image& linear);
 
 // Reads PNG/EXR (or anything OIIO reads) into linear RGBA; 8-bit files are decoded from sRGB.
 Image readImage(const std::filesystem::path& path);

@@ -15,6 +15,7 @@
 
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -141,7 +142,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
                      "f_number (physical form) or aperture_radius (lecture form)");
   SweepResult result;
   const fs::path imageDir = o.outDir.empty() ? fs::path() : o.outDir / "images";
-  if (!imageDir.empty()) fs::create_directories(imageDir);
+  assert(o.outDir.empty() || o.outputs);
+  if (!imageDir.empty()) o.outputs->createFolders(imageDir);
 
   // The reference, cached: two independent halves of the samples (other seeds), averaged. Their
   // difference measures the reference's own noise, which bounds every PSNR the sweep can show:
@@ -165,7 +167,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     const auto t = std::chrono::steady_clock::now();
     halves[k] = caster.render(camera, size, RaycastOptions{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)});
     result.referenceSeconds += secondsSince(t);
-    if (!cached.empty()) writeImage(cached, halves[k]);
+    if (!cached.empty()) writeImage(*o.outputs, cached, halves[k]);
   }
   Image reference(size.widthPx, size.heightPx);
   for (std::size_t i = 0; i < reference.rgba.size(); ++i) reference.rgba[i] = 0.5f * (halves[0].rgba[i] + halves[1].rgba[i]);
@@ -214,7 +216,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   auto record = [&](const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image) {
     const ImageDifference d = compareImages(image, reference, 0.0);
     result.rows.push_back({method, pattern, samples, seconds, d.rmse, d.psnrDb, d.maxAbs, maskedRmse(image, reference, edges)});
-    if (!imageDir.empty()) writeImage(imageDir / cat(method, "-", pattern, "-", samples, ".png"), image);
+    if (!imageDir.empty()) writeImage(*o.outputs, imageDir / cat(method, "-", pattern, "-", samples, ".png"), image);
   };
 
   for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random}) {

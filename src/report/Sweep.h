@@ -22,6 +22,8 @@
 
 namespace lenslab {
 
+class OutputSet;
+
 struct SweepOptions {
   int referenceSpp = 1024;
   int maxViews = 256;                 // raster budgets 1, 2, 4, … up to this
@@ -29,6 +31,8 @@ struct SweepOptions {
   std::vector<int> gatherTaps = {8, 32, 128};
   std::uint32_t seed = 1;
   std::filesystem::path outDir;       // empty: write nothing
+  OutputSet* outputs = nullptr;       // with outDir: its files go into this set (io/AtomicFile.h),
+                                      // to appear with the report when the caller commits it
   std::function<void(const std::string&)> log;  // progress lines
 };
 

@@ -1,0 +1,23 @@
+#pragma once
+// Every file a command will write is checked before any work starts, so that a typo or a
+// read-only folder fails in a second, not after a long render, and never after another output
+// has already been written. A check cannot reserve space: a disk that fills up during the run is
+// caught by AtomicFile's checked writes instead.
+#include <filesystem>
+#include <string_view>
+
+namespace lenslab {
+
+enum class OutputKind {
+  Image,  // .png or .exr (io/ImageFile.h)
+  Json,   // .json
+  Any,    // any name (the sweep's fixed report names)
+};
+
+// Throws InputError, one line naming the option and the file, unless: the extension suits `kind`;
+// the path is not a folder; its folder exists, is a folder, and takes a new file (a probe file is
+// created, written, and removed there — this also finds a read-only file system, a full disk and
+// missing permissions, whoever runs it). `option` is the flag the path came from ("--stats").
+void checkOutputPath(const std::filesystem::path& path, OutputKind kind, std::string_view option);
+
+}  // namespace lenslab

@@ -50,8 +50,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Image rasterize(const RenderOptions& o, const Scene& scene, Camera camera, ImageSize size,
+Image rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
                 const PlanOptions& planOptions, RunStats& stats) {
+  Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   stats.contextSeconds = secondsSince(t);
@@ -61,7 +62,8 @@ Image rasterize(const RenderOptions& o, const Scene& scene, Camera camera, Image
   Renderer renderer(scene);
   stats.setupSeconds = secondsSince(t);
 
-  if (o.lens.focusAt) camera = focusOnPixel(camera, size, *o.lens.focusAt, rasterDepth(renderer));
+  if (o.lens.focusAt)
+    camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer)).camera, scene.bounds);
   const FramePlan plan = makeFramePlan(scene, camera, size, planOptions);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
@@ -83,7 +85,8 @@ Image rasterize(const RenderOptions& o, const Scene& scene, Camera camera, Image
   return image;
 }
 
-Image raycast(const RenderOptions& o, const Scene& scene, Camera camera, ImageSize size, RunStats& stats) {
+Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats) {
+  Camera camera = selected.camera;
   if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
   auto t = std::chrono::steady_clock::now();
   const RayCaster caster(scene);
@@ -91,9 +94,11 @@ Image raycast(const RenderOptions& o, const Scene& scene, Camera camera, ImageSi
   stats.renderer = "lenslab ray caster (Embree, TBB)";
   stats.backend = "cpu";
   if (o.lens.focusAt)
-    camera = focusOnPixel(camera, size, *o.lens.focusAt, [&](const Camera& c, ImageSize depthSize, int x, int y) {
-      return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
-    });
+    camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt,
+                                               [&](const Camera& c, ImageSize depthSize, int x, int y) {
+                                                 return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
+                                               }).camera,
+                                  scene.bounds);
   stats.camera = camera.source;
   stats.plan.apertureSamples = o.samplesPerPixel;
   stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
@@ -124,7 +129,10 @@ int runRender(const RenderOptions& o) {
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
-  Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, requestedAspect), o.lens).camera, scene.bounds);
+  // The camera as selected and refocused; rendered with its open near/far fitted to the scene.
+  SelectedCamera selected = applyLensOptions(selectCamera(scene, cameraPath, requestedAspect), o.lens);
+  selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
+  const Camera& camera = selected.camera;
   const ImageSize size = resolveImageSize(camera, o.width, o.height);
   if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
     std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx
@@ -139,9 +147,9 @@ int runRender(const RenderOptions& o) {
 
   Image image;
   if (o.method == Method::Raster) {
-    image = rasterize(o, scene, camera, size, planOptions, stats);
+    image = rasterize(o, scene, selected, size, planOptions, stats);
   } else {
-    image = raycast(o, scene, camera, size, stats);
+    image = raycast(o, scene, selected, size, stats);
   }
 
   // The image and the stats appear together or not at all (io/AtomicFile.h).

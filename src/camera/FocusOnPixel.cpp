@@ -8,7 +8,8 @@
 
 namespace lenslab {
 
-Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt) {
+SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt) {
+  const Camera& camera = selected.camera;
   const int x = static_cast<int>(std::floor(pixel.x)), y = static_cast<int>(std::floor(pixel.y));
   if (x < 0 || y < 0 || x >= size.widthPx || y >= size.heightPx)
     throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
@@ -24,8 +25,8 @@ Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, cons
   }
   if (!std::isfinite(distance) || !(distance > 0.0))
     throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": nothing of the scene is under that pixel to focus on"));
-  Camera c = refocused(camera, distance, "--focus-at");
-  c.source += cat(", focused at pixel ", pixel.x, ",", pixel.y, " (depth ", distance, ")");
+  SelectedCamera c = refocused(selected, distance, "--focus-at");
+  c.camera.source += cat(", focused at pixel ", pixel.x, ",", pixel.y, " (depth ", distance, ")");
   return c;
 }
 

@@ -3,6 +3,7 @@
 // under it (--focus-at, the view's click).
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
+#include "camera/PhysicalCamera.h"
 
 #include <glm/glm.hpp>
 
@@ -17,7 +18,9 @@ using DepthAtPixel = std::function<double(const Camera&, ImageSize, int x, int y
 // Focuses on the depth under pixel (x, y); throws InputError when nothing is there or the pixel
 // is outside the image. With distortion or lateral colour the pixel is first taken back to the
 // true perspective image (green's), which is looked up in the overscanned pinhole view the lens
-// pass would sample.
-Camera focusOnPixel(const Camera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt);
+// pass would sample. The depth found is applied as --focus-distance is (refocused(SelectedCamera)):
+// a physical camera's field of view follows its image distance. Near/far are the converted
+// camera's: fit them to the scene again (camera/DepthRange.h) before rendering.
+SelectedCamera focusOnPixel(const SelectedCamera& camera, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt);
 
 }  // namespace lenslab

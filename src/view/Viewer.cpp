@@ -213,11 +213,13 @@ void Viewer::draw() {
 }
 
 void Viewer::finishScripted() {
+  // The scripted run's files appear together or not at all (io/AtomicFile.h).
+  OutputSet outputs;
   if (!options_.screenshot.empty()) {
     // --no-ui: the image itself, as `render` writes it; with the UI: the whole window.
-    writeImage(options_.screenshot, options_.noUi ? renderer_.resolve() : readWindow(fbWidth_, fbHeight_));
+    writeImage(outputs, options_.screenshot, options_.noUi ? renderer_.resolve() : readWindow(fbWidth_, fbHeight_));
   }
-  if (!options_.saveCamera.empty()) writeTextFileAtomically(options_.saveCamera, toCameraJson(model_.camera().camera));
+  if (!options_.saveCamera.empty()) outputs.add(options_.saveCamera, toCameraJson(model_.camera().camera));
   if (!options_.statsFile.empty()) {
     nlohmann::json j;
     j["command"] = "view";
@@ -237,8 +239,9 @@ void Viewer::finishScripted() {
     const std::optional<double> focus = model_.lastFocusDistance();
     j["focus_distance"] = focus ? nlohmann::json(*focus) : nlohmann::json(nullptr);
     j["camera"] = model_.camera().camera.source;
-    writeTextFileAtomically(options_.statsFile, j.dump(2) + "\n");
+    outputs.add(options_.statsFile, j.dump(2) + "\n");
   }
+  outputs.commit();
 }
 
 int Viewer::run() {

@@ -173,14 +173,10 @@ double ViewerModel::focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt) {
   // The camera's source names only the latest click, not every click since the start.
   Camera current = cam_.camera;
   current.source = baseSource_;
-  const Camera focused = focusOnPixel(current, size_, pixel, depthAt);
-  const double distance = focused.focusDistance();
-  // The depth found, applied along the one refocusing path (a physical camera's field of view
-  // follows its image distance); the source names the click.
-  SelectedCamera r = refocused(SelectedCamera{cam_.camera, cam_.physical}, distance, "focus distance");
-  r.camera.source = focused.source;
-  cam_.camera = r.camera;
-  cam_.physical = r.physical;
+  const SelectedCamera focused = focusOnPixel(SelectedCamera{current, cam_.physical}, size_, pixel, depthAt);
+  const double distance = focused.camera.focusDistance();
+  cam_.camera = focused.camera;
+  cam_.physical = focused.physical;
   focusDistance_ = distance;
   dirty_ = true;
   return distance;

@@ -88,7 +88,7 @@ if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --ma
 # A pinhole camera is one scene pass, no accumulation.
 if grep -qF '"accumulate"' "$work/stats.json"; then fail "pinhole plan accumulates"; else pass; fi
 expect_refusal "bad sample count" "--aperture-samples" -- render --aperture-samples lots --out "$work/out.png"
-expect_refusal "bad focus distance" "focus distance" -- render --focus-distance -3 --out "$work/out.png"
+expect_refusal "bad focus distance" "--focus-distance: focus_distance is -3" -- render --focus-distance -3 --out "$work/out.png"
 expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$src/assets/rows/camera-dof.json" --width 96 --focus-at 50,2 --out "$work/out.png"
 
 # The ray-cast reference: same options, --spp, same outputs.
@@ -145,6 +145,21 @@ expect_refusal "fold-over" "folds over" -- render --camera "$work/fold.json" --o
 expect_refusal "fold-over raycast" "folds over" -- raycast --camera "$work/fold.json" --out "$work/out.png"
 expect_refusal "unknown distortion key" "distortion.q1" -- render --camera "$work/bad-lens-key.json" --out "$work/out.png"
 expect_refusal "abbe in lecture form" "abbe_number" -- render --camera "$work/abbe-lecture.json" --out "$work/out.png"
+
+# Issue #12's stiff cases, as a user typed them: each used to abort, write garbage or be refused
+# for the wrong reason (the stability table measures them; here the command line's side).
+a="$src/assets"
+if "$lenslab" raycast --camera "$a/rows/camera-dof.json" --focus-distance 1e300 --width 48 --spp 2 --out "$work/far-focus.png" -q &&
+   [ -s "$work/far-focus.png" ]; then pass; else fail "raycast --focus-distance 1e300 (was an Embree abort)"; fi
+echo '{"projection": "parallel", "vrp": [0, 0.5, 0.5], "vpn": [0, 0.3, 1], "prp": [0, 0, 1], "window": [-3, -2, 3, 2], "near": -1, "far": 60}' >"$work/negative-near.json"
+if "$lenslab" raycast --camera "$work/negative-near.json" --width 48 --spp 2 --out "$work/negative-near.png" -q &&
+   [ -s "$work/negative-near.png" ]; then pass; else fail "raycast of a parallel camera with near -1 (was an Embree abort)"; fi
+sed 's/"focus_distance": 2.0/"focus_distance": 0.035/' "$a/rows/camera-dof.json" >"$work/focus-at-f.json"
+expect_refusal "focus at f in the file" "focus_distance is 0.035; it must be beyond the focal length" -- render --camera "$work/focus-at-f.json" --out "$work/out.png"
+expect_refusal "focus at f on the command line" "focus_distance is 0.035; it must be beyond the focal length" -- render --camera "$a/rows/camera-dof.json" --focus-distance 0.035 --out "$work/out.png"
+sed 's/"near": 0.05,/"near": 0.05, "distortion": {"k1": 2, "k2": -2},/' "$a/rows/camera.json" >"$work/strong.json"
+if "$lenslab" render --camera "$work/strong.json" --width 48 --out "$work/strong.png" -q && [ -s "$work/strong.png" ]; then pass
+else fail "k1 2, k2 -2 (folds only beyond the image) was refused"; fi
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

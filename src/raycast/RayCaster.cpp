@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -254,7 +255,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
       for (int y = rows.begin(); y < rows.end(); ++y)
         for (int x = 0; x < size.widthPx; ++x) {
           // A different stratified set per pixel, so that the noise does not repeat across pixels.
-          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(y * size.widthPx + x) * 40503u;
+          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * size.widthPx + x) * 40503u;
           const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
           glm::dvec3 sum(0.0);
           double covered = 0.0;  // rays that met a surface: alpha is the pixel's coverage

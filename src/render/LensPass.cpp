@@ -16,7 +16,8 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
   return {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed, e.chromatic.lateralBlue,
           n.min.x, n.min.y, n.max.x, n.max.y,
           static_cast<double>(size.widthPx), static_cast<double>(size.heightPx),
-          static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx)};
+          static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx),
+          static_cast<double>(overscan.padPx.x), static_cast<double>(overscan.padPx.y)};
 }
 
 }  // namespace

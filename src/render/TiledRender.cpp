@@ -14,8 +14,8 @@ int glInteger(GLenum name) {
   return value;
 }
 
-Image cropped(const Image& image, const PixelRect& rect) {
-  if (rect == PixelRect{0, 0, image.width, image.height}) return image;
+Image cropped(Image image, const PixelRect& rect) {
+  if (rect == PixelRect{0, 0, image.width, image.height}) return image;  // moved, not copied
   Image out(rect.width(), rect.height());
   const std::size_t row = static_cast<std::size_t>(rect.width()) * 4;
   for (int y = 0; y < rect.height(); ++y)
@@ -40,8 +40,7 @@ void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan
   for (int i = 0; i < total; ++i) {
     const Tile& tile = tiles.tiles[static_cast<std::size_t>(i)];
     const TileView view = tileView(camera, size, plan, tile);
-    const Image pixels = renderer.render(view.camera, view.plan, view.size);
-    sink(tile.rect, cropped(pixels, view.crop));
+    sink(tile.rect, cropped(renderer.render(view.camera, view.plan, view.size), view.crop));
     if (progress) progress(i + 1, total);
   }
 }

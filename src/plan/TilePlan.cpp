@@ -3,9 +3,11 @@
 #include "camera/LensMap.h"
 #include "core/Error.h"
 #include "core/Text.h"
+#include "lens/LensEffects.h"
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace lenslab {
 namespace {
@@ -34,6 +36,36 @@ PixelRect quadAligned(PixelRect r, const PixelRect& frame) {
   return r;
 }
 
+// The pixels of the true perspective image that pixels `rect` of the distorted image show, for
+// every remapped channel: the bounding box of the pre-image of the rect's border under the inverse
+// lens model (validateLensEffects rules out folds, so the border's pre-image bounds the inside's),
+// on the full image's pixel grid, plus the gather's footprint (overscanFor's 2 pixels and 2 more,
+// as the gather's reach grows where the lens magnifies), and the rect itself. Unlike overscanFor's
+// symmetric padding, a corner tile's margin lies on the side the lens pulls from.
+PixelRect preImage(const Camera& camera, ImageSize size, const PixelRect& rect) {
+  constexpr int kFootprintPx = 4;
+  std::vector<Channel> channels{Channel::Green};
+  if (camera.effects.chromatic.hasLateral()) channels = {Channel::Red, Channel::Green, Channel::Blue};
+  glm::dvec2 lo(rect.x0, rect.y0), hi(rect.x1, rect.y1);
+  const auto visit = [&](glm::dvec2 pixel) {
+    for (const Channel c : channels) {
+      const glm::dvec2 p = undistortedSample(camera, c, pixel, size).pixel;
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  };
+  for (int i = 0; i <= 2 * rect.width(); ++i) {
+    visit({rect.x0 + 0.5 * i, rect.y0});
+    visit({rect.x0 + 0.5 * i, rect.y1});
+  }
+  for (int j = 0; j <= 2 * rect.height(); ++j) {
+    visit({rect.x0, rect.y0 + 0.5 * j});
+    visit({rect.x1, rect.y0 + 0.5 * j});
+  }
+  return {static_cast<int>(std::floor(lo.x)) - kFootprintPx, static_cast<int>(std::floor(lo.y)) - kFootprintPx,
+          static_cast<int>(std::ceil(hi.x)) + kFootprintPx, static_cast<int>(std::ceil(hi.y)) + kFootprintPx};
+}
+
 // Tiles of nearly equal size, at most `side` a side, with their margins; empty when one does not fit.
 std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& plan, const RenderTargetLimits& limits,
                          int side, int& tileWidth, int& tileHeight) {
@@ -47,13 +79,9 @@ std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& 
   for (int y0 = 0; y0 < size.heightPx; y0 += tileHeight)
     for (int x0 = 0; x0 < size.widthPx; x0 += tileWidth) {
       const PixelRect rect{x0, y0, std::min(x0 + tileWidth, size.widthPx), std::min(y0 + tileHeight, size.heightPx)};
-      glm::ivec2 margin(curvature);
-      if (plan.remap) {
-        // The tile's pre-image under the inverse lens model, plus the gather's footprint (overscanFor
-        // adds 2 pixels; 2 more here, as the gather's reach grows where the lens magnifies).
-        margin += overscanFor(subWindowCamera(camera, size, rect), rect.size()).padPx + glm::ivec2(2);
-      }
-      const Tile tile{rect, quadAligned(intersect(grown(rect, margin.x, margin.y), frame), frame)};
+      // With the lens pass: the tile's pre-image (where its pixels' samples come from), else the tile.
+      const PixelRect source = plan.remap ? preImage(camera, size, rect) : rect;
+      const Tile tile{rect, quadAligned(intersect(grown(source, curvature, curvature), frame), frame)};
       if (!fits(tile.rendered, limits)) return {};
       tiles.push_back(tile);
     }

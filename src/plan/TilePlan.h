@@ -6,7 +6,7 @@
 //
 // What a tile's pixels need from outside the tile is rendered with it, as margins, then dropped:
 //   distortion, lateral colour: the pre-image of the tile under the inverse lens model (its
-//     border's bounding box, overscanFor of the tile's sub-window camera) plus the gather's reach;
+//     border's bounding box, per remapped channel) plus the gather's reach;
 //   field curvature: each view is summed through a warp that reads up to δ·d·κ·r² pixels away,
 //     plus the Catmull–Rom taps.
 // Margins stop where the full frame's render stops (its own overscan), so a tile's scene passes

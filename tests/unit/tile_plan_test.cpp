@@ -141,18 +141,25 @@ TEST(TilePlan, LensTilesRenderTheirPreImageWithinTheFramesOverscan) {
   const PixelRect frame{-pad.x, -pad.y, size.widthPx + pad.x, size.heightPx + pad.y};
   for (const Tile& t : tiles.tiles) {
     EXPECT_EQ(intersect(t.rendered, frame), t.rendered);
-    // Barrel distortion: a corner tile's pre-image reaches past the image, out to the frame's overscan.
-    // (grown by at most a pixel left and down, to keep GL's 2 x 2 quads where the frame has them)
-    const Overscan own = overscanFor(subWindowCamera(camera, size, t.rect), t.rect.size());
-    const PixelRect margins = intersect(grown(t.rect, own.padPx.x + 2, own.padPx.y + 2), frame);
-    EXPECT_EQ(intersect(t.rendered, margins), margins);
-    EXPECT_LE(margins.x0 - t.rendered.x0, 1);
-    EXPECT_LE(t.rendered.y1 - margins.y1, 1);
+    // It holds the tile and the pre-image of every pixel of it (sampled here inside the tile, on
+    // the pixel grid and between), on GL's 2 x 2 quads of the frame.
+    EXPECT_EQ(intersect(t.rendered, t.rect), t.rect);
+    for (double y = t.rect.y0; y <= t.rect.y1; y += 0.25 * t.rect.height())
+      for (double x = t.rect.x0; x <= t.rect.x1; x += 0.25 * t.rect.width()) {
+        const glm::dvec2 p = undistortedSample(camera, Channel::Green, {x, y}, size).pixel;
+        EXPECT_GE(p.x, t.rendered.x0 + 2);
+        EXPECT_LE(p.x, t.rendered.x1 - 2);
+        EXPECT_GE(p.y, t.rendered.y0 + 2);
+        EXPECT_LE(p.y, t.rendered.y1 - 2);
+      }
     EXPECT_EQ((t.rendered.x0 - frame.x0) % 2, 0);
     EXPECT_EQ((frame.y1 - t.rendered.y1) % 2, 0);
   }
+  // Barrel distortion pulls a corner tile's pixels from outside the image, out to the frame's
+  // overscan, and an inner side's margin is small.
   EXPECT_EQ(tiles.tiles.front().rendered.x0, -pad.x);
   EXPECT_EQ(tiles.tiles.front().rendered.y0, -pad.y);
+  EXPECT_LT(tiles.tiles.front().rendered.x1 - tiles.tiles.front().rect.x1, pad.x / 2);
 }
 
 }  // namespace

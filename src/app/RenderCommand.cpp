@@ -12,14 +12,17 @@
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
+#include "io/StripImageWriter.h"
 #include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/RasterDepth.h"
 #include "render/Renderer.h"
+#include "render/TiledRender.h"
 #include "scene/GltfLoader.h"
 
 #include <chrono>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -44,14 +47,20 @@ struct RenderOptions {
   bool quiet = false;
   LensOptions lens;
   std::optional<glm::vec3> background;
+  int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
 };
+
+// The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
+constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Image rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
-                const PlanOptions& planOptions, RunStats& stats) {
+// The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
+// `out`'s temporary file in `outputs`.
+std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
+                               const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats) {
   Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
@@ -68,6 +77,30 @@ Image rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
   stats.plan = plan;
+
+  const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), o.tileSizePx);
+  if (tiles.tiled) {
+    stats.plan.passes.push_back({"tiles", tiles.why, {}});
+    const bool showProgress = !o.quiet && isTerminal(stderr);
+    t = std::chrono::steady_clock::now();
+    double writeSeconds = 0.0;
+    StripImageWriter writer(outputs, out, size);
+    renderTiles(renderer, camera, plan, size, tiles,
+                [&](const PixelRect& rect, const Image& pixels) {
+                  const auto w = std::chrono::steady_clock::now();
+                  writer.add(rect.x0, rect.y0, pixels);
+                  writeSeconds += secondsSince(w);
+                },
+                [&](int done, int total) {
+                  if (showProgress) printProgress(done, total, secondsSince(t));
+                });
+    const auto w = std::chrono::steady_clock::now();
+    writer.finish();
+    stats.writeSeconds = writeSeconds + secondsSince(w);
+    stats.renderSeconds = secondsSince(t) - stats.writeSeconds;
+    if (showProgress) std::cerr << "\n";
+    return std::nullopt;
+  }
 
   t = std::chrono::steady_clock::now();
   renderer.begin(camera, plan, size);
@@ -88,6 +121,10 @@ Image rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera
 Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats) {
   Camera camera = selected.camera;
   if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
+  if (size.pixelCount() > kMaxRaycastPixels)
+    throw InputError(cat("--width/--height: raycast holds the whole ", size.widthPx, "x", size.heightPx,
+                         " image in memory as float RGBA (", size.pixelCount() * 16 / (1 << 20), " MiB); it takes at most ",
+                         kMaxRaycastPixels, " pixels (4 GiB): give a smaller size, or use render, which tiles"));
   auto t = std::chrono::steady_clock::now();
   const RayCaster caster(scene);
   stats.setupSeconds = secondsSince(t);
@@ -145,18 +182,20 @@ int runRender(const RenderOptions& o) {
   stats.backend = o.backend;
   stats.triangles = scene.triangleCount();
 
-  Image image;
+  // The image and the stats appear together or not at all (io/AtomicFile.h).
+  OutputSet outputs;
+  std::optional<Image> image;
   if (o.method == Method::Raster) {
-    image = rasterize(o, scene, selected, size, planOptions, stats);
+    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats);
   } else {
     image = raycast(o, scene, selected, size, stats);
   }
 
-  // The image and the stats appear together or not at all (io/AtomicFile.h).
-  OutputSet outputs;
   auto t = std::chrono::steady_clock::now();
-  writeImage(outputs, out, image);
-  stats.writeSeconds = secondsSince(t);
+  if (image) {  // a tiled render has written its file strip by strip
+    writeImage(outputs, out, *image);
+    stats.writeSeconds = secondsSince(t);
+  }
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
   outputs.commit();
@@ -181,9 +220,20 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   cmd->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
   cmd->add_option("--camera", options->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default: the scene's first glTF camera, else an automatic framing");
   cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")->capture_default_str();
-  cmd->add_option("--width", options->width, "image width in pixels (default 960; height follows the window's aspect)");
-  cmd->add_option("--height", options->height, "image height in pixels");
+  cmd->add_option("--width", options->width,
+                  method == Method::Raster
+                      ? "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^30 "
+                        "pixels in all: images beyond one GL render target are rendered in tiles and written a strip at a "
+                        "time (20000x13333 on llvmpipe: see README, Image sizes)"
+                      : "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^28 "
+                        "pixels in all (the ray caster holds the whole float image)");
+  cmd->add_option("--height", options->height, "image height in pixels (limits as --width)");
   if (method == Method::Raster) {
+    cmd->add_option("--tile-size", options->tileSizePx,
+                    "render in tiles of at most PX x PX pixels (default: tiles only when one render target cannot hold "
+                    "the image); the result is the same image")
+        ->check(CLI::Range(16, kMaxImageSidePx))
+        ->type_name("PX");
     cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
         ->check(CLI::IsMember({"osmesa", "egl"}))
         ->capture_default_str();

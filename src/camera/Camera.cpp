@@ -22,12 +22,9 @@ ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std
   if (!camera.calibratedSize || (widthPx && heightPx)) return resolveImageSize(camera.view.window, widthPx, heightPx);
   // A calibrated camera's pixels need not be square (fx ≠ fy): scale its own size.
   const ImageSize own = *camera.calibratedSize;
+  if (!widthPx && !heightPx) return resolveImageSize(camera.view.window, own.widthPx, own.heightPx);
   const double aspect = static_cast<double>(own.widthPx) / own.heightPx;
-  std::optional<int> w = widthPx, h = heightPx;
-  if (w) h = std::max(1, static_cast<int>(std::lround(*w / aspect)));
-  else if (h) w = std::max(1, static_cast<int>(std::lround(*h * aspect)));
-  else w = own.widthPx, h = own.heightPx;
-  return resolveImageSize(camera.view.window, w, h);
+  return resolveImageSize(aspect, "the calibrated image's", widthPx, heightPx);
 }
 
 double Camera::focusDistance() const {

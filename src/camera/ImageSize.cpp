@@ -3,7 +3,6 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace lenslab {
@@ -16,22 +15,41 @@ int checked(const char* option, int value) {
   return value;
 }
 
-int fromAspect(double pixels) {
-  return std::clamp(static_cast<int>(std::lround(pixels)), 1, kMaxImageSidePx);
+// The side that follows from the given one: computed in double, checked before it becomes an int.
+int derived(double pixels, const char* givenOption, int given, const char* side, double aspect,
+            std::string_view aspectSource) {
+  const double rounded = std::round(pixels);
+  if (!(rounded >= 1.0 && rounded <= kMaxImageSidePx))
+    throw InputError(cat(givenOption, " ", given, " with ", aspectSource, " aspect ratio ", aspect,
+                         " (width / height) gives a ", side, " of ", pixels, " px; the ", side, " must be 1 to ",
+                         kMaxImageSidePx, " px: give both --width and --height, or a less extreme window"));
+  return static_cast<int>(rounded);
+}
+
+ImageSize checkedTotal(ImageSize size, double aspect, std::string_view aspectSource) {
+  if (size.pixelCount() > kMaxImagePixels)
+    throw InputError(cat("--width/--height: ", size.widthPx, "x", size.heightPx, " (", aspectSource, " aspect ratio ",
+                         aspect, ") is ", size.pixelCount(), " pixels; at most ", kMaxImagePixels,
+                         " (2^30) pixels in all: give a smaller --width or --height"));
+  return size;
 }
 
 }  // namespace
 
-ImageSize resolveImageSize(const Window& window, std::optional<int> widthPx,
+ImageSize resolveImageSize(double aspect, std::string_view aspectSource, std::optional<int> widthPx,
                            std::optional<int> heightPx) {
-  const double aspect = window.width() / window.height();
-  if (widthPx && heightPx) return {checked("width", *widthPx), checked("height", *heightPx)};
+  if (widthPx && heightPx) return checkedTotal({checked("width", *widthPx), checked("height", *heightPx)}, aspect, aspectSource);
   if (heightPx) {
     const int h = checked("height", *heightPx);
-    return {fromAspect(h * aspect), h};
+    return checkedTotal({derived(h * aspect, "--height", h, "width", aspect, aspectSource), h}, aspect, aspectSource);
   }
   const int w = widthPx ? checked("width", *widthPx) : kDefaultWidthPx;
-  return {w, fromAspect(w / aspect)};
+  const char* option = widthPx ? "--width" : "the default --width";
+  return checkedTotal({w, derived(w / aspect, option, w, "height", aspect, aspectSource)}, aspect, aspectSource);
+}
+
+ImageSize resolveImageSize(const Window& window, std::optional<int> widthPx, std::optional<int> heightPx) {
+  return resolveImageSize(window.width() / window.height(), "the window's", widthPx, heightPx);
 }
 
 double pixelAspectMismatch(const Window& window, ImageSize size) {

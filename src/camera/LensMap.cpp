@@ -123,9 +123,7 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
   const double padX = std::max(-lo.x, hi.x - width), padY = std::max(-lo.y, hi.y - height);
   o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2, static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
   o.size = {width + 2 * o.padPx.x, height + 2 * o.padPx.y};
-  if (o.size.widthPx > kMaxImageSidePx || o.size.heightPx > kMaxImageSidePx)
-    throw InputError(cat(camera.source, ": the distortion needs an undistorted render of ", o.size.widthPx, "x",
-                         o.size.heightPx, " pixels (more than ", kMaxImageSidePx, " per side); render a smaller image"));
+  // No limit on the size here: a render larger than one GL target is made in tiles (plan/TilePlan.h).
   const glm::dvec2 pitch(w.width() / width, w.height() / height);
   Window& ow = o.camera.view.window;
   ow.umin -= o.padPx.x * pitch.x;

@@ -30,8 +30,10 @@ struct NormalisedRect {
 };
 NormalisedRect normalisedWindow(const ViewSpec& view);
 
-// The undistorted render the post pass samples: the camera with its window widened by `padPx`
-// whole pixels on each side (left = right, top = bottom), and that render's size.
+// The undistorted render the post pass samples: the camera with its window widened by whole
+// pixels, and that render's size. overscanFor widens it by `padPx` on each side (left = right,
+// top = bottom); a tile's overscan (plan/TilePlan.h) may be cut short where the full image's ends,
+// so in general `padPx` is where the image's pixel (0, 0) corner sits in the render (left, top).
 struct Overscan {
   Camera camera;     // lens effects still attached (the raster path needs the axial/curvature parts)
   ImageSize size;

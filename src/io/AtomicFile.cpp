@@ -100,7 +100,24 @@ void OutputSet::add(const fs::path& target, std::string_view bytes) {
   }
 }
 
+fs::path OutputSet::addStreamed(const fs::path& target) {
+  entries_.push_back({target, folderOf(target) / cat(".", target.stem().string(), ".tmp-", ::getpid(), "-", counter++,
+                                                     target.extension().string()),
+                      true});
+  return entries_.back().temporary;
+}
+
 void OutputSet::commit() {
+  // Files written by others: their data reaches the disk before any rename (a failed sync, e.g.
+  // EIO or a quota, is found before a name points at the file).
+  for (const Entry& e : entries_) {
+    if (!e.streamed) continue;
+    const int fd = ::open(e.temporary.c_str(), O_RDONLY | O_CLOEXEC);
+    int error = fd < 0 ? errno : 0;
+    if (fd >= 0 && ::fsync(fd) != 0) error = errno;
+    if (fd >= 0 && ::close(fd) != 0 && error == 0) error = errno;
+    if (error != 0) throw cannotWrite(e.target, error);
+  }
   std::vector<fs::path> created;  // targets that did not exist before this call
   auto undo = [&] {
     std::error_code ignored;

@@ -31,6 +31,12 @@ class OutputSet {
   // target and the reason ("No space left on device"); the temporary file is then already gone.
   void add(const std::filesystem::path& target, std::string_view bytes);
 
+  // For a file another library writes in pieces (a tiled image, strip by strip through
+  // OpenImageIO): the temporary path beside `target` for it to write to and close. It is part of
+  // the set from now on: removed if the set is not committed; its data fsync'ed by commit()
+  // before the rename. The writer must check its own writes (and close) as add() does.
+  std::filesystem::path addStreamed(const std::filesystem::path& target);
+
   // Renames each temporary file onto its target (in the order added), then fsyncs their folders.
   // Should one fail, the targets this call had already created are removed before it throws;
   // a target that replaced an older file cannot be given its old content back.
@@ -40,6 +46,7 @@ class OutputSet {
   struct Entry {
     std::filesystem::path target;
     std::filesystem::path temporary;
+    bool streamed = false;  // written by someone else: fsync'ed at commit()
   };
   std::vector<Entry> entries_;
   std::vector<std::filesystem::path> createdFolders_;  // outermost first

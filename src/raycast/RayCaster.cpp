@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -171,8 +172,8 @@ struct RayCaster::Impl {
     const auto [enter, exit] = boundsSpan(ray);
     const double tEnd = std::min(ray.tFar, exit);
     if (!(enter <= exit) || !(std::max(ray.tNear, enter) <= tEnd)) return miss;
-    const double base = std::max(ray.tNear, enter);
-    const glm::dvec3 start = ray.origin + base * ray.direction;
+    const double tStart = std::max(ray.tNear, enter);
+    const glm::dvec3 start = ray.origin + tStart * ray.direction;
     double tNear = ray.tNear;
     for (int layer = 0; layer < 64; ++layer) {
       RTCIntersectContext context;
@@ -184,8 +185,8 @@ struct RayCaster::Impl {
       rh.ray.dir_x = static_cast<float>(ray.direction.x);
       rh.ray.dir_y = static_cast<float>(ray.direction.y);
       rh.ray.dir_z = static_cast<float>(ray.direction.z);
-      rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - base));
-      rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>(tEnd - base);
+      rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart));
+      rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>(tEnd - tStart);
       if (!(rh.ray.tnear <= rh.ray.tfar)) return miss;
       rh.ray.mask = 0xFFFFFFFFu;
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -207,10 +208,10 @@ struct RayCaster::Impl {
       // from the normal's side; a mirroring transform turns it around (glFrontFace(GL_CW)).
       bool front = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) < 0.0;
       if (g.mirrored) front = !front;
-      const double tHit = base + rh.ray.tfar;
+      const double tHit = tStart + rh.ray.tfar;
       // Past this surface, measured from Embree's start (a skip relative to the camera's distance
       // would jump a telephoto's whole subject).
-      const double skipTo = base + rh.ray.tfar * (1.0 + 1e-6) + 1e-9;
+      const double skipTo = tStart + rh.ray.tfar * (1.0 + 1e-6) + 1e-9;
       if (!front && !material.doubleSided) {
         tNear = skipTo;
         continue;
@@ -298,7 +299,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
       for (int y = rows.begin(); y < rows.end(); ++y)
         for (int x = 0; x < size.widthPx; ++x) {
           // A different stratified set per pixel, so that the noise does not repeat across pixels.
-          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(y * size.widthPx + x) * 40503u;
+          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * size.widthPx + x) * 40503u;
           const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
           glm::dvec3 sum(0.0);
           double covered = 0.0;  // rays that met a surface: alpha is the pixel's coverage

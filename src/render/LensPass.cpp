@@ -16,7 +16,8 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
   return {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed, e.chromatic.lateralBlue,
           n.min.x, n.min.y, n.max.x, n.max.y,
           static_cast<double>(size.widthPx), static_cast<double>(size.heightPx),
-          static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx)};
+          static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx),
+          static_cast<double>(overscan.padPx.x), static_cast<double>(overscan.padPx.y)};
 }
 
 }  // namespace
@@ -24,19 +25,8 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
 LensPass::LensPass()
     : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")) {}
 
-void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan) {
+void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather) {
   std::vector<double> key = keyOf(camera, size, overscan);
-  if (key == key_ && !tables_.empty()) return;
-  const RemapTable table = makeRemapTable(camera, size, overscan);
-  tables_.clear();
-  for (const std::vector<glm::vec2>& map : table.channels) {
-    gl::Texture t = gl::Texture::create();
-    glTextureStorage2D(t.id(), 1, GL_RG32F, size.widthPx, size.heightPx);
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureSubImage2D(t.id(), 0, 0, 0, size.widthPx, size.heightPx, GL_RG, GL_FLOAT, map.data());
-    tables_.push_back(std::move(t));
-  }
   const auto texture = [](GLenum format, ImageSize at, GLenum layout, const void* data) {
     gl::Texture t = gl::Texture::create();
     glTextureStorage2D(t.id(), 1, format, at.widthPx, at.heightPx);
@@ -45,23 +35,34 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
     glTextureSubImage2D(t.id(), 0, 0, 0, at.widthPx, at.heightPx, layout, GL_FLOAT, data);
     return t;
   };
-  const ForwardTable forward = makeForwardTable(camera, size, overscan);
-  forwardPosition_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.position.data());
-  forwardJacobian_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.jacobian.data());
-  gather_ = {};
-  gather_.forwardPosition = forwardPosition_.id();
-  gather_.forwardJacobian = forwardJacobian_.id();
-  for (int c = 0; c < 3; ++c) gather_.inverse[c] = tables_[table.perChannel() ? static_cast<std::size_t>(c) : 0].id();
-  gather_.lateral = table.perChannel();
-  gather_.outWidthPx = size.widthPx;
-  gather_.outHeightPx = size.heightPx;
-  gather_.reachPx = static_cast<float>(forward.reachPx);
-  gather_.principalPointPx = glm::vec2(forward.principalPointPx);
-  gather_.lateralScale = glm::vec2(1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue);
-  if (table.perChannel() && !perChannelProgram_)
-    perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
-  key_ = std::move(key);
-  ++tablesBuilt_;
+  if (key != key_ || tables_.empty()) {
+    const RemapTable table = makeRemapTable(camera, size, overscan);
+    tables_.clear();
+    for (const std::vector<glm::vec2>& map : table.channels) tables_.push_back(texture(GL_RG32F, size, GL_RG, map.data()));
+    gather_ = {};
+    for (int c = 0; c < 3; ++c) gather_.inverse[c] = tables_[table.perChannel() ? static_cast<std::size_t>(c) : 0].id();
+    gather_.lateral = table.perChannel();
+    gather_.outWidthPx = size.widthPx;
+    gather_.outHeightPx = size.heightPx;
+    gather_.lateralScale = glm::vec2(1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue);
+    if (table.perChannel() && !perChannelProgram_)
+      perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
+    forwardPosition_ = {};
+    forwardJacobian_ = {};
+    key_ = std::move(key);
+    ++tablesBuilt_;
+  }
+  // The forward tables serve only the per-view gather: a single view (apply) never reads them,
+  // and at 20000 px they cost more than the render.
+  if (forGather && !forwardPosition_) {
+    const ForwardTable forward = makeForwardTable(camera, size, overscan);
+    forwardPosition_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.position.data());
+    forwardJacobian_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.jacobian.data());
+    gather_.forwardPosition = forwardPosition_.id();
+    gather_.forwardJacobian = forwardJacobian_.id();
+    gather_.reachPx = static_cast<float>(forward.reachPx);
+    gather_.principalPointPx = glm::vec2(forward.principalPointPx);
+  }
 }
 
 void LensPass::apply(const gl::RenderTarget& undistorted, const gl::RenderTarget& out) {

@@ -21,10 +21,11 @@ class LensPass {
   LensPass();  // needs a current context
 
   // Makes the tables for this camera and image size; a no-op when nothing changed since the last call.
-  void prepare(const Camera& camera, ImageSize size, const Overscan& overscan);
+  // The forward tables (for gather()) only when `forGather`: a single view needs the inverse alone.
+  void prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather = true);
   // Remaps `undistorted` (one overscanned view) into `out` (the image size), bilinearly.
   void apply(const gl::RenderTarget& undistorted, const gl::RenderTarget& out);
-  // The tables for the accumulator's per-view gather (after prepare).
+  // The tables for the accumulator's per-view gather (after prepare with forGather).
   const Accumulator::LensGather& gather() const { return gather_; }
   int tablesBuilt() const { return tablesBuilt_; }  // how many times prepare rebuilt the tables
 

@@ -1,6 +1,7 @@
 #include "render/RasterDepth.h"
 
 #include "camera/Projection.h"
+#include "camera/SubWindow.h"
 #include "render/Renderer.h"
 
 #include <vector>
@@ -9,9 +10,11 @@ namespace lenslab {
 
 DepthAtPixel rasterDepth(Renderer& renderer) {
   return [&renderer](const Camera& camera, ImageSize size, int x, int y) {
-    const std::vector<float> depth = renderer.pinholeDepth(camera, size);
-    const double zNdc = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x)];
-    return depthFromReverseZ(camera.view, zNdc);
+    // Only pixel (x, y) is needed: it is rendered alone, through its own sub-window (camera/SubWindow.h),
+    // which sees along the same ray through its centre at any image size.
+    const Camera pixel = subWindowCamera(camera, size, {x, y, x + 1, y + 1});
+    const std::vector<float> depth = renderer.pinholeDepth(pixel, {1, 1});
+    return depthFromReverseZ(pixel.view, depth[0]);
   };
 }
 

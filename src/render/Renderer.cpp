@@ -30,7 +30,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     channelFocusShifts_[static_cast<std::size_t>(c)] = camera_.effects.chromatic.inverseFocusShift(c);
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
-    lensPass_->prepare(camera, size, plan.overscan);
+    lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1);
   }
   if (plan.apertureSamples <= 1) {
     // No lens: the pinhole view from the PRP, at the pixel centres.

@@ -5,7 +5,7 @@
 // constant, the other renderer, a parallel projection), and checks the row's bound.
 //
 //   lenslab_stability              the default rows (about 20 s on 2 cores); exit 1 if a bound fails
-//   lenslab_stability --long       also the slow rows (the largest image the tiles allow)
+//   lenslab_stability --long       also the slow rows (2400 px tiled vs untiled, 20000 px in tiles)
 //   lenslab_stability --markdown F writes the table as Markdown to F (README's "Numerical stability"
 //                                  section is this output: tools/update-stability-table.sh)
 //   lenslab_stability --check-readme README.md
@@ -24,9 +24,11 @@
 #include "io/ImageCompare.h"
 #include "io/ImageFile.h"
 #include "plan/FramePlan.h"
+#include "plan/TilePlan.h"
 #include "plan/UserOptions.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
+#include "render/TiledRender.h"
 #include "scene/GltfLoader.h"
 #include "scene/ProceduralScenes.h"
 #include "scene/Scene.h"
@@ -373,11 +375,40 @@ void degenerateCameras(const Scene& rowsScene) {
   }, 30.0);
 }
 
-void imageSizes(const Scene& rowsScene) {
-  const Camera camera = physical(R"(, "focus_distance": 4)");
+void imageSizes(const Scene& rowsScene, bool longRun) {
+  const Camera camera = prepared(physical(R"(, "focus_distance": 4)"), rowsScene);
   const Image a = raster(rowsScene, camera, {1, 1}, 1024), b = raycast(rowsScene, camera, {1, 1}, 1024);
   const double diff = compareImages(a, b, 0.0).maxAbs;
   record("image size", "1 × 1", "raster (1024 views) vs ray cast (1024 spp) within 0.01", sig(diff), finite(a) && finite(b) && diff <= 0.01);
+  // Tiles: the same samples through sub-windows of the same view plane must give the same image.
+  const Camera lens = prepared(physical(R"(, "focus_distance": 2, "f_number": 2.8)"), rowsScene);
+  for (const ImageSize size : {ImageSize{600, 400}, ImageSize{2400, 1600}}) {
+    if (size.widthPx > 600 && !longRun) continue;
+    const FramePlan plan = makeFramePlan(rowsScene, lens, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3});
+    Renderer renderer(rowsScene);
+    const Image whole = renderer.render(lens, plan, size);
+    const TilePlan tiles = planTiles(lens, size, plan, queryRenderTargetLimits(), size.widthPx / 5);
+    const Image tiled = renderTiled(renderer, lens, plan, size, tiles);
+    const double p = psnr(tiled, whole);
+    record("image size", cat(size.widthPx, " × ", size.heightPx, " f/2.8 in ", tiles.tiles.size(), " forced tiles"),
+           "tiled vs untiled (same samples) ≥ 60 dB", dB(p), finite(tiled) && p >= 60.0);
+  }
+  if (!longRun) return;
+  // The largest image the tiles allow is kMaxImagePixels; 20000 wide is what README's Image sizes
+  // measures. Every pixel must arrive once and be finite.
+  const ImageSize big = resolveImageSize(camera, 20000, std::nullopt);
+  const FramePlan plan = makeFramePlan(rowsScene, camera, big, PlanOptions{AperturePattern::Concentric, 1, 1, 3});
+  Renderer renderer(rowsScene);
+  const TilePlan tiles = planTiles(camera, big, plan, queryRenderTargetLimits(), 0);
+  std::int64_t pixels = 0;
+  bool allFinite = true;
+  renderTiles(renderer, camera, plan, big, tiles, [&](const PixelRect&, const Image& block) {
+    pixels += std::int64_t{block.width} * block.height;
+    allFinite = allFinite && finite(block);
+  });
+  record("image size", cat(big.widthPx, " × ", big.heightPx, " in ", tiles.tiles.size(), " tiles (GL's limit: one 4096² target)"),
+         "every pixel once, finite", cat(pixels, " of ", big.pixelCount(), " pixels", allFinite ? ", finite" : ", NOT FINITE"),
+         allFinite && pixels == big.pixelCount());
 }
 
 // A glTF file with one triangle whose apex is at (0, y, −5): in view it is a band 4 wide, its sides
@@ -490,7 +521,7 @@ int run(int argc, char** argv) {
   sampleCounts();
   distortion(rowsScene);
   degenerateCameras(rowsScene);
-  imageSizes(rowsScene);
+  imageSizes(rowsScene, longRun);
   vertexValues();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int failed = 0;

@@ -49,6 +49,9 @@ fi
 # 16 KiB per file: a 320-pixel PNG of the rows scene is about 30 KiB, a 160-pixel EXR 41 KiB.
 expect_fault "PNG past the limit" "$out/x.png: cannot write it: File too large" "$out" 16 -- render --width 320 --out "$out/x.png"
 expect_fault "EXR past the limit" "$out/x.exr: cannot write it: File too large" "$out" 16 -- render --width 160 --out "$out/x.exr"
+# A tiled render writes strip by strip through OpenImageIO into the run's temporary file.
+expect_fault "tiled PNG past the limit" "$out/t.png: cannot write it:" "$out" 16 -- render --width 320 --tile-size 64 --out "$out/t.png"
+expect_fault "tiled EXR past the limit" "$out/t.exr: cannot write it:" "$out" 16 -- render --width 160 --tile-size 64 --out "$out/t.exr"
 # 1 KiB per file: the 8-pixel image (0.3 KiB) fits and is written first, the stats of a
 # depth-of-field render (1.3 KiB) do not, and the image must go with them.
 expect_fault "--stats past the limit" "$out/s.json: cannot write it: File too large" "$out" 1 \

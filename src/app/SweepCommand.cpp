@@ -10,6 +10,7 @@
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
+#include "plan/TilePlan.h"
 #include "report/Plot.h"
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
@@ -44,6 +45,7 @@ int runSweepCommand(SweepCommandOptions& o) {
   applyBackground(scene, o.background);
   const Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, 0.0), o.lens).camera, scene.bounds);
   const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
+  requireOneTarget(size, RenderTargetLimits{}, "sweep");
   const fs::path out = o.outDir;
   // Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a
   // full disk on the last image) leaves nothing new, not even the folders made here. The folders

@@ -101,6 +101,13 @@ double curvatureShiftPx(const Camera& camera, ImageSize size, const FramePlan& p
          corner * corner / pitch;
 }
 
+void requireOneTarget(ImageSize size, const RenderTargetLimits& limits, const std::string& command) {
+  if (size.widthPx <= limits.maxSidePx && size.heightPx <= limits.maxSidePx && size.pixelCount() <= limits.maxPixels) return;
+  throw InputError(cat("--width/--height: ", command, " renders the whole ", size.widthPx, "x", size.heightPx,
+                       " image into one render target, which holds at most ", limits.maxPixels, " pixels and ", limits.maxSidePx,
+                       " a side; give a smaller size (render draws larger images in tiles)"));
+}
+
 TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, const RenderTargetLimits& limits,
                    int forcedTileSidePx) {
   TilePlan out;

@@ -53,6 +53,10 @@ struct TilePlan {
 TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, const RenderTargetLimits& limits,
                    int forcedTileSidePx = 0);
 
+// For the commands that render the whole image into one target (sweep, view): refuses, in one
+// line naming `command`, an image that only tiles could hold (render tiles; they do not).
+void requireOneTarget(ImageSize size, const RenderTargetLimits& limits, const std::string& command);
+
 // What the renderer needs for one tile: the camera and size it renders, the plan with the tile's
 // overscan, and which pixels of the result are the tile's.
 struct TileView {

@@ -11,6 +11,7 @@
 #include "gl/GlContext.h"
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
+#include "plan/TilePlan.h"
 #include "scene/GltfLoader.h"
 
 #include <stdexcept>
@@ -89,6 +90,7 @@ int runView(const ViewOptions& o) {
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.
   const std::optional<int> width = o.width || o.height || o.frames > 0 ? o.width : std::optional<int>(640);
   const ImageSize size = resolveImageSize(camera.camera, width, o.height);
+  requireOneTarget(size, RenderTargetLimits{}, "view");
 
   GlfwLibrary glfw;
   const glm::ivec2 windowSize = o.windowSize ? *o.windowSize

@@ -160,6 +160,7 @@ expect_refusal "focus at f on the command line" "focus_distance is 0.035; it mus
 sed 's/"near": 0.05,/"near": 0.05, "distortion": {"k1": 2, "k2": -2},/' "$a/rows/camera.json" >"$work/strong.json"
 if "$lenslab" render --camera "$work/strong.json" --width 48 --out "$work/strong.png" -q && [ -s "$work/strong.png" ]; then pass
 else fail "k1 2, k2 -2 (folds only beyond the image) was refused"; fi
+expect_refusal "sweep beyond one render target" "sweep renders the whole 20000x13333 image into one render target" -- sweep --width 20000 --out "$work/out.sweep"
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

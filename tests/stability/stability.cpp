@@ -131,7 +131,7 @@ std::string refusal(const std::function<void()>& f) {
 bool oneLine(const std::string& message) { return !message.empty() && message.find('\n') == std::string::npos; }
 
 std::string shortened(const std::string& message) {
-  return message.size() <= 90 ? message : message.substr(0, 87) + "...";
+  return message.size() <= 120 ? message : message.substr(0, 117) + "...";
 }
 
 Camera physical(const std::string& extra) {
@@ -208,11 +208,11 @@ void focus(const Scene& rowsScene) {
   }
   // Just beyond the focal length the image distance is huge and the field of view tiny; the
   // renderers must still agree (and give finite numbers).
-  for (const double z : {f * (1.0 + 1e-6), f * 1.01, 0.5}) {
+  for (const auto& [z, label] : {std::pair{f * (1.0 + 1e-6), "f·(1 + 1e-6)"}, std::pair{f * 1.01, "1.01 f"}, std::pair{0.5, "0.5 (14.3 f)"}}) {
     const Camera c = physical(cat(R"(, "f_number": 2.8, "focus_distance": )", z));
     const Image a = raster(rowsScene, c, size, 64), b = raycast(rowsScene, c, size, 64);
     const double p = psnr(a, b);
-    record("focus distance", cat("f/2.8 focused at ", sig(z / f), " f"), "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
+    record("focus distance", cat("f/2.8 (f = 35 mm) focused at ", label), "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
            cat(finite(a) && finite(b) ? "finite, " : "NOT FINITE, ", dB(p)), finite(a) && finite(b) && p >= 25.0);
   }
   for (const double z : {f, 0.5 * f}) {
@@ -254,7 +254,7 @@ void sampleCounts() {
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x)
         for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(static_cast<double>(image.at(x, y)[ch]) - colour[ch]));
-    record("sample count", cat(n, " accumulated views of a constant colour"), "|mean − exact| ≤ 1e-4", sig(worst), worst <= 1e-4);
+    record("sample count", cat(n, " accumulated views of a constant colour"), "largest abs(mean − exact) ≤ 1e-4", sig(worst), worst <= 1e-4);
   }
 }
 
@@ -457,12 +457,19 @@ void vertexValues() {
   fs::remove_all(dir);
 }
 
+// A table cell: '|' would end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
 std::string markdown() {
   std::ostringstream s;
   s << "| | case | bound | measured |\n|---|---|---|---|\n";
   std::string group;
   for (const Row& r : rows) {
-    s << "| " << (r.group != group ? r.group : "") << " | " << r.input << " | " << r.bound << " | " << r.measured
+    s << "| " << (r.group != group ? r.group : "") << " | " << cell(r.input) << " | " << cell(r.bound) << " | " << cell(r.measured)
       << (r.ok ? "" : " **(fails)**") << " |\n";
     group = r.group;
   }

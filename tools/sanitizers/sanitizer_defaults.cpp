@@ -1,0 +1,29 @@
+// Default sanitizer options of the LENSLAB_SANITIZE build, linked into each of its executables
+// (top-level CMakeLists.txt), so that ctest, tools/sanitize.sh and a `lenslab` run by hand behave
+// the same. ASAN_OPTIONS, UBSAN_OPTIONS and LSAN_OPTIONS in the environment are applied after
+// these, so they add to or override them; the environment's LSAN_OPTIONS=suppressions=FILE adds
+// to the suppressions below.
+
+extern "C" {
+
+// Findings abort (a core-dump-free SIGABRT, so ctest shows the test as failed with the report).
+const char* __asan_default_options() { return "abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1"; }
+
+// UBSan: a stack trace, and stop at the first finding (with -fno-sanitize-recover=undefined the
+// process aborts whatever this says; kept for builds that recover).
+const char* __ubsan_default_options() { return "print_stacktrace=1:halt_on_error=1"; }
+
+// LeakSanitizer stays on for our code. Mesa's OpenGL driver, which lenslab opens with dlopen
+// (src/gl/OsmesaContext.cpp, EGL through libglvnd), keeps allocations until the process ends
+// that it never frees (LLVM's JIT and pass registries, the driver's screen cache, glsl types);
+// those are leaks of the driver, not ours, so reports whose stack passes through one of these
+// libraries are suppressed (matched against the module name of each frame).
+const char* __lsan_default_suppressions() {
+  return "leak:libOSMesa.so\n"
+         "leak:libLLVM-15.so\n"
+         "leak:libgallium\n"
+         "leak:libEGL_mesa.so\n"
+         "leak:libglapi.so\n";
+}
+
+}  // extern "C"

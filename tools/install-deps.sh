@@ -9,6 +9,9 @@ packages=(
   libopenimageio-dev openimageio-tools libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev
   xvfb xauth fonts-dejavu-core python3-pil
+  # tools/fuzz.sh: libFuzzer comes with clang (the default build stays on gcc); llvm-14 has
+  # llvm-symbolizer, for file:line in the fuzzers' reports
+  clang-14 libclang-rt-14-dev llvm-14
 )
 
 missing=()

@@ -291,9 +291,10 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond double's range
     std::string what = e.what();
     if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+    else if (const auto end = what.find("] "); what.starts_with("[json.exception") && end != std::string::npos) what.erase(0, end + 2);
     throw InputError(cat(where, ": not valid JSON: ", what));
   }
   if (!root.is_object()) throw InputError(cat(where, ": a camera file must hold a JSON object, not ", root.type_name()));

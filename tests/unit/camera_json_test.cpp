@@ -83,5 +83,12 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "f_number": 2, "focus_distance": "inf"})", "focus_distance");
 }
 
+// Found by fuzzing (tools/fuzz.sh, camera_json_fuzz): a number beyond double's range made
+// nlohmann throw out_of_range, not parse_error, which escaped the reader as a non-InputError.
+TEST(CameraJson, NumberBeyondDoubleIsRefusedAsInvalidJson) {
+  expectRefused(R"({"eye": [0, 0, 2.5e308], "target": [0, 0, 0]})", "not valid JSON: number overflow parsing '2.5e308'");
+  expectRefused("[1, -1e400]", "not valid JSON");
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -88,6 +90,10 @@ class Reader {
   int integer(const std::string& key) const {
     const json& v = object_.at(key);
     if (!v.is_number_integer()) fail(key, cat("must be a whole number, not ", v.dump()));
+    // get<int>() wraps what int cannot hold (4294967297 would be read as 1): refused instead.
+    const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= INT_MAX
+                                             : v.get<std::int64_t>() >= INT_MIN && v.get<std::int64_t>() <= INT_MAX;
+    if (!fits) fail(key, cat("is ", v.dump(), "; give a whole number from ", INT_MIN, " to ", INT_MAX));
     return v.get<int>();
   }
 

@@ -90,5 +90,14 @@ TEST(CameraJson, NumberBeyondDoubleIsRefusedAsInvalidJson) {
   expectRefused("[1, -1e400]", "not valid JSON");
 }
 
+// Found by reading the reader while fuzzing (no sanitizer sees it): get<int>() wrapped a whole
+// number beyond int, so a width of 2^32 + 1 pixels was read as 1 and accepted.
+TEST(CameraJson, WholeNumberBeyondIntIsRefusedNotWrapped) {
+  const std::string head = R"({"eye": [0, 0, 3], "target": [0, 0, 0], "intrinsics": {"fx": 500, "fy": 500, "cx": 0, "cy": 0, )";
+  expectRefused(head + R"("width": 4294967297, "height": 480}})", "\"intrinsics.width\" is 4294967297");
+  expectRefused(head + R"("width": 640, "height": 18446744073709551615}})", "\"intrinsics.height\" is 18446744073709551615");
+  expectRefused(head + R"("width": 640, "height": -4294967295}})", "\"intrinsics.height\"");
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -20,6 +20,8 @@ namespace {
 using nlohmann::json;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Camera files nest two levels ("distortion": {...}); far deeper is refused, not recursed into.
+constexpr int kMaxJsonDepth = 64;
 
 const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
                                             "aperture_radius", "focus_distance"};
@@ -296,7 +298,12 @@ void parseCommon(const Reader& r, CameraFile& file) {
 CameraFile parseCameraJson(const std::string& text, const std::string& where) {
   json root;
   try {
-    root = json::parse(text);
+    // Nesting is bounded while parsing: the messages below quote values with dump(), which
+    // recurses once per level (a value nested a million deep overflowed the stack).
+    root = json::parse(text, [&](int depth, json::parse_event_t, json&) {
+      if (depth > kMaxJsonDepth) throw InputError(cat(where, ": the JSON nests deeper than ", kMaxJsonDepth, " levels"));
+      return true;
+    });
   } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond double's range
     std::string what = e.what();
     if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);

@@ -99,5 +99,13 @@ TEST(CameraJson, WholeNumberBeyondIntIsRefusedNotWrapped) {
   expectRefused(head + R"("width": 640, "height": -4294967295}})", "\"intrinsics.height\"");
 }
 
+// Found by reasoning while fuzzing (a million-deep value is larger than libFuzzer's inputs): the
+// messages quoted the value with nlohmann's recursive dump(), and the stack overflowed.
+TEST(CameraJson, DeeplyNestedValueIsRefusedNotACrash) {
+  const std::size_t depth = 1000000;
+  expectRefused(R"({"vrp": )" + std::string(depth, '[') + std::string(depth, ']') + "}", "nests deeper than 64 levels");
+  expectRefused(R"({"distortion": {"k1": )" + std::string(depth, '[') + std::string(depth, ']') + "}}", "nests deeper");
+}
+
 }  // namespace
 }  // namespace lenslab

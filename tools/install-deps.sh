@@ -10,6 +10,10 @@ packages=(
   libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev
   xvfb xauth fonts-dejavu-core python3-pil
 )
+# --fuzz: also what tools/fuzz.sh needs (it asks for them itself): libFuzzer comes with clang (the
+# default build stays on gcc); llvm-14 has llvm-symbolizer, for file:line in the fuzzers' reports.
+# Not in the default set: about 400 MB that only fuzzing uses.
+if [ "${1:-}" = "--fuzz" ]; then packages+=(clang-14 libclang-rt-14-dev llvm-14); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -18,6 +20,8 @@ namespace {
 using nlohmann::json;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Camera files nest two levels ("distortion": {...}); far deeper is refused, not recursed into.
+constexpr int kMaxJsonDepth = 64;
 
 const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
                                             "aperture_radius", "focus_distance"};
@@ -88,6 +92,10 @@ class Reader {
   int integer(const std::string& key) const {
     const json& v = object_.at(key);
     if (!v.is_number_integer()) fail(key, cat("must be a whole number, not ", v.dump()));
+    // get<int>() wraps what int cannot hold (4294967297 would be read as 1): refused instead.
+    const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= INT_MAX
+                                             : v.get<std::int64_t>() >= INT_MIN && v.get<std::int64_t>() <= INT_MAX;
+    if (!fits) fail(key, cat("is ", v.dump(), "; give a whole number from ", INT_MIN, " to ", INT_MAX));
     return v.get<int>();
   }
 
@@ -293,10 +301,16 @@ void parseCommon(const Reader& r, CameraFile& file) {
 CameraFile parseCameraJson(const std::string& text, const std::string& where) {
   json root;
   try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
+    // Nesting is bounded while parsing: the messages below quote values with dump(), which
+    // recurses once per level (a value nested a million deep overflowed the stack).
+    root = json::parse(text, [&](int depth, json::parse_event_t, json&) {
+      if (depth > kMaxJsonDepth) throw InputError(cat(where, ": the JSON nests deeper than ", kMaxJsonDepth, " levels"));
+      return true;
+    });
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond double's range
     std::string what = e.what();
     if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+    else if (const auto end = what.find("] "); what.starts_with("[json.exception") && end != std::string::npos) what.erase(0, end + 2);
     throw InputError(cat(where, ": not valid JSON: ", what));
   }
   if (!root.is_object()) throw InputError(cat(where, ": a camera file must hold a JSON object, not ", root.type_name()));

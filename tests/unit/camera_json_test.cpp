@@ -83,5 +83,29 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "f_number": 2, "focus_distance": "inf"})", "focus_distance");
 }
 
+// Found by fuzzing (tools/fuzz.sh, camera_json_fuzz): a number beyond double's range made
+// nlohmann throw out_of_range, not parse_error, which escaped the reader as a non-InputError.
+TEST(CameraJson, NumberBeyondDoubleIsRefusedAsInvalidJson) {
+  expectRefused(R"({"eye": [0, 0, 2.5e308], "target": [0, 0, 0]})", "not valid JSON: number overflow parsing '2.5e308'");
+  expectRefused("[1, -1e400]", "not valid JSON");
+}
+
+// Found by reading the reader while fuzzing (no sanitizer sees it): get<int>() wrapped a whole
+// number beyond int, so a width of 2^32 + 1 pixels was read as 1 and accepted.
+TEST(CameraJson, WholeNumberBeyondIntIsRefusedNotWrapped) {
+  const std::string head = R"({"eye": [0, 0, 3], "target": [0, 0, 0], "intrinsics": {"fx": 500, "fy": 500, "cx": 0, "cy": 0, )";
+  expectRefused(head + R"("width": 4294967297, "height": 480}})", "\"intrinsics.width\" is 4294967297");
+  expectRefused(head + R"("width": 640, "height": 18446744073709551615}})", "\"intrinsics.height\" is 18446744073709551615");
+  expectRefused(head + R"("width": 640, "height": -4294967295}})", "\"intrinsics.height\"");
+}
+
+// Found by reasoning while fuzzing (a million-deep value is larger than libFuzzer's inputs): the
+// messages quoted the value with nlohmann's recursive dump(), and the stack overflowed.
+TEST(CameraJson, DeeplyNestedValueIsRefusedNotACrash) {
+  const std::size_t depth = 1000000;
+  expectRefused(R"({"vrp": )" + std::string(depth, '[') + std::string(depth, ']') + "}", "nests deeper than 64 levels");
+  expectRefused(R"({"distortion": {"k1": )" + std::string(depth, '[') + std::string(depth, ']') + "}}", "nests deeper");
+}
+
 }  // namespace
 }  // namespace lenslab

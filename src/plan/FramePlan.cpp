@@ -1,5 +1,6 @@
 #include "plan/FramePlan.h"
 
+#include "camera/DepthRange.h"
 #include "core/Text.h"
 
 #include <algorithm>
@@ -19,18 +20,12 @@ namespace {
 
 // Depth range of the scene's bounds seen from the PRP, clipped to [near, far].
 void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
-  const ViewBasis b = viewBasis(camera.view);
-  const glm::dvec3 prp = prpWorld(camera.view);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  if (!scene.bounds.empty())
-    for (int corner = 0; corner < 8; ++corner) {
-      const glm::dvec3 p((corner & 1) ? scene.bounds.max.x : scene.bounds.min.x,
-                         (corner & 2) ? scene.bounds.max.y : scene.bounds.min.y,
-                         (corner & 4) ? scene.bounds.max.z : scene.bounds.min.z);
-      const double depth = glm::dot(p - prp, -b.n);
-      lo = std::min(lo, depth);
-      hi = std::max(hi, depth);
-    }
+  if (!scene.bounds.empty()) {
+    const DepthInterval d = depthIntervalOf(camera.view, scene.bounds);
+    lo = d.nearest;
+    hi = d.farthest;
+  }
   plan.depthMin = std::max(lo, camera.view.nearDistance);
   plan.depthMax = std::min(hi, camera.view.farDistance);
 }

@@ -2,6 +2,8 @@
 #include "io/ImageCompare.h"
 #include "io/ImageFile.h"
 
+#include "../common/temp_dir_test.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,20 +12,7 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 
-class ImageFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lenslab-image-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::size_t fileCount() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-  }
-  fs::path dir_;
-};
+class ImageFileTest : public test::TempDirTest {};
 
 Image ramp() {
   Image image(16, 8);

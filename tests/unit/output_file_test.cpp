@@ -6,6 +6,8 @@
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
 
+#include "../common/temp_dir_test.h"
+
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -21,21 +23,7 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 
-class OutputFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lenslab-output-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  // Every name in the folder, the dot files (temporaries, probes) included.
-  std::size_t fileCount() const {
-    return static_cast<std::size_t>(std::distance(fs::recursive_directory_iterator(dir_), fs::recursive_directory_iterator()));
-  }
-  fs::path dir_;
-};
+class OutputFileTest : public test::TempDirTest {};
 
 // Writes past `bytes` fail with EFBIG while one lives; the old limit and signal action come back.
 class FileSizeLimit {

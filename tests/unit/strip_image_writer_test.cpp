@@ -3,6 +3,8 @@
 #include "io/ImageFile.h"
 #include "io/StripImageWriter.h"
 
+#include "../common/temp_dir_test.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -13,17 +15,7 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 
-class StripImageWriterTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lenslab-strip-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class StripImageWriterTest : public test::TempDirTest {};
 
 // Values past [0, 1] and negative ones too: PNG clamps them, EXR keeps them.
 Image noise(int width, int height) {

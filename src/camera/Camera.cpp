@@ -27,6 +27,10 @@ ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std
   return resolveImageSize(aspect, "the calibrated image's", widthPx, heightPx);
 }
 
+double viewPlaneDistanceFor(double focusDistance, double nearDistance) {
+  return focusDistance <= kMaxViewPlaneMove * nearDistance ? focusDistance : nearDistance;
+}
+
 double Camera::focusDistance() const {
   const double inverse = inverseFocusDistance();
   return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
@@ -39,10 +43,10 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
   // Perspective and parallel alike: a point at depth z_f lands on the same window point from every
   // aperture point when the window moves by 1 − d/z_f of the lens offset (0 on the view plane).
   // Parallel cameras have no lens effects, so no shift.
-  const double shift0 = v.projection == Projection::Perspective ? inverseFocusShift : 0.0;
-  const double windowTravel = !camera.inverseFocusOffPlane && shift0 == 0.0
+  const double focusShift = v.projection == Projection::Perspective ? inverseFocusShift : 0.0;
+  const double windowTravel = !camera.inverseFocusOffPlane && focusShift == 0.0
                                   ? 0.0  // exactly, not 1 − d·(1/d)
-                                  : 1.0 - v.prp.z * (camera.inverseFocusDistance() + shift0);
+                                  : 1.0 - v.prp.z * (camera.inverseFocusDistance() + focusShift);
   const glm::dvec2 shift = windowTravel * lensOffset + pixelOffset;
   // Sub-pixel jitter moves a parallel projection as a whole: with the PRP left behind, the DOP
   // would tilt and points off the view plane would smear across pixels (a lens nobody asked for).
@@ -72,7 +76,7 @@ Camera refocused(const Camera& camera, double distance, const std::string& where
   if (c.view.projection == Projection::Parallel) {
     if (std::isinf(distance)) throw InputError(cat(where, ": a parallel projection cannot focus at infinity"));
   }
-  if (distance > kMaxViewPlaneMove * c.view.prp.z) {
+  if (viewPlaneDistanceFor(distance, c.view.prp.z) != distance) {
     // Computed as 1/z_f: 1/1e300 is a tiny number, not a view plane at 1e300.
     c.inverseFocusOffPlane = 1.0 / distance;
     return c;

@@ -72,6 +72,12 @@ double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFoc
 // focus is carried as 1/z_f with the view plane left where it is (as at infinity).
 constexpr double kMaxViewPlaneMove = 1e3;
 
+// Where a camera puts its view plane for focus at `focusDistance` (+infinity allowed): on the
+// plane of focus up to kMaxViewPlaneMove × `nearDistance` (the current view plane, or the target),
+// else at `nearDistance`, the focus then carried as 1/z_f. The one rule for refocusing and for
+// the physical and intrinsics forms.
+double viewPlaneDistanceFor(double focusDistance, double nearDistance);
+
 // Moves the plane of focus to `distance` (world units along −n from the PRP; +infinity allowed for
 // perspective). Up to kMaxViewPlaneMove × PRP.n the view plane moves to the plane of focus and the
 // window scales about the principal point (the field of view is kept); further out the view plane

@@ -52,7 +52,7 @@ double imageDistance(double focalLength, double focusDistance) {
 
 double viewPlaneDistance(const PhysicalCamera& c) {
   const double toTarget = glm::length(c.target - c.eye);
-  return c.focusDistance <= kMaxViewPlaneMove * toTarget ? c.focusDistance : toTarget;
+  return viewPlaneDistanceFor(c.focusDistance, toTarget);
 }
 
 ViewSpec toViewSpec(const PhysicalCamera& c) {

@@ -208,7 +208,7 @@ CameraFile parseIntrinsics(const Reader& r) {
   // integers with (0, 0) the centre of the top-left pixel; lenslab puts them at i + 0.5 with (0, 0)
   // the top-left corner: lenslab x = OpenCV x + 0.5. OpenCV's y runs down, the window's v up.
   // As for the physical form: a focus beyond kMaxViewPlaneMove × |target − eye| is held as 1/z_f.
-  const double d = focus <= kMaxViewPlaneMove * toTarget ? focus : toTarget;
+  const double d = viewPlaneDistanceFor(focus, toTarget);
   ViewSpec spec;
   spec.vpn = glm::normalize(eye - target);
   spec.vup = up;

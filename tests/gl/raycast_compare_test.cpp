@@ -55,8 +55,8 @@ TEST(RasterVsRaycast, ThinLensRowsAndOccluder) {
 }
 
 // A scene and its camera moved far from the world origin render as they do at the origin: Embree
-// gets float coordinates, so the ray caster keeps its geometry relative to the camera (subtracted
-// in double). Before that, `rows` moved by 1e6 lost a column (22.5 dB), by 1e7 18.5 dB.
+// gets float coordinates, so the ray caster keeps its geometry relative to the point of the
+// scene's bounds nearest the camera (subtracted in double). Before that, `rows` moved by 1e6 lost a column (22.5 dB), by 1e7 18.5 dB.
 TEST(RaycastPrecision, ASceneFarFromTheOriginRendersAsAtTheOrigin) {
   const fs::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / "rows/rows.gltf");

@@ -1,5 +1,7 @@
 #include "lens/AperturePattern.h"
 
+#include "lens/SobolSequence.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,11 +13,12 @@ namespace lenslab {
 namespace {
 
 // The one list of the patterns' names: the command line, the panel and the reports read it.
-constexpr std::array<std::pair<AperturePattern, const char*>, 4> kNames{{
+constexpr std::array<std::pair<AperturePattern, const char*>, 5> kNames{{
     {AperturePattern::Lecture17, "lecture17"},
     {AperturePattern::Concentric, "concentric"},
     {AperturePattern::R2, "r2"},
     {AperturePattern::Random, "random"},
+    {AperturePattern::Sobol, "sobol"},
 }};
 
 }  // namespace
@@ -146,6 +149,11 @@ std::vector<LensSample> makeApertureSamples(AperturePattern pattern, int count, 
     case AperturePattern::Concentric: return concentric(count, seed);
     case AperturePattern::R2: return r2(count, seed);
     case AperturePattern::Random: return random(count, seed);
+    case AperturePattern::Sobol: {
+      std::vector<LensSample> samples;
+      for (int i = 0; i < count; ++i) samples.push_back(sobolSample(static_cast<std::uint32_t>(i), seed));
+      return samples;
+    }
   }
   return {};
 }

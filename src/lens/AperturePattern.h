@@ -18,6 +18,8 @@ enum class AperturePattern {
   Concentric,  // stratified (jittered grid) through Shirley–Chiu's concentric square→disk map
   R2,          // Roberts' R-sequence (here in four dimensions): lens from two, pixel from two
   Random,      // independent uniform points, for comparison
+  Sobol,       // Owen-scrambled Sobol' points in two interleaved streams: every prefix well spread
+               // (lens/SobolSequence.h); the progressive order that per-tile budgets stop early in
 };
 
 const char* patternName(AperturePattern pattern);

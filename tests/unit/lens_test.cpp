@@ -70,7 +70,7 @@ TEST(AperturePattern, Lecture17IsCentrePlusTwoRadiiEvery45Degrees) {
 }
 
 TEST(AperturePattern, EveryPatternStaysInTheDiskAndIsReproducible) {
-  for (AperturePattern p : {AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random, AperturePattern::Lecture17}) {
+  for (AperturePattern p : {AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random, AperturePattern::Lecture17, AperturePattern::Sobol}) {
     SCOPED_TRACE(patternName(p));
     const auto a = makeApertureSamples(p, 100, 7), b = makeApertureSamples(p, 100, 7), other = makeApertureSamples(p, 100, 8);
     ASSERT_EQ(a.size(), p == AperturePattern::Lecture17 ? 17u : 100u);
@@ -91,7 +91,7 @@ TEST(AperturePattern, EveryPatternStaysInTheDiskAndIsReproducible) {
 
 TEST(AperturePattern, StratifiedPatternsCoverTheDiskEvenly) {
   // Mean of a uniform disk is 0 and E[r²] = 1/2; stratified and low-discrepancy points get close.
-  for (AperturePattern p : {AperturePattern::Concentric, AperturePattern::R2}) {
+  for (AperturePattern p : {AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Sobol}) {
     const auto s = makeApertureSamples(p, 256, 1);
     glm::dvec2 mean(0.0);
     double r2 = 0.0;

@@ -7,14 +7,13 @@
 namespace lenslab {
 
 void addLensOptions(CLI::App& cmd, LensOptions& o) {
-  cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames())
-      ->check(CLI::IsMember(patternNameList()))
-      ->capture_default_str();
+  cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: concentric; sobol with --target-psnr)")
+      ->check(CLI::IsMember(patternNameList()));
   cmd.add_option("--aperture-samples", o.apertureSamples,
                  "scene passes, one per aperture point: a number, or auto (from the largest circle of confusion in view)")
       ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 65536))
       ->capture_default_str();
-  cmd.add_option("--max-samples", o.maxSamples, "the most aperture samples auto may choose")
+  cmd.add_option("--max-samples", o.maxSamples, "the most aperture samples auto may choose (with --target-psnr: per tile)")
       ->check(CLI::Range(1, 65536))
       ->capture_default_str();
   cmd.add_option("--seed", o.seed, "seed for the aperture and sub-pixel samples")->capture_default_str();
@@ -22,6 +21,15 @@ void addLensOptions(CLI::App& cmd, LensOptions& o) {
                  "put the plane of focus this far from the PRP (world units, or infinity)");
   addPairOption(cmd, "--focus-at", [&o](double x, double y) { o.focusAt = glm::dvec2(x, y); },
                 "focus on the depth under pixel X,Y of the image");
+}
+
+void addTargetOption(CLI::App& cmd, LensOptions& o) {
+  cmd.add_option("--target-psnr", o.targetPsnrDb,
+                 "render to an error instead of a count: each 32-px tile gets its own number of samples, in a "
+                 "progressive order, until the estimated PSNR of the image against its own converged limit reaches DB "
+                 "(--max-samples still caps each tile)")
+      ->check(CLI::Range(10.0, 100.0))
+      ->type_name("DB");
 }
 
 CLI::Option* addPairOption(CLI::App& cmd, const std::string& name, std::function<void(double, double)> set,

@@ -14,6 +14,8 @@
 namespace lenslab {
 
 void addLensOptions(CLI::App& command, LensOptions& options);
+// --target-psnr DB (render and view; sweep runs its adaptive method at several targets).
+void addTargetOption(CLI::App& command, LensOptions& options);
 
 // --background R,G,B: the colour (linear RGB, each finite, 0 to 65504) where no surface is seen.
 void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);

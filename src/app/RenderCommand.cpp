@@ -19,9 +19,11 @@
 #include "render/RasterDepth.h"
 #include "render/Renderer.h"
 #include "render/TiledRender.h"
+#include "render/VisibleBlurPass.h"
 #include "scene/GltfLoader.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdint>
 #include <iostream>
 #include <memory>
@@ -73,12 +75,22 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
 
   if (o.lens.focusAt)
     camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer)).camera, scene.bounds);
-  const FramePlan plan = makeFramePlan(scene, camera, size, planOptions);
+  // The blur actually seen, from a pinhole depth pre-pass, when the plan chooses a count.
+  std::optional<VisibleBlur> visible;
+  const auto renderStart = std::chrono::steady_clock::now();
+  if (!camera.isPinhole() && (planOptions.apertureSamples == 0 || planOptions.targetPsnrDb)) {
+    visible = measureVisibleBlur(renderer, camera, size);
+    stats.prepassSeconds = secondsSince(renderStart);
+  }
+  const FramePlan plan = makeFramePlan(scene, camera, size, planOptions, visible ? &*visible : nullptr);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
   stats.plan = plan;
 
   const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), o.tileSizePx);
+  if (tiles.tiled && plan.adaptive)
+    throw InputError(cat("--target-psnr: ", tiles.why, "; per-tile budgets are not combined with that yet: give a smaller "
+                         "--width, or --aperture-samples"));
   if (tiles.tiled) {
     stats.plan.passes.push_back({"tiles", tiles.why, {}});
     const bool showProgress = !o.quiet && isTerminal(stderr);
@@ -104,6 +116,24 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
 
   t = std::chrono::steady_clock::now();
   renderer.begin(camera, plan, size);
+  if (plan.adaptive) {
+    const bool showProgress = !o.quiet && isTerminal(stderr);
+    while (renderer.step()) {
+      const FrameEstimate e = renderer.estimate();
+      if (showProgress)
+        std::fprintf(stderr, "\r%5.1f dB of %.1f (estimate), %.1f samples per pixel, %d of %d tiles going, %.1f s   ",
+                     e.psnrDb, plan.adaptive->targetPsnrDb, e.meanSamples, e.tilesActive, e.tiles, secondsSince(t));
+    }
+    Image image = renderer.resolve();
+    stats.renderSeconds = secondsSince(renderStart);
+    stats.estimate = renderer.estimate();
+    if (showProgress) std::cerr << "\n";
+    if (!o.quiet && !stats.estimate->targetMet)
+      std::cerr << "lenslab: warning: the estimate reached " << stats.estimate->psnrDb << " dB, short of --target-psnr "
+                << plan.adaptive->targetPsnrDb << ": the tiles still short of it are at --max-samples "
+                << plan.adaptive->maxSamples << "\n";
+    return image;
+  }
   const bool showProgress = !o.quiet && plan.apertureSamples > 1 && isTerminal(stderr);
   // Samples in batches, so that long renders report progress on a terminal.
   const int batch = std::max(1, plan.apertureSamples / 50);
@@ -112,7 +142,7 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     if (showProgress) printProgress(renderer.samplesDone(), renderer.samplesPlanned(), secondsSince(t));
   }
   Image image = renderer.resolve();
-  stats.renderSeconds = secondsSince(t);
+  stats.renderSeconds = secondsSince(renderStart);
   if (showProgress) std::cerr << "\n";
 
   return image;
@@ -199,7 +229,12 @@ int runRender(const RenderOptions& o) {
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
   outputs.commit();
-  if (!o.quiet)
+  if (!o.quiet && stats.estimate)
+    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", estimated "
+              << stats.estimate->psnrDb << " dB with " << stats.estimate->meanSamples << " samples per pixel on average ("
+              << stats.estimate->minSamples << " to " << stats.estimate->maxSamples << " per tile), " << stats.renderer
+              << ", " << stats.seconds << " s)\n";
+  else if (!o.quiet)
     std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
               << stats.plan.apertureSamples
               << (o.method == Method::Raster ? " aperture sample" : " sample") << (stats.plan.apertureSamples == 1 ? "" : "s")
@@ -243,6 +278,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->capture_default_str();
   }
   addLensOptions(*cmd, options->lens);
+  if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addBackgroundOption(*cmd, options->background);
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");

@@ -18,7 +18,8 @@ std::string toJson(const RunStats& s) {
   j["timings"] = {{"context_seconds", s.contextSeconds},
                   {"setup_seconds", s.setupSeconds},
                   {"render_seconds", s.renderSeconds},
-                  {"write_seconds", s.writeSeconds}};
+                  {"write_seconds", s.writeSeconds},
+                  {"prepass_seconds", s.prepassSeconds}};
   nlohmann::json passes = nlohmann::json::array();
   for (const PlannedPass& p : s.plan.passes) passes.push_back({{"name", p.name}, {"why", p.why}, {"variants", p.variants}});
   j["plan"] = {{"passes", passes},
@@ -30,6 +31,26 @@ std::string toJson(const RunStats& s) {
                {"depth_range", {{"min", s.plan.depthMin}, {"max", s.plan.depthMax}}},
                {"views_per_sample", s.plan.viewsPerSample},
                {"render_size", {s.plan.overscan.size.widthPx, s.plan.overscan.size.heightPx}}};
+  if (s.plan.visible) {
+    const VisibleBlurSummary& v = *s.plan.visible;
+    j["plan"]["visible_blur"] = {
+        {"prepass_size", {v.prepass.widthPx, v.prepass.heightPx}},
+        {"fraction_of_pixels", {{"coc_le_1px", v.fractions[0]}, {"coc_1_to_4px", v.fractions[1]}, {"coc_4_to_16px", v.fractions[2]},
+                                {"coc_16_to_64px", v.fractions[3]}, {"coc_over_64px", v.fractions[4]}}},
+        {"coc_px_percentiles", {{"p50", v.p50Px}, {"p90", v.p90Px}, {"p99", v.p99Px}, {"max", v.maxPx}}},
+        {"bounds_coc_max_px", v.boundsCocMaxPx},
+        {"bounds_aperture_samples", v.boundsSamples}};
+  }
+  if (s.plan.adaptive) {
+    j["plan"]["target_psnr"] = s.plan.adaptive->targetPsnrDb;
+    j["plan"]["tile_size"] = s.plan.adaptive->tileSizePx;
+  }
+  if (s.estimate) {
+    const FrameEstimate& e = *s.estimate;
+    j["estimate"] = {{"psnr", e.psnrDb}, {"rmse", e.rmse}, {"target_met", e.targetMet},
+                     {"against", "the image's own converged limit (two independent sample streams)"}};
+    j["samples"] = {{"min", e.minSamples}, {"mean", e.meanSamples}, {"max", e.maxSamples}, {"tiles", e.tiles}, {"rounds", e.rounds}};
+  }
   return j.dump(2) + "\n";
 }
 

@@ -3,8 +3,10 @@
 #include "camera/ImageSize.h"
 #include "io/AtomicFile.h"
 #include "plan/FramePlan.h"
+#include "plan/TileBudget.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace lenslab {
@@ -23,6 +25,8 @@ struct RunStats {
   double setupSeconds = 0.0;     // uploading the scene and compiling shaders
   double renderSeconds = 0.0;    // the frame, GPU work finished (glFinish), with read-back
   double writeSeconds = 0.0;     // encoding and writing the image
+  double prepassSeconds = 0.0;   // the pinhole depth pre-pass and its blur map (part of renderSeconds)
+  std::optional<FrameEstimate> estimate;  // with --target-psnr
 };
 
 std::string toJson(const RunStats& stats);

@@ -88,7 +88,8 @@ int runSweepCommand(SweepCommandOptions& o) {
   const std::map<std::string, glm::vec3> colours = {
       {"raster lecture17", {0.8f, 0.1f, 0.6f}}, {"raster concentric", {0.1f, 0.3f, 0.9f}},
       {"raster r2", {0.0f, 0.6f, 0.3f}},        {"raster random", {0.9f, 0.5f, 0.0f}},
-      {"raycast stratified", {0.8f, 0.0f, 0.0f}}, {"postprocess gather", {0.3f, 0.3f, 0.3f}}};
+      {"raycast stratified", {0.8f, 0.0f, 0.0f}}, {"postprocess gather", {0.3f, 0.3f, 0.3f}},
+      {"raster sobol", {0.5f, 0.3f, 0.8f}},       {"adaptive sobol", {0.0f, 0.75f, 0.85f}}};
   std::vector<PlotSeries> series;
   for (const SweepRow& row : result.rows) {
     const std::string key = row.method + " " + row.pattern;
@@ -117,6 +118,19 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("--max-views", o->sweep.maxViews, "largest raster budget (views)")->check(CLI::Range(1, 65536))->capture_default_str();
   cmd->add_option("--max-spp", o->sweep.maxSpp, "largest ray-cast budget (spp)")->check(CLI::Range(1, 1 << 20))->capture_default_str();
   cmd->add_option("--seed", o->lens.seed, "seed for every sampler")->capture_default_str();
+  cmd->add_option("--target-psnr", o->sweep.targetsDb, "the adaptive method's targets (dB), e.g. 30,40")
+      ->delimiter(',')
+      ->check(CLI::Range(10.0, 100.0))
+      ->type_name("DB[,DB...]")
+      ->capture_default_str();
+  cmd->add_option("--methods", o->sweep.series, "the series to run: " + [] {
+        std::string names;
+        for (const std::string& n : sweepSeriesNames()) names += (names.empty() ? "" : ",") + n;
+        return names;
+      }() + " (default all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(sweepSeriesNames()))
+      ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };

@@ -2,6 +2,7 @@
 
 #include "camera/DepthRange.h"
 #include "core/Text.h"
+#include "plan/TileBudget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,13 +33,14 @@ void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
 
 }  // namespace
 
-FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options) {
+FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options,
+                        const VisibleBlur* visible) {
   FramePlan plan;
   plan.pattern = options.pattern;
   plan.seed = options.seed;
   const std::size_t triangles = scene.triangleCount();
   depthRange(scene, camera, plan);
-  const bool visible = plan.depthMax >= plan.depthMin && plan.depthMax > 0.0;
+  const bool inView = plan.depthMax >= plan.depthMin && plan.depthMax > 0.0;
 
   if (camera.isPinhole()) {
     // Every view of a pinhole is the same view; only the sub-pixel jitter differs. An explicit
@@ -56,7 +58,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     }
   } else {
     const double pxPerWindowUnit = size.widthPx / camera.view.window.width();
-    if (visible) {
+    if (inView) {
       // Axial colour and field curvature move the plane of focus per channel and toward the
       // corners: the largest circle is the largest over each of those planes.
       const LensEffects& e = camera.effects;
@@ -77,8 +79,26 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
         plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
       }
     }
-    const std::string range = cat("circle of confusion ", plan.cocMinPx, " to ", plan.cocMaxPx,
-                                  " px over depths ", plan.depthMin, " to ", plan.depthMax);
+    std::string range = cat("circle of confusion ", plan.cocMinPx, " to ", plan.cocMaxPx,
+                            " px over depths ", plan.depthMin, " to ", plan.depthMax);
+    if (visible) {
+      // What is seen, not what the bounds could hold.
+      VisibleBlurSummary v;
+      v.prepass = visible->prepass;
+      v.fractions = visible->fractions;
+      v.p50Px = visible->p50Px;
+      v.p90Px = visible->p90Px;
+      v.p99Px = visible->p99Px;
+      v.maxPx = visible->maxPx;
+      v.boundsCocMaxPx = plan.cocMaxPx;
+      v.boundsSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
+      plan.visible = v;
+      plan.cocMinPx = visible->ownMinPx;
+      plan.cocMaxPx = visible->maxPx;
+      range = cat("circle of confusion seen ", plan.cocMinPx, " to ", plan.cocMaxPx, " px (pinhole depth pre-pass at ",
+                  v.prepass.widthPx, "x", v.prepass.heightPx, ", dilated by nearer circles; the bounds would say ",
+                  v.boundsCocMaxPx, " px)");
+    }
     if (options.pattern == AperturePattern::Lecture17) {
       plan.apertureSamples = 17;
       plan.samplesWhy = cat("the lecture's 17-point pattern (", range, ")");
@@ -96,6 +116,35 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     }
   }
 
+  if (options.targetPsnrDb) {
+    // Per-tile budgets: the count is each tile's own, up to the cap; the order progressive.
+    AdaptivePlan a;
+    a.targetPsnrDb = *options.targetPsnrDb;
+    a.tileSizePx = options.tileSizePx;
+    a.maxSamples = std::max(options.maxSamples, 2);
+    // Each view's textures are filtered over 1/64 of the pixel (or 1/max, if less): finer than the
+    // strata of any count up to 64, and beyond that the filter's own blur is under 1/8 pixel. One
+    // fixed filter for all counts keeps the converged image the same wherever a tile stops.
+    a.lodBias = -0.5f * std::log2(static_cast<float>(std::min(a.maxSamples, kLodSamples)));
+    const TileGrid grid = makeTileGrid(size, a.tileSizePx);
+    for (int t = 0; t < grid.count(); ++t) {
+      const PixelBox b = grid.box(t);
+      // The pre-pass's rows run from the top.
+      const double coc = camera.isPinhole() ? 0.0
+                         : visible ? visible->maxOver(b.x, size.heightPx - b.y - b.height, b.x + b.width, size.heightPx - b.y)
+                                   : plan.cocMaxPx;
+      a.sharpTiles += coc <= 1.0;
+      a.minSamples.push_back(std::min(coc <= 1.0 ? kMinSamplesSharpTile : kMinSamplesBlurredTile, a.maxSamples));
+    }
+    plan.pattern = AperturePattern::Sobol;
+    plan.apertureSamples = a.maxSamples;
+    plan.samplesWhy = cat("to ", a.targetPsnrDb, " dB: ", grid.count(), " tiles of ", a.tileSizePx, " px, each from ",
+                          kMinSamplesSharpTile, " (", a.sharpTiles, " tiles in focus) or ", kMinSamplesBlurredTile,
+                          " samples (blurred) up to ", a.maxSamples, ", in sobol order, stopping where the two streams' "
+                          "estimate says one more sample gains least (", camera.isPinhole() ? std::string("pinhole camera") : plan.samplesWhy, ")");
+    plan.adaptive = std::move(a);
+  }
+
   const LensEffects& effects = camera.effects;
   if (plan.apertureSamples > 1 && !camera.isPinhole()) {
     plan.viewsPerSample = effects.chromatic.hasAxial() ? 3 : 1;
@@ -109,6 +158,16 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
                                        : std::string();
   if (plan.apertureSamples == 1) {
     plan.passes.push_back({"scene", cat("one view of ", triangles, " triangles into a float target", where), {}});
+  } else if (plan.adaptive) {
+    PlannedPass scenePass{"scene", cat("up to ", plan.apertureSamples * plan.viewsPerSample, " views per tile of ", triangles,
+                                       " triangles, in rounds of ", plan.adaptive->samplesPerRound,
+                                       " samples drawn only into the tiles that still need them (scissor rectangles)", where), {}};
+    if (plan.fieldCurvature) scenePass.variants.push_back("field-curvature");
+    if (plan.viewsPerSample == 3) scenePass.variants.push_back("channel-focus");
+    plan.passes.push_back(scenePass);
+    plan.passes.push_back({"accumulate", "adds each view into one of two float sums (even samples, odd samples: two independent streams)", {}});
+    plan.passes.push_back({"estimate", "after each round, each tile's squared error from the difference of its two streams' means", {}});
+    plan.passes.push_back({"resolve", "divides the two sums by each tile's own weight", {"two-streams"}});
   } else {
     PlannedPass scenePass{"scene", cat(plan.apertureSamples * plan.viewsPerSample, " views of ", triangles, " triangles, ",
                                        plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "

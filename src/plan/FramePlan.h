@@ -11,19 +11,51 @@
 #include "camera/ImageSize.h"
 #include "camera/LensMap.h"
 #include "lens/AperturePattern.h"
+#include "plan/VisibleBlur.h"
 #include "scene/Scene.h"
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace lenslab {
 
 struct PlanOptions {
+  PlanOptions() = default;
+  PlanOptions(AperturePattern pattern_, int apertureSamples_, int maxSamples_, std::uint32_t seed_)
+      : pattern(pattern_), apertureSamples(apertureSamples_), maxSamples(maxSamples_), seed(seed_) {}
+
   AperturePattern pattern = AperturePattern::Concentric;
   int apertureSamples = 0;  // 0 = auto: from the largest circle of confusion in view
-  int maxSamples = 256;     // the cap on auto
+  int maxSamples = 256;     // the cap on auto, and on each tile's count with a target
   std::uint32_t seed = 1;
+  // Render to a target error instead of a count: per-tile budgets (plan/TileBudget.h) in the
+  // progressive 'sobol' order, stopping where the two-stream estimate says the frame's PSNR
+  // against its own converged limit reaches this.
+  std::optional<double> targetPsnrDb;
+  int tileSizePx = 32;
+};
+
+// Per-tile budgets, when a target error is asked for.
+struct AdaptivePlan {
+  double targetPsnrDb = 40.0;
+  int tileSizePx = 32;
+  int maxSamples = 256;          // per tile
+  int samplesPerRound = 8;       // both streams: 4 each at first; rounds grow with the count (half of it)
+  std::vector<int> minSamples;   // per tile (TileGrid's order: row 0 at the bottom), from the pre-pass
+  int sharpTiles = 0;            // tiles whose largest reaching circle is ≤ 1 px
+  float lodBias = 0.0f;          // texture detail of every view (scene.frag): fixed, so the limit does not depend on where a tile stops
+};
+
+// The pre-pass's distribution of blur, as `info` and --stats show it.
+struct VisibleBlurSummary {
+  ImageSize prepass;
+  std::array<double, 5> fractions{};  // circles ≤ 1, 1–4, 4–16, 16–64, > 64 px
+  double p50Px = 0.0, p90Px = 0.0, p99Px = 0.0, maxPx = 0.0;
+  double boundsCocMaxPx = 0.0;         // what the scene's bounds alone would say
+  int boundsSamples = 1;               // and the auto count they would give
 };
 
 struct PlannedPass {
@@ -47,6 +79,8 @@ struct FramePlan {
   bool fieldCurvature = false;  // the views are summed through the curved focal surface's warp
   bool remap = false;           // the lens post pass runs (distortion, lateral colour)
   Overscan overscan;            // what the scene passes render: the image, or more for the lens pass
+  std::optional<VisibleBlurSummary> visible;  // from a pinhole depth pre-pass, when one ran
+  std::optional<AdaptivePlan> adaptive;       // per-tile budgets to a target error
 
   bool accumulates() const { return apertureSamples > 1; }
 };
@@ -55,7 +89,15 @@ struct FramePlan {
 // that their copies of a point, spread over the circle's area π·c²/4, lie about a pixel apart.
 int autoApertureSamples(double cocPx, int maxSamples);
 
+// `visible`: the pre-pass's blur (plan/VisibleBlur.h); without it the circle of confusion comes
+// from the scene's bounds, which can only overstate it.
 FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size,
-                        const PlanOptions& options = {});
+                        const PlanOptions& options = {}, const VisibleBlur* visible = nullptr);
+
+// The tiles' minimum counts: a few for antialiasing where the largest reaching circle is ≤ 1 px,
+// more where blur reaches (so the estimate has something to go on before it is trusted).
+constexpr int kMinSamplesSharpTile = 8;
+constexpr int kMinSamplesBlurredTile = 16;
+constexpr int kLodSamples = 64;  // per-tile frames filter textures as for this many samples
 
 }  // namespace lenslab

@@ -51,6 +51,33 @@ std::vector<PixelBox> mergedBoxes(const TileGrid& grid, const std::vector<char>&
   return done;
 }
 
+std::vector<PixelBox> coveringBoxes(const std::vector<PixelBox>& boxes, double pixelsPerBox) {
+  std::vector<PixelBox> out = boxes;
+  const auto area = [](const PixelBox& b) { return static_cast<double>(b.width) * b.height; };
+  const auto bound = [](const PixelBox& a, const PixelBox& b) {
+    const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    const int x1 = std::max(a.x + a.width, b.x + b.width), y1 = std::max(a.y + a.height, b.y + b.height);
+    return PixelBox{x0, y0, x1 - x0, y1 - y0};
+  };
+  while (out.size() > 1) {
+    double cheapest = std::numeric_limits<double>::infinity();
+    std::size_t bi = 0, bj = 0;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      for (std::size_t j = i + 1; j < out.size(); ++j) {
+        const double added = area(bound(out[i], out[j])) - area(out[i]) - area(out[j]);
+        if (added < cheapest) {
+          cheapest = added;
+          bi = i;
+          bj = j;
+        }
+      }
+    if (cheapest >= pixelsPerBox) break;
+    out[bi] = bound(out[bi], out[bj]);
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(bj));
+  }
+  return out;
+}
+
 double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles) {
   double sum = 0.0, pixels = 0.0;
   for (int t = 0; t < grid.count(); ++t) {
@@ -60,43 +87,72 @@ double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles) {
   return pixels > 0.0 ? sum / pixels : 0.0;
 }
 
-std::vector<char> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxViews) {
+std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples) {
   const std::size_t n = static_cast<std::size_t>(grid.count());
-  std::vector<char> go(n, 0);
+  std::vector<int> go(n, 0);
   bool belowMinimum = false;
   for (std::size_t t = 0; t < n; ++t)
-    if (tiles[t].views < std::min(tiles[t].minViews, maxViews)) go[t] = belowMinimum = 1;
+    if (tiles[t].samples < std::min(tiles[t].minSamples, maxSamples)) {
+      go[t] = std::min(tiles[t].minSamples, maxSamples) - tiles[t].samples;
+      belowMinimum = true;
+    }
   if (belowMinimum) return go;  // every tile reaches its minimum before any estimate is trusted
   if (frameMse(grid, tiles) <= targetMse) return go;
 
-  // c_t = mse_t · n_t; with λ, tile t ends at n_t(λ) = clamp(√(c_t / λ), n_t, max) views and error
+  // c_t = mse_t · n_t; with λ, tile t ends at n_t(λ) = clamp(√(c_t / λ), n_t, max) samples and error
   // c_t / n_t(λ). The frame's final error falls as λ falls: bisect λ (in log) for the target.
   double pixels = 0.0;
   for (std::size_t t = 0; t < n; ++t) pixels += grid.pixels(static_cast<int>(t));
-  const auto finalViews = [&](std::size_t t, double lambda) {
-    const double c = tiles[t].mse * tiles[t].views;
+  const auto finalSamples = [&](std::size_t t, double lambda) {
+    const double c = tiles[t].mse * tiles[t].samples;
     const double wanted = lambda > 0.0 ? std::sqrt(c / lambda) : std::numeric_limits<double>::infinity();
-    return std::clamp(wanted, static_cast<double>(tiles[t].views), static_cast<double>(std::max(maxViews, tiles[t].views)));
+    return std::clamp(wanted, static_cast<double>(tiles[t].samples), static_cast<double>(std::max(maxSamples, tiles[t].samples)));
   };
   const auto finalMse = [&](double lambda) {
     double sum = 0.0;
     for (std::size_t t = 0; t < n; ++t) {
-      const double views = finalViews(t, lambda);
-      sum += grid.pixels(static_cast<int>(t)) * (views > 0.0 ? tiles[t].mse * tiles[t].views / views : tiles[t].mse);
+      const double samples = finalSamples(t, lambda);
+      sum += grid.pixels(static_cast<int>(t)) * (samples > 0.0 ? tiles[t].mse * tiles[t].samples / samples : tiles[t].mse);
     }
     return sum / pixels;
   };
   double lo = 1e-30, hi = 1.0;  // λ: error per pixel per view; finalMse(hi) is the error now
   if (finalMse(lo) > targetMse) {
-    lo = 0.0;  // the cap stops it short of the target: every tile not at the cap goes on
+    // The cap stops it short of the target: every tile not at the cap goes on, but for those
+    // whose error is nothing (a flat sky): they are done at any count.
+    lo = 1e-300;
   } else {
     for (int i = 0; i < 100; ++i) {
       const double mid = std::sqrt(lo * hi);
       (finalMse(mid) > targetMse ? hi : lo) = mid;
     }
   }
-  for (std::size_t t = 0; t < n; ++t) go[t] = tiles[t].views < maxViews && finalViews(t, lo) > tiles[t].views + 0.5;
+  for (std::size_t t = 0; t < n; ++t) {
+    const double more = finalSamples(t, lo) - tiles[t].samples;
+    go[t] = tiles[t].samples < maxSamples && more > 0.5 ? static_cast<int>(std::ceil(more)) : 0;
+  }
   return go;
+}
+
+FrameEstimate estimateFrame(const TileGrid& grid, const std::vector<TileState>& tiles, double targetPsnrDb) {
+  FrameEstimate e;
+  if (tiles.empty()) return e;
+  e.mse = frameMse(grid, tiles);
+  e.rmse = std::sqrt(e.mse);
+  e.psnrDb = psnrFromMse(e.mse);
+  e.tiles = grid.count();
+  e.minSamples = tiles.front().samples;
+  double weighted = 0.0, pixels = 0.0;
+  for (int t = 0; t < grid.count(); ++t) {
+    const TileState& tile = tiles[static_cast<std::size_t>(t)];
+    e.minSamples = std::min(e.minSamples, tile.samples);
+    e.maxSamples = std::max(e.maxSamples, tile.samples);
+    weighted += grid.pixels(t) * tile.samples;
+    pixels += grid.pixels(t);
+  }
+  e.meanSamples = pixels > 0.0 ? weighted / pixels : 0.0;
+  e.targetMet = e.psnrDb >= targetPsnrDb;
+  return e;
 }
 
 double psnrFromMse(double mse) { return mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity(); }

@@ -1,14 +1,14 @@
 #pragma once
-// Per-tile sample budgets: which tiles of the image still need views, and where to draw them.
+// Per-tile sample budgets: which tiles of the image still need samples, and where to draw them.
 //
-// The image is cut into square tiles (32 px by default). Each tile keeps its own count of views
+// The image is cut into square tiles (32 px by default). Each tile keeps its own count of samples
 // and its own error estimate (render/Renderer's two-stream estimate): a tile in focus with no
-// edge stops after a few views, a blurred one goes on. A tile's mean uses its own count, so the
+// edge stops after a few samples, a blurred one goes on. A tile's mean uses its own count, so the
 // image stays unbiased however the counts differ.
 //
 // Which tiles go on: the frame's error is the pixel-weighted mean of the tiles' errors, and a
 // tile's error falls as c/n with its view count n (c = its error × n, measured). Reaching the
-// target with the fewest views is Lagrange's problem: n_t ∝ √c_t, i.e. every tile stops where one
+// target with the fewest samples is Lagrange's problem: n_t ∝ √c_t, i.e. every tile stops where one
 // more view would lower the frame's error by less than λ per pixel. λ is solved for each round
 // from the errors measured so far, so the rule sharpens as the estimates do.
 #include "camera/ImageSize.h"
@@ -39,19 +39,35 @@ TileGrid makeTileGrid(ImageSize image, int tileSizePx);
 // the rows above. Covers exactly the selected tiles.
 std::vector<PixelBox> mergedBoxes(const TileGrid& grid, const std::vector<char>& selected);
 
+// Fewer, larger rectangles covering `boxes`, for passes where each rectangle has a cost of its own
+// (a scissored draw of the whole scene): two are merged into their bounding box while that adds
+// fewer than `pixelsPerBox` pixels — the cost of one more pass, in pixels drawn.
+std::vector<PixelBox> coveringBoxes(const std::vector<PixelBox>& boxes, double pixelsPerBox);
+
 struct TileState {
-  int views = 0;         // views drawn into the tile (both streams)
-  int minViews = 0;      // the plan's minimum (from the pre-pass's circle of confusion)
+  int samples = 0;         // samples drawn into the tile (both streams)
+  int minSamples = 0;      // the plan's minimum (from the pre-pass's circle of confusion)
   double mse = 0.0;      // estimated squared error of its mean, per RGB value
 };
 
-// Which tiles draw more views, to bring the frame's pixel-weighted mean squared error to
-// `targetMse` with the fewest views, none beyond `maxViews`. Tiles under their minimum always go
-// on. Returns one flag per tile; all false when the target is met (or every tile is at the cap).
-std::vector<char> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxViews);
+// Which tiles draw more samples, to bring the frame's pixel-weighted mean squared error to
+// `targetMse` with the fewest samples, none beyond `maxSamples`. Tiles under their minimum always go
+// on. Returns, per tile, how many more samples the allocation expects it to need (0: it stops);
+// all 0 when the target is met (or every tile is at the cap).
+std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples);
 
 // The frame's pixel-weighted mean squared error.
 double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles);
+
+// What a per-tile frame reached: the estimate and the samples the tiles took.
+struct FrameEstimate {
+  double mse = 0.0, rmse = 0.0, psnrDb = 0.0;  // per RGB value, against the image's own converged limit (peak 1)
+  int minSamples = 0, maxSamples = 0;          // over tiles
+  double meanSamples = 0.0;                    // pixel-weighted: samples per pixel
+  int tiles = 0, tilesActive = 0, rounds = 0;
+  bool targetMet = false;
+};
+FrameEstimate estimateFrame(const TileGrid& grid, const std::vector<TileState>& tiles, double targetPsnrDb);
 
 double psnrFromMse(double mse);  // peak 1, as io/ImageCompare; +inf for 0
 double mseFromPsnr(double psnrDb);

@@ -13,9 +13,21 @@ namespace lenslab {
 
 PlanOptions toPlanOptions(const LensOptions& o) {
   PlanOptions p;
-  const auto pattern = patternFromName(o.pattern);
+  const std::string name = !o.pattern.empty() ? o.pattern : o.targetPsnrDb ? "sobol" : "concentric";
+  const auto pattern = patternFromName(name);
   if (!pattern) throw InputError(cat("--pattern ", o.pattern, ": use one of ", patternNames()));
   p.pattern = *pattern;
+  if (o.targetPsnrDb) {
+    if (!(*o.targetPsnrDb >= 10.0 && *o.targetPsnrDb <= 100.0))
+      throw InputError(cat("--target-psnr ", *o.targetPsnrDb, ": give a PSNR from 10 to 100 dB"));
+    if (p.pattern != AperturePattern::Sobol)
+      throw InputError(cat("--pattern ", o.pattern, ": --target-psnr stops tiles early, which needs the progressive order "
+                           "(every prefix well spread) and its two independent streams: use --pattern sobol or leave it out"));
+    if (o.apertureSamples != "auto")
+      throw InputError(cat("--aperture-samples ", o.apertureSamples, ": --target-psnr chooses each tile's count; give "
+                           "one or the other (--max-samples caps the tiles)"));
+    p.targetPsnrDb = o.targetPsnrDb;
+  }
   // The command line has checked it (auto, or a whole number from 1 to 65536); the panel and
   // tests set it directly.
   if (o.apertureSamples != "auto") {

@@ -16,7 +16,8 @@
 namespace lenslab {
 
 struct LensOptions {
-  std::string pattern = "concentric";
+  std::string pattern;                    // empty: concentric, or sobol with a target
+  std::optional<double> targetPsnrDb;     // per-tile budgets to this estimated PSNR
   std::string apertureSamples = "auto";
   int maxSamples = 256;
   std::uint32_t seed = 1;

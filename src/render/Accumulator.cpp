@@ -93,6 +93,7 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   }
   pending_ = 0;
   count_ = 0;
+  regionSet_ = false;
   weightSum_ = glm::vec4(0.0f);
   pendingWeights_.assign(static_cast<std::size_t>(batchSize()), glm::vec4(0.0f));
   pendingShifts_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
@@ -147,9 +148,36 @@ void Accumulator::flush() {
     glBindTextureUnit(5, lens_->inverse[2]);
     for (GLuint unit = 1; unit <= 5; ++unit) glBindSampler(unit, 0);  // texelFetch only
   }
-  drawFullScreen(fullScreen_, program, views_.id());
+  if (regionSet_) {
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelBox& b : region_) {
+      glScissor(b.x, b.y, b.width, b.height);
+      drawFullScreen(fullScreen_, program, views_.id());
+    }
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    drawFullScreen(fullScreen_, program, views_.id());
+  }
   glDisable(GL_BLEND);
   pending_ = 0;
+}
+
+void Accumulator::setRegion(const std::vector<PixelBox>* boxes) {
+  flush();
+  if (boxes && boxes->size() == 1 && (*boxes)[0] == PixelBox{0, 0, sum_->width(), sum_->height()}) boxes = nullptr;
+  regionSet_ = boxes != nullptr;
+  if (boxes) region_ = *boxes;
+}
+
+GLuint Accumulator::sumTexture() {
+  if (!sum_) throw std::logic_error("Accumulator::sumTexture before start");
+  flush();
+  return sum_->colorTexture();
+}
+
+GLuint Accumulator::weightTexture() {
+  flush();
+  return weight_ && lens_ ? weight_->colorTexture() : 0;
 }
 
 void Accumulator::resolve(const gl::RenderTarget& out) {

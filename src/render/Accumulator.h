@@ -10,6 +10,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/FullScreenPass.h"
 #include "gl/Object.h"
+#include "plan/TileBudget.h"
 
 #include <glm/glm.hpp>
 
@@ -57,6 +58,14 @@ class Accumulator {
   // `jitterPx`: the view's sub-pixel offset (GL orientation), used with start's LensGather.
   gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f),
                           glm::vec2 jitterPx = glm::vec2(0.0f));
+  // Views added from now on reach only these rectangles of the sum (nullptr: all of it); the views
+  // pending so far are added first, with the region they were drawn for. Per-tile budgets.
+  void setRegion(const std::vector<PixelBox>* boxes);
+  // The sum itself, for a caller that divides per tile (render/Renderer's two-stream resolve):
+  // RGBA32F; with the lens gather, the per-pixel weights beside it (else 0). Adds pending views first.
+  GLuint sumTexture();
+  GLuint weightTexture();
+  glm::vec4 weightSum() const { return weightSum_; }  // the total weight of the views added (all pixels alike)
   int count() const { return count_; }
   int batchSize() const { return static_cast<int>(framebuffers_.size()); }
   // The mean so far, into `out` (the sum's size).
@@ -86,6 +95,8 @@ class Accumulator {
   int viewWidth_ = 0;
   int viewHeight_ = 0;
   std::optional<Curvature> curvature_;  // set by start: the field-curvature variant sums the views
+  std::vector<PixelBox> region_;        // setRegion's rectangles
+  bool regionSet_ = false;
   glm::vec4 weightSum_{0.0f};
 };
 

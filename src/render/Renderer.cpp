@@ -2,14 +2,29 @@
 
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
+#include "gl/Shader.h"
+#include "lens/SobolSequence.h"
 
 #include <cmath>
 
 #include <algorithm>
+#include <map>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 
 namespace lenslab {
+namespace {
+
+constexpr int kErrorBlockPx = 8;  // the error pass sums blocks of 8 × 8 pixels; tiles are whole blocks
+int blocksFor(int pixels) { return (pixels + kErrorBlockPx - 1) / kErrorBlockPx; }
+// A scissored scene pass costs llvmpipe about as much as drawing 10^4 more pixels (lenslab_ratios'
+// box experiment: 16 boxes over half of a 1280×720 frame took 0.73 of the frame, one box 0.50).
+constexpr double kPixelsPerDrawBox = 1e4;
+
+}  // namespace
 
 Renderer::Renderer(const Scene& scene) : gpuScene_(scene) {}
 
@@ -32,6 +47,11 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1);
   }
+  adaptive_ = plan.adaptive.has_value();
+  if (adaptive_) {
+    beginAdaptive();
+    return;
+  }
   if (plan.apertureSamples <= 1) {
     // No lens: the pinhole view from the PRP, at the pixel centres.
     samples_ = {LensSample{{0.0, 0.0}, {0.0, 0.0}}};
@@ -52,40 +72,222 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   }
 }
 
-int Renderer::addSamples(int count) {
+void Renderer::drawSample(const LensSample& s, Accumulator& sum, float lodBias, const std::vector<PixelBox>* boxes) {
   const Window& w = camera_.view.window;
   const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
+  // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
+  const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
+  const glm::dvec2 lensOffset = s.lens * camera_.apertureRadius;
+  // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h).
+  const glm::vec2 curvatureShift(lensOffset * camera_.view.prp.z * camera_.effects.fieldCurvature.inverseFocusPerRadius2 /
+                                 pixelSize);
+  // The same offset in view pixels, GL orientation, for the lens gather.
+  const glm::vec2 jitter(static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y));
+  const auto clip = [&](double inverseFocusShift) {
+    return clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset, inverseFocusShift));
+  };
+  if (plan_.viewsPerSample == 3) {
+    for (int c = 0; c < 3; ++c) {
+      glm::vec3 mask(0.0f);
+      mask[c] = 1.0f;
+      scenePass_.draw(gpuScene_, clip(channelFocusShifts_[static_cast<std::size_t>(c)]), sum.nextView(mask, curvatureShift, jitter), lodBias, boxes);
+    }
+  } else {
+    scenePass_.draw(gpuScene_, clip(0.0), sum.nextView(glm::vec3(1.0f), curvatureShift, jitter), lodBias, boxes);
+  }
+}
+
+int Renderer::addSamples(int count) {
+  if (adaptive_) throw std::logic_error("Renderer::addSamples on a per-tile plan: use step()");
   // Each view is one of samplesPlanned() jittered samples of every pixel: its texture lookups
   // filter over its share of the pixel (scene.frag).
   const float lodBias = -0.5f * std::log2(static_cast<float>(samplesPlanned()));
   int added = 0;
   for (; added < count && done_ < samplesPlanned(); ++added, ++done_) {
     const LensSample& s = samples_[static_cast<std::size_t>(done_)];
-    // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
-    const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
-    const glm::dvec2 lensOffset = s.lens * camera_.apertureRadius;
-    // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h).
-    const glm::vec2 curvatureShift(lensOffset * camera_.view.prp.z * camera_.effects.fieldCurvature.inverseFocusPerRadius2 /
-                                   pixelSize);
-    // The same offset in view pixels, GL orientation, for the lens gather.
-    const glm::vec2 jitter(static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y));
-    const auto clip = [&](double inverseFocusShift) {
-      return clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset, inverseFocusShift));
-    };
     if (samplesPlanned() == 1) {
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
-      scenePass_.draw(gpuScene_, clip(0.0), out.drawTarget(), lodBias);
-    } else if (plan_.viewsPerSample == 3) {
-      for (int c = 0; c < 3; ++c) {
-        glm::vec3 mask(0.0f);
-        mask[c] = 1.0f;
-        scenePass_.draw(gpuScene_, clip(channelFocusShifts_[static_cast<std::size_t>(c)]), accumulator_->nextView(mask, curvatureShift, jitter), lodBias);
-      }
+      scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(camera_, {0.0, 0.0}, {0.0, 0.0})), out.drawTarget(), lodBias);
     } else {
-      scenePass_.draw(gpuScene_, clip(0.0), accumulator_->nextView(glm::vec3(1.0f), curvatureShift, jitter), lodBias);
+      drawSample(s, *accumulator_, lodBias, nullptr);
     }
   }
   return added;
+}
+
+void Renderer::beginAdaptive() {
+  const AdaptivePlan& a = *plan_.adaptive;
+  samples_.clear();  // progressive: made as they are drawn
+  finished_ = false;
+  rounds_ = 0;
+  std::optional<Accumulator::Curvature> curvature;
+  if (plan_.fieldCurvature) {
+    const Window& w = camera_.view.window;
+    const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
+    const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
+    curvature = Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
+  }
+  for (std::unique_ptr<Accumulator>* slot : {&accumulator_, &streamB_}) {
+    if (!*slot) *slot = std::make_unique<Accumulator>();
+    (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr, plan_.remap ? &lensPass_->gather() : nullptr);
+  }
+  // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel.
+  scissorViews_ = !plan_.remap && !plan_.fieldCurvature;
+  grid_ = makeTileGrid(outSize_, a.tileSizePx);
+  tiles_.assign(static_cast<std::size_t>(grid_.count()), TileState{});
+  for (int t = 0; t < grid_.count(); ++t)
+    tiles_[static_cast<std::size_t>(t)].minSamples =
+        t < static_cast<int>(a.minSamples.size()) ? a.minSamples[static_cast<std::size_t>(t)] : kMinSamplesBlurredTile;
+  for (gl::Texture& weights : tileWeights_) {
+    weights = gl::Texture::create();
+    glTextureStorage2D(weights.id(), 1, GL_RGBA32F, grid_.columns, grid_.rows);
+  }
+  if (a.tileSizePx % kErrorBlockPx != 0) throw std::logic_error("per-tile budgets need tiles of whole 8 x 8 blocks");
+  blockError_ = gl::Texture::create();
+  glTextureStorage2D(blockError_.id(), 1, GL_RG32F, blocksFor(outSize_.widthPx), blocksFor(outSize_.heightPx));
+  blockErrorFramebuffer_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(blockErrorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, blockError_.id(), 0);
+}
+
+bool Renderer::step() {
+  if (!adaptive_) throw std::logic_error("Renderer::step without a per-tile plan");
+  if (finished_) return false;
+  const AdaptivePlan& a = *plan_.adaptive;
+  const std::vector<int> more = tilesToContinue(grid_, tiles_, mseFromPsnr(a.targetPsnrDb), a.maxSamples);
+  // Tiles that have had the same samples go on together: every tile's samples stay a prefix of
+  // the progressive order (a tile that paused and resumes is not given another tile's next points).
+  struct Group {
+    std::vector<char> selected;
+    int wanted = 0;  // the most any of its tiles is expected to need
+  };
+  std::map<int, Group> groups;
+  std::vector<char> drawn(more.size(), 0);
+  for (std::size_t t = 0; t < more.size(); ++t)
+    if (more[t] > 0) {
+      Group& group = groups[tiles_[t].samples];
+      if (group.selected.empty()) {
+        group.selected.assign(more.size(), 0);
+        group.wanted = more[t];
+      }
+      group.selected[t] = 1;
+      drawn[t] = 1;
+      group.wanted = std::max(group.wanted, more[t]);
+    }
+  if (groups.empty()) {
+    finished_ = true;
+    return false;
+  }
+  auto T0 = std::chrono::steady_clock::now();
+  for (const auto& [first, group] : groups) {
+    const std::vector<PixelBox> boxes = mergedBoxes(grid_, group.selected);
+    if (std::getenv("LL_DEBUG")) std::fprintf(stderr, "round %d first %d wanted %d boxes %zu\n", rounds_, first, group.wanted, boxes.size());
+    accumulator_->setRegion(&boxes);
+    streamB_->setRegion(&boxes);
+    // Rounds grow with the count (half of it; each round ends in an estimate, which has its
+    // cost), but not past what any of the group's tiles is expected to need; an even number, so
+    // that the two streams stay equal.
+    const int round = std::getenv("LL_BIG") ? 64 : std::max(a.samplesPerRound, first / 2 / 2 * 2);
+    const int count = std::min({round, std::max(group.wanted + (group.wanted & 1), 2), a.maxSamples - first}) / 2 * 2;
+    // The views are drawn in fewer, covering rectangles where a pass costs more than the pixels it
+    // saves; only the tiles' exact boxes are added to the sums.
+    const std::vector<PixelBox> drawBoxes = coveringBoxes(boxes, kPixelsPerDrawBox);
+    if (std::getenv("LL_DEBUG")) {
+      double da = 0, aa = 0;
+      for (auto& b : drawBoxes) da += double(b.width) * b.height;
+      for (auto& b : boxes) aa += double(b.width) * b.height;
+      std::fprintf(stderr, "   drawn %.0f accumulated %.0f (x%d) boxes %zu->%zu\n", da, aa, std::min({std::max(a.samplesPerRound, first / 2 / 2 * 2), std::max(group.wanted + (group.wanted & 1), 2), a.maxSamples - first}) / 2 * 2, boxes.size(), drawBoxes.size());
+    }
+    for (int i = first; i < first + count; ++i)
+      drawSample(sobolSample(static_cast<std::uint32_t>(i), plan_.seed), (sobolStream(i) == 0 || std::getenv("LL_ONE")) ? *accumulator_ : *streamB_,
+                 a.lodBias, scissorViews_ ? &drawBoxes : nullptr);
+    for (std::size_t t = 0; t < group.selected.size(); ++t)
+      if (group.selected[t]) tiles_[t].samples += count;
+    done_ += count;
+  }
+  ++rounds_;
+  auto T1 = std::chrono::steady_clock::now();
+  if (std::getenv("LL_DEBUG")) { accumulator_->sumTexture(); streamB_->sumTexture(); glFinish(); }
+  auto T2 = std::chrono::steady_clock::now();
+  updateEstimates(drawn);
+  auto T3 = std::chrono::steady_clock::now();
+  if (std::getenv("LL_DEBUG")) std::fprintf(stderr, "  issue %.4f finish %.4f estimate %.4f\n", std::chrono::duration<double>(T1-T0).count(), std::chrono::duration<double>(T2-T1).count(), std::chrono::duration<double>(T3-T2).count());
+  return true;
+}
+
+const gl::Program& Renderer::streamsProgram(bool errorPerBlock) {
+  const bool perPixel = plan_.remap;  // the lens gather weighs each pixel apart
+  gl::Program& program = streams_[(perPixel ? 2 : 0) + (errorPerBlock ? 1 : 0)];
+  if (!program) {
+    std::vector<std::string> defines;
+    if (perPixel) defines.push_back("PER_PIXEL_WEIGHT");
+    if (errorPerBlock) defines.push_back("ERROR_PER_BLOCK");
+    program = gl::buildProgram("common/fullscreen.vert", "accumulate/two_streams.frag", defines);
+  }
+  return program;
+}
+
+void Renderer::bindStreams() {
+  glBindTextureUnit(0, accumulator_->sumTexture());
+  glBindTextureUnit(1, streamB_->sumTexture());
+  if (plan_.remap) {
+    glBindTextureUnit(2, accumulator_->weightTexture());
+    glBindTextureUnit(3, streamB_->weightTexture());
+  } else {
+    // Each stream's weight in a tile is its count of samples (a full view adds 1 to every channel
+    // and alpha; with axial colour, the three channel views of a sample add 1 to each).
+    std::vector<glm::vec4> weights(tiles_.size());
+    for (std::size_t t = 0; t < tiles_.size(); ++t) weights[t] = glm::vec4(static_cast<float>(tiles_[t].samples / 2));
+    for (const gl::Texture& w : tileWeights_)
+      glTextureSubImage2D(w.id(), 0, 0, 0, grid_.columns, grid_.rows, GL_RGBA, GL_FLOAT, weights.data());
+    glBindTextureUnit(2, tileWeights_[0].id());
+    glBindTextureUnit(3, tileWeights_[1].id());
+  }
+  for (GLuint unit = 0; unit <= 3; ++unit) glBindSampler(unit, 0);  // texelFetch only
+}
+
+void Renderer::updateEstimates(const std::vector<char>& drawn) {
+  const gl::Program& program = streamsProgram(true);
+  bindStreams();
+  const int blocksX = blocksFor(outSize_.widthPx), blocksY = blocksFor(outSize_.heightPx);
+  const gl::DrawTarget errors{blockErrorFramebuffer_.id(), blocksX, blocksY};
+  errors.bind();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glProgramUniform1i(program.id(), 0, grid_.tileSizePx);
+  // Only the tiles drawn this round have changed.
+  const int blocksPerTile = grid_.tileSizePx / kErrorBlockPx;
+  glEnable(GL_SCISSOR_TEST);
+  for (const PixelBox& b : mergedBoxes(grid_, drawn)) {
+    glScissor(b.x / kErrorBlockPx, b.y / kErrorBlockPx, blocksFor(b.x + b.width) - b.x / kErrorBlockPx,
+              blocksFor(b.y + b.height) - b.y / kErrorBlockPx);
+    fullScreen_.draw(program);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  std::vector<glm::vec2> blocks(static_cast<std::size_t>(blocksX) * static_cast<std::size_t>(blocksY));
+  glGetTextureImage(blockError_.id(), 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(blocks.size() * sizeof(glm::vec2)), blocks.data());
+  for (int t = 0; t < grid_.count(); ++t) {  // tiles and blocks both count rows from the bottom
+    if (!drawn[static_cast<std::size_t>(t)]) continue;
+    const int bx0 = (t % grid_.columns) * blocksPerTile, by0 = (t / grid_.columns) * blocksPerTile;
+    double error = 0.0, values = 0.0;
+    for (int by = by0; by < std::min(by0 + blocksPerTile, blocksY); ++by)
+      for (int bx = bx0; bx < std::min(bx0 + blocksPerTile, blocksX); ++bx) {
+        const glm::vec2 e = blocks[static_cast<std::size_t>(by * blocksX + bx)];
+        error += e.x;
+        values += e.y;
+      }
+    tiles_[static_cast<std::size_t>(t)].mse = values > 0.5 ? error / values : 0.0;
+  }
+}
+
+FrameEstimate Renderer::estimate() const {
+  if (!adaptive_ || tiles_.empty()) return {};
+  FrameEstimate e = estimateFrame(grid_, tiles_, plan_.adaptive->targetPsnrDb);
+  e.rounds = rounds_;
+  if (!finished_) {
+    const std::vector<int> more = tilesToContinue(grid_, tiles_, mseFromPsnr(plan_.adaptive->targetPsnrDb), plan_.adaptive->maxSamples);
+    for (const int m : more) e.tilesActive += m > 0;
+  }
+  return e;
 }
 
 Image Renderer::resolve() {
@@ -96,7 +298,12 @@ Image Renderer::resolve() {
 
 Image Renderer::render(const Camera& camera, const FramePlan& plan, ImageSize size) {
   begin(camera, plan, size);
-  addSamples(samplesPlanned());
+  if (adaptive_) {
+    while (step()) {
+    }
+  } else {
+    addSamples(samplesPlanned());
+  }
   return resolve();
 }
 
@@ -114,6 +321,17 @@ std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) 
 const gl::RenderTarget& Renderer::resolveOnGpu() {
   if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
   const gl::RenderTarget& out = target(output_, outSize_);
+  if (adaptive_) {
+    const gl::Program& program = streamsProgram(false);
+    bindStreams();
+    out.bind();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glProgramUniform1i(program.id(), 0, grid_.tileSizePx);
+    fullScreen_.draw(program);
+    return out;
+  }
   if (plan_.remap && samplesPlanned() == 1) {
     lensPass_->apply(target(undistorted_, size_), out);
   } else if (samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed

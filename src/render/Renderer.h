@@ -11,8 +11,10 @@
 #include "camera/ImageSize.h"
 #include "core/Image.h"
 #include "gl/Framebuffer.h"
+#include "gl/FullScreenPass.h"
 #include "lens/AperturePattern.h"
 #include "plan/FramePlan.h"
+#include "plan/TileBudget.h"
 #include "render/Accumulator.h"
 #include "render/GpuScene.h"
 #include "render/LensPass.h"
@@ -39,6 +41,20 @@ class Renderer {
   int samplesPlanned() const { return static_cast<int>(samples_.size()); }
   Image resolve();            // the mean so far, read back
 
+  // Per-tile budgets (a plan with `adaptive`): after begin, each step draws one round of samples
+  // into the tiles that still need them and updates every drawn tile's error estimate; false once
+  // the frame is done (the estimate meets the target, or every tile still short of it is at the cap).
+  //
+  // The estimate: even and odd samples are two independently scrambled streams
+  // (lens/SobolSequence.h), summed apart; with stream means a, b over equal weights, |a − b|²/4 is
+  // an unbiased estimate of the squared error of their mean against the converged image — the
+  // image's own limit, not the ray-cast truth (any bias between the two is not in it).
+  bool step();
+  FrameEstimate estimate() const;
+  bool adaptive() const { return adaptive_; }
+  const std::vector<TileState>& tiles() const { return tiles_; }
+  const TileGrid& tileGrid() const { return grid_; }
+
   // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
   std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);
 
@@ -55,6 +71,14 @@ class Renderer {
 
  private:
   const gl::RenderTarget& target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size);
+  // One aperture sample's view(s) into `sum`; `boxes` restricts the scene pass when the views and
+  // the sum share pixels (no lens gather, no field-curvature warp).
+  void drawSample(const LensSample& s, Accumulator& sum, float lodBias, const std::vector<PixelBox>* boxes);
+  void beginAdaptive();
+  // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
+  void updateEstimates(const std::vector<char>& drawn);
+  void bindStreams();      // the two sums and their weights, texture units 0–3
+  const gl::Program& streamsProgram(bool errorPerBlock);
 
   GpuScene gpuScene_;
   ScenePass scenePass_;
@@ -71,6 +95,20 @@ class Renderer {
   ImageSize outSize_;  // the image's size
   std::vector<LensSample> samples_;
   int done_ = 0;
+
+  // Per-tile budgets.
+  bool adaptive_ = false;
+  bool finished_ = false;
+  bool scissorViews_ = false;
+  std::unique_ptr<Accumulator> streamB_;  // odd samples; accumulator_ holds the even ones
+  TileGrid grid_;
+  std::vector<TileState> tiles_;
+  int rounds_ = 0;
+  gl::Texture tileWeights_[2];            // per tile, per stream: RGBA32F, the samples each stream added
+  gl::Texture blockError_;                // RG32F, one texel per 8 × 8 block: squared error, value count
+  gl::Framebuffer blockErrorFramebuffer_;
+  gl::Program streams_[4];                // [per-pixel weight · 2 + error per block]
+  gl::FullScreenPass fullScreen_;
 };
 
 }  // namespace lenslab

@@ -30,7 +30,7 @@ const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaq
 ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
 
 void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
-                     float lodBias) const {
+                     float lodBias, const std::vector<PixelBox>* boxes) const {
   const Scene& scene = gpuScene.scene();
   target.bind();
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -38,13 +38,6 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  const glm::vec3& bg = scene.lighting.background;
-  // Alpha is coverage: 0 where no surface is drawn (the background shows), 1 where one is; the
-  // mean of the views is then the fraction of the pixel (× aperture) that sees a surface.
-  const float clearColor[] = {bg.r, bg.g, bg.b, 0.0f};
-  const float clearDepth = 0.0f;  // reverse-Z: far is 0
-  glClearBufferfv(GL_COLOR, 0, clearColor);
-  glClearBufferfv(GL_DEPTH, 0, &clearDepth);
 
   const GLuint program = program_.id();
   glUseProgram(program);
@@ -53,6 +46,31 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glProgramUniform1f(program, kDiffuse, scene.lighting.diffuse);
   glProgramUniform1f(program, kLodBias, lodBias);
 
+  // One box over the whole target is no box: llvmpipe clears whole bins fastest without a scissor.
+  if (boxes && boxes->size() == 1 && (*boxes)[0] == PixelBox{0, 0, target.width, target.height}) boxes = nullptr;
+  const std::size_t passes = boxes ? boxes->size() : 1;
+  for (std::size_t pass = 0; pass < passes; ++pass) {
+    if (boxes) {
+      const PixelBox& b = (*boxes)[pass];
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(b.x, b.y, b.width, b.height);
+    }
+    const glm::vec3& bg = scene.lighting.background;
+    // Alpha is coverage: 0 where no surface is drawn (the background shows), 1 where one is; the
+    // mean of the views is then the fraction of the pixel (× aperture) that sees a surface.
+    const float clearColor[] = {bg.r, bg.g, bg.b, 0.0f};
+    const float clearDepth = 0.0f;  // reverse-Z: far is 0
+    glClearBufferfv(GL_COLOR, 0, clearColor);
+    glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+    drawInstances(gpuScene, clipFromWorld);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(0);
+}
+
+void ScenePass::drawInstances(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld) const {
+  const Scene& scene = gpuScene.scene();
+  const GLuint program = program_.id();
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const Material& material =
@@ -86,7 +104,6 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     glBindVertexArray(gpuMesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, gpuMesh.indexCount, GL_UNSIGNED_INT, nullptr);
   }
-  glBindVertexArray(0);
 }
 
 }  // namespace lenslab

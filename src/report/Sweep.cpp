@@ -11,10 +11,13 @@
 #include "raycast/RayCaster.h"
 #include "render/GatherDof.h"
 #include "render/Renderer.h"
+#include "render/VisibleBlurPass.h"
+#include "plan/TileBudget.h"
 #include "report/Plot.h"
 
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -219,7 +222,12 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     if (!imageDir.empty()) writeImage(*o.outputs, imageDir / cat(method, "-", pattern, "-", samples, ".png"), image);
   };
 
-  for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random}) {
+  const auto wanted = [&](const std::string& series) {
+    return std::find(o.series.begin(), o.series.end(), series) != o.series.end();
+  };
+  for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random,
+                                  AperturePattern::Sobol}) {
+    if (!wanted(patternName(pattern))) continue;
     const std::vector<int> budgets = pattern == AperturePattern::Lecture17 ? std::vector<int>{17} : doublings(o.maxViews);
     for (int n : budgets) {
       const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{pattern, n, n, o.seed});
@@ -229,16 +237,39 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     }
     say(o, cat("raster ", patternName(pattern), ": done"));
   }
-  for (int spp : doublings(o.maxSpp)) {
+  if (wanted("adaptive")) {
+    // The whole of an adaptive frame is timed: the pre-pass, the plan from it, and the rounds.
+    for (const double target : o.targetsDb) {
+      PlanOptions options{AperturePattern::Sobol, 0, o.maxViews, o.seed};
+      options.targetPsnrDb = target;
+      FrameEstimate estimate;
+      Image image;
+      const double seconds = medianOf3([&] {
+        const VisibleBlur visible = measureVisibleBlur(renderer, camera, size);
+        const FramePlan plan = makeFramePlan(scene, camera, size, options, &visible);
+        Image frame = renderer.render(camera, plan, size);
+        estimate = renderer.estimate();
+        return frame;
+      }, image);
+      record("adaptive", "sobol", static_cast<int>(std::lround(estimate.meanSamples)), seconds, image);
+      SweepRow& row = result.rows.back();
+      row.targetPsnr = target;
+      row.estimatePsnr = estimate.psnrDb;
+      row.maxTileSamples = estimate.maxSamples;
+      row.meanSamples = estimate.meanSamples;
+    }
+    say(o, "adaptive: done");
+  }
+  for (int spp : wanted("raycast") ? doublings(o.maxSpp) : std::vector<int>{}) {
     const auto t = std::chrono::steady_clock::now();
     const Image image = caster.render(camera, size, RaycastOptions{spp, o.seed});
     record("raycast", "stratified", spp, secondsSince(t), image);
   }
-  say(o, "raycast: done");
+  if (wanted("raycast")) say(o, "raycast: done");
   // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
   // exact distorted reference would measure the missing distortion, not the method.
-  const std::vector<int> gatherTaps = camera.effects.isZero() ? o.gatherTaps : std::vector<int>{};
-  if (gatherTaps.empty() && !o.gatherTaps.empty()) say(o, "postprocess gather: left out (it has no lens effects)");
+  const std::vector<int> gatherTaps = camera.effects.isZero() && wanted("postprocess") ? o.gatherTaps : std::vector<int>{};
+  if (gatherTaps.empty() && !o.gatherTaps.empty() && wanted("postprocess")) say(o, "postprocess gather: left out (it has no lens effects)");
   for (int taps : gatherTaps) {
     Image image;
     const double seconds = medianOf3([&] { return gather.apply(camera, renderer.renderPinhole(camera, size), taps); }, image);
@@ -248,13 +279,31 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   return result;
 }
 
+std::vector<std::string> sweepSeriesNames() {
+  return {"lecture17", "concentric", "r2", "random", "sobol", "adaptive", "raycast", "postprocess"};
+}
+
+double secondsToReach(const std::vector<const SweepRow*>& rows, double psnrDb) {
+  // In the order run (rising budgets): the first row at or above the target, and the one before.
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i]->psnr < psnrDb) continue;
+    if (i == 0 || rows[i - 1]->psnr >= rows[i]->psnr || rows[i - 1]->seconds <= 0.0) return rows[i]->seconds;
+    const SweepRow& a = *rows[i - 1];
+    const SweepRow& b = *rows[i];
+    const double f = (psnrDb - a.psnr) / (b.psnr - a.psnr);
+    return std::exp(std::log(a.seconds) + f * (std::log(b.seconds) - std::log(a.seconds)));
+  }
+  return -1.0;
+}
+
 std::string sweepCsv(const SweepResult& r) {
   std::ostringstream s;
   s.precision(8);
-  s << "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse\n";
+  s << "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse,target_psnr,estimate_psnr,mean_samples,max_tile_samples\n";
   for (const SweepRow& row : r.rows)
     s << row.method << "," << row.pattern << "," << row.samples << "," << row.seconds << "," << row.rmse << ","
-      << row.psnr << "," << row.maxError << "," << row.edgeRmse << "\n";
+      << row.psnr << "," << row.maxError << "," << row.edgeRmse << "," << row.targetPsnr << "," << row.estimatePsnr << ","
+      << row.meanSamples << "," << row.maxTileSamples << "\n";
   return s.str();
 }
 
@@ -266,27 +315,27 @@ std::string sweepMarkdown(const SweepResult& r, const std::string& header) {
     if (!series.count(key)) order.push_back(key);
     series[key].push_back(&row);
   }
+  const std::array<double, 4> levels = {30.0, 35.0, 40.0, 45.0};
   std::ostringstream s;
   s.setf(std::ios::fixed);
   s << header << "\n";
-  s << "## Time to reach a PSNR (seconds; — where the largest budget does not reach it)\n\n";
+  s << "## Time to reach a PSNR\n\nSeconds, interpolated between the series' last row below the PSNR and its first row "
+       "at or above it (PSNR linear in log time); — where no row reaches it. PSNR against the reference.\n\n";
   s << "| method | 30 dB | 35 dB | 40 dB | 45 dB | best PSNR | edge RMSE at best | slope d log RMSE / d log N |\n|---|---|---|---|---|---|---|---|\n";
   for (const std::string& key : order) {
     const auto& rows = series[key];
     s << "| " << key << " |";
-    for (double target : {30.0, 35.0, 40.0, 45.0}) {
-      double best = -1.0;
-      for (const SweepRow* row : rows)
-        if (row->psnr >= target && (best < 0.0 || row->seconds < best)) best = row->seconds;
-      if (best < 0.0) s << " — |";
-      else s << " " << std::setprecision(4) << best << " |";
+    for (const double target : levels) {
+      const double t = secondsToReach(rows, target);
+      if (t < 0.0) s << " — |";
+      else s << " " << std::setprecision(4) << t << " |";
     }
     const SweepRow* top = rows.front();
     for (const SweepRow* row : rows)
       if (row->psnr > top->psnr) top = row;
     s << " " << std::setprecision(1) << top->psnr << " dB (" << top->samples << ") | " << std::setprecision(4) << top->edgeRmse << " |";
     // Least-squares slope of log RMSE against log samples (N = 1 included).
-    if (rows.size() >= 3) {
+    if (rows.size() >= 3 && rows.front()->method != "adaptive") {
       double sx = 0, sy = 0, sxx = 0, sxy = 0;
       for (const SweepRow* row : rows) {
         const double x = std::log(static_cast<double>(row->samples)), y = std::log(row->rmse);
@@ -296,6 +345,36 @@ std::string sweepMarkdown(const SweepResult& r, const std::string& header) {
       s << " " << std::setprecision(2) << (n * sxy - sx * sy) / (n * sxx - sx * sx) << " |\n";
     } else {
       s << " — |\n";
+    }
+  }
+  if (series.count("adaptive sobol") && series.count("raster concentric")) {
+    s << "\n## Speed-up of per-tile budgets over uniform accumulation\n\nTime of `raster concentric` over time of "
+         "`adaptive sobol` to the same PSNR against the reference (both interpolated as above).\n\n"
+         "| PSNR | raster concentric (s) | adaptive (s) | speed-up |\n|---|---|---|---|\n";
+    for (const double target : levels) {
+      const double uniform = secondsToReach(series["raster concentric"], target);
+      const double adaptive = secondsToReach(series["adaptive sobol"], target);
+      s << "| " << std::setprecision(0) << target << " dB | ";
+      if (uniform < 0.0) s << "— | ";
+      else s << std::setprecision(4) << uniform << " | ";
+      if (adaptive < 0.0) s << "— | ";
+      else s << std::setprecision(4) << adaptive << " | ";
+      if (uniform < 0.0 || adaptive < 0.0) s << "— |\n";
+      else s << std::setprecision(2) << uniform / adaptive << "x |\n";
+    }
+  }
+  if (series.count("adaptive sobol")) {
+    const double referenceMse = r.referenceNoiseRmse * r.referenceNoiseRmse;
+    s << "\n## The estimate against the truth\n\nEach adaptive frame's own estimate (against its converged limit, from "
+         "its two sample streams) beside its PSNR against the reference, and against the reference less the "
+         "reference's own noise (its MSE, from its two halves, subtracted).\n\n"
+         "| target | estimate | PSNR vs reference | less the reference's noise | estimate − truth | samples per pixel (busiest tile) |\n"
+         "|---|---|---|---|---|---|\n";
+    for (const SweepRow* row : series["adaptive sobol"]) {
+      const double corrected = psnrFromMse(std::max(row->rmse * row->rmse - referenceMse, 1e-30));
+      s << "| " << std::setprecision(1) << row->targetPsnr << " dB | " << std::setprecision(2) << row->estimatePsnr << " dB | "
+        << row->psnr << " dB | " << corrected << " dB | " << std::showpos << row->estimatePsnr - corrected << std::noshowpos
+        << " dB | " << std::setprecision(1) << row->meanSamples << " (" << row->maxTileSamples << ") |\n";
     }
   }
   s << "\n## All rows\n\n| method | pattern | samples | seconds | RMSE | PSNR (dB) | max error | edge RMSE |\n|---|---|---|---|---|---|---|---|\n";

@@ -4,6 +4,11 @@
 //   raster      accumulation of aperture views, each pattern, N = 1, 2, 4, … (lecture17: 17)
 //   raycast     the ray caster at 1, 2, 4, … spp
 //   postprocess a single-pass gather depth of field from the pinhole colour and depth (baseline)
+//   adaptive    per-tile budgets to each target PSNR (plan/TileBudget.h), pre-pass included in
+//               its time; its rows also give the estimate beside the truth
+// The series can be chosen (SweepOptions::series); the equal-error table gives each series' time
+// to reach 30/35/40/45 dB, interpolated between its rows, and the speed-up over uniform
+// concentric accumulation.
 // Every image is compared with the reference: RMSE, PSNR, max error, and the RMSE over occlusion
 // edges (pixels within their circle of confusion of a depth discontinuity).
 // Timing: GPU work finished (glFinish) and read back, the median of three runs for raster and
@@ -24,11 +29,16 @@ namespace lenslab {
 
 class OutputSet;
 
+std::vector<std::string> sweepSeriesNames();
+
 struct SweepOptions {
   int referenceSpp = 1024;
   int maxViews = 256;                 // raster budgets 1, 2, 4, … up to this
   int maxSpp = 64;                    // ray-cast budgets 1, 2, 4, … up to this
   std::vector<int> gatherTaps = {8, 32, 128};
+  std::vector<double> targetsDb = {25.0, 30.0, 35.0, 40.0, 45.0};  // the adaptive method's
+  // Which series run: lecture17, concentric, r2, random, sobol, adaptive, raycast, postprocess.
+  std::vector<std::string> series = sweepSeriesNames();
   std::uint32_t seed = 1;
   std::filesystem::path outDir;       // empty: write nothing
   OutputSet* outputs = nullptr;       // with outDir: its files go into this set (io/AtomicFile.h),
@@ -45,6 +55,10 @@ struct SweepRow {
   double psnr = 0.0;
   double maxError = 0.0;
   double edgeRmse = 0.0;
+  double targetPsnr = 0.0;    // adaptive: the target asked for
+  double estimatePsnr = 0.0;  // adaptive: what its estimate said when it stopped
+  int maxTileSamples = 0;     // adaptive: samples of the busiest tile (`samples` is the mean, rounded)
+  double meanSamples = 0.0;   // adaptive: samples per pixel
 };
 
 struct SweepResult {
@@ -65,6 +79,10 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
 std::vector<bool> occlusionEdgeMask(const Camera& camera, ImageSize size, const std::vector<double>& depth);
 
 double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask);
+
+// Seconds a series takes to reach `psnrDb`: interpolated between the last row below and the first
+// at or above it, linearly in PSNR against log time; negative where no row reaches it.
+double secondsToReach(const std::vector<const SweepRow*>& rows, double psnrDb);
 
 // sweep.md: the rows' summary, the equal-error table (time to reach 30 / 35 / 40 / 45 dB) and the
 // convergence slope of each series (d log RMSE / d log samples).

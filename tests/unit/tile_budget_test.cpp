@@ -43,7 +43,7 @@ TEST(TileGrid, MergedBoxesCoverExactlyTheSelectedTiles) {
 TEST(TileBudget, TilesUnderTheirMinimumGoOnFirst) {
   const TileGrid g = makeTileGrid({64, 32}, 32);
   const std::vector<TileState> tiles = {{8, 16, 0.0}, {16, 16, 1e-2}};
-  const std::vector<char> go = tilesToContinue(g, tiles, 1e-4, 256);
+  const std::vector<int> go = tilesToContinue(g, tiles, 1e-4, 256);
   EXPECT_TRUE(go[0]);
   EXPECT_FALSE(go[1]) << "the estimates wait until every tile has its minimum";
 }
@@ -51,7 +51,7 @@ TEST(TileBudget, TilesUnderTheirMinimumGoOnFirst) {
 TEST(TileBudget, TheNoisyTileGoesOnAndTheConvergedOneStops) {
   const TileGrid g = makeTileGrid({64, 32}, 32);
   const std::vector<TileState> tiles = {{16, 8, 1e-7}, {16, 8, 1e-3}};
-  const std::vector<char> go = tilesToContinue(g, tiles, 1e-4, 256);
+  const std::vector<int> go = tilesToContinue(g, tiles, 1e-4, 256);
   EXPECT_FALSE(go[0]);
   EXPECT_TRUE(go[1]);
 }
@@ -61,21 +61,21 @@ TEST(TileBudget, NothingGoesOnOnceTheTargetIsMetOrAtTheCap) {
   EXPECT_FALSE(tilesToContinue(g, {{16, 8, 1e-5}, {16, 8, 1e-5}}, 1e-4, 256)[1]);
   EXPECT_FALSE(tilesToContinue(g, {{256, 8, 1e-2}, {256, 8, 1e-2}}, 1e-4, 256)[1]);
   // Beyond reach within the cap: every tile below the cap goes on.
-  const std::vector<char> go = tilesToContinue(g, {{64, 8, 1e-2}, {256, 8, 1e-2}}, 1e-6, 256);
+  const std::vector<int> go = tilesToContinue(g, {{64, 8, 1e-2}, {256, 8, 1e-2}}, 1e-6, 256);
   EXPECT_TRUE(go[0]);
   EXPECT_FALSE(go[1]);
 }
 
 TEST(TileBudget, TheAllocationFollowsTheSquareRootRule) {
-  // Two tiles with c = 1e-2 and 4e-2 (error × views): the optimum gives the second twice the views.
-  // After a round at the optimum's views, the rule stops both together.
+  // Two tiles with c = 1e-2 and 4e-2 (error × samples): the optimum gives the second twice the samples.
+  // After a round at the optimum's samples, the rule stops both together.
   const TileGrid g = makeTileGrid({64, 32}, 32);
   const double target = 0.5 * (1e-2 / 100 + 4e-2 / 200);
   EXPECT_FALSE(tilesToContinue(g, {{100, 8, 1e-2 / 100}, {200, 8, 4e-2 / 200}}, target * 1.001, 1000)[0]);
-  const std::vector<char> go = tilesToContinue(g, {{50, 8, 1e-2 / 50}, {50, 8, 4e-2 / 50}}, target, 1000);
+  const std::vector<int> go = tilesToContinue(g, {{50, 8, 1e-2 / 50}, {50, 8, 4e-2 / 50}}, target, 1000);
   EXPECT_TRUE(go[0]);
   EXPECT_TRUE(go[1]);
-  const std::vector<char> later = tilesToContinue(g, {{100, 8, 1e-2 / 100}, {100, 8, 4e-2 / 100}}, target, 1000);
+  const std::vector<int> later = tilesToContinue(g, {{100, 8, 1e-2 / 100}, {100, 8, 4e-2 / 100}}, target, 1000);
   EXPECT_FALSE(later[0]) << "tile 0 has its share";
   EXPECT_TRUE(later[1]);
 }

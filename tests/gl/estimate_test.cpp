@@ -1,0 +1,92 @@
+// The per-tile renderer's error estimate is honest: its PSNR (against the image's own converged
+// limit, from the two sample streams) is within 1 dB of the PSNR against the ray-cast reference,
+// wherever that truth lies between 25 and 45 dB — on rows, occluder and the lens camera. The
+// truth is the PSNR against the reference with the reference's own noise taken out (its MSE, from
+// its two independent halves). Frames cover the range two ways: every tile capped at N samples
+// (N = 2 … 256), and targets of 30 … 45 dB with per-tile budgets.
+#include "camera/DepthRange.h"
+#include "gl_test_context.h"
+#include "io/CameraJson.h"
+#include "io/ImageCompare.h"
+#include "plan/FramePlan.h"
+#include "plan/TileBudget.h"
+#include "raycast/RayCaster.h"
+#include "render/Renderer.h"
+#include "render/VisibleBlurPass.h"
+#include "scene/GltfLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace lenslab {
+namespace {
+
+double mseBetween(const Image& a, const Image& b) {
+  const double rmse = compareImages(a, b, 0.0).rmse;
+  return rmse * rmse;
+}
+
+struct Case {
+  const char* name;
+  const char* scene;
+  const char* camera;
+};
+
+class Estimate : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
+  LENSLAB_REQUIRE_GL();
+  const Case c = GetParam();
+  const std::filesystem::path assets = LENSLAB_TEST_ASSET_DIR;
+  const Scene scene = loadGltf(assets / c.scene);
+  const Camera camera = withDepthRangeFitted(loadCameraJson(assets / c.camera).camera, scene.bounds);
+  const int width = std::getenv("LL_W") ? std::atoi(std::getenv("LL_W")) : 240;
+  const int spp = std::getenv("LL_SPP") ? std::atoi(std::getenv("LL_SPP")) : 512;
+  const std::uint32_t seed = std::getenv("LL_SEED") ? static_cast<std::uint32_t>(std::atoi(std::getenv("LL_SEED"))) : 7;
+  const ImageSize size = resolveImageSize(camera.view.window, width, std::nullopt);
+
+  // The reference: two independent halves of 512 stratified samples per pixel each.
+  const RayCaster caster(scene);
+  const Image h0 = caster.render(camera, size, RaycastOptions{spp, 101});
+  const Image h1 = caster.render(camera, size, RaycastOptions{spp, 202});
+  Image reference(size.widthPx, size.heightPx);
+  for (std::size_t i = 0; i < reference.rgba.size(); ++i) reference.rgba[i] = 0.5f * (h0.rgba[i] + h1.rgba[i]);
+  const double referenceNoiseMse = mseBetween(h0, h1) / 4.0;
+
+  Renderer renderer(scene);
+  const VisibleBlur visible = measureVisibleBlur(renderer, camera, size);
+  int inRange = 0;
+  double worst = 0.0;
+  const auto check = [&](const std::string& label, int maxSamples, double target) {
+    PlanOptions options{AperturePattern::Sobol, 0, maxSamples, seed};
+    options.targetPsnrDb = target;
+    const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, options, &visible), size);
+    const FrameEstimate e = renderer.estimate();
+    const double truth = psnrFromMse(std::max(mseBetween(image, reference) - referenceNoiseMse, 1e-30));
+    std::printf("  %-10s %-16s estimate %6.2f dB  truth %6.2f dB  (%+.2f)  %.1f samples per pixel\n", c.name, label.c_str(),
+                e.psnrDb, truth, e.psnrDb - truth, e.meanSamples);
+    if (truth < 25.0 || truth > 45.0) return;
+    ++inRange;
+    worst = std::max(worst, std::abs(e.psnrDb - truth));
+    EXPECT_NEAR(e.psnrDb, truth, 1.0) << label;
+  };
+  for (int n = 2; n <= 256; n *= 2) check("at most " + std::to_string(n), n, 99.0);
+  for (const double target : {30.0, 35.0, 40.0, 45.0}) check("target " + std::to_string(static_cast<int>(target)) + " dB", 1024, target);
+  std::printf("  %s: %d frames with the truth in 25-45 dB, worst |estimate - truth| %.2f dB (reference noise %.1f dB)\n", c.name,
+              inRange, worst, psnrFromMse(referenceNoiseMse));
+  EXPECT_GE(inRange, 6) << "too few frames landed in 25-45 dB for the check to mean anything";
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Estimate,
+                         ::testing::Values(Case{"rows", "rows/rows.gltf", "rows/camera-dof.json"},
+                                           Case{"occluder", "occluder/occluder.gltf", "occluder/camera-dof.json"},
+                                           Case{"rows_lens", "rows/rows.gltf", "rows/camera-lens.json"}),
+                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace lenslab

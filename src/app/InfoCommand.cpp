@@ -1,15 +1,20 @@
 // lenslab info: what a scene holds and what a render of it would need.
 #include "app/Commands.h"
+#include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "io/CameraSelection.h"
+#include "gl/GlContext.h"
 #include "plan/FramePlan.h"
+#include "render/Renderer.h"
+#include "render/VisibleBlurPass.h"
 #include "scene/GltfLoader.h"
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace lenslab {
 namespace {
@@ -20,7 +25,21 @@ void printVector(std::ostream& out, const glm::dvec3& v) {
   out << "[" << v.x << ", " << v.y << ", " << v.z << "]";
 }
 
-int runInfo(const std::string& path) {
+// The visible-blur pre-pass needs a GL context: one is made (OSMesa) only for a camera with an
+// aperture; without one, the plan says what the bounds say.
+std::optional<VisibleBlur> measureBlur(const Scene& scene, const Camera& camera, ImageSize size, std::ostream& out) {
+  if (camera.isPinhole()) return std::nullopt;
+  try {
+    const std::unique_ptr<GlContext> context = createHeadlessContext(Backend::OSMesa);
+    Renderer renderer(scene);
+    return measureVisibleBlur(renderer, camera, size);
+  } catch (const std::exception& e) {
+    out << "note        no pre-pass (" << e.what() << "): the plan below is from the scene's bounds\n";
+    return std::nullopt;
+  }
+}
+
+int runInfo(const std::string& path, const std::string& cameraFile) {
   const Scene scene = loadGltf(path);
   std::ostream& out = std::cout;
   out.precision(6);
@@ -64,11 +83,24 @@ int runInfo(const std::string& path) {
   for (const std::string& note : scene.notes) out << "note        " << note << "\n";
 
   if (scene.triangleCount() > 0) {
-    const SelectedCamera selected = selectCamera(scene, std::nullopt, 0.0);
+    SelectedCamera selected = selectCamera(scene, cameraFile.empty() ? std::nullopt : std::optional<std::filesystem::path>(cameraFile), 0.0);
+    selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
     const ImageSize size = resolveImageSize(selected.camera, std::nullopt, std::nullopt);
-    const FramePlan plan = makeFramePlan(scene, selected.camera, size);
+    const std::optional<VisibleBlur> visible = measureBlur(scene, selected.camera, size, out);
+    const FramePlan plan = makeFramePlan(scene, selected.camera, size, {}, visible ? &*visible : nullptr);
     out << "render      camera: " << selected.camera.source << ", " << size.widthPx << "x" << size.heightPx << "\n";
     out << "            aperture samples: " << plan.apertureSamples << " (" << plan.samplesWhy << ")\n";
+    if (plan.visible) {
+      const VisibleBlurSummary& v = *plan.visible;
+      out << "blur seen   circle of confusion over the image (pinhole depth pre-pass at " << v.prepass.widthPx << "x"
+          << v.prepass.heightPx << ", dilated by nearer circles):\n"
+          << "            <= 1 px " << 100.0 * v.fractions[0] << " %, 1-4 px " << 100.0 * v.fractions[1] << " %, 4-16 px "
+          << 100.0 * v.fractions[2] << " %, 16-64 px " << 100.0 * v.fractions[3] << " %, > 64 px " << 100.0 * v.fractions[4]
+          << " %\n"
+          << "            median " << v.p50Px << " px, 90 % " << v.p90Px << " px, 99 % " << v.p99Px << " px, largest "
+          << v.maxPx << " px\n"
+          << "            the scene's bounds alone: up to " << v.boundsCocMaxPx << " px, " << v.boundsSamples << " samples\n";
+    }
     for (const PlannedPass& p : plan.passes) {
       out << "            pass " << p.name << ": " << p.why;
       for (const std::string& v : p.variants) out << " [" << v << "]";
@@ -84,9 +116,11 @@ int runInfo(const std::string& path) {
 
 std::function<int()> addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
+  auto camera = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a glTF scene: triangles, bounds, cameras, materials, render plan");
   cmd->add_option("scene", *path, "glTF 2.0 scene (.gltf or .glb)")->required();
-  return [cmd, path]() { return cmd->parsed() ? runInfo(*path) : -1; };
+  cmd->add_option("--camera", *camera, "camera JSON to plan for (default: the scene's first glTF camera, else an automatic framing)");
+  return [cmd, path, camera]() { return cmd->parsed() ? runInfo(*path, *camera) : -1; };
 }
 
 }  // namespace lenslab

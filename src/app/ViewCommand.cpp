@@ -18,6 +18,7 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
   cmd->add_option("--height", o->height, "image height in pixels");
   addLensOptions(*cmd, o->lens);
+  addTargetOption(*cmd, o->lens);
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--frames", o->frames,
                   "scripted: run at least N frames (and on until the accumulation is complete), write --screenshot, exit");

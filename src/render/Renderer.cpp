@@ -9,9 +9,6 @@
 
 #include <algorithm>
 #include <map>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 
@@ -72,28 +69,34 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   }
 }
 
-void Renderer::drawSample(const LensSample& s, Accumulator& sum, float lodBias, const std::vector<PixelBox>* boxes) {
+glm::dmat4 Renderer::sampleClip(const LensSample& s, double inverseFocusShift) const {
   const Window& w = camera_.view.window;
   const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
   // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
   const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
-  const glm::dvec2 lensOffset = s.lens * camera_.apertureRadius;
-  // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h).
-  const glm::vec2 curvatureShift(lensOffset * camera_.view.prp.z * camera_.effects.fieldCurvature.inverseFocusPerRadius2 /
-                                 pixelSize);
-  // The same offset in view pixels, GL orientation, for the lens gather.
-  const glm::vec2 jitter(static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y));
-  const auto clip = [&](double inverseFocusShift) {
-    return clipFromWorld(viewThroughLens(camera_, lensOffset, pixelOffset, inverseFocusShift));
-  };
-  if (plan_.viewsPerSample == 3) {
-    for (int c = 0; c < 3; ++c) {
-      glm::vec3 mask(0.0f);
+  return clipFromWorld(viewThroughLens(camera_, s.lens * camera_.apertureRadius, pixelOffset, inverseFocusShift));
+}
+
+void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias) {
+  const LensSample& first = parts.front().sample;
+  const Window& w = camera_.view.window;
+  const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
+  // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h); and the sub-pixel
+  // offset in view pixels, GL orientation, for the lens gather. Both are the view's, so a view with
+  // either is drawn whole from one sample (one part).
+  const glm::vec2 curvatureShift(first.lens * camera_.apertureRadius * camera_.view.prp.z *
+                                 camera_.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
+  const glm::vec2 jitter(static_cast<float>(first.pixel.x), static_cast<float>(-first.pixel.y));
+  for (int c = 0; c < plan_.viewsPerSample; ++c) {
+    glm::vec3 mask(1.0f);
+    double shift = 0.0;
+    if (plan_.viewsPerSample == 3) {
+      mask = glm::vec3(0.0f);
       mask[c] = 1.0f;
-      scenePass_.draw(gpuScene_, clip(channelFocusShifts_[static_cast<std::size_t>(c)]), sum.nextView(mask, curvatureShift, jitter), lodBias, boxes);
+      shift = channelFocusShifts_[static_cast<std::size_t>(c)];
     }
-  } else {
-    scenePass_.draw(gpuScene_, clip(0.0), sum.nextView(glm::vec3(1.0f), curvatureShift, jitter), lodBias, boxes);
+    const gl::DrawTarget view = sum.nextView(mask, curvatureShift, jitter);
+    for (const SamplePart& part : parts) scenePass_.draw(gpuScene_, sampleClip(part.sample, shift), view, lodBias, part.boxes);
   }
 }
 
@@ -107,12 +110,16 @@ int Renderer::addSamples(int count) {
     const LensSample& s = samples_[static_cast<std::size_t>(done_)];
     if (samplesPlanned() == 1) {
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
-      scenePass_.draw(gpuScene_, clipFromWorld(viewThroughLens(camera_, {0.0, 0.0}, {0.0, 0.0})), out.drawTarget(), lodBias);
+      scenePass_.draw(gpuScene_, sampleClip(s, 0.0), out.drawTarget(), lodBias);
     } else {
-      drawSample(s, *accumulator_, lodBias, nullptr);
+      drawSample({{s, nullptr}}, *accumulator_, lodBias);
     }
   }
   return added;
+}
+
+int Renderer::regionOf(int tile) const {
+  return (tile % grid_.columns) / regionTiles_ + regionColumns_ * ((tile / grid_.columns) / regionTiles_);
 }
 
 void Renderer::beginAdaptive() {
@@ -134,6 +141,10 @@ void Renderer::beginAdaptive() {
   // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel.
   scissorViews_ = !plan_.remap && !plan_.fieldCurvature;
   grid_ = makeTileGrid(outSize_, a.tileSizePx);
+  // About 16 regions of whole tiles, each with its own scramble (see step()).
+  regionTiles_ = std::max(1, static_cast<int>(std::lround(std::sqrt(grid_.count() / 16.0))));
+  regionColumns_ = (grid_.columns + regionTiles_ - 1) / regionTiles_;
+  regionCount_ = regionColumns_ * ((grid_.rows + regionTiles_ - 1) / regionTiles_);
   tiles_.assign(static_cast<std::size_t>(grid_.count()), TileState{});
   for (int t = 0; t < grid_.count(); ++t)
     tiles_[static_cast<std::size_t>(t)].minSamples =
@@ -177,40 +188,51 @@ bool Renderer::step() {
     finished_ = true;
     return false;
   }
-  auto T0 = std::chrono::steady_clock::now();
   for (const auto& [first, group] : groups) {
     const std::vector<PixelBox> boxes = mergedBoxes(grid_, group.selected);
-    if (std::getenv("LL_DEBUG")) std::fprintf(stderr, "round %d first %d wanted %d boxes %zu\n", rounds_, first, group.wanted, boxes.size());
     accumulator_->setRegion(&boxes);
     streamB_->setRegion(&boxes);
     // Rounds grow with the count (half of it; each round ends in an estimate, which has its
     // cost), but not past what any of the group's tiles is expected to need; an even number, so
     // that the two streams stay equal.
-    const int round = std::getenv("LL_BIG") ? 64 : std::max(a.samplesPerRound, first / 2 / 2 * 2);
+    const int round = std::max(a.samplesPerRound, first / 2 / 2 * 2);
     const int count = std::min({round, std::max(group.wanted + (group.wanted & 1), 2), a.maxSamples - first}) / 2 * 2;
-    // The views are drawn in fewer, covering rectangles where a pass costs more than the pixels it
-    // saves; only the tiles' exact boxes are added to the sums.
-    const std::vector<PixelBox> drawBoxes = coveringBoxes(boxes, kPixelsPerDrawBox);
-    if (std::getenv("LL_DEBUG")) {
-      double da = 0, aa = 0;
-      for (auto& b : drawBoxes) da += double(b.width) * b.height;
-      for (auto& b : boxes) aa += double(b.width) * b.height;
-      std::fprintf(stderr, "   drawn %.0f accumulated %.0f (x%d) boxes %zu->%zu\n", da, aa, std::min({std::max(a.samplesPerRound, first / 2 / 2 * 2), std::max(group.wanted + (group.wanted & 1), 2), a.maxSamples - first}) / 2 * 2, boxes.size(), drawBoxes.size());
+    // Each region of tiles draws its own scramble of the sequence (its own seed): the regions'
+    // errors are independent, so the frame's error — and its estimate — average over many
+    // independent parts instead of following one set of aperture points everywhere (a blurred
+    // checkerboard under one set errs alike over the whole floor). The views are drawn in fewer,
+    // covering rectangles where a pass costs more than the pixels it saves; only the tiles' exact
+    // boxes are added to the sums. Views the lens gather or the field-curvature warp read whole
+    // are one part, drawn whole.
+    std::vector<std::vector<PixelBox>> regionBoxes;
+    std::vector<std::uint32_t> regionSeeds;
+    if (scissorViews_) {
+      for (int r = 0; r < regionCount_; ++r) {
+        std::vector<char> inRegion = group.selected;
+        bool any = false;
+        for (std::size_t t = 0; t < inRegion.size(); ++t) {
+          inRegion[t] = inRegion[t] && regionOf(static_cast<int>(t)) == r;
+          any |= inRegion[t] != 0;
+        }
+        if (!any) continue;
+        regionBoxes.push_back(coveringBoxes(mergedBoxes(grid_, inRegion), kPixelsPerDrawBox));
+        regionSeeds.push_back(plan_.seed ^ (0x9e3779b9u * static_cast<std::uint32_t>(r + 1)));
+      }
+    } else {
+      regionSeeds.push_back(plan_.seed);
     }
-    for (int i = first; i < first + count; ++i)
-      drawSample(sobolSample(static_cast<std::uint32_t>(i), plan_.seed), (sobolStream(i) == 0 || std::getenv("LL_ONE")) ? *accumulator_ : *streamB_,
-                 a.lodBias, scissorViews_ ? &drawBoxes : nullptr);
+    for (int i = first; i < first + count; ++i) {
+      std::vector<SamplePart> parts;
+      for (std::size_t r = 0; r < regionSeeds.size(); ++r)
+        parts.push_back({sobolSample(static_cast<std::uint32_t>(i), regionSeeds[r]), scissorViews_ ? &regionBoxes[r] : nullptr});
+      drawSample(parts, sobolStream(i) == 0 ? *accumulator_ : *streamB_, a.lodBias);
+    }
     for (std::size_t t = 0; t < group.selected.size(); ++t)
       if (group.selected[t]) tiles_[t].samples += count;
     done_ += count;
   }
   ++rounds_;
-  auto T1 = std::chrono::steady_clock::now();
-  if (std::getenv("LL_DEBUG")) { accumulator_->sumTexture(); streamB_->sumTexture(); glFinish(); }
-  auto T2 = std::chrono::steady_clock::now();
   updateEstimates(drawn);
-  auto T3 = std::chrono::steady_clock::now();
-  if (std::getenv("LL_DEBUG")) std::fprintf(stderr, "  issue %.4f finish %.4f estimate %.4f\n", std::chrono::duration<double>(T1-T0).count(), std::chrono::duration<double>(T2-T1).count(), std::chrono::duration<double>(T3-T2).count());
   return true;
 }
 

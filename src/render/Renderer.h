@@ -52,6 +52,8 @@ class Renderer {
   bool step();
   FrameEstimate estimate() const;
   bool adaptive() const { return adaptive_; }
+  // Whether the frame is complete: every planned sample added, or (per-tile) step() has ended it.
+  bool done() const { return adaptive_ ? finished_ : done_ >= samplesPlanned(); }
   const std::vector<TileState>& tiles() const { return tiles_; }
   const TileGrid& tileGrid() const { return grid_; }
 
@@ -71,9 +73,16 @@ class Renderer {
 
  private:
   const gl::RenderTarget& target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size);
-  // One aperture sample's view(s) into `sum`; `boxes` restricts the scene pass when the views and
-  // the sum share pixels (no lens gather, no field-curvature warp).
-  void drawSample(const LensSample& s, Accumulator& sum, float lodBias, const std::vector<PixelBox>* boxes);
+  // One aperture sample's view(s) into `sum`, drawn in parts: each part its own sample, into its
+  // own rectangles (nullptr: the whole view; only when the views and the sum share pixels — no
+  // lens gather, no field-curvature warp — can a view be drawn in parts).
+  struct SamplePart {
+    LensSample sample;
+    const std::vector<PixelBox>* boxes = nullptr;
+  };
+  void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
+  glm::dmat4 sampleClip(const LensSample& s, double inverseFocusShift) const;
+  int regionOf(int tile) const;
   void beginAdaptive();
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);
@@ -104,6 +113,7 @@ class Renderer {
   TileGrid grid_;
   std::vector<TileState> tiles_;
   int rounds_ = 0;
+  int regionTiles_ = 1, regionColumns_ = 1, regionCount_ = 1;  // regions of tiles with their own scramble
   gl::Texture tileWeights_[2];            // per tile, per stream: RGBA32F, the samples each stream added
   gl::Texture blockError_;                // RG32F, one texel per 8 × 8 block: squared error, value count
   gl::Framebuffer blockErrorFramebuffer_;

@@ -15,6 +15,7 @@
 #include "io/CameraJson.h"
 #include "io/ImageFile.h"
 #include "render/RasterDepth.h"
+#include "render/VisibleBlurPass.h"
 
 #include <nlohmann/json.hpp>
 
@@ -161,6 +162,7 @@ void Viewer::handleInput() {
 
 void Viewer::restart() {
   model_.restart();  // checks the camera (back to the last valid one), plans, restarts the budget
+  if (model_.wantsVisibleBlur()) model_.replanWith(measureVisibleBlur(renderer_, model_.renderCamera(), model_.size()));
   renderer_.begin(model_.renderCamera(), model_.plan(), model_.size());
   resolved_ = nullptr;
   baselineValid_ = false;
@@ -168,6 +170,17 @@ void Viewer::restart() {
 }
 
 void Viewer::accumulate() {
+  if (renderer_.adaptive()) {
+    // Per-tile budgets: one round a frame (the tiles still short of the target), then the estimate.
+    if (renderer_.done()) return;
+    const auto t = Clock::now();
+    const int before = renderer_.samplesDone();
+    const bool more = renderer_.step();
+    finishGpuWork();
+    model_.budget().measured(renderer_.samplesDone() - before, msSince(t), !more);
+    resolved_ = &renderer_.resolveOnGpu();
+    return;
+  }
   const int count = model_.budget().samplesForFrame(renderer_.samplesPlanned() - renderer_.samplesDone());
   if (count == 0) return;
   const auto t = Clock::now();
@@ -229,8 +242,13 @@ void Viewer::finishScripted() {
     j["framebuffer"] = {fbWidth_, fbHeight_};
     j["renderer"] = currentRenderer();
     j["samples_done"] = renderer_.samplesDone();
-    j["samples_planned"] = renderer_.samplesPlanned();
+    j["samples_planned"] = renderer_.adaptive() ? model_.plan().apertureSamples : renderer_.samplesPlanned();  // per-tile: the cap
     j["samples_why"] = model_.plan().samplesWhy;
+    if (renderer_.adaptive()) {
+      const FrameEstimate e = renderer_.estimate();
+      j["estimate"] = {{"psnr", e.psnrDb}, {"rmse", e.rmse}, {"target_met", e.targetMet}};
+      j["samples"] = {{"min", e.minSamples}, {"mean", e.meanSamples}, {"max", e.maxSamples}, {"rounds", e.rounds}};
+    }
     const double accumulationMs = model_.budget().accumulationMs();
     j["ms_per_sample"] = accumulationMs / std::max(renderer_.samplesDone(), 1);
     j["accumulation_ms"] = accumulationMs;
@@ -254,7 +272,7 @@ int Viewer::run() {
   if (options_.lens.focusAt) focusAt(*options_.lens.focusAt);
   if (options_.click) focusAt(*options_.click);
   while (!glfwWindowShouldClose(window_)) {
-    const bool converged = renderer_.samplesDone() >= renderer_.samplesPlanned();
+    const bool converged = renderer_.done();
     if (!scripted() && converged && !model_.needsRestart()) glfwWaitEventsTimeout(0.05);  // idle: no busy loop
     else glfwPollEvents();
     layout();
@@ -293,7 +311,7 @@ int Viewer::run() {
     frameMsMax_ = std::max(frameMsMax_, frameMs);
     frameMsSum_ += frameMs;
     ++frames_;
-    if (scripted() && frames_ >= options_.frames && renderer_.samplesDone() >= renderer_.samplesPlanned()) {
+    if (scripted() && frames_ >= options_.frames && renderer_.done()) {
       finishScripted();
       return 0;
     }

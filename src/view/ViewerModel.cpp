@@ -194,6 +194,14 @@ std::optional<double> ViewerModel::clickAt(glm::dvec2 pixel, const DepthAtPixel&
   }
 }
 
+void ViewerModel::replanWith(const VisibleBlur& visible) {
+  plan_ = makeFramePlan(scene_, cam_.camera, size_, planOptions_, &visible);
+}
+
+bool ViewerModel::wantsVisibleBlur() const {
+  return !cam_.camera.isPinhole() && (planOptions_.apertureSamples == 0 || planOptions_.targetPsnrDb.has_value());
+}
+
 Camera ViewerModel::renderCamera() const { return withDepthRangeFitted(cam_.camera, scene_.bounds); }
 
 void ViewerModel::restart() {

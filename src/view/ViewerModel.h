@@ -78,6 +78,11 @@ class ViewerModel {
   ImageSize size() const { return size_; }
   const PlanOptions& planOptions() const { return planOptions_; }
   const FramePlan& plan() const { return plan_; }  // of the last restart
+  // The plan again, from the blur the renderer's pre-pass saw (plan/VisibleBlur.h): the auto count
+  // and the tiles' minimums follow what is in view, not the scene's bounds.
+  void replanWith(const VisibleBlur& visible);
+  // Whether a pre-pass would change the plan: a lens, and a count chosen by the plan.
+  bool wantsVisibleBlur() const;
 
   // ---- edits: each marks the accumulation for a restart, which checks the camera ----
   void orbit(double yawRadians, double pitchRadians);       // about the focus pivot

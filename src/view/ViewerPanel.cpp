@@ -34,9 +34,21 @@ void matrixTable(const char* name, const glm::dmat4& m) {
 }  // namespace
 
 void Viewer::sectionProgress() {
-  const int done = renderer_.samplesDone(), planned = renderer_.samplesPlanned();
-  ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0),
-                     cat(done, " / ", planned, " samples").c_str());
+  if (renderer_.adaptive()) {
+    // Per-tile budgets: the estimate (against the image's own converged limit) and the target.
+    const FrameEstimate e = renderer_.estimate();
+    const double target = model_.plan().adaptive->targetPsnrDb;
+    ImGui::ProgressBar(static_cast<float>(std::clamp(e.psnrDb / target, 0.0, 1.0)), ImVec2(-FLT_MIN, 0),
+                       cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", target, " dB (estimate)").c_str());
+    ImGui::Text("%.1f samples per pixel (%d to %d per tile), %d of %d tiles going, round %d", e.meanSamples, e.minSamples,
+                e.maxSamples, e.tilesActive, e.tiles, e.rounds);
+    if (renderer_.done() && !e.targetMet)
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "stopped at max samples short of the target");
+  } else {
+    const int done = renderer_.samplesDone(), planned = renderer_.samplesPlanned();
+    ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0),
+                       cat(done, " / ", planned, " samples").c_str());
+  }
   const SampleBudget& budget = model_.budget();
   ImGui::Text("%.2f ms per sample, %.0f ms accumulated", budget.msPerSample(), budget.accumulationMs());
   if (budget.convergedAfterMs() >= 0.0) ImGui::Text("converged %.0f ms after the last change", budget.convergedAfterMs());
@@ -151,6 +163,22 @@ void Viewer::sectionSamples() {
     changed |= ImGui::SliderInt("max samples", &o.maxSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
   } else {
     changed |= ImGui::SliderInt("samples", &o.apertureSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+  }
+  bool target = o.targetPsnrDb.has_value();
+  if (ImGui::Checkbox("to a target PSNR (per-tile budgets)", &target)) {
+    o.targetPsnrDb = target ? std::optional<double>(40.0) : std::nullopt;
+    if (target) {
+      o.pattern = AperturePattern::Sobol;
+      o.apertureSamples = 0;
+    }
+    changed = true;
+  }
+  if (o.targetPsnrDb) {
+    float db = static_cast<float>(*o.targetPsnrDb);
+    if (ImGui::SliderFloat("target (dB)", &db, 20.0f, 60.0f, "%.1f")) {
+      o.targetPsnrDb = db;
+      changed = true;
+    }
   }
   int seed = static_cast<int>(o.seed);
   if (ImGui::InputInt("seed", &seed)) {

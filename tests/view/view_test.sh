@@ -62,6 +62,18 @@ else
   fail "view/render with auto samples failed"
 fi
 
+# To a target error: view runs a round of per-tile budgets a frame, stops at the target, and
+# shows what render makes with the same options.
+if "$lenslab" view --camera "$dof" --width 240 --target-psnr 32 --frames 1 --no-ui --screenshot "$work/target.exr" \
+     --stats "$work/target.json" >"$work/target.out" 2>&1 &&
+   "$lenslab" render --camera "$dof" --width 240 --target-psnr 32 --out "$work/target-render.exr" -q; then
+  if "$check" psnr "$work/target.exr" "$work/target-render.exr" 60; then pass; else fail "--target-psnr: view differs from render"; fi
+  if grep -qF '"target_met": true' "$work/target.json" && grep -qF '"rounds"' "$work/target.json"; then pass
+  else fail "--target-psnr view stats: $(cat "$work/target.json")"; fi
+else
+  fail "view/render --target-psnr failed: $(cat "$work/target.out")"
+fi
+
 # The same with every lens effect (the lens pass, per-channel views, the curvature warp).
 lens="$src/assets/rows/camera-lens.json"
 if "$lenslab" view --camera "$lens" --width 200 --aperture-samples 8 --frames 2 --no-ui --screenshot "$work/lens.exr" >/dev/null 2>&1 &&

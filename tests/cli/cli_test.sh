@@ -75,7 +75,10 @@ fi
 
 # Depth of field: auto sample count, each pattern, focus tools.
 if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --max-samples 8 --out "$work/dof.png" --stats "$work/dof.json" -q; then
-  if grep -qF '"aperture_samples": 8' "$work/dof.json" && grep -qF '"accumulate"' "$work/dof.json" && grep -qF '"coc_px"' "$work/dof.json"; then pass; else fail "dof stats: $(cat "$work/dof.json")"; fi
+  # The count comes from the blur seen (a pre-pass), not the bounds (which would ask for the cap, 8).
+  if grep -qF '"aperture_samples": 2' "$work/dof.json" && grep -qF '"bounds_aperture_samples": 8' "$work/dof.json" &&
+     grep -qF '"visible_blur"' "$work/dof.json" && grep -qF '"accumulate"' "$work/dof.json" && grep -qF '"coc_px"' "$work/dof.json"; then pass
+  else fail "dof stats: $(cat "$work/dof.json")"; fi
 else
   fail "dof render"
 fi
@@ -88,6 +91,19 @@ if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --ma
 # A pinhole camera is one scene pass, no accumulation.
 if grep -qF '"accumulate"' "$work/stats.json"; then fail "pinhole plan accumulates"; else pass; fi
 expect_refusal "bad sample count" "--aperture-samples" -- render --aperture-samples lots --out "$work/out.png"
+
+# To a target error: the estimate and the samples in --stats; refusals name the option.
+if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 128 --target-psnr 30 --out "$work/target.png" --stats "$work/target.json" -q; then
+  if grep -qF '"estimate"' "$work/target.json" && grep -qF '"target_met": true' "$work/target.json" &&
+     grep -qF '"pattern": "sobol"' "$work/target.json" && grep -qF '"mean"' "$work/target.json"; then pass
+  else fail "--target-psnr stats: $(cat "$work/target.json")"; fi
+else
+  fail "render --target-psnr"
+fi
+expect_refusal "target with a stratified pattern" "--pattern concentric: --target-psnr" -- render --camera "$src/assets/rows/camera-dof.json" --target-psnr 30 --pattern concentric --out "$work/out.png"
+expect_refusal "target with a count" "--aperture-samples 16: --target-psnr" -- render --camera "$src/assets/rows/camera-dof.json" --target-psnr 30 --aperture-samples 16 --out "$work/out.png"
+expect_refusal "target out of range" "--target-psnr" -- render --target-psnr 5 --out "$work/out.png"
+expect_refusal "target in tiles" "--target-psnr: " -- render --camera "$src/assets/rows/camera-dof.json" --width 256 --tile-size 64 --target-psnr 30 --out "$work/out.png"
 expect_refusal "bad focus distance" "--focus-distance: focus_distance is -3" -- render --focus-distance -3 --out "$work/out.png"
 expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$src/assets/rows/camera-dof.json" --width 96 --focus-at 50,2 --out "$work/out.png"
 
@@ -101,7 +117,8 @@ expect_refusal "raycast bad spp" "--spp" -- raycast --spp 0 --out "$work/out.png
 # The sweep writes its CSV, table, plot and images.
 if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" --out "$work/sweep" --width 48 --reference-spp 8 --max-views 4 --max-spp 2 2>/dev/null &&
    [ -s "$work/sweep/sweep.csv" ] && [ -s "$work/sweep/sweep.md" ] && [ -s "$work/sweep/error_vs_time.png" ] &&
-   head -1 "$work/sweep/sweep.csv" | grep -qx "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse" &&
+   head -1 "$work/sweep/sweep.csv" | grep -qx "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse,target_psnr,estimate_psnr,mean_samples,max_tile_samples" &&
+   grep -q "^adaptive,sobol," "$work/sweep/sweep.csv" &&
    grep -q "^postprocess,gather," "$work/sweep/sweep.csv" && ls "$work"/sweep/images/raster-concentric-4.png >/dev/null; then pass; else fail "sweep"; fi
 expect_refusal "sweep of a pinhole" "pinhole" -- sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera.json" --out "$work/out-sweep" --width 16
 

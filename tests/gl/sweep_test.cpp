@@ -66,10 +66,26 @@ TEST(Sweep, MarkdownHasTheEqualErrorTable) {
   SweepResult r;
   r.rows = {{"raster", "concentric", 1, 0.01, 0.05, 26.0, 0.5, 0.1},
             {"raster", "concentric", 2, 0.02, 0.02, 34.0, 0.4, 0.05},
-            {"raster", "concentric", 4, 0.04, 0.008, 41.9, 0.2, 0.02}};
+            {"raster", "concentric", 4, 0.04, 0.008, 41.9, 0.2, 0.02},
+            {"adaptive", "sobol", 3, 0.007, 0.028, 31.0, 0.3, 0.04, 30.0, 31.2, 4, 3.0},
+            {"adaptive", "sobol", 9, 0.015, 0.0094, 40.5, 0.1, 0.02, 40.0, 40.1, 16, 9.0}};
   const std::string md = sweepMarkdown(r, "# test");
-  EXPECT_NE(md.find("| raster concentric | 0.0200 | 0.0400 | 0.0400 |"), std::string::npos) << md;
-  EXPECT_NE(sweepCsv(r).find("raster,concentric,4,0.04,0.008,41.9,0.2,0.02"), std::string::npos);
+  // Interpolated in log time between the rows around each PSNR: 30 dB lies halfway from 26 to 34
+  // (0.01·√2 s), 35 and 40 dB between 34 and 41.9; 45 dB is not reached.
+  EXPECT_NE(md.find("| raster concentric | 0.0141 | 0.0218 | 0.0339 | — |"), std::string::npos) << md;
+  // The speed-up: 0.0141 / 0.007 (the adaptive series' first row is already above 30 dB), and at
+  // 40 dB 0.0339 / 0.0144 (between its rows at 31 and 40.5 dB).
+  EXPECT_NE(md.find("| 30 dB | 0.0141 | 0.0070 | 2.02x |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 40 dB | 0.0339 | 0.0144 | 2.35x |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 40.0 dB | 40.10 dB | 40.50 dB |"), std::string::npos) << md;
+  EXPECT_NE(sweepCsv(r).find("raster,concentric,4,0.04,0.008,41.9,0.2,0.02,0,0,0,0"), std::string::npos);
+}
+
+TEST(Sweep, SecondsToReachInterpolatesInLogTime) {
+  const SweepRow a{"raster", "concentric", 1, 1.0, 0.1, 20.0, 0.0, 0.0}, b{"raster", "concentric", 2, 4.0, 0.01, 40.0, 0.0, 0.0};
+  EXPECT_NEAR(secondsToReach({&a, &b}, 30.0), 2.0, 1e-12);  // halfway in PSNR: the geometric mean of the times
+  EXPECT_EQ(secondsToReach({&a, &b}, 20.0), 1.0);
+  EXPECT_LT(secondsToReach({&a, &b}, 41.0), 0.0);
 }
 
 }  // namespace

@@ -31,6 +31,14 @@ const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot
   return *slot;
 }
 
+std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
+  if (!plan_.fieldCurvature) return std::nullopt;
+  const Window& w = camera_.view.window;
+  const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
+  const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
+  return Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
+}
+
 void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size) {
   plan_ = plan;
   camera_ = plan.remap ? plan.overscan.camera : camera;
@@ -55,13 +63,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   } else {
     samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
     if (!accumulator_) accumulator_ = std::make_unique<Accumulator>();
-    std::optional<Accumulator::Curvature> curvature;
-    if (plan.fieldCurvature) {
-      const Window& w = camera_.view.window;
-      const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
-      const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
-      curvature = Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
-    }
+    const std::optional<Accumulator::Curvature> curvature = curvatureWarp();
     // With distortion or lateral colour each view's samples go straight to where the lens puts
     // them, as the views are summed: no resampling of the mean afterwards.
     accumulator_->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr,
@@ -127,13 +129,7 @@ void Renderer::beginAdaptive() {
   samples_.clear();  // progressive: made as they are drawn
   finished_ = false;
   rounds_ = 0;
-  std::optional<Accumulator::Curvature> curvature;
-  if (plan_.fieldCurvature) {
-    const Window& w = camera_.view.window;
-    const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
-    const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
-    curvature = Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
-  }
+  const std::optional<Accumulator::Curvature> curvature = curvatureWarp();
   for (std::unique_ptr<Accumulator>* slot : {&accumulator_, &streamB_}) {
     if (!*slot) *slot = std::make_unique<Accumulator>();
     (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr, plan_.remap ? &lensPass_->gather() : nullptr);

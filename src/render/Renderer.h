@@ -83,6 +83,8 @@ class Renderer {
   void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
   glm::dmat4 sampleClip(const LensSample& s, double inverseFocusShift) const;
   int regionOf(int tile) const;
+  // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
+  std::optional<Accumulator::Curvature> curvatureWarp() const;
   void beginAdaptive();
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);

@@ -8,6 +8,9 @@
 //                  ÷ the 64-view frame                                     goal ≤ 0.05
 //   adaptive 40 dB a per-tile frame to 40 dB (pre-pass included, read back)
 //                  ÷ a 64-view uniform frame, read back (about 40 dB on this scene: sweep)
+//   16 boxes       8 scene passes scissored to 16 strips covering half the frame
+//                  ÷ 8 passes scissored to one box over the same half: the cost of a scissored
+//                  pass of its own (Renderer's kPixelsPerDrawBox)
 // Every side ends in glFinish (or a read-back), so GPU work is counted. 1280×720, rows with
 // camera-dof.json. Run: build/tests/lenslab_ratios [--backend=egl] [--pairs N]
 #include "camera/DepthRange.h"
@@ -105,31 +108,19 @@ int main(int argc, char** argv) {
   ratio("accumulation", pairs, [&] { bare(64); }, [&] { frame(camera, frame64); }, "<= 1.05");
   ratio("pinhole plan", pairs * 4, [&] { bare(1); }, [&] { frame(pinhole, pinholePlan); }, "<= 1.02");
   ratio("pre-pass", pairs, [&] { frame(camera, frame64); }, [&] { (void)measureVisibleBlur(renderer, camera, size); }, "<= 0.05");
-  if (std::getenv("LL_SCISSOR")) {
-    std::vector<PixelBox> full{{0, 0, size.widthPx - 1, size.heightPx}};
-    std::vector<PixelBox> half;
-    for (int i = 0; i < 16; ++i) half.push_back({i * 80, 0, 40, size.heightPx});
-    std::vector<PixelBox> halfOne{{0, 0, 640, size.heightPx}};
-    ratio("scissored full", pairs, [&] { bare(8); }, [&] { for (int i = 0; i < 8; ++i) scenePass.draw(gpuScene, clip, target.drawTarget(), 0.0f, &full); glFinish(); }, "1");
-    ratio("16 boxes half", pairs, [&] { bare(8); }, [&] { for (int i = 0; i < 8; ++i) scenePass.draw(gpuScene, clip, target.drawTarget(), 0.0f, &half); glFinish(); }, "0.5");
-    ratio("1 box half", pairs, [&] { bare(8); }, [&] { for (int i = 0; i < 8; ++i) scenePass.draw(gpuScene, clip, target.drawTarget(), 0.0f, &halfOne); glFinish(); }, "0.5");
-    return 0;
-  }
-  if (std::getenv("LL_MACHINERY")) {
-    PlanOptions all64{AperturePattern::Sobol, 0, 64, 1};
-    all64.targetPsnrDb = 99.0;
-    const FramePlan machinery = makeFramePlan(scene, camera, size, all64);
-    ratio("per-tile machinery", pairs, [&] { (void)renderer.render(camera, frame64, size); },
-          [&] { (void)renderer.render(camera, machinery, size); }, "1");
-    return 0;
-  }
-  PlanOptions to40{AperturePattern::Sobol, 0, std::getenv("LL_MAX") ? std::atoi(std::getenv("LL_MAX")) : 256, 1};
+  std::vector<PixelBox> strips, half{{0, 0, size.widthPx / 2, size.heightPx}};
+  for (int i = 0; i < 16; ++i) strips.push_back({i * size.widthPx / 16, 0, size.widthPx / 32, size.heightPx});
+  const auto boxed = [&](const std::vector<PixelBox>& boxes) {
+    for (int i = 0; i < 8; ++i) scenePass.draw(gpuScene, clip, target.drawTarget(), 0.0f, &boxes);
+    glFinish();
+  };
+  ratio("16 boxes", pairs, [&] { boxed(half); }, [&] { boxed(strips); }, "1 = no cost per box");
+  PlanOptions to40{AperturePattern::Sobol, 0, 256, 1};
   to40.targetPsnrDb = 40.0;
   ratio("adaptive 40 dB", pairs, [&] { (void)renderer.render(camera, frame64, size); },
         [&] {
           const VisibleBlur visible = measureVisibleBlur(renderer, camera, size);
           (void)renderer.render(camera, makeFramePlan(scene, camera, size, to40, &visible), size);
-          if (std::getenv("LL_DEBUG")) std::printf("mean %.1f rounds %d\n", renderer.estimate().meanSamples, renderer.estimate().rounds);
         },
         "< 1: faster");
   return 0;

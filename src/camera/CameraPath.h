@@ -1,0 +1,60 @@
+#pragma once
+// A camera path for headless capture: physical cameras keyed in time, and the camera at any time
+// between them (issue #14's `lenslab capture --path`).
+//
+// "smooth" (the default):
+//   eye, target   centripetal Catmull–Rom splines (knots spaced by √distance: no cusps and no
+//                 loops within a segment, Yuksel, Schaefer and Keyser 2011); the path passes
+//                 through every key
+//   up            interpolated, then made orthogonal to the view direction and unit length
+//   focus         in inverse distance 1/z_f: blur grows with |1/z − 1/z_f|, so a rack focus that
+//                 is even in 1/z_f looks even to the eye
+//   f-number      in stops, log2 N
+//                 (focus and stops by monotone cubic Hermite interpolation, Fritsch–Carlson: no
+//                 overshoot, so focus moves one way between two keys)
+//   focal length, sensor, near, far and the lens effects: linearly
+// "linear": every quantity piecewise linear in time (focus still in 1/z_f, f-number in stops).
+// Outside the keys' times the first or last key holds.
+#include "camera/PhysicalCamera.h"
+#include "lens/LensEffects.h"
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace lenslab {
+
+struct PathKey {
+  double timeSeconds = 0.0;
+  PhysicalCamera camera;
+  LensEffects effects;
+};
+
+enum class PathInterpolation { Smooth, Linear };
+
+struct CameraPath {
+  double fps = 24.0;
+  std::vector<PathKey> keys;
+  PathInterpolation interpolation = PathInterpolation::Smooth;
+  std::optional<int> frames;  // given: this many; else floor(last time × fps) + 1
+
+  int frameCount() const;
+  double frameTimeSeconds(int frame) const { return frame / fps; }
+};
+
+// Throws InputError naming `where` and the key: no keys, fps not positive and finite, times not
+// finite or not strictly increasing, a frame count below 1, or f-numbers that mix a pinhole
+// (infinity) with a lens (stops cannot span them).
+void validate(const CameraPath& path, std::string_view where);
+
+// The camera at `timeSeconds` (a valid path).
+PathKey cameraAt(const CameraPath& path, double timeSeconds);
+
+// One centripetal Catmull–Rom segment from p1 (u = 0) to p2 (u = 1), with neighbours p0 and p3.
+glm::dvec3 centripetalCatmullRom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3,
+                                 double u);
+
+// Monotone cubic Hermite interpolation (Fritsch–Carlson) of values y at strictly increasing x.
+double monotoneCubic(const std::vector<double>& x, const std::vector<double>& y, double at);
+
+}  // namespace lenslab

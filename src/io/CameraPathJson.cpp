@@ -1,0 +1,79 @@
+#include "io/CameraPathJson.h"
+
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/CameraJson.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace lenslab {
+
+using json = nlohmann::json;
+
+CameraPath parseCameraPath(const std::string& text, const std::string& where) {
+  json root;
+  try {
+    root = json::parse(text, [&](int depth, json::parse_event_t, json&) {
+      if (depth > 64) throw InputError(cat(where, ": the JSON nests deeper than 64 levels"));
+      return true;
+    });
+  } catch (const json::exception& e) {
+    throw InputError(cat(where, ": not valid JSON: ", e.what()));
+  }
+  if (!root.is_object()) throw InputError(cat(where, ": a camera path must hold a JSON object, not ", root.type_name()));
+  for (const auto& item : root.items())
+    if (item.key() != "fps" && item.key() != "keys" && item.key() != "frames" && item.key() != "interpolation")
+      throw InputError(cat(where, ": unknown key \"", item.key(), "\"; a camera path takes fps, keys, frames, interpolation"));
+
+  CameraPath path;
+  if (!root.contains("fps")) throw InputError(cat(where, ": fps: required (frames per second, e.g. 24)"));
+  if (!root["fps"].is_number()) throw InputError(cat(where, ": fps: give a number of frames per second"));
+  path.fps = root["fps"].get<double>();
+  if (root.contains("frames")) {
+    if (!root["frames"].is_number_integer()) throw InputError(cat(where, ": frames: give a whole number of frames"));
+    const long long frames = root["frames"].get<long long>();
+    if (frames < 1 || frames > 10'000'000) throw InputError(cat(where, ": frames ", frames, ": give 1 to 10^7"));
+    path.frames = static_cast<int>(frames);
+  }
+  if (root.contains("interpolation")) {
+    const json& mode = root["interpolation"];
+    if (mode == "smooth") path.interpolation = PathInterpolation::Smooth;
+    else if (mode == "linear") path.interpolation = PathInterpolation::Linear;
+    else throw InputError(cat(where, ": interpolation ", mode.dump(), ": use \"smooth\" or \"linear\""));
+  }
+  if (!root.contains("keys") || !root["keys"].is_array())
+    throw InputError(cat(where, ": keys: give an array of keys, each {\"time\": seconds, <a camera in the physical form>}"));
+  const json& keys = root["keys"];
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::string name = cat(where, ": keys[", i, "]");
+    if (!keys[i].is_object()) throw InputError(cat(name, ": give an object {\"time\": seconds, <a camera in the physical form>}"));
+    json camera = keys[i];
+    if (!camera.contains("time") || !camera["time"].is_number()) throw InputError(cat(name, ".time: required, in seconds"));
+    PathKey key;
+    key.timeSeconds = camera["time"].get<double>();
+    camera.erase("time");
+    const CameraFile file = parseCameraJson(camera.dump(), name);
+    if (!file.physical)
+      throw InputError(cat(name, ": give the camera in the physical form (eye, target, up, focal_length_mm, sensor_mm, f_number, "
+                               "focus_distance, near, far): a path interpolates those"));
+    key.camera = *file.physical;
+    key.effects = file.camera.effects;
+    path.keys.push_back(key);
+  }
+  validate(path, where);
+  return path;
+}
+
+CameraPath loadCameraPath(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(cat(file.string(), ": cannot read the camera path (does it exist?)"));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseCameraPath(text.str(), file.string());
+}
+
+}  // namespace lenslab

@@ -1,0 +1,19 @@
+#pragma once
+// Camera path files (JSON) for headless capture (camera/CameraPath.h):
+//   {"fps": 24,                                  required: frames per second
+//    "keys": [{"time": 0.0, <a camera in the physical form, lens effects allowed>}, …],
+//    "frames": N,                                optional: else floor(last time × fps) + 1
+//    "interpolation": "smooth" | "linear"}       default "smooth"
+// Each key is read as a camera file is (io/CameraJson.h), so its errors name the key
+// ("path.json: keys[2]: unknown key \"fov\" …"); the path's own errors name the path's key.
+#include "camera/CameraPath.h"
+
+#include <filesystem>
+#include <string>
+
+namespace lenslab {
+
+CameraPath parseCameraPath(const std::string& text, const std::string& where);
+CameraPath loadCameraPath(const std::filesystem::path& file);
+
+}  // namespace lenslab

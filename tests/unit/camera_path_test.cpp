@@ -1,0 +1,169 @@
+// Camera paths (camera/CameraPath.h, io/CameraPathJson.h): keys hit exactly, a rack focus moves
+// one way in 1/z, f-numbers in stops, up stays orthonormal, frame counts, and bad paths refused in
+// one line naming the key.
+#include "camera/CameraPath.h"
+#include "core/Error.h"
+#include "io/CameraPathJson.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace lenslab {
+namespace {
+
+PhysicalCamera lens(glm::dvec3 eye, glm::dvec3 target, double focus, double fNumber, double focalMm = 35.0) {
+  PhysicalCamera c;
+  c.eye = eye;
+  c.target = target;
+  c.focusDistance = focus;
+  c.fNumber = fNumber;
+  c.focalLengthMm = focalMm;
+  return c;
+}
+
+CameraPath threeKeys(PathInterpolation mode) {
+  CameraPath p;
+  p.fps = 24.0;
+  p.interpolation = mode;
+  p.keys = {{0.0, lens({0, 1, 5}, {0, 0.5, 0}, 1.0, 1.4, 35.0), {}},
+            {1.0, lens({2, 1.5, 4}, {0.2, 0.5, -1}, 4.0, 2.8, 50.0), {}},
+            {2.5, lens({3, 1, 1}, {0, 0.5, -3}, 20.0, 8.0, 85.0), {}}};
+  p.keys[1].camera.up = glm::normalize(glm::dvec3(0.2, 1.0, 0.0));
+  validate(p, "test");
+  return p;
+}
+
+TEST(CameraPath, KeysAreHitExactly) {
+  for (PathInterpolation mode : {PathInterpolation::Smooth, PathInterpolation::Linear}) {
+    const CameraPath p = threeKeys(mode);
+    for (const PathKey& k : p.keys) {
+      const PhysicalCamera c = cameraAt(p, k.timeSeconds).camera;
+      EXPECT_NEAR(glm::length(c.eye - k.camera.eye), 0.0, 1e-12);
+      EXPECT_NEAR(glm::length(c.target - k.camera.target), 0.0, 1e-12);
+      EXPECT_NEAR(c.focusDistance, k.camera.focusDistance, 1e-9 * k.camera.focusDistance);
+      EXPECT_NEAR(c.fNumber, k.camera.fNumber, 1e-12);
+      EXPECT_NEAR(c.focalLengthMm, k.camera.focalLengthMm, 1e-12);
+    }
+  }
+}
+
+TEST(CameraPath, ARackFocusMovesOneWayInInverseDistance) {
+  for (PathInterpolation mode : {PathInterpolation::Smooth, PathInterpolation::Linear}) {
+    const CameraPath p = threeKeys(mode);  // focus 1 → 4 → 20: 1/z falls all the way
+    double previous = 2.0;
+    for (int i = 0; i <= 250; ++i) {
+      const double inverse = 1.0 / cameraAt(p, i * 0.01).camera.focusDistance;
+      EXPECT_LE(inverse, previous + 1e-12) << "t = " << i * 0.01;
+      previous = inverse;
+    }
+  }
+  // Linear: even in 1/z, so halfway from 1 m to 4 m is 1/z = 0.625 (1.6 m), not 2.5 m.
+  EXPECT_NEAR(cameraAt(threeKeys(PathInterpolation::Linear), 0.5).camera.focusDistance, 1.6, 1e-12);
+}
+
+TEST(CameraPath, FNumbersMoveInStops) {
+  // f/1.4 → f/2.8 is one stop: halfway is half a stop, 1.4·√2.
+  EXPECT_NEAR(cameraAt(threeKeys(PathInterpolation::Linear), 0.5).camera.fNumber, 1.4 * std::sqrt(2.0), 1e-12);
+  // Smooth: between the keys' f-numbers, never beyond them.
+  for (int i = 0; i <= 100; ++i) {
+    const double f = cameraAt(threeKeys(PathInterpolation::Smooth), i * 0.025).camera.fNumber;
+    EXPECT_GE(f, 1.4 - 1e-12);
+    EXPECT_LE(f, 8.0 + 1e-12);
+  }
+}
+
+TEST(CameraPath, UpStaysOrthonormalToTheViewDirection) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  CameraPath p;
+  p.fps = 30.0;
+  for (int k = 0; k < 6; ++k) {
+    PathKey key{k * 0.5, lens({u(rng) * 3, 1 + u(rng), 5 + u(rng)}, {u(rng), 0.5, u(rng)}, 3.0, 2.0), {}};
+    key.camera.up = glm::normalize(glm::dvec3(0.3 * u(rng), 1.0, 0.3 * u(rng)));
+    p.keys.push_back(key);
+  }
+  validate(p, "test");
+  for (int i = 0; i <= 250; ++i) {
+    const PhysicalCamera c = cameraAt(p, i * 0.01).camera;
+    EXPECT_NEAR(glm::length(c.up), 1.0, 1e-12);
+    EXPECT_NEAR(glm::dot(c.up, glm::normalize(c.target - c.eye)), 0.0, 1e-12);
+  }
+}
+
+TEST(CameraPath, CentripetalCatmullRomPassesItsPointsAndKeepsALineStraight) {
+  const glm::dvec3 p0(0, 0, 0), p1(1, 0, 0), p2(2, 0, 0), p3(3, 0, 0);
+  for (double u : {0.0, 0.25, 0.5, 1.0}) EXPECT_NEAR(glm::length(centripetalCatmullRom(p0, p1, p2, p3, u) - glm::dvec3(1 + u, 0, 0)), 0.0, 1e-12);
+  const glm::dvec3 q0(0, 0, 0), q1(1, 0, 0), q2(1, 1, 0), q3(0, 5, 0);
+  EXPECT_NEAR(glm::length(centripetalCatmullRom(q0, q1, q2, q3, 0.0) - q1), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(centripetalCatmullRom(q0, q1, q2, q3, 1.0) - q2), 0.0, 1e-12);
+}
+
+TEST(CameraPath, MonotoneCubicDoesNotOvershoot) {
+  const std::vector<double> x{0, 1, 2, 3}, y{0, 0, 1, 1};
+  for (int i = 0; i <= 300; ++i) {
+    const double v = monotoneCubic(x, y, i * 0.01);
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 1.0);
+  }
+  EXPECT_EQ(monotoneCubic(x, y, 2.0), 1.0);
+}
+
+TEST(CameraPath, FrameCountFollowsTheLastKeyOrIsGiven) {
+  CameraPath p = threeKeys(PathInterpolation::Smooth);  // last key at 2.5 s, 24 fps
+  EXPECT_EQ(p.frameCount(), 61);
+  EXPECT_DOUBLE_EQ(p.frameTimeSeconds(60), 2.5);
+  p.frames = 10;
+  EXPECT_EQ(p.frameCount(), 10);
+}
+
+const char* kKey0 = R"({"time": 0, "eye": [0, 1, 5], "target": [0, 0.5, 0], "f_number": 2, "focus_distance": 3})";
+const char* kKey1 = R"({"time": 1, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "focus_distance": 6})";
+
+std::string refusal(const std::string& text) {
+  try {
+    parseCameraPath(text, "path.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(CameraPathJson, ReadsAPathWithEffects) {
+  const CameraPath p = parseCameraPath(std::string(R"({"fps": 12, "interpolation": "linear", "keys": [)") + kKey0 + "," +
+                                           R"({"time": 2, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "focus_distance": 6,
+                                               "distortion": {"k1": -0.1}}]})",
+                                       "path.json");
+  ASSERT_EQ(p.keys.size(), 2u);
+  EXPECT_EQ(p.frameCount(), 25);
+  EXPECT_EQ(p.interpolation, PathInterpolation::Linear);
+  EXPECT_NEAR(cameraAt(p, 1.0).effects.distortion.k1, -0.05, 1e-12);
+}
+
+TEST(CameraPathJson, BadPathsAreRefusedNamingTheKey) {
+  const std::string two = std::string(kKey0) + "," + kKey1;
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": []})").find("keys: give at least one key"), std::string::npos);
+  EXPECT_NE(refusal(R"({"keys": [)" + two + "]}").find("fps: required"), std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": -1, "keys": [)" + two + "]}").find("fps -1"), std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [)" + std::string(kKey1) + "," + kKey0 + "]}").find("keys[1].time 0 must be later than keys[0].time 1"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [)" + std::string(kKey0) + "," + kKey0 + "]}").find("keys[1].time"), std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "speed": 2, "keys": [)" + two + "]}").find("unknown key \"speed\""), std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0], "fov": 40}]})").find("keys[0]: unknown key \"fov\""),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1]}]})")
+                .find("keys[0]: give the camera in the physical form"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"eye": [0, 1, 5], "target": [0, 0, 0]}]})").find("keys[0].time: required"), std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "interpolation": "cubic", "keys": [)" + two + "]}").find("interpolation \"cubic\""), std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0]}, )" + std::string(kKey1) + "]}")
+                .find("keys[1].f_number"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "frames": 0, "keys": [)" + two + "]}").find("frames 0"), std::string::npos);
+  EXPECT_NE(refusal("[1, 2]").find("must hold a JSON object"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -130,8 +130,8 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     if (showProgress) std::cerr << "\n";
     if (!o.quiet && !stats.estimate->targetMet)
       std::cerr << "lenslab: warning: the estimate reached " << stats.estimate->psnrDb << " dB, short of --target-psnr "
-                << plan.adaptive->targetPsnrDb << ": the tiles still short of it are at --max-samples "
-                << plan.adaptive->maxSamples << "\n";
+                << plan.adaptive->targetPsnrDb << ": the tiles still short of it are at the cap of " << plan.adaptive->maxSamples
+                << " samples (--max-samples, an even count for the two streams)\n";
     return image;
   }
   const bool showProgress = !o.quiet && plan.apertureSamples > 1 && isTerminal(stderr);

@@ -121,7 +121,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     AdaptivePlan a;
     a.targetPsnrDb = *options.targetPsnrDb;
     a.tileSizePx = options.tileSizePx;
-    a.maxSamples = std::max(options.maxSamples, 2);
+    a.maxSamples = std::max(options.maxSamples / 2 * 2, 2);  // even: the two streams stay equal
     // Each view's textures are filtered over 1/64 of the pixel (or 1/max, if less): finer than the
     // strata of any count up to 64, and beyond that the filter's own blur is under 1/8 pixel. One
     // fixed filter for all counts keeps the converged image the same wherever a tile stops.

@@ -185,6 +185,7 @@ bool Renderer::step() {
     finished_ = true;
     return false;
   }
+  bool progressed = false;
   for (const auto& [first, group] : groups) {
     const std::vector<PixelBox> boxes = mergedBoxes(grid_, group.selected);
     accumulator_->setRegion(&boxes);
@@ -194,6 +195,8 @@ bool Renderer::step() {
     // that the two streams stay equal.
     const int round = std::max(a.samplesPerRound, first / 2 / 2 * 2);
     const int count = std::min({round, std::max(group.wanted + (group.wanted & 1), 2), a.maxSamples - first}) / 2 * 2;
+    if (count <= 0) continue;
+    progressed = true;
     // Each region of tiles draws its own scramble of the sequence (its own seed): the regions'
     // errors are independent, so the frame's error — and its estimate — average over many
     // independent parts instead of following one set of aperture points everywhere (a blurred
@@ -227,6 +230,10 @@ bool Renderer::step() {
     for (std::size_t t = 0; t < group.selected.size(); ++t)
       if (group.selected[t]) tiles_[t].samples += count;
     done_ += count;
+  }
+  if (!progressed) {  // every tile going on is at the cap
+    finished_ = true;
+    return false;
   }
   ++rounds_;
   updateEstimates(drawn);

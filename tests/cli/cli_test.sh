@@ -100,6 +100,12 @@ if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 128 --t
 else
   fail "render --target-psnr"
 fi
+# Out of reach within an odd cap: the cap is made even (the two streams stay equal) and the run ends.
+if timeout 120 "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --target-psnr 90 --max-samples 15 \
+     --out "$work/capped.png" --stats "$work/capped.json" 2>"$work/capped.err" &&
+   grep -qF '"max": 14' "$work/capped.json" && grep -qF '"target_met": false' "$work/capped.json" &&
+   grep -qF "short of --target-psnr" "$work/capped.err"; then pass
+else fail "--target-psnr beyond an odd cap: $(cat "$work/capped.err")"; fi
 expect_refusal "target with a stratified pattern" "--pattern concentric: --target-psnr" -- render --camera "$src/assets/rows/camera-dof.json" --target-psnr 30 --pattern concentric --out "$work/out.png"
 expect_refusal "target with a count" "--aperture-samples 16: --target-psnr" -- render --camera "$src/assets/rows/camera-dof.json" --target-psnr 30 --aperture-samples 16 --out "$work/out.png"
 expect_refusal "target out of range" "--target-psnr" -- render --target-psnr 5 --out "$work/out.png"

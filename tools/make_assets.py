@@ -351,6 +351,21 @@ def make_rows():
         distortion={"k1": -0.15, "k2": 0.03, "p1": 0.001, "p2": -0.0005},
         chromatic={"lateral_red": 0.004, "lateral_blue": -0.004, "focus_distance_red": 2.2, "focus_distance_blue": 1.85},
         field_curvature={"corner_focus_distance": 1.6}))
+    # Camera paths for headless capture (issue 14; src/io/CameraPathJson.h). A rack focus at f/1.4:
+    # held on the nearest box (2 m), pulled to the 16 m box over two seconds, held there.
+    lens = dict(camera, f_number=1.4)
+    write_camera("rows", "rack-focus.json", {"fps": 24, "interpolation": "smooth", "keys": [
+        dict(lens, time=0.0, focus_distance=2.0), dict(lens, time=0.5, focus_distance=2.0),
+        dict(lens, time=2.5, focus_distance=16.0), dict(lens, time=3.0, focus_distance=16.0)]})
+    # A dolly zoom: the camera backs away from the 4 m box while the focal length grows with the
+    # distance (f/d constant, 8.75 mm per metre), so the box keeps its size and the background
+    # swells behind it — the lecture's field of view made visible. Eye and target at the box's
+    # height; linear, so that f/d stays exact between keys; focus on the box at each key.
+    subject = [0.0, 0.55, eye[2] - 4.0]
+    write_camera("rows", "dolly-zoom.json", {"fps": 24, "interpolation": "linear", "keys": [
+        dict(camera, time=float(k), eye=[0.0, 0.55, subject[2] + d], target=subject, focal_length_mm=8.75 * d,
+             focus_distance=float(d), f_number=2.8)
+        for k, d in enumerate([4, 5, 6, 7, 8])]})
 
 
 def write_camera(scene, name, camera):
@@ -454,6 +469,11 @@ aperture: the depth-of-field showcase and the partial-obscuration case. Lens eff
 pixels, distortion `[-0.22, 0.05, 0.002, -0.001]`), `grid/camera-lens.json` the same lens with an
 aperture and lateral and axial colour, and `rows/camera-lens.json` the rows camera at f/2.8 with
 every effect (distortion, lateral and axial colour, field curvature).
+
+Camera paths (for headless capture, `src/io/CameraPathJson.h`): `rows/rack-focus.json` pulls focus
+at f/1.4 from the nearest box (2 m) to the 16 m box over two seconds; `rows/dolly-zoom.json` backs
+away from the 4 m box from 4 to 8 m while the focal length grows from 35 to 70 mm, so the box keeps
+its size while the background swells.
 
 Each `<scene>.gltf` also holds a glTF perspective camera node matching its `camera.json` (same eye,
 direction, field of view, 3:2 aspect, near and far; for `grid` the eye is the PRP, 3.001 m from the

@@ -57,6 +57,15 @@ NormalisedRect normalisedWindow(const ViewSpec& view) {
   return {normalisedFromWindow(view, {w.umin, w.vmin}), normalisedFromWindow(view, {w.umax, w.vmax})};
 }
 
+std::vector<double> extremeFocusShifts(const Camera& camera) {
+  const LensEffects& e = camera.effects;
+  const double corner = camera.view.projection == Projection::Perspective ? normalisedWindow(camera.view).cornerRadius() : 0.0;
+  std::vector<double> shifts;
+  for (const double channel : {0.0, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue})
+    for (const double curve : {0.0, e.fieldCurvature.inverseFocusPerRadius2 * corner * corner}) shifts.push_back(channel + curve);
+  return shifts;
+}
+
 void validateLensEffects(const Camera& camera, const std::string& where) {
   const LensEffects& e = camera.effects;
   if (e.isZero()) return;

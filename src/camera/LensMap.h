@@ -30,6 +30,11 @@ struct NormalisedRect {
 };
 NormalisedRect normalisedWindow(const ViewSpec& view);
 
+// The inverse focus shifts over which a camera's circle of confusion is largest: each colour's
+// plane of focus (axial colour), flat and at the window's farthest corner (field curvature).
+// A parallel projection has no corners to curve toward (its circle ignores the shift).
+std::vector<double> extremeFocusShifts(const Camera& camera);
+
 // The undistorted render the post pass samples: the camera with its window widened by whole
 // pixels, and that render's size. overscanFor widens it by `padPx` on each side (left = right,
 // top = bottom); a tile's overscan (plan/TilePlan.h) may be cut short where the full image's ends,

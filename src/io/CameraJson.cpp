@@ -3,6 +3,7 @@
 #include "camera/LensMap.h"
 #include "core/Error.h"
 #include "core/Text.h"
+#include "io/TextFile.h"
 
 #include <nlohmann/json.hpp>
 
@@ -351,11 +352,7 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
 }
 
 CameraFile loadCameraJson(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(cat(file.string(), ": cannot read the camera file (does it exist?)"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseCameraJson(text.str(), file.string());
+  return parseCameraJson(readTextFile(file, "camera file"), file.string());
 }
 
 std::string toCameraJson(const Camera& camera) {

@@ -3,12 +3,10 @@
 #include "core/Error.h"
 #include "core/Text.h"
 #include "io/CameraJson.h"
+#include "io/TextFile.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace lenslab {
 
@@ -69,11 +67,7 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
 }
 
 CameraPath loadCameraPath(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(cat(file.string(), ": cannot read the camera path (does it exist?)"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseCameraPath(text.str(), file.string());
+  return parseCameraPath(readTextFile(file, "camera path"), file.string());
 }
 
 }  // namespace lenslab

@@ -61,12 +61,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     if (inView) {
       // Axial colour and field curvature move the plane of focus per channel and toward the
       // corners: the largest circle is the largest over each of those planes.
-      const LensEffects& e = camera.effects;
-      const double corner = normalisedWindow(camera.view).cornerRadius();
-      std::vector<double> shifts;
-      for (const double channel : {0.0, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue})
-        for (const double curve : {0.0, e.fieldCurvature.inverseFocusPerRadius2 * corner * corner})
-          shifts.push_back(channel + curve);
+      const std::vector<double> shifts = extremeFocusShifts(camera);
       plan.cocMaxPx = 0.0;
       plan.cocMinPx = std::numeric_limits<double>::infinity();
       for (const double shift : shifts) {

@@ -88,11 +88,7 @@ VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass
   const double pxPerWindowUnit = image.widthPx / camera.view.window.width();
 
   // The frame plan's focus shifts: each colour's plane of focus, flat and at the corners.
-  const LensEffects& e = camera.effects;
-  std::vector<double> shifts;
-  const double corner = camera.view.projection == Projection::Perspective ? normalisedWindow(camera.view).cornerRadius() : 0.0;
-  for (const double channel : {0.0, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue})
-    for (const double curve : {0.0, e.fieldCurvature.inverseFocusPerRadius2 * corner * corner}) shifts.push_back(channel + curve);
+  const std::vector<double> shifts = extremeFocusShifts(camera);
 
   const std::size_t n = depth.size();
   blur.ownPx.assign(n, 0.0f);

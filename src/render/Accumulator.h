@@ -65,7 +65,6 @@ class Accumulator {
   // RGBA32F; with the lens gather, the per-pixel weights beside it (else 0). Adds pending views first.
   GLuint sumTexture();
   GLuint weightTexture();
-  glm::vec4 weightSum() const { return weightSum_; }  // the total weight of the views added (all pixels alike)
   int count() const { return count_; }
   int batchSize() const { return static_cast<int>(framebuffers_.size()); }
   // The mean so far, into `out` (the sum's size).

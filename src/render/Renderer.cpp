@@ -137,6 +137,7 @@ void Renderer::beginAdaptive() {
   }
   // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel.
   scissorViews_ = !plan_.remap && !plan_.fieldCurvature;
+  const TileGrid previous = grid_;
   grid_ = makeTileGrid(outSize_, a.tileSizePx);
   // About 16 regions of whole tiles, each with its own scramble (see step()).
   regionTiles_ = std::max(1, static_cast<int>(std::lround(std::sqrt(grid_.count() / 16.0))));
@@ -146,6 +147,10 @@ void Renderer::beginAdaptive() {
   for (int t = 0; t < grid_.count(); ++t)
     tiles_[static_cast<std::size_t>(t)].minSamples =
         t < static_cast<int>(a.minSamples.size()) ? a.minSamples[static_cast<std::size_t>(t)] : kMinSamplesBlurredTile;
+  // The per-tile textures are kept while the grid is (the view restarts a frame on every change).
+  const bool sameGrid = blockError_ && previous.image.widthPx == grid_.image.widthPx &&
+                        previous.image.heightPx == grid_.image.heightPx && previous.tileSizePx == grid_.tileSizePx;
+  if (sameGrid) return;
   for (gl::Texture& weights : tileWeights_) {
     weights = gl::Texture::create();
     glTextureStorage2D(weights.id(), 1, GL_RGBA32F, grid_.columns, grid_.rows);
@@ -236,6 +241,7 @@ bool Renderer::step() {
     return false;
   }
   ++rounds_;
+  uploadTileWeights();
   updateEstimates(drawn);
   return true;
 }
@@ -252,6 +258,16 @@ const gl::Program& Renderer::streamsProgram(bool errorPerBlock) {
   return program;
 }
 
+void Renderer::uploadTileWeights() {
+  if (plan_.remap) return;  // the lens gather sums its weights per pixel
+  // Each stream's weight in a tile is its count of samples (a full view adds 1 to every channel
+  // and alpha; with axial colour, the three channel views of a sample add 1 to each).
+  std::vector<glm::vec4> weights(tiles_.size());
+  for (std::size_t t = 0; t < tiles_.size(); ++t) weights[t] = glm::vec4(static_cast<float>(tiles_[t].samples / 2));
+  for (const gl::Texture& w : tileWeights_)
+    glTextureSubImage2D(w.id(), 0, 0, 0, grid_.columns, grid_.rows, GL_RGBA, GL_FLOAT, weights.data());
+}
+
 void Renderer::bindStreams() {
   glBindTextureUnit(0, accumulator_->sumTexture());
   glBindTextureUnit(1, streamB_->sumTexture());
@@ -259,12 +275,6 @@ void Renderer::bindStreams() {
     glBindTextureUnit(2, accumulator_->weightTexture());
     glBindTextureUnit(3, streamB_->weightTexture());
   } else {
-    // Each stream's weight in a tile is its count of samples (a full view adds 1 to every channel
-    // and alpha; with axial colour, the three channel views of a sample add 1 to each).
-    std::vector<glm::vec4> weights(tiles_.size());
-    for (std::size_t t = 0; t < tiles_.size(); ++t) weights[t] = glm::vec4(static_cast<float>(tiles_[t].samples / 2));
-    for (const gl::Texture& w : tileWeights_)
-      glTextureSubImage2D(w.id(), 0, 0, 0, grid_.columns, grid_.rows, GL_RGBA, GL_FLOAT, weights.data());
     glBindTextureUnit(2, tileWeights_[0].id());
     glBindTextureUnit(3, tileWeights_[1].id());
   }

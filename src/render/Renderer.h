@@ -54,8 +54,6 @@ class Renderer {
   bool adaptive() const { return adaptive_; }
   // Whether the frame is complete: every planned sample added, or (per-tile) step() has ended it.
   bool done() const { return adaptive_ ? finished_ : done_ >= samplesPlanned(); }
-  const std::vector<TileState>& tiles() const { return tiles_; }
-  const TileGrid& tileGrid() const { return grid_; }
 
   // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
   std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);
@@ -89,6 +87,7 @@ class Renderer {
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);
   void bindStreams();      // the two sums and their weights, texture units 0–3
+  void uploadTileWeights();  // each tile's count per stream, once a round
   const gl::Program& streamsProgram(bool errorPerBlock);
 
   GpuScene gpuScene_;

@@ -6,7 +6,7 @@
 
 namespace lenslab {
 
-void addLensOptions(CLI::App& cmd, LensOptions& o) {
+void addLensOptions(CLI::App& cmd, LensOptions& o, bool withFocus) {
   cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: concentric; sobol with --target-psnr)")
       ->check(CLI::IsMember(patternNameList()));
   cmd.add_option("--aperture-samples", o.apertureSamples,
@@ -17,6 +17,7 @@ void addLensOptions(CLI::App& cmd, LensOptions& o) {
       ->check(CLI::Range(1, 65536))
       ->capture_default_str();
   cmd.add_option("--seed", o.seed, "seed for the aperture and sub-pixel samples")->capture_default_str();
+  if (!withFocus) return;
   cmd.add_option("--focus-distance", o.focusDistance,
                  "put the plane of focus this far from the PRP (world units, or infinity)");
   addPairOption(cmd, "--focus-at", [&o](double x, double y) { o.focusAt = glm::dvec2(x, y); },

@@ -13,7 +13,8 @@
 
 namespace lenslab {
 
-void addLensOptions(CLI::App& command, LensOptions& options);
+// `withFocus`: --focus-distance and --focus-at too (capture takes focus from its path instead).
+void addLensOptions(CLI::App& command, LensOptions& options, bool withFocus = true);
 // --target-psnr DB (render and view; sweep runs its adaptive method at several targets).
 void addTargetOption(CLI::App& command, LensOptions& options);
 

@@ -1,6 +1,7 @@
 // lenslab render: one image of a scene through the lecture's camera, rasterized headless.
 // lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
 #include "app/CliOptions.h"
+#include "app/FrameRender.h"
 #include "app/Commands.h"
 #include "app/Stats.h"
 #include "camera/DepthRange.h"
@@ -19,7 +20,6 @@
 #include "render/RasterDepth.h"
 #include "render/Renderer.h"
 #include "render/TiledRender.h"
-#include "render/VisibleBlurPass.h"
 #include "scene/GltfLoader.h"
 
 #include <chrono>
@@ -75,17 +75,10 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
 
   if (o.lens.focusAt)
     camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer)).camera, scene.bounds);
-  // The blur actually seen, from a pinhole depth pre-pass, when the plan chooses a count.
-  std::optional<VisibleBlur> visible;
   const auto renderStart = std::chrono::steady_clock::now();
-  if (!camera.isPinhole() && (planOptions.apertureSamples == 0 || planOptions.targetPsnrDb)) {
-    visible = measureVisibleBlur(renderer, camera, size);
-    stats.prepassSeconds = secondsSince(renderStart);
-  }
-  const FramePlan plan = makeFramePlan(scene, camera, size, planOptions, visible ? &*visible : nullptr);
+  const FramePlan plan = planFrame(renderer, scene, camera, size, planOptions, stats);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
-  stats.plan = plan;
 
   const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), o.tileSizePx);
   if (tiles.tiled && plan.adaptive)
@@ -114,37 +107,9 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     return std::nullopt;
   }
 
-  t = std::chrono::steady_clock::now();
-  renderer.begin(camera, plan, size);
-  if (plan.adaptive) {
-    const bool showProgress = !o.quiet && isTerminal(stderr);
-    while (renderer.step()) {
-      const FrameEstimate e = renderer.estimate();
-      if (showProgress)
-        std::fprintf(stderr, "\r%5.1f dB of %.1f (estimate), %.1f samples per pixel, %d of %d tiles going, %.1f s   ",
-                     e.psnrDb, plan.adaptive->targetPsnrDb, e.meanSamples, e.tilesActive, e.tiles, secondsSince(t));
-    }
-    Image image = renderer.resolve();
-    stats.renderSeconds = secondsSince(renderStart);
-    stats.estimate = renderer.estimate();
-    if (showProgress) std::cerr << "\n";
-    if (!o.quiet && !stats.estimate->targetMet)
-      std::cerr << "lenslab: warning: the estimate reached " << stats.estimate->psnrDb << " dB, short of --target-psnr "
-                << plan.adaptive->targetPsnrDb << ": the tiles still short of it are at the cap of " << plan.adaptive->maxSamples
-                << " samples (--max-samples, an even count for the two streams)\n";
-    return image;
-  }
-  const bool showProgress = !o.quiet && plan.apertureSamples > 1 && isTerminal(stderr);
-  // Samples in batches, so that long renders report progress on a terminal.
-  const int batch = std::max(1, plan.apertureSamples / 50);
-  while (renderer.samplesDone() < renderer.samplesPlanned()) {
-    renderer.addSamples(batch);
-    if (showProgress) printProgress(renderer.samplesDone(), renderer.samplesPlanned(), secondsSince(t));
-  }
-  Image image = renderer.resolve();
+  const bool showProgress = !o.quiet && isTerminal(stderr);
+  Image image = renderPlanned(renderer, camera, plan, size, stats, showProgress, o.quiet);
   stats.renderSeconds = secondsSince(renderStart);
-  if (showProgress) std::cerr << "\n";
-
   return image;
 }
 

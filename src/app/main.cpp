@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     return std::string("lenslab: error: ") + e.what() + " (see --help)\n";
   });
   std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app), lenslab::addRaycastCommand(app),
+                                                lenslab::addCaptureCommand(app),
                                                 lenslab::addSweepCommand(app), lenslab::addInfoCommand(app),
                                                 lenslab::addViewCommand(app)};
   try {

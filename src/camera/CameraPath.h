@@ -37,6 +37,10 @@ struct CameraPath {
   std::vector<PathKey> keys;
   PathInterpolation interpolation = PathInterpolation::Smooth;
   std::optional<int> frames;  // given: this many; else floor(last time × fps) + 1
+  // No key gives near (far): each frame's is fitted to the scene, as a camera file's would be.
+  // Keys that leave it out while others give it take the physical default.
+  bool nearFromScene = true;
+  bool farFromScene = true;
 
   int frameCount() const;
   double frameTimeSeconds(int frame) const { return frame / fps; }

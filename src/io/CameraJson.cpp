@@ -1,5 +1,6 @@
 #include "io/CameraJson.h"
 
+#include "camera/Intrinsics.h"
 #include "camera/LensMap.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -297,6 +298,44 @@ void parseCommon(const Reader& r, CameraFile& file) {
   validateLensEffects(camera, r.where());
 }
 
+// distortion, chromatic and field_curvature of `camera` into `j`, as parseCommon reads them.
+void writeEffects(const Camera& camera, json& j) {
+  const LensEffects& e = camera.effects;
+  // Focus distances for the inverse distances that the effects hold; beyond infinity has no name.
+  const auto distanceOf = [&](double inverse, const char* key) -> json {
+    if (inverse == 0.0) return "infinity";
+    if (inverse < 0.0)
+      throw InputError(cat(camera.source, ": ", key, " lies beyond infinity (inverse distance ", inverse,
+                           "); it cannot be written as a distance"));
+    return 1.0 / inverse;
+  };
+  const double focus = camera.inverseFocusDistance();
+  if (!e.distortion.isZero()) {
+    json d = json::object();
+    const Distortion& k = e.distortion;
+    for (const auto& [key, value] : {std::pair{"k1", k.k1}, {"k2", k.k2}, {"p1", k.p1}, {"p2", k.p2}, {"k3", k.k3},
+                                     {"alpha", k.alpha}, {"beta", k.beta}, {"gamma", k.gamma}})
+      if (value != 0.0) d[key] = value;
+    j["distortion"] = d;
+  }
+  if (e.chromatic.hasLateral() || e.chromatic.hasAxial()) {
+    json c = json::object();
+    if (e.chromatic.lateralRed != 0.0) c["lateral_red"] = e.chromatic.lateralRed;
+    if (e.chromatic.lateralBlue != 0.0) c["lateral_blue"] = e.chromatic.lateralBlue;
+    if (e.chromatic.hasAxial()) {
+      c["focus_distance_red"] = distanceOf(focus + e.chromatic.inverseFocusShiftRed, "chromatic.focus_distance_red");
+      c["focus_distance_blue"] = distanceOf(focus + e.chromatic.inverseFocusShiftBlue, "chromatic.focus_distance_blue");
+    }
+    j["chromatic"] = c;
+  }
+  if (!e.fieldCurvature.isZero()) {
+    const double corner = normalisedWindow(camera.view).cornerRadius();
+    j["field_curvature"] = {{"corner_focus_distance",
+                             distanceOf(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner,
+                                        "field_curvature.corner_focus_distance")}};
+  }
+}
+
 }  // namespace
 
 CameraFile parseCameraJson(const std::string& text, const std::string& where) {
@@ -370,40 +409,28 @@ std::string toCameraJson(const Camera& camera) {
   if (std::isinf(s.farDistance)) j["far"] = "infinity";
   else j["far"] = s.farDistance;
   if (camera.calibratedSize) j["image_size"] = {camera.calibratedSize->widthPx, camera.calibratedSize->heightPx};
-  const LensEffects& e = camera.effects;
-  // Focus distances for the inverse distances that the effects hold; beyond infinity has no name.
-  const auto distanceOf = [&](double inverse, const char* key) -> json {
-    if (inverse == 0.0) return "infinity";
-    if (inverse < 0.0)
-      throw InputError(cat(camera.source, ": ", key, " lies beyond infinity (inverse distance ", inverse,
-                           "); it cannot be written as a distance"));
-    return 1.0 / inverse;
-  };
-  const double focus = camera.inverseFocusDistance();
-  if (!e.distortion.isZero()) {
-    json d = json::object();
-    const Distortion& k = e.distortion;
-    for (const auto& [key, value] : {std::pair{"k1", k.k1}, {"k2", k.k2}, {"p1", k.p1}, {"p2", k.p2}, {"k3", k.k3},
-                                     {"alpha", k.alpha}, {"beta", k.beta}, {"gamma", k.gamma}})
-      if (value != 0.0) d[key] = value;
-    j["distortion"] = d;
-  }
-  if (e.chromatic.hasLateral() || e.chromatic.hasAxial()) {
-    json c = json::object();
-    if (e.chromatic.lateralRed != 0.0) c["lateral_red"] = e.chromatic.lateralRed;
-    if (e.chromatic.lateralBlue != 0.0) c["lateral_blue"] = e.chromatic.lateralBlue;
-    if (e.chromatic.hasAxial()) {
-      c["focus_distance_red"] = distanceOf(focus + e.chromatic.inverseFocusShiftRed, "chromatic.focus_distance_red");
-      c["focus_distance_blue"] = distanceOf(focus + e.chromatic.inverseFocusShiftBlue, "chromatic.focus_distance_blue");
-    }
-    j["chromatic"] = c;
-  }
-  if (!e.fieldCurvature.isZero()) {
-    const double corner = normalisedWindow(s).cornerRadius();
-    j["field_curvature"] = {{"corner_focus_distance",
-                             distanceOf(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner,
-                                        "field_curvature.corner_focus_distance")}};
-  }
+  writeEffects(camera, j);
+  return j.dump(2) + "\n";
+}
+
+std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEffects& effects, ImageSize size,
+                                   bool writeNear, bool writeFar) {
+  Camera camera = toCamera(physical, "the frame's camera");
+  camera.effects = effects;
+  const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
+  json j;
+  j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};
+  j["target"] = {physical.target.x, physical.target.y, physical.target.z};
+  j["up"] = {physical.up.x, physical.up.y, physical.up.z};
+  j["intrinsics"] = {{"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}, {"width", k.widthPx}, {"height", k.heightPx}};
+  j["focus_distance"] = std::isinf(physical.focusDistance) ? json("infinity") : json(physical.focusDistance);
+  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (writeNear) j["near"] = physical.nearDistance;
+  if (writeFar) j["far"] = std::isinf(physical.farDistance) ? json("infinity") : json(physical.farDistance);
+  writeEffects(camera, j);
+  // OpenCV's distCoeffs as an array where the lens is all OpenCV's (the lecture's series is not).
+  const Distortion& d = effects.distortion;
+  if (!d.isZero() && d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
   return j.dump(2) + "\n";
 }
 

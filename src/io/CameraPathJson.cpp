@@ -59,6 +59,8 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
       throw InputError(cat(name, ": give the camera in the physical form (eye, target, up, focal_length_mm, sensor_mm, f_number, "
                                "focus_distance, near, far): a path interpolates those"));
     key.camera = *file.physical;
+    if (camera.contains("near")) path.nearFromScene = false;
+    if (camera.contains("far")) path.farFromScene = false;
     key.effects = file.camera.effects;
     path.keys.push_back(key);
   }

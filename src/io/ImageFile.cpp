@@ -46,9 +46,11 @@ void checkImageExtension(const fs::path& path) {
                          "'; use .png (8-bit sRGB) or .exr (linear float)"));
 }
 
-std::string encodeImage(const fs::path& path, const Image& image) {
+std::string encodeImage(const fs::path& path, const Image& image, const std::vector<float>* depthZ) {
   checkImageExtension(path);
   const bool png = lowerExtension(path) == ".png";
+  if (depthZ && png) throw InputError(cat(path.string(), ": a depth channel needs .exr (PNG holds 8-bit colour only)"));
+  if (depthZ && depthZ->size() != image.rgba.size() / 4) throw std::logic_error("encodeImage: depth and image sizes differ");
   auto out = OIIO::ImageOutput::create(path.filename().string());  // the format, by extension
   if (!out) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(OIIO::geterror())));
   std::vector<unsigned char> bytes;
@@ -59,8 +61,12 @@ std::string encodeImage(const fs::path& path, const Image& image) {
   // a second time). EXR: RGBA, A the coverage (the fraction of the pixel × aperture that sees a
   // surface); RGB includes the background over 1 − A, so with --background 0,0,0 it is
   // premultiplied RGBA in OpenEXR's convention, ready to composite.
-  const int channels = png ? 3 : 4;
+  const int channels = png ? 3 : depthZ ? 5 : 4;
   OIIO::ImageSpec spec(image.width, image.height, channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+  if (depthZ) {
+    spec.channelnames = {"R", "G", "B", "A", "Z"};
+    spec.z_channel = 4;
+  }
   spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
   spec.attribute("Software", "lenslab");
   if (!out->open(path.filename().string(), spec))
@@ -71,6 +77,13 @@ std::string encodeImage(const fs::path& path, const Image& image) {
     for (std::size_t i = 0; i < encoded.size(); ++i)
       encoded[i] = static_cast<std::uint8_t>(std::lround(srgbFromLinear(image.rgba[i / 3 * 4 + i % 3]) * 255.0f));
     ok = out->write_image(OIIO::TypeDesc::UINT8, encoded.data());
+  } else if (depthZ) {
+    std::vector<float> rgbaz(depthZ->size() * 5);
+    for (std::size_t i = 0; i < depthZ->size(); ++i) {
+      for (std::size_t k = 0; k < 4; ++k) rgbaz[i * 5 + k] = image.rgba[i * 4 + k];
+      rgbaz[i * 5 + 4] = (*depthZ)[i];
+    }
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, rgbaz.data());
   } else {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
   }
@@ -81,8 +94,8 @@ std::string encodeImage(const fs::path& path, const Image& image) {
   return std::string(bytes.begin(), bytes.end());
 }
 
-void writeImage(OutputSet& outputs, const fs::path& path, const Image& image) {
-  outputs.add(path, encodeImage(path, image));
+void writeImage(OutputSet& outputs, const fs::path& path, const Image& image, const std::vector<float>* depthZ) {
+  outputs.add(path, encodeImage(path, image, depthZ));
 }
 
 void writeImage(const fs::path& path, const Image& image) {
@@ -111,6 +124,20 @@ Image readImage(const fs::path& path) {
       image.set(x, y, c);
     }
   return image;
+}
+
+std::vector<float> readDepthChannel(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(cat(path.string(), ": cannot read image: ", oneLine(OIIO::geterror())));
+  const OIIO::ImageSpec& spec = in->spec();
+  int z = -1;
+  for (int c = 0; c < spec.nchannels; ++c)
+    if (spec.channelnames[static_cast<std::size_t>(c)] == "Z") z = c;
+  if (z < 0) throw InputError(cat(path.string(), ": has no Z (depth) channel"));
+  std::vector<float> depth(static_cast<std::size_t>(spec.width) * spec.height);
+  if (!in->read_image(0, 0, z, z + 1, OIIO::TypeDesc::FLOAT, depth.data()))
+    throw InputError(cat(path.string(), ": cannot read image: ", oneLine(in->geterror())));
+  return depth;
 }
 
 }  // namespace lenslab

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace lenslab {
 
@@ -17,15 +18,20 @@ void checkImageExtension(const std::filesystem::path& path);
 // The file's bytes, encoded in memory. OIIO's PNG writer reports a failed write(2) only through
 // has_error() and still returns true from write_image() and close(), without errno's reason: so
 // OIIO never touches the disk here, and AtomicFile's checked writes do.
-std::string encodeImage(const std::filesystem::path& path, const Image& linear);
+// `depthZ`, when given (width × height values, rows from the top), becomes the EXR's Z channel
+// (OpenEXR's name for depth; spec.z_channel); only .exr holds it.
+std::string encodeImage(const std::filesystem::path& path, const Image& linear, const std::vector<float>* depthZ = nullptr);
 
 // One file, whole or not at all.
 void writeImage(const std::filesystem::path& path, const Image& linear);
 // Into `outputs`: the target appears when the set is committed, with the run's other files.
-void writeImage(OutputSet& outputs, const std::filesystem::path& path, const Image& linear);
+void writeImage(OutputSet& outputs, const std::filesystem::path& path, const Image& linear,
+                const std::vector<float>* depthZ = nullptr);
 
 // Reads PNG/EXR (or anything OIIO reads) into linear RGBA; 8-bit files are decoded from sRGB.
 Image readImage(const std::filesystem::path& path);
+// The Z channel of an EXR (rows from the top). Throws InputError when the file has none.
+std::vector<float> readDepthChannel(const std::filesystem::path& path);
 
 float linearFromSrgb(float encoded);
 float srgbFromLinear(float linear);

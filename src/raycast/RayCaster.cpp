@@ -276,6 +276,28 @@ double RayCaster::depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size
   return -glm::dot(hit.t * hit.ray.direction, viewBasis(camera.view).n);
 }
 
+std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) const {
+  std::vector<float> depth(static_cast<std::size_t>(size.pixelCount()));
+  impl_->rebase(impl_->originFor(camera, size));
+  const Impl& m = *impl_;
+  const glm::dvec3 axis = -viewBasis(camera.view).n;
+  const bool lensEffects = !camera.effects.isZero();
+  Camera focused = camera;
+  focused.effects = {};
+  tbb::parallel_for(tbb::blocked_range<int>(0, size.heightPx), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < size.widthPx; ++x) {
+        glm::dvec2 pixel(x + 0.5, y + 0.5);
+        if (lensEffects) pixel = undistortedSample(camera, Channel::Green, pixel, size).pixel;
+        const Impl::Hit hit = m.shadeAlong(focused, {0.0, 0.0}, pixel, size, 1.0);
+        depth[static_cast<std::size_t>(y) * size.widthPx + x] =
+            std::isinf(hit.t) ? std::numeric_limits<float>::infinity()
+                              : static_cast<float>(glm::dot(hit.t * hit.ray.direction, axis));
+      }
+  });
+  return depth;
+}
+
 Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,
                         const std::function<void(int, int)>& progress) const {
   Image image(size.widthPx, size.heightPx);

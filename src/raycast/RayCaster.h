@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace lenslab {
 
@@ -44,6 +45,13 @@ class RayCaster {
   // Depth (world units from the PRP along −n) of the first visible surface under pixel centre
   // `pixel` seen from the lens centre; +infinity where nothing is hit. For --focus-at.
   double depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const;
+
+  // The depth AOV (`capture --aov depth`): for each pixel centre, the distance along the optical
+  // axis (−n) from the lens centre (the PRP) to the first surface seen through it, in world units,
+  // +infinity where nothing is hit (OpenEXR's convention for Z). With lens effects the pixel is
+  // first taken back through the inverse lens model (green's), so depth lines up with the image.
+  // One ray per pixel: depth is not averaged over the pixel or the aperture. Rows from the top.
+  std::vector<float> depthImage(const Camera& camera, ImageSize size) const;
 
  private:
   struct Impl;

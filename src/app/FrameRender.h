@@ -1,0 +1,29 @@
+#pragma once
+// One raster frame on a renderer that already holds the scene: what `render` does for an image
+// that fits one render target, and what `capture` does for every frame of a path — one code path,
+// so that `render` with a frame's camera file and seed gives that frame's pixels.
+#include "app/Stats.h"
+#include "camera/Camera.h"
+#include "camera/ImageSize.h"
+#include "core/Image.h"
+#include "plan/FramePlan.h"
+#include "render/Renderer.h"
+#include "scene/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// The plan, from a pinhole depth pre-pass when it chooses a count or renders to a target error.
+// Sets stats.plan and stats.prepassSeconds; the plan's warnings are left to the caller.
+FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera, ImageSize size,
+                    const PlanOptions& options, RunStats& stats);
+
+// Renders `plan` (not tiled): its fixed count in batches, or per-tile rounds to the target error.
+// Progress on stderr when `showProgress`; the warning that a target was not met unless `quiet`.
+// Sets stats.estimate (with a target).
+Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
+                    bool showProgress, bool quiet);
+
+}  // namespace lenslab

@@ -1,0 +1,128 @@
+#include "io/FrameSequence.h"
+
+#include "core/Error.h"
+#include "core/Text.h"
+
+#include <cctype>
+#include <climits>
+#include <cstdio>
+
+namespace lenslab {
+
+namespace {
+
+// Where the one conversion is: [begin, end) of "%…d"; -1 when there is none.
+struct Conversion {
+  std::size_t begin = std::string::npos;
+  std::size_t end = 0;
+  int width = 0;
+  bool zeros = false;
+};
+
+Conversion findConversion(const std::string& pattern, const std::string& option) {
+  Conversion found;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') continue;
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    Conversion c;
+    c.begin = i;
+    if (j < pattern.size() && pattern[j] == '0') c.zeros = true;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && c.width < 100)
+      c.width = c.width * 10 + (pattern[j++] - '0');
+    if (j >= pattern.size() || pattern[j] != 'd' || c.width > 32)
+      throw InputError(cat(option, " ", pattern, ": only %d, %Nd or %0Nd (N ≤ 32) may follow a % (write %% for a % sign)"));
+    c.end = j + 1;
+    if (found.begin != std::string::npos)
+      throw InputError(cat(option, " ", pattern, ": give one frame number (one %d), not two"));
+    found = c;
+    i = j;
+  }
+  if (found.begin == std::string::npos)
+    throw InputError(cat(option, " ", pattern, ": give a pattern with one %d for the frame number, e.g. frames/frame_%04d.exr, so that "
+                                               "frames do not overwrite each other"));
+  return found;
+}
+
+int parseInt(const std::string& text, const std::string& what) {
+  if (text.empty() || text.size() > 9) throw InputError(what);
+  for (const char ch : text)
+    if (!std::isdigit(static_cast<unsigned char>(ch))) throw InputError(what);
+  return std::stoi(text);
+}
+
+}  // namespace
+
+void checkFramePattern(const std::string& pattern, const std::string& option) { (void)findConversion(pattern, option); }
+
+std::string formatFramePath(const std::string& pattern, int frame) {
+  const Conversion c = findConversion(pattern, "--out");
+  std::string number = std::to_string(frame);
+  if (static_cast<int>(number.size()) < c.width) number.insert(0, static_cast<std::size_t>(c.width) - number.size(), c.zeros ? '0' : ' ');
+  std::string out;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (i == c.begin) {
+      out += number;
+      i = c.end - 1;
+    } else if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      out += '%';
+      ++i;
+    } else {
+      out += pattern[i];
+    }
+  }
+  return out;
+}
+
+FrameRange parseFrameRange(const std::string& text, int frameCount) {
+  const std::string usage = cat("--frames ", text, ": give A:B (inclusive), A:, :B or one frame N, within 0:", frameCount - 1,
+                                " (the path has ", frameCount, " frame", frameCount == 1 ? "" : "s", ")");
+  FrameRange r{0, frameCount - 1};
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) {
+    r.first = r.last = parseInt(text, usage);
+  } else {
+    const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
+    if (a.empty() && b.empty()) throw InputError(usage);
+    if (!a.empty()) r.first = parseInt(a, usage);
+    if (!b.empty()) r.last = parseInt(b, usage);
+  }
+  if (r.first > r.last || r.last >= frameCount) throw InputError(usage);
+  return r;
+}
+
+Shard parseShard(const std::string& text) {
+  const std::string usage = cat("--shard ", text, ": give I/N, this process's index I from 0 to N-1 of N processes (e.g. 0/4)");
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw InputError(usage);
+  Shard s{parseInt(text.substr(0, slash), usage), parseInt(text.substr(slash + 1), usage)};
+  if (s.count < 1 || s.index >= s.count) throw InputError(usage);
+  return s;
+}
+
+std::vector<int> shardFrames(FrameRange range, Shard shard) {
+  std::vector<int> frames;
+  for (long long f = static_cast<long long>(range.first) + shard.index; f <= range.last; f += shard.count)
+    frames.push_back(static_cast<int>(f));
+  return frames;
+}
+
+std::uint32_t frameSeed(std::uint32_t seed, int frame) {
+  // SplitMix64's finaliser over (seed, frame): neighbouring frames get unrelated seeds.
+  std::uint64_t z = (std::uint64_t{seed} << 32 | static_cast<std::uint32_t>(frame)) + 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return static_cast<std::uint32_t>(z >> 32);
+}
+
+std::filesystem::path frameCameraPath(const std::filesystem::path& image) {
+  std::filesystem::path p = image;
+  p.replace_extension(".camera.json");
+  return p;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,45 @@
+#pragma once
+// Which frames a capture process renders and what it names them (`lenslab capture`):
+//   --out 'DIR/frame_%04d.exr'   one printf-style integer conversion (%d, %5d, %05d; %% is a %)
+//   --frames A:B                 frames A to B inclusive (A:, :B and a single N too); default all
+//   --shard I/N                  the I-th of N independent processes (0 ≤ I < N) takes every N-th
+//                                frame of the range, starting at its I-th: interleaved rather than
+//                                in blocks, so that a path whose cost changes along it (a rack focus
+//                                into blur) spreads evenly over the shards.
+// A frame's seed depends only on the run's seed and the frame number, so one process and N shards
+// render identical frames.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// Throws InputError naming `option` unless the pattern holds exactly one integer conversion.
+void checkFramePattern(const std::string& pattern, const std::string& option);
+std::string formatFramePath(const std::string& pattern, int frame);
+
+struct FrameRange {
+  int first = 0;
+  int last = 0;  // inclusive
+};
+// "A:B", "A:", ":B" or "N", within 0 … frameCount − 1. Throws InputError naming --frames.
+FrameRange parseFrameRange(const std::string& text, int frameCount);
+
+struct Shard {
+  int index = 0;
+  int count = 1;
+};
+// "I/N" with 0 ≤ I < N. Throws InputError naming --shard.
+Shard parseShard(const std::string& text);
+
+// The frames of `range` that `shard` renders, in order.
+std::vector<int> shardFrames(FrameRange range, Shard shard);
+
+// The seed of one frame: a hash of the run's seed and the frame number (never the shard).
+std::uint32_t frameSeed(std::uint32_t seed, int frame);
+
+// Beside `image`: frame_0001.exr → frame_0001.camera.json.
+std::filesystem::path frameCameraPath(const std::filesystem::path& image);
+
+}  // namespace lenslab

@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# lenslab capture as a user and a cluster meet it: three shards run at once give the frames one
+# run gives; `render` with a frame's camera file and seed gives that frame's pixels; the manifest
+# stays valid JSON lines with every frame once; --skip-existing leaves whole frames alone; bad
+# paths and options get one line, a non-zero exit and no frame.
+# usage: capture_test.sh path/to/lenslab source-dir
+set -u
+lenslab=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+python=/usr/bin/python3
+
+path=$src/assets/rows/rack-focus.json
+common=(--path "$path" --width 64 --aperture-samples 4 --frames 10:21 --aov depth -q)
+
+# Identical pixels in every channel (Z too; idiff counts +inf = +inf as equal).
+same_pixels() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1; }
+
+# --- one run, and three shards as parallel processes into one folder and one manifest ---
+"$lenslab" capture "${common[@]}" --out "$work/one/frame_%04d.exr" || fail "one run"
+for i in 0 1 2; do
+  "$lenslab" capture "${common[@]}" --out "$work/sharded/frame_%04d.exr" --shard "$i/3" &
+done
+wait
+for f in $(seq 10 21); do
+  name=$(printf 'frame_%04d' "$f")
+  if [ -f "$work/sharded/$name.exr" ] && same_pixels "$work/one/$name.exr" "$work/sharded/$name.exr"; then pass
+  else fail "frame $f: the shards' image differs from one run's"; fi
+  if cmp -s "$work/one/$name.camera.json" "$work/sharded/$name.camera.json"; then pass
+  else fail "frame $f: the shards' camera file differs from one run's"; fi
+done
+# The manifests: valid JSON lines, each frame once, the same seed for a frame in both runs.
+check_manifest=$(cat <<'EOF'
+import json, sys
+one = [json.loads(l) for l in open(sys.argv[1])]
+sharded = [json.loads(l) for l in open(sys.argv[2])]
+for name, lines in (("one", one), ("sharded", sharded)):
+    frames = sorted(l["frame"] for l in lines)
+    assert frames == list(range(10, 22)), f"{name}: frames {frames}"
+    for l in lines:
+        for key in ("frame", "time", "file", "camera", "seed", "samples", "seconds"):
+            assert key in l, f"{name}: line lacks {key}: {l}"
+        assert abs(l["time"] - l["frame"] / 24) < 1e-12, l
+seeds = {l["frame"]: l["seed"] for l in one}
+assert all(seeds[l["frame"]] == l["seed"] for l in sharded), "seeds differ between one run and the shards"
+assert len(set(seeds.values())) == len(seeds), "two frames share a seed"
+assert sorted({l["shard"] for l in sharded}) == ["0/3", "1/3", "2/3"], "not every shard wrote"
+EOF
+)
+if out=$($python -c "$check_manifest" "$work/one/manifest.jsonl" "$work/sharded/manifest.jsonl" 2>&1); then pass
+else fail "manifest: $out"; fi
+
+# --- render reproduces a frame from its camera file and its seed ---
+seed=$($python -c 'import json,sys; print([l for l in map(json.loads, open(sys.argv[1])) if l["frame"] == 15][0]["seed"])' "$work/one/manifest.jsonl")
+"$lenslab" render --camera "$work/one/frame_0015.camera.json" --seed "$seed" --aperture-samples 4 --out "$work/rendered.exr" -q
+oiiotool "$work/one/frame_0015.exr" --ch R,G,B,A -o "$work/frame15-rgba.exr"
+if same_pixels "$work/rendered.exr" "$work/frame15-rgba.exr"; then pass; else fail "render --camera frame_0015.camera.json --seed $seed differs from the frame"; fi
+# The camera file holds OpenCV intrinsics for the frame's size.
+if $python -c 'import json,sys; k=json.load(open(sys.argv[1]))["intrinsics"]; assert k["width"] == 64 and k["fx"] > 0 and abs(k["cx"] - 31.5) < 1e-9, k' \
+     "$work/one/frame_0015.camera.json"; then pass; else fail "camera file intrinsics"; fi
+# The depth channel: finite on the floor, +inf in the sky.
+stats=$(oiiotool "$work/one/frame_0015.exr" --ch Z --printstats 2>&1)
+if grep -Eq "InfCount: [1-9]" <<<"$stats" && grep -Eq "NanCount: 0" <<<"$stats"; then pass; else fail "Z channel: $stats"; fi
+
+# --- --skip-existing: whole frames are left alone, a missing one is made ---
+rm "$work/one/frame_0013.exr"
+before=$(stat -c %Y.%s "$work/one/frame_0012.exr")
+lines_before=$(wc -l <"$work/one/manifest.jsonl")
+sleep 1
+"$lenslab" capture "${common[@]}" --out "$work/one/frame_%04d.exr" --skip-existing || fail "--skip-existing run"
+if [ "$(stat -c %Y.%s "$work/one/frame_0012.exr")" = "$before" ]; then pass; else fail "--skip-existing rewrote frame 12"; fi
+if [ -f "$work/one/frame_0013.exr" ]; then pass; else fail "--skip-existing did not make the missing frame 13"; fi
+if [ "$(wc -l <"$work/one/manifest.jsonl")" -eq $((lines_before + 1)) ]; then pass; else fail "--skip-existing: manifest lines $lines_before -> $(wc -l <"$work/one/manifest.jsonl"), expected one more"; fi
+
+# --- the dolly zoom renders end to end (first and last frame) ---
+if "$lenslab" capture --path "$src/assets/rows/dolly-zoom.json" --width 48 --aperture-samples 2 --frames 96 \
+     --out "$work/dolly/d_%02d.png" -q && [ -s "$work/dolly/d_96.png" ]; then pass; else fail "dolly zoom, last frame"; fi
+
+# --- refusals: one line, non-zero exit, no frame written ---
+expect_refusal() {
+  local name=$1 fragment=$2
+  shift 3
+  rm -rf "$work/bad"
+  "$lenslab" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  local lines
+  lines=$(wc -l <"$work/stderr")
+  if [ "$rc" -eq 0 ]; then fail "$name: exit 0"; return; fi
+  if [ "$lines" -ne 1 ]; then fail "$name: $lines stderr lines: $(cat "$work/stderr")"; return; fi
+  if ! grep -qF -- "$fragment" "$work/stderr"; then fail "$name: stderr lacks '$fragment': $(cat "$work/stderr")"; return; fi
+  if [ -n "$(find "$work/bad" -type f 2>/dev/null)" ]; then fail "$name: left a file: $(find "$work/bad" -type f)"; return; fi
+  pass
+}
+key='{"time": 0, "eye": [0, 1, 3], "target": [0, 0.5, -2]}'
+key2='{"time": 1, "eye": [0, 1, 4], "target": [0, 0.5, -2]}'
+printf '{"fps": 24, "keys": []}' >"$work/empty.json"
+printf '{"fps": 24, "keys": [%s, %s]}' "$key2" "$key" >"$work/unsorted.json"
+printf '{"fps": 24, "keys": [%s, %s]}' "$key" "$(sed 's/"time": 1/"time": 0/' <<<"$key2")" >"$work/repeated.json"
+printf '{"fps": 24, "keys": [%s, {"time": 1, "eye": [0, 1, 4], "target": [0, 0.5, -2], "fov": 40}]}' "$key" >"$work/unknown.json"
+printf '{"fps": 24, "keys": [%s], "speed": 2}' "$key" >"$work/unknown-top.json"
+printf '{"keys": [%s]}' "$key" >"$work/nofps.json"
+printf '{"fps": 24, "keys": [{"time": 0, "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1]}]}' >"$work/lecture.json"
+bad=(--width 32 --aperture-samples 1 --out "$work/bad/f_%02d.png")
+expect_refusal "no keys" "keys" -- capture --path "$work/empty.json" "${bad[@]}"
+expect_refusal "unsorted times" "keys[1]" -- capture --path "$work/unsorted.json" "${bad[@]}"
+expect_refusal "repeated times" "keys[1]" -- capture --path "$work/repeated.json" "${bad[@]}"
+expect_refusal "unknown camera key" 'keys[1]: unknown key "fov"' -- capture --path "$work/unknown.json" "${bad[@]}"
+expect_refusal "unknown path key" 'unknown key "speed"' -- capture --path "$work/unknown-top.json" "${bad[@]}"
+expect_refusal "no fps" "fps" -- capture --path "$work/nofps.json" "${bad[@]}"
+expect_refusal "lecture-form key" "physical form" -- capture --path "$work/lecture.json" "${bad[@]}"
+expect_refusal "missing path file" "missing.json" -- capture --path "$work/missing.json" "${bad[@]}"
+expect_refusal "no frame number" "%d" -- capture --path "$path" --out "$work/bad/frame.png"
+expect_refusal "two frame numbers" "one %d" -- capture --path "$path" --out "$work/bad/f_%d_%d.png"
+expect_refusal "frames past the end" "--frames 70:80" -- capture --path "$path" --frames 70:80 "${bad[@]}"
+expect_refusal "frames backwards" "--frames 5:2" -- capture --path "$path" --frames 5:2 "${bad[@]}"
+expect_refusal "shard index" "--shard 3/3" -- capture --path "$path" --shard 3/3 "${bad[@]}"
+expect_refusal "shard form" "--shard 1" -- capture --path "$path" --shard 1 "${bad[@]}"
+expect_refusal "depth in a PNG" "--aov depth" -- capture --path "$path" --aov depth "${bad[@]}"
+expect_refusal "unknown aov" "--aov" -- capture --path "$path" --aov normals "${bad[@]}"
+
+echo "capture: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

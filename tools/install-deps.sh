@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenimageio-dev openimageio-tools libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev
-  xvfb xauth fonts-dejavu-core python3-pil
+  xvfb xauth fonts-dejavu-core python3-pil python3-yaml
 )
 # --fuzz: also what tools/fuzz.sh needs (it asks for them itself): libFuzzer comes with clang (the
 # default build stays on gcc); llvm-14 has llvm-symbolizer, for file:line in the fuzzers' reports.

@@ -55,6 +55,54 @@ EOF
 if out=$($python -c "$check_manifest" "$work/one/manifest.jsonl" "$work/sharded/manifest.jsonl" 2>&1); then pass
 else fail "manifest: $out"; fi
 
+# --- the cluster scripts as their schedulers would run them ---
+# Slurm: an array 1-3 (it need not start at 0), each task with the variables Slurm sets.
+for task in 1 2 3; do
+  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3 LENSLAB=$lenslab \
+    bash "$src/tools/slurm/capture.sbatch" "$src/assets/rows/rows.gltf" "$path" "$work/slurm" \
+    --width 64 --aperture-samples 4 --frames 10:21 --aov depth -q &
+done
+wait
+# Kubernetes: the Job's own arguments, $(JOB_COMPLETION_INDEX) expanded as the kubelet does, the
+# volume's paths mapped here, and the test's size options added.
+k8s_args=$(cat <<'EOF'
+import sys, yaml
+job = yaml.safe_load(open(sys.argv[1]))
+spec = job["spec"]
+assert spec["completionMode"] == "Indexed"
+n = spec["completions"]
+args = spec["template"]["spec"]["containers"][0]["args"]
+shard = args[args.index("--shard") + 1]
+assert shard == f"$(JOB_COMPLETION_INDEX)/{n}", f"--shard {shard} does not match completions {n}"
+places = {"/data/scene.gltf": sys.argv[2], "/data/path.json": sys.argv[3], "/data/frames": sys.argv[4]}
+for i in range(n):
+    line = []
+    for a in args:
+        a = a.replace("$(JOB_COMPLETION_INDEX)", str(i))
+        for k, v in places.items():
+            a = a.replace(k, v)
+        line.append(a)
+    print("\t".join(line))
+EOF
+)
+if k8s=$($python -c "$k8s_args" "$src/tools/k8s/capture-job.yaml" "$src/assets/rows/rows.gltf" "$path" "$work/k8s" 2>&1); then
+  pass
+  while IFS=$'\t' read -r -a job_args; do
+    "$lenslab" "${job_args[@]}" --width 64 --aperture-samples 4 --frames 10:21 -q &
+  done <<<"$k8s"
+  wait
+else
+  fail "tools/k8s/capture-job.yaml: $k8s"
+fi
+for dir in slurm k8s; do
+  for f in $(seq 10 21); do
+    name=$(printf 'frame_%04d' "$f")
+    if [ -f "$work/$dir/$name.exr" ] && same_pixels "$work/one/$name.exr" "$work/$dir/$name.exr"; then pass
+    else fail "$dir: frame $f differs from one run's (or is missing)"; fi
+  done
+  if [ "$(cat "$work/$dir"/manifest.*.jsonl | wc -l)" -eq 12 ]; then pass; else fail "$dir: manifests hold $(cat "$work/$dir"/manifest.*.jsonl | wc -l) lines, not 12"; fi
+done
+
 # --- render reproduces a frame from its camera file and its seed ---
 seed=$($python -c 'import json,sys; print([l for l in map(json.loads, open(sys.argv[1])) if l["frame"] == 15][0]["seed"])' "$work/one/manifest.jsonl")
 "$lenslab" render --camera "$work/one/frame_0015.camera.json" --seed "$seed" --aperture-samples 4 --out "$work/rendered.exr" -q

@@ -8,6 +8,7 @@
 //   Primitives      glTF primitives → triangle meshes
 //   Images          image headers checked; used images decoded to RGBA8
 //   SceneBuilder    the default scene walked into a Scene
+//   Animations      animation channels read into Scene::animation (src/scene/SceneAnimation poses it)
 //   Problems        Problem, refuse and notes;  Limits  what lenslab refuses to read
 //   ComponentTypes  accessor types and component types
 // Workarounds for Debian's tinygltf 2.7 carry a comment tag; when upgrading tinygltf, list them

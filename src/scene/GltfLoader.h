@@ -5,10 +5,14 @@
 // What is kept: the default scene's node hierarchy (matrix or TRS, composed in double precision),
 // triangle primitives (lists, strips and fans; indexed or not), normals (flat ones generated when
 // absent, as the glTF spec asks), TEXCOORD_0, COLOR_0, base colour factor and texture with its
-// sampler, KHR_materials_unlit, alpha mode and cutoff, double-sidedness, cameras.
+// sampler, KHR_materials_unlit, alpha mode and cutoff, double-sidedness, cameras, and the node
+// animations (translation, rotation, scale; STEP, LINEAR, CUBICSPLINE) of every animation in the
+// file, on one clock, in Scene::animation. The returned scene is at rest (the nodes' own
+// transforms); poseScene (scene/SceneAnimation.h) moves it to a time.
 // What is left out, with a line in Scene::notes: points and lines, other PBR inputs, other
-// texture coordinate sets, skins (bind pose), morph targets (base mesh), animations, unsupported
-// extensions that the file uses but does not require.
+// texture coordinate sets, skins (bind pose), morph targets (base mesh) and the animation channels
+// that drive their weights, channels on nodes outside the drawn scene or given by a matrix,
+// unsupported extensions that the file uses but does not require.
 // Only meshes, materials, textures and images that the drawn scene uses end up in the Scene, and
 // only those images are decoded ("upload nothing the scene does not use").
 //

@@ -1,6 +1,8 @@
 #pragma once
 // The renderable scene: what every renderer (raster and ray caster) draws, flattened out of glTF.
 // Pure data (GLM + std), no GL: src/render uploads it, src/raycast will intersect it.
+#include "scene/SceneAnimation.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -128,6 +130,7 @@ struct Scene {
   Lighting lighting;
   Bounds bounds;                      // world-space bounds of all instances
   std::vector<std::string> notes;     // what the loader left out and why (shown by `lenslab info`)
+  SceneAnimation animation;           // what poseScene needs to move instances and cameras; empty when nothing moves
 
   std::size_t triangleCount() const;  // over all instances
 };

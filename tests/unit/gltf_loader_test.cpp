@@ -5,6 +5,7 @@
 #include "core/Error.h"
 #include "core/Text.h"
 #include "scene/GltfLoader.h"
+#include "scene/SceneAnimation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -158,10 +159,17 @@ TEST_P(GltfSampleVariant, LoadsWithTrianglesOrIsRefusedWithOneLine) {
   const fs::path file = samplesDirectory() / GetParam();
   const auto refused = kRefusedSamples.find(GetParam());
   try {
-    const Scene scene = loadGltf(file);
+    Scene scene = loadGltf(file);
     EXPECT_EQ(refused, kRefusedSamples.end()) << "loaded a file lenslab cannot draw";
     EXPECT_GT(scene.triangleCount(), 0u) << "every sample model has triangles";
     expectWellFormed(scene);
+    // An animated sample poses at its start, middle and end (finite bounds, nothing out of reach).
+    const double durationSeconds = animationDurationSeconds(scene);
+    for (const double seconds : {0.0, 0.5 * durationSeconds, durationSeconds})
+      if (!scene.animation.empty()) {
+        poseScene(scene, seconds);
+        expectWellFormed(scene);
+      }
   } catch (const InputError& e) {
     ASSERT_NE(refused, kRefusedSamples.end()) << e.what();
     expectOneLineNamingFile(e, file);

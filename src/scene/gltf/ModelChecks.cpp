@@ -197,7 +197,7 @@ class ModelCheck {
   }
 
   // An animation output holds one value per key time (three for cubic splines), times the number
-  // of morph targets when it drives weights. Animations are not played, but a file that gets this
+  // of morph targets when it drives weights. Weights are not played, but a file that gets this
   // wrong is not to be trusted.
   void animationCounts(const tinygltf::AnimationSampler& s, const tinygltf::AnimationChannel& channel, const std::string& where) const {
     const std::size_t times = m_.accessors[toIndex(s.input)].count;

@@ -1,5 +1,6 @@
 #include "scene/gltf/SceneBuilder.h"
 
+#include "scene/gltf/Animations.h"
 #include "scene/gltf/Images.h"
 #include "scene/gltf/Limits.h"
 #include "scene/gltf/Primitives.h"
@@ -13,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace lenslab::gltf {
@@ -34,6 +36,20 @@ glm::dmat4 localTransform(const tinygltf::Node& node) {
   return m;
 }
 
+// The node as poseScene needs it: its rest transform, and its T, R, S apart for channels to replace.
+AnimatedNode restNode(const tinygltf::Node& node, int index, int parentSlot) {
+  AnimatedNode a;
+  a.parent = parentSlot;
+  a.gltfNode = index;
+  a.name = node.name;
+  a.parentFromNodeAtRest = localTransform(node);
+  if (node.matrix.size() == 16) return a;  // never animated (glTF); T, R, S stay identity
+  if (node.translation.size() == 3) a.translation = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
+  if (node.rotation.size() == 4) a.rotation = glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+  if (node.scale.size() == 3) a.scale = glm::dvec3(node.scale[0], node.scale[1], node.scale[2]);
+  return a;
+}
+
 Sampler convertSampler(const tinygltf::Sampler& s) {
   Sampler sampler;  // Scene.h's defaults stand where the file leaves a filter undefined
   sampler.wrapS = static_cast<Wrap>(s.wrapS);
@@ -48,12 +64,14 @@ Sampler convertSampler(const tinygltf::Sampler& s) {
 class SceneBuilder {
  public:
   SceneBuilder(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents, Scene& scene)
-      : model_(model), reader_(reader), parents_(parents), scene_(scene), converter_(model, reader, scene.notes) {}
+      : model_(model), reader_(reader), parents_(parents), scene_(scene), converter_(model, reader, scene.notes),
+        slotOfNode_(model.nodes.size(), -1) {}
 
   void build() {
     placeNodes(drawnRoots());
     checkUndrawnMeshes();
-    noteIgnoredFeatures();
+    readAnimations(model_, reader_, slotOfNode_, scene_);
+    noteUnsupportedExtensions();
   }
 
  private:
@@ -74,29 +92,39 @@ class SceneBuilder {
   }
 
   // Depth first, without recursion (a hierarchy may be deeper than the stack): the checks made
-  // it a forest, so each node is met once.
+  // it a forest, so each node is met once. Each placed node is also listed in scene.animation.nodes
+  // (parents first), with the instances and cameras it places, for poseScene.
   void placeNodes(const std::vector<int>& roots) {
-    std::vector<std::pair<int, glm::dmat4>> pending;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.emplace_back(*it, glm::dmat4(1.0));
+    std::vector<std::tuple<int, glm::dmat4, int>> pending;  // node, worldFromParent, the parent's slot
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.emplace_back(*it, glm::dmat4(1.0), -1);
     while (!pending.empty()) {
-      const auto [index, worldFromParent] = pending.back();
+      const auto [index, worldFromParent, parentSlot] = pending.back();
       pending.pop_back();
       const tinygltf::Node& node = model_.nodes[toIndex(index)];
       const glm::dmat4 worldFromNode = worldFromParent * localTransform(node);
       for (int i = 0; i < 16; ++i)
         if (!std::isfinite(glm::value_ptr(worldFromNode)[i])) refuse("node ", index, ": its world transform is not finite");
-      placeNode(node, worldFromNode);
-      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) pending.emplace_back(*it, worldFromNode);
+      const int slot = static_cast<int>(scene_.animation.nodes.size());
+      slotOfNode_[toIndex(index)] = slot;
+      scene_.animation.nodes.push_back(restNode(node, index, parentSlot));
+      placeNode(node, worldFromNode, scene_.animation.nodes.back());
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) pending.emplace_back(*it, worldFromNode, slot);
     }
   }
 
-  void placeNode(const tinygltf::Node& node, const glm::dmat4& worldFromNode) {
+  void placeNode(const tinygltf::Node& node, const glm::dmat4& worldFromNode, AnimatedNode& placed) {
     if (node.mesh >= 0) {
       const std::size_t primitives = model_.meshes[toIndex(node.mesh)].primitives.size();
       for (std::size_t k = 0; k < primitives; ++k)
-        if (const int mesh = meshFor(node.mesh, k); mesh >= 0) scene_.instances.push_back({mesh, worldFromNode});
+        if (const int mesh = meshFor(node.mesh, k); mesh >= 0) {
+          placed.instances.push_back(static_cast<int>(scene_.instances.size()));
+          scene_.instances.push_back({mesh, worldFromNode});
+        }
     }
-    if (node.camera >= 0) addCamera(node.camera, worldFromNode);
+    if (node.camera >= 0) {
+      placed.cameras.push_back(static_cast<int>(scene_.cameras.size()));
+      addCamera(node.camera, worldFromNode);
+    }
     if (node.skin >= 0) noteOnce(scene_.notes, "skins are ignored: skinned meshes are drawn in their bind pose");
   }
 
@@ -187,9 +215,7 @@ class SceneBuilder {
         if (!meshes_.count({static_cast<int>(i), k})) (void)quiet.convert(static_cast<int>(i), k);
   }
 
-  void noteIgnoredFeatures() {
-    if (!model_.animations.empty())
-      noteOnce(scene_.notes, cat(model_.animations.size(), " animation(s) ignored: the scene is drawn at rest"));
+  void noteUnsupportedExtensions() {
     for (const std::string& used : model_.extensionsUsed)
       if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), used) == kSupportedExtensions.end())
         noteOnce(scene_.notes, cat("extension ", used, " is used but not supported by lenslab; it is ignored"));
@@ -202,6 +228,7 @@ class SceneBuilder {
   PrimitiveConverter converter_;
   std::map<std::pair<int, std::size_t>, int> meshes_;
   std::map<int, int> materials_, textures_, images_;
+  std::vector<int> slotOfNode_;  // glTF node → index into scene.animation.nodes; -1 where not drawn
 };
 
 }  // namespace

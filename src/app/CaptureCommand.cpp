@@ -29,6 +29,7 @@
 #include "render/Renderer.h"
 #include "render/TiledRender.h"
 #include "scene/GltfLoader.h"
+#include "scene/SceneAnimation.h"
 
 #include <nlohmann/json.hpp>
 
@@ -116,7 +117,7 @@ int runCapture(const CaptureOptions& o) {
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
-  const bool animated = false;  // MERGE: !scene.animation.empty()
+  const bool animated = !scene.animation.empty();
 
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   Renderer renderer(scene);
@@ -138,7 +139,7 @@ int runCapture(const CaptureOptions& o) {
     }
     const auto frameStart = std::chrono::steady_clock::now();
     const double time = path.frameTimeSeconds(frame);
-    // MERGE: if (animated) poseScene(scene, time);
+    if (animated) poseScene(scene, time);  // glTF node animations at the frame's time
     const PathKey key = cameraAt(path, time);
     const std::string where = cat(o.pathFile, ": frame ", frame, " (", time, " s)");
     validate(key.camera, where);

@@ -21,6 +21,7 @@
 #include "render/Renderer.h"
 #include "render/TiledRender.h"
 #include "scene/GltfLoader.h"
+#include "scene/SceneAnimation.h"
 
 #include <chrono>
 #include <cstdio>
@@ -50,6 +51,7 @@ struct RenderOptions {
   LensOptions lens;
   std::optional<glm::vec3> background;
   int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
+  std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -158,6 +160,11 @@ int runRender(const RenderOptions& o) {
 
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
+  if (o.timeSeconds) {
+    if (scene.animation.empty())
+      std::cerr << "lenslab: warning: --time " << *o.timeSeconds << ": " << scenePath.string() << " has no animation that moves what it draws\n";
+    poseScene(scene, *o.timeSeconds);
+  }
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
@@ -245,6 +252,11 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   addLensOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addBackgroundOption(*cmd, options->background);
+  cmd->add_option("--time", options->timeSeconds,
+                  "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
+                  "default: the rest pose")
+      ->check(CLI::Range(-1e9, 1e9))
+      ->type_name("SECONDS");
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
   return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };

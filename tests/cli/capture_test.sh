@@ -125,6 +125,62 @@ if [ "$(stat -c %Y.%s "$work/one/frame_0012.exr")" = "$before" ]; then pass; els
 if [ -f "$work/one/frame_0013.exr" ]; then pass; else fail "--skip-existing did not make the missing frame 13"; fi
 if [ "$(wc -l <"$work/one/manifest.jsonl")" -eq $((lines_before + 1)) ]; then pass; else fail "--skip-existing: manifest lines $lines_before -> $(wc -l <"$work/one/manifest.jsonl"), expected one more"; fi
 
+# --- a glTF node animation plays: frames move, and `render --time` reproduces a frame ---
+# A unit quad sliding from x = -1 to x = +1 over one second (LINEAR translation), written here.
+make_gltf=$(cat <<'EOF'
+import base64, json, struct, sys
+pos = [(-0.5, -0.5, 0), (0.5, -0.5, 0), (0.5, 0.5, 0), (-0.5, 0.5, 0)]
+idx = [0, 1, 2, 0, 2, 3]
+times = [0.0, 1.0]
+moves = [(-1.0, 0, 0), (1.0, 0, 0)]
+data = b"".join(struct.pack("<3f", *p) for p in pos) + struct.pack("<6H", *idx) + b"\0" * 4 \
+     + struct.pack("<2f", *times) + b"".join(struct.pack("<3f", *m) for m in moves)
+gltf = {
+  "asset": {"version": "2.0"},
+  "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "animations": [{"samplers": [{"input": 2, "output": 3, "interpolation": "LINEAR"}],
+                  "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}],
+  "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                  {"buffer": 0, "byteOffset": 64, "byteLength": 8}, {"buffer": 0, "byteOffset": 72, "byteLength": 24}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+    {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0.0], "max": [1.0]},
+    {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"}]}
+json.dump(gltf, open(sys.argv[1], "w"))
+EOF
+)
+$python -c "$make_gltf" "$work/slide.gltf"
+printf '{"fps": 4, "frames": 5, "keys": [{"time": 0, "eye": [0, 0, 4], "target": [0, 0, 0], "near": 0.1, "far": 10}]}' >"$work/still.json"
+"$lenslab" capture "$work/slide.gltf" --path "$work/still.json" --width 64 --out "$work/slide/f_%d.png" -q || fail "capture of an animated glTF"
+if ! cmp -s "$work/slide/f_0.png" "$work/slide/f_4.png" && ! cmp -s "$work/slide/f_1.png" "$work/slide/f_2.png"; then pass
+else fail "the animated quad does not move between frames"; fi
+# Frame 1 is t = 0.25 s, the quad at x = -0.5: render --time 0.25 with the frame's camera gives it;
+# without --time render draws the rest pose (the node has no translation: x = 0).
+seed=$($python -c 'import json,sys; print([l for l in map(json.loads, open(sys.argv[1])) if l["frame"] == 1][0]["seed"])' "$work/slide/manifest.jsonl")
+"$lenslab" render "$work/slide.gltf" --camera "$work/slide/f_1.camera.json" --seed "$seed" --time 0.25 --out "$work/slide-r.png" -q
+if cmp -s "$work/slide-r.png" "$work/slide/f_1.png"; then pass; else fail "render --time 0.25 differs from frame 1"; fi
+"$lenslab" render "$work/slide.gltf" --camera "$work/slide/f_1.camera.json" --seed "$seed" --out "$work/slide-rest.png" -q
+if ! cmp -s "$work/slide-rest.png" "$work/slide/f_1.png"; then pass; else fail "render without --time drew the pose at 0.25 s, not the rest pose"; fi
+# The frame at the centre is left-right symmetric; frame 0 (x = -1) has the quad's colour on the left only.
+symmetry=$(cat <<'EOF'
+import sys
+from PIL import Image
+def coverage(path):
+    im = Image.open(path).convert("L"); w, h = im.size; bg = im.getpixel((0, 0))
+    cols = [x for x in range(w) for y in range(h) if abs(im.getpixel((x, y)) - bg) > 10]
+    return min(cols), max(cols), w
+lo, hi, w = coverage(sys.argv[1])
+assert abs((lo + hi + 1) / 2 - w / 2) <= 1, f"centre frame: covered columns {lo}..{hi} of {w}"
+lo0, hi0, _ = coverage(sys.argv[2])
+assert hi0 < w / 2, f"frame 0: covered columns {lo0}..{hi0} of {w}, expected the left half"
+EOF
+)
+if out=$($python -c "$symmetry" "$work/slide/f_2.png" "$work/slide/f_0.png" 2>&1); then pass; else fail "animated quad placement: $out"; fi
+
 # --- the dolly zoom renders end to end (first and last frame) ---
 if "$lenslab" capture --path "$src/assets/rows/dolly-zoom.json" --width 48 --aperture-samples 2 --frames 96 \
      --out "$work/dolly/d_%02d.png" -q && [ -s "$work/dolly/d_96.png" ]; then pass; else fail "dolly zoom, last frame"; fi

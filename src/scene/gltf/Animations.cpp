@@ -121,7 +121,7 @@ void readAnimations(const tinygltf::Model& model, const AccessorReader& reader, 
     return;
   }
   noteOnce(scene.notes, cat(model.animations.size(), " animation(s), ", seconds(animationDurationSeconds(scene)),
-                            " s: played by `lenslab capture`; other commands draw the rest pose"));
+                            " s: played by `lenslab capture` and `render --time`; otherwise the rest pose is drawn"));
 }
 
 }  // namespace lenslab::gltf

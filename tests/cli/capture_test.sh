@@ -9,10 +9,7 @@ lenslab=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/test_lib.sh"
 python=/usr/bin/python3
 
 path=$src/assets/rows/rack-focus.json
@@ -187,17 +184,9 @@ if "$lenslab" capture --path "$src/assets/rows/dolly-zoom.json" --width 48 --ape
 
 # --- refusals: one line, non-zero exit, no frame written ---
 expect_refusal() {
-  local name=$1 fragment=$2
-  shift 3
   rm -rf "$work/bad"
-  "$lenslab" "$@" >"$work/stdout" 2>"$work/stderr"
-  local rc=$?
-  local lines
-  lines=$(wc -l <"$work/stderr")
-  if [ "$rc" -eq 0 ]; then fail "$name: exit 0"; return; fi
-  if [ "$lines" -ne 1 ]; then fail "$name: $lines stderr lines: $(cat "$work/stderr")"; return; fi
-  if ! grep -qF -- "$fragment" "$work/stderr"; then fail "$name: stderr lacks '$fragment': $(cat "$work/stderr")"; return; fi
-  if [ -n "$(find "$work/bad" -type f 2>/dev/null)" ]; then fail "$name: left a file: $(find "$work/bad" -type f)"; return; fi
+  one_line_error "$@" || return
+  if [ -n "$(find "$work/bad" -type f 2>/dev/null)" ]; then fail "$1: left a file: $(find "$work/bad" -type f)"; return; fi
   pass
 }
 key='{"time": 0, "eye": [0, 1, 3], "target": [0, 0.5, -2]}'

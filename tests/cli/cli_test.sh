@@ -8,26 +8,14 @@ lenslab=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/test_lib.sh"
 
 # expect_refusal NAME EXPECTED_FRAGMENT -- ARGS...: non-zero exit, one stderr line holding the
 # fragment, nothing written to $work/out.*
 expect_refusal() {
-  local name=$1 fragment=$2
-  shift 3
   rm -f "$work"/out.*
-  "$lenslab" "$@" >"$work/stdout" 2>"$work/stderr"
-  local rc=$?
-  local lines
-  lines=$(wc -l <"$work/stderr")
-  if [ "$rc" -eq 0 ]; then fail "$name: exit 0"; return; fi
-  if [ "$lines" -ne 1 ]; then fail "$name: $lines stderr lines: $(cat "$work/stderr")"; return; fi
-  if ! grep -qF -- "$fragment" "$work/stderr"; then fail "$name: stderr lacks '$fragment': $(cat "$work/stderr")"; return; fi
-  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$name: left an output file"; return; fi
+  one_line_error "$@" || return
+  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
   pass
 }
 

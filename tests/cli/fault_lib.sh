@@ -1,9 +1,6 @@
 # Shared by fault_test.sh and tmpfs_test.sh (sourced; needs $lenslab and $work set): run lenslab
 # where a write must fail or a path must be refused, and check that nothing new is left.
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 
 # Every name under a folder, dot files (temporaries, probes) and folders included.
 listing() { (cd "$1" && find . | LC_ALL=C sort); }

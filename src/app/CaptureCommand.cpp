@@ -12,6 +12,7 @@
 #include "camera/CameraPath.h"
 #include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
+#include "camera/Intrinsics.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
@@ -84,6 +85,23 @@ std::string relativeTo(const fs::path& file, const fs::path& manifest) {
 }
 
 nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
+
+// K, distCoeffs, R and t of the frame's camera in OpenCV's conventions, for vision tools that read
+// the manifest rather than the camera files (distCoeffs only where the lens is all OpenCV's).
+nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
+  const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
+  const OpenCvPose pose = poseOf(camera.view);
+  nlohmann::json j;
+  j["K"] = {{k.fx, 0.0, k.cx}, {0.0, k.fy, k.cy}, {0.0, 0.0, 1.0}};
+  const Distortion& d = camera.effects.distortion;
+  if (d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["dist"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  j["R"] = nlohmann::json::array();
+  for (const glm::dvec3& row : pose.rows) j["R"].push_back({row.x, row.y, row.z});
+  j["t"] = {pose.translation.x, pose.translation.y, pose.translation.z};
+  j["width"] = size.widthPx;
+  j["height"] = size.heightPx;
+  return j;
+}
 
 int runCapture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
@@ -189,6 +207,7 @@ int runCapture(const CaptureOptions& o) {
     line["f_number"] = distanceJson(key.camera.fNumber);
     line["focus_distance"] = distanceJson(key.camera.focusDistance);
     if (depthAov) line["aov"] = {"depth"};
+    line["opencv"] = openCvJson(camera, size);
     line["shard"] = cat(shard.index, "/", shard.count);
     appendLine(manifest, line.dump());
 

@@ -21,4 +21,13 @@ OpenCvIntrinsics intrinsicsOf(const ViewSpec& view, ImageSize size) {
   return k;
 }
 
+OpenCvPose poseOf(const ViewSpec& view) {
+  const ViewBasis b = viewBasis(view);
+  OpenCvPose pose;
+  pose.rows = {b.u, -b.v, -b.n};
+  const glm::dvec3 prp = prpWorld(view);
+  pose.translation = -glm::dvec3(glm::dot(pose.rows[0], prp), glm::dot(pose.rows[1], prp), glm::dot(pose.rows[2], prp));
+  return pose;
+}
+
 }  // namespace lenslab

@@ -9,6 +9,8 @@
 #include "camera/ImageSize.h"
 #include "camera/ViewSpec.h"
 
+#include <array>
+
 namespace lenslab {
 
 struct OpenCvIntrinsics {
@@ -19,5 +21,14 @@ struct OpenCvIntrinsics {
 
 // Throws InputError for a parallel projection (it has no pinhole).
 OpenCvIntrinsics intrinsicsOf(const ViewSpec& view, ImageSize size);
+
+// The extrinsics that go with them: a world point X is at camera point R·X + t, the camera's x
+// right (u), y down (−v) and z forward (−n, the optical axis), its origin the PRP. With K from
+// intrinsicsOf, (x/z·fx + cx, y/z·fy + cy) is OpenCV's pixel of X: lenslab's pixel minus ½.
+struct OpenCvPose {
+  std::array<glm::dvec3, 3> rows;  // R, row by row
+  glm::dvec3 translation{0.0};     // t
+};
+OpenCvPose poseOf(const ViewSpec& view);
 
 }  // namespace lenslab

@@ -3,6 +3,7 @@
 // Z channel, and a manifest that processes append to at once.
 #include "camera/Intrinsics.h"
 #include "camera/PhysicalCamera.h"
+#include "camera/Projection.h"
 #include "core/Error.h"
 #include "io/CameraJson.h"
 #include "io/CameraPathJson.h"
@@ -96,6 +97,33 @@ TEST(FrameCameraFile, IntrinsicsOfTheLecturesWindow) {
   EXPECT_NEAR(k.fy, imageDistanceMm / 24.0 * 640.0, 1e-9);
   EXPECT_NEAR(k.cx, 479.5, 1e-9);
   EXPECT_NEAR(k.cy, 319.5, 1e-9);
+}
+
+// OpenCV's projection x = K (R X + t), written out here, against lenslab's own projection of the
+// same point, for a physical camera and for a lecture camera whose PRP is off the window's centre.
+TEST(FrameCameraFile, PoseAndIntrinsicsProjectAsLenslabDoes) {
+  ViewSpec offAxis;
+  offAxis.vrp = {1.0, 2.0, -3.0};
+  offAxis.vpn = glm::normalize(glm::dvec3(0.2, 0.1, 1.0));
+  offAxis.prp = {0.3, -0.2, 2.0};
+  offAxis.window = {-1.0, -0.6, 0.8, 0.7};
+  for (const ViewSpec& view : {toViewSpec(aLens()), offAxis}) {
+    const ImageSize size{640, 480};
+    const OpenCvIntrinsics k = intrinsicsOf(view, size);
+    const OpenCvPose pose = poseOf(view);
+    const ViewBasis b = viewBasis(view);
+    const glm::dvec3 prp = prpWorld(view);
+    for (const glm::dvec3 offset : {glm::dvec3(0.1, 0.2, -3.0), glm::dvec3(-0.5, 0.3, -1.0), glm::dvec3(0.7, -0.4, -6.0)}) {
+      const glm::dvec3 world = prp + offset.x * b.u + offset.y * b.v + offset.z * b.n;
+      const glm::dvec3 cam(glm::dot(pose.rows[0], world) + pose.translation.x, glm::dot(pose.rows[1], world) + pose.translation.y,
+                           glm::dot(pose.rows[2], world) + pose.translation.z);
+      ASSERT_GT(cam.z, 0.0);
+      const glm::dvec2 opencv(k.fx * cam.x / cam.z + k.cx, k.fy * cam.y / cam.z + k.cy);
+      const glm::dvec2 lenslab = pixelFromWindow(view.window, projectToWindow(view, world), size.widthPx, size.heightPx);
+      EXPECT_NEAR(opencv.x + 0.5, lenslab.x, 1e-9);
+      EXPECT_NEAR(opencv.y + 0.5, lenslab.y, 1e-9);
+    }
+  }
 }
 
 TEST(FrameCameraFile, ReadsBackAsTheSameCamera) {

@@ -268,6 +268,9 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       ->check(CLI::IsMember({"osmesa", "egl"}))
       ->capture_default_str();
   addLensOptions(*cmd, o->lens, false);
+  cmd->get_option("--seed")->description(
+      "seed for the aperture and sub-pixel samples: each frame's seed is a hash of this and the frame number "
+      "(the manifest's seed; render --seed with it reproduces the frame)");
   addTargetOption(*cmd, o->lens);
   addBackgroundOption(*cmd, o->background);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success");

@@ -53,9 +53,9 @@ if out=$($python -c "$check_manifest" "$work/one/manifest.jsonl" "$work/sharded/
 else fail "manifest: $out"; fi
 
 # --- the cluster scripts as their schedulers would run them ---
-# Slurm: an array 1-3 (it need not start at 0), each task with the variables Slurm sets.
-for task in 1 2 3; do
-  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3 LENSLAB=$lenslab \
+# Slurm: an array 2-6:2 (it need not start at 0 nor step by 1), each task with the variables Slurm sets.
+for task in 2 4 6; do
+  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=2 SLURM_ARRAY_TASK_STEP=2 SLURM_ARRAY_TASK_COUNT=3 LENSLAB=$lenslab \
     bash "$src/tools/slurm/capture.sbatch" "$src/assets/rows/rows.gltf" "$path" "$work/slurm" \
     --width 64 --aperture-samples 4 --frames 10:21 --aov depth -q &
 done

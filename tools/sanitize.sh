@@ -22,19 +22,5 @@ start=$(date +%s)
 cmake --preset asan >/dev/null
 cmake --build build-asan --target "${targets[@]}"
 built=$(date +%s)
-log=$(mktemp)
-trap 'rm -f "$log"' EXIT
-if ! ctest --test-dir build-asan -L "$labels" --output-on-failure 2>&1 | tee "$log"; then
-  # LeakSanitizer's exit-time tracer thread itself sometimes dies with SIGSEGV while it stops the
-  # process's threads ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error";
-  # seen once in a cli test's render, llvmpipe's threads winding down). That is the tool failing,
-  # not a finding: the tests that failed run once more, and must pass then. Any other failure, or
-  # the same test failing again, fails the run.
-  if grep -q "LeakSanitizer has encountered a fatal error" "$log"; then
-    echo "sanitize: LeakSanitizer's own tracer crashed (not a finding); running the failed tests once more"
-    ctest --test-dir build-asan --rerun-failed --output-on-failure
-  else
-    exit 1
-  fi
-fi
+ctest --test-dir build-asan -L "$labels" --output-on-failure
 echo "sanitize: build $((built - start)) s, tests $(($(date +%s) - built)) s"

@@ -7,7 +7,17 @@
 extern "C" {
 
 // Findings abort (a core-dump-free SIGABRT, so ctest shows the test as failed with the report).
-const char* __asan_default_options() { return "abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1"; }
+// intercept_tls_get_addr=0: the sanitizer's tracking of dynamic TLS (blocks glibc hands out through
+// __tls_get_addr to dlopen'ed libraries: Mesa's driver, LLVM) recorded a bogus range in some runs
+// ("DTLS 40 at 0x000000003465-0x001800004567" with LSAN_OPTIONS=verbosity=1), and LeakSanitizer's
+// exit-time tracer then died reading it ("Tracer caught signal 11 ... LeakSanitizer has encountered
+// a fatal error"): `render --camera assets/occluder/camera-dof.json --pattern random --stats ...`
+// did so on every run, depending on the heap's layout. Untracked, those blocks are not scanned for
+// pointers; our code is linked in, not dlopen'ed, so its static TLS is scanned as before, and the
+// unit and cli tests report no leak either way.
+const char* __asan_default_options() {
+  return "abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1:intercept_tls_get_addr=0";
+}
 
 // UBSan: a stack trace, and stop at the first finding (with -fno-sanitize-recover=undefined the
 // process aborts whatever this says; kept for builds that recover).

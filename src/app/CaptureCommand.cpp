@@ -13,6 +13,7 @@
 #include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
 #include "camera/Intrinsics.h"
+#include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
@@ -64,9 +65,6 @@ struct CaptureOptions {
   std::optional<glm::vec3> background;
 };
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The manifest's default place: beside the frames, when the pattern's folder has no frame number.
 fs::path defaultManifest(const std::string& pattern) {

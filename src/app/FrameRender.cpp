@@ -1,5 +1,6 @@
 #include "app/FrameRender.h"
 
+#include "core/Clock.h"
 #include "io/Progress.h"
 #include "render/VisibleBlurPass.h"
 
@@ -9,12 +10,6 @@
 #include <optional>
 
 namespace lenslab {
-
-namespace {
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-}  // namespace
 
 FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera, ImageSize size,
                     const PlanOptions& options, RunStats& stats) {

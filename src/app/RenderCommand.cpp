@@ -7,6 +7,7 @@
 #include "camera/DepthRange.h"
 #include "camera/FocusOnPixel.h"
 #include "camera/ImageSize.h"
+#include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
@@ -57,9 +58,6 @@ struct RenderOptions {
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
 constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
 // `out`'s temporary file in `outputs`.

@@ -1,6 +1,7 @@
 // lenslab sweep: error against run time for every method, against the ray-cast reference.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "core/Clock.h"
 #include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
@@ -59,14 +60,14 @@ int runSweepCommand(SweepCommandOptions& o) {
 
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
-  const double contextSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  const double contextSeconds = secondsSince(t);
   o.sweep.outDir = out;
   o.sweep.outputs = &outputs;
   o.sweep.seed = o.lens.seed;
   o.sweep.log = [](const std::string& line) { std::cerr << "lenslab: sweep: " << line << "\n"; };
   t = std::chrono::steady_clock::now();
   const SweepResult result = runSweep(scene, camera, size, o.sweep);
-  const double sweepSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  const double sweepSeconds = secondsSince(t);
 
   const std::string header = cat(
       "# Error against run time: ", scenePath.filename().string(), "\n\n",

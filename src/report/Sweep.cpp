@@ -2,6 +2,7 @@
 
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
+#include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "io/CameraJson.h"
@@ -30,10 +31,6 @@ namespace lenslab {
 namespace fs = std::filesystem;
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // FNV-1a, 64 bits: a cache key, not a security measure.
 struct Hash {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates README.md's "Numerical stability" table from lenslab_stability (every row, the slow
+# Regenerates docs/stability.md's "Numerical stability" table from lenslab_stability (every row, the slow
 # ones included), so that the table is the program's output and nothing typed by hand.
 # usage: tools/update-stability-table.sh [build-dir]   (default: build)
 set -euo pipefail
@@ -14,10 +14,10 @@ status=0
 python3 - "$table" <<'PY'
 import sys
 table = open(sys.argv[1]).read()
-readme = open("README.md").read()
+readme = open("docs/stability.md").read()
 begin, end = "<!-- stability-table:begin -->", "<!-- stability-table:end -->"
 a, b = readme.index(begin), readme.index(end)
-open("README.md", "w").write(readme[:a + len(begin)] + "\n" + table + readme[b:])
+open("docs/stability.md", "w").write(readme[:a + len(begin)] + "\n" + table + readme[b:])
 PY
-echo "update-stability-table: README.md updated (lenslab_stability exit status $status)"
+echo "update-stability-table: docs/stability.md updated (lenslab_stability exit status $status)"
 exit "$status"

@@ -241,7 +241,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
   cmd->add_option("--path", o->pathFile,
                   "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in the physical form>}, ...]} "
-                  "(see README, Capturing sequences)")
+                  "(see docs/capture.md)")
       ->required();
   cmd->add_option("--out,-o", o->out,
                   "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "

@@ -229,7 +229,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
                   method == Method::Raster
                       ? "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^30 "
                         "pixels in all: images beyond one GL render target are rendered in tiles and written a strip at a "
-                        "time (20000x13333 on llvmpipe: see README, Image sizes)"
+                        "time (20000x13333 on llvmpipe: see docs/usage.md, Image sizes)"
                       : "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^28 "
                         "pixels in all (the ray caster holds the whole float image)");
   cmd->add_option("--height", options->height, "image height in pixels (limits as --width)");

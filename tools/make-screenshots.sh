@@ -8,7 +8,8 @@
 # The other pictures come from their own scripts (see "Pictures" in docs/development.md):
 # tools/update-goldens.sh (tests/golden/*.png), tools/make-capture-pictures.sh (assets/report/capture/)
 # and `lenslab sweep` (assets/report/*/error_vs_time.png). Look at every changed picture before
-# committing it. About 1 minute on two cores; the view needs Xvfb (tools/install-deps.sh).
+# committing it. About 3 minutes on two busy cores, most of it the two lens pictures; the view
+# needs Xvfb (tools/install-deps.sh).
 # usage: tools/make-screenshots.sh [build/lenslab]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)

@@ -9,6 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev
   xvfb xauth fonts-dejavu-core python3-pil python3-yaml
+  strace  # tests/install/install_test.sh, where no private mount namespace can be made
 )
 # --fuzz: also what tools/fuzz.sh needs (it asks for them itself): libFuzzer comes with clang (the
 # default build stays on gcc); llvm-14 has llvm-symbolizer, for file:line in the fuzzers' reports.

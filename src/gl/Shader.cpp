@@ -1,37 +1,64 @@
 #include "gl/Shader.h"
 
-#include <cstdlib>
+#include "core/DataPaths.h"
+#include "gl/EmbeddedShaders.h"
+
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace lenslab::gl {
 namespace fs = std::filesystem;
 
-fs::path shaderDirectory() {
-  if (const char* env = std::getenv("LENSLAB_SHADER_DIR"); env && *env) return env;
-  return LENSLAB_DEFAULT_SHADER_DIR;
-}
-
 namespace {
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::runtime_error("shader " + path.string() +
-                             ": cannot read it (set LENSLAB_SHADER_DIR to lenslab's shaders/ folder)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+// Where the text of a shader file comes from: a folder, or the compiled-in copies (nullopt).
+class ShaderFiles {
+ public:
+  explicit ShaderFiles(std::optional<fs::path> folder) : folder_(std::move(folder)) {}
 
-void expand(const fs::path& file, const fs::path& root, ShaderSource& out, int depth) {
-  if (depth > 16) throw std::runtime_error("shader " + file.string() + ": #include nested too deeply");
+  bool exists(const fs::path& relative) const {
+    if (folder_) return fs::exists(*folder_ / relative);
+    return embedded(relative) != nullptr;
+  }
+
+  std::string read(const fs::path& relative) const {
+    if (!folder_) {
+      if (const EmbeddedShader* shader = embedded(relative)) return std::string(shader->text);
+      throw std::runtime_error("shader " + relative.generic_string() +
+                               ": not among the shaders compiled into lenslab (the list in CMakeLists.txt)");
+    }
+    const fs::path path = *folder_ / relative;
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw std::runtime_error("shader " + path.string() +
+                               ": cannot read it (set LENSLAB_SHADER_DIR to lenslab's shaders/ folder)");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+ private:
+  static const EmbeddedShader* embedded(const fs::path& relative) {
+    const std::string name = relative.generic_string();
+    for (const EmbeddedShader& shader : embeddedShaders())
+      if (shader.path == name) return &shader;
+    return nullptr;
+  }
+
+  std::optional<fs::path> folder_;
+};
+
+// `file` is relative to the shader folder and normalised ("common/shading.glsl"), which is also
+// the name compile errors give.
+void expand(const fs::path& file, const ShaderFiles& files, ShaderSource& out, int depth) {
+  if (depth > 16) throw std::runtime_error("shader " + file.generic_string() + ": #include nested too deeply");
   const int fileIndex = static_cast<int>(out.files.size());
-  out.files.push_back(fs::relative(file, root).generic_string());
+  out.files.push_back(file.generic_string());
   if (depth > 0) out.text += "#line 1 " + std::to_string(fileIndex) + "\n";
-  std::istringstream in(readText(file));
+  std::istringstream in(files.read(file));
   static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
   std::string line;
   int lineNumber = 0;
@@ -39,9 +66,9 @@ void expand(const fs::path& file, const fs::path& root, ShaderSource& out, int d
     ++lineNumber;
     std::smatch m;
     if (std::regex_match(line, m, includeLine)) {
-      fs::path target = file.parent_path() / m[1].str();
-      if (!fs::exists(target)) target = root / m[1].str();
-      expand(target, root, out, depth + 1);
+      fs::path target = (file.parent_path() / m[1].str()).lexically_normal();
+      if (!files.exists(target)) target = fs::path(m[1].str()).lexically_normal();
+      expand(target, files, out, depth + 1);
       out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(fileIndex) + "\n";
     } else {
       out.text += line + "\n";
@@ -52,9 +79,13 @@ void expand(const fs::path& file, const fs::path& root, ShaderSource& out, int d
 }  // namespace
 
 ShaderSource loadShaderSource(const fs::path& relativePath, const std::vector<std::string>& defines) {
-  const fs::path root = shaderDirectory();
+  return loadShaderSource(relativePath, defines, shaderDirectory());
+}
+
+ShaderSource loadShaderSource(const fs::path& relativePath, const std::vector<std::string>& defines,
+                              const std::optional<fs::path>& folder) {
   ShaderSource raw;
-  expand(root / relativePath, root, raw, 0);
+  expand(relativePath.lexically_normal(), ShaderFiles(folder), raw, 0);
   // Put the defines right after #version (which must stay the first line).
   const std::size_t versionEnd = raw.text.find('\n');
   std::string header = raw.text.substr(0, versionEnd + 1);

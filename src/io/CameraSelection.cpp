@@ -1,20 +1,15 @@
 #include "io/CameraSelection.h"
 
 #include "camera/GltfCamera.h"
+#include "core/DataPaths.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "io/CameraJson.h"
 
 #include <cmath>
-#include <cstdlib>
 
 namespace lenslab {
 namespace fs = std::filesystem;
-
-fs::path assetDirectory() {
-  if (const char* env = std::getenv("LENSLAB_ASSET_DIR"); env && *env) return env;
-  return LENSLAB_DEFAULT_ASSET_DIR;
-}
 
 SceneAndCamera resolveSceneAndCamera(const std::string& sceneArgument, const std::string& cameraArgument,
                                      const std::string& defaultCamera) {
@@ -22,8 +17,9 @@ SceneAndCamera resolveSceneAndCamera(const std::string& sceneArgument, const std
   r.scene = sceneArgument;
   if (!cameraArgument.empty()) r.camera = cameraArgument;
   if (r.scene.empty()) {
-    r.scene = assetDirectory() / "rows" / "rows.gltf";
-    if (!r.camera) r.camera = assetDirectory() / "rows" / defaultCamera;
+    const fs::path assets = assetDirectory();  // core/DataPaths.h: installed, source tree or LENSLAB_ASSET_DIR
+    r.scene = assets / "rows" / "rows.gltf";
+    if (!r.camera) r.camera = assets / "rows" / defaultCamera;
   }
   return r;
 }

@@ -20,16 +20,13 @@ SelectedCamera selectCamera(const Scene& scene, const std::optional<std::filesys
 PhysicalCamera autoFramingCamera(const Bounds& bounds);
 
 // The scene and camera files a command uses: with no scene, the bundled `rows` scene with its
-// camera file `defaultCamera` (e.g. "camera.json"); an explicit --camera always wins.
+// camera file `defaultCamera` (e.g. "camera.json"), found by assetDirectory() (core/DataPaths.h);
+// an explicit --camera always wins.
 struct SceneAndCamera {
   std::filesystem::path scene;
   std::optional<std::filesystem::path> camera;
 };
 SceneAndCamera resolveSceneAndCamera(const std::string& sceneArgument, const std::string& cameraArgument,
                                      const std::string& defaultCamera);
-
-// Where the bundled assets are: LENSLAB_ASSET_DIR in the environment, else the source tree's
-// assets/ (compiled in as LENSLAB_DEFAULT_ASSET_DIR).
-std::filesystem::path assetDirectory();
 
 }  // namespace lenslab

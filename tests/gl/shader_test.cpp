@@ -1,4 +1,5 @@
 // Shader errors are reported with the file, the line and the driver's log.
+#include "gl/EmbeddedShaders.h"
 #include "gl/Shader.h"
 #include "gl_test_context.h"
 
@@ -7,6 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 namespace lenslab {
 namespace {
@@ -73,6 +76,53 @@ TEST(Shader, ExpandsIncludesWithLineDirectives) {
   EXPECT_EQ(source.files[1], "common/shading.glsl");
   EXPECT_EQ(source.text.rfind("#version 450 core\n#define VARIANT_X\n", 0), 0u);
   EXPECT_NE(source.text.find("vec3 shade("), std::string::npos);
+}
+
+// The shaders compiled into the library (what an installed lenslab uses) are the source tree's,
+// every one of them: a shader added to shaders/ but not to LENSLAB_SHADERS in CMakeLists.txt
+// would work in the build tree and fail once installed.
+TEST(EmbeddedShaders, MatchTheSourceTree) {
+  const fs::path shaders = fs::path(LENSLAB_TEST_ASSET_DIR).parent_path() / "shaders";
+  std::map<std::string, std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(shaders)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    files[fs::relative(entry.path(), shaders).generic_string()] = text.str();
+  }
+  ASSERT_FALSE(files.empty()) << shaders;
+  std::map<std::string, std::string> embedded;
+  for (const gl::EmbeddedShader& shader : gl::embeddedShaders())
+    embedded[std::string(shader.path)] = std::string(shader.text);
+  for (const auto& [path, text] : files) {
+    const auto it = embedded.find(path);
+    if (it == embedded.end()) ADD_FAILURE() << "shaders/" << path << " is not compiled in: add it to LENSLAB_SHADERS in CMakeLists.txt";
+    else EXPECT_EQ(it->second, text) << "shaders/" << path << " differs from its compiled-in copy";
+  }
+  for (const auto& entry : embedded)
+    EXPECT_TRUE(files.count(entry.first)) << "compiled in but not in shaders/: " << entry.first;
+}
+
+// Reading from the compiled-in copies expands includes exactly as reading the folder does.
+TEST(EmbeddedShaders, ExpandAsTheFolderDoes) {
+  const fs::path shaders = fs::path(LENSLAB_TEST_ASSET_DIR).parent_path() / "shaders";
+  int withIncludes = 0;
+  for (const gl::EmbeddedShader& shader : gl::embeddedShaders()) {
+    if (shader.path.ends_with(".glsl")) continue;  // included, never compiled on its own
+    const gl::ShaderSource fromFolder = gl::loadShaderSource(shader.path, {"VARIANT_X"}, shaders);
+    const gl::ShaderSource compiledIn = gl::loadShaderSource(shader.path, {"VARIANT_X"}, std::nullopt);
+    EXPECT_EQ(compiledIn.text, fromFolder.text) << shader.path;
+    EXPECT_EQ(compiledIn.files, fromFolder.files) << shader.path;
+    withIncludes += compiledIn.files.size() > 1;
+  }
+  EXPECT_GE(withIncludes, 2);  // scene.frag and accumulate.frag include common/ code
+  try {
+    gl::loadShaderSource("scene/missing.frag", {}, std::nullopt);
+    FAIL() << "loaded a shader that is not compiled in";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("scene/missing.frag"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

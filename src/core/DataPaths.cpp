@@ -1,0 +1,72 @@
+#include "core/DataPaths.h"
+
+#include "core/Error.h"
+
+#include <cstdlib>
+#include <system_error>
+
+// Compiled in for this file only (CMakeLists.txt): the source tree, the build tree (symbolic links
+// resolved), and the data folder relative to the installed executable's folder (e.g. "../share/lenslab").
+#if !defined(LENSLAB_SOURCE_DIR) || !defined(LENSLAB_BUILD_DIR) || !defined(LENSLAB_DATA_FROM_BIN)
+#error "CMakeLists.txt defines LENSLAB_SOURCE_DIR, LENSLAB_BUILD_DIR and LENSLAB_DATA_FROM_BIN for DataPaths.cpp"
+#endif
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::optional<fs::path> fromEnvironment(const char* name) {
+  if (const char* value = std::getenv(name); value && *value) return fs::path(value);
+  return std::nullopt;
+}
+
+// Whether `path` is `folder` or lies below it (both absolute and normalised).
+bool isInside(const fs::path& path, const fs::path& folder) {
+  const fs::path p = path.lexically_normal(), f = folder.lexically_normal();
+  auto pi = p.begin();
+  for (auto fi = f.begin(); fi != f.end(); ++fi, ++pi) {
+    if (fi->empty()) continue;  // a trailing separator
+    if (pi == p.end() || *pi != *fi) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+fs::path executablePath() {
+  std::error_code error;
+  fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  return error ? fs::path() : exe;
+}
+
+bool runningFromBuildTree() {
+  const fs::path exe = executablePath();
+  if (exe.empty()) return false;
+  // Compared as text (CMake gives the build tree with its symbolic links resolved, as the kernel
+  // gives the executable): an installed lenslab does not so much as look at the build tree.
+  return isInside(exe, LENSLAB_BUILD_DIR);
+}
+
+std::optional<fs::path> shaderDirectory() {
+  if (auto env = fromEnvironment("LENSLAB_SHADER_DIR")) return env;
+  if (runningFromBuildTree()) return fs::path(LENSLAB_SOURCE_DIR) / "shaders";
+  return std::nullopt;
+}
+
+fs::path assetDirectory() {
+  if (auto env = fromEnvironment("LENSLAB_ASSET_DIR")) return *env;
+  const fs::path exe = executablePath();
+  fs::path installed;
+  if (!exe.empty()) {
+    installed = (exe.parent_path() / LENSLAB_DATA_FROM_BIN / "assets").lexically_normal();
+    std::error_code error;
+    if (fs::is_directory(installed, error)) return installed;
+  }
+  if (runningFromBuildTree()) return fs::path(LENSLAB_SOURCE_DIR) / "assets";
+  throw InputError("bundled scenes: no assets folder at " +
+                   (installed.empty() ? std::string("<executable>/" LENSLAB_DATA_FROM_BIN "/assets") : installed.string()) +
+                   "; set LENSLAB_ASSET_DIR to lenslab's assets/ folder, or name a scene file");
+}
+
+}  // namespace lenslab

@@ -30,16 +30,16 @@ inline constexpr const char* kTableEnd = "<!-- stability-table:end -->";
 // Below this RMS (or absolute) colour difference two figures both say "equal but for float
 // rounding" (PSNR ≥ 100 dB): an image accumulated from up to 64 float views carries rounding of
 // this order (about 170 float steps at 0.5), and which pixels round one step apart depends on the
-// SIMD path. Measured: figures above 100 dB moved by up to 27 dB between Embree's SSE2 and AVX-512
-// paths (RMS 7.7e-9 → 1.6e-7) and by up to 3.3 dB between llvmpipe's SSE and AVX2 paths
-// (RMS 5.2e-6 → 3.5e-6), all within 1e-5 of each other.
+// SIMD path. Measured (tests/stability/simd_spread.sh): figures above 100 dB moved by up to 27 dB
+// between Embree's SSE2 and AVX-512 kernels (RMS 7.7e-9 … 1.6e-7) and by up to 3.6 dB between
+// llvmpipe's code paths (105.4 … 109.0 dB, RMS 5.4e-6 … 3.5e-6), all within 1e-5 of each other.
 inline constexpr double kRoundingFloor = 1e-5;
 
 // Above the floor, figures compare within 12 % of the larger (about 1 dB of PSNR). Measured: the
 // largest move of a figure below 100 dB across the forced SIMD paths was 0.3 dB (26.4 → 26.1 dB,
 // raster vs ray cast, llvmpipe without SSE), 3.5 % in RMS; the 1 × 1 pixel's difference moved by
-// 0.4 % (0.00548 → 0.0055). 12 % is three times the larger, and still fails a figure that has
-// really changed (a regression of a dB or more).
+// 0.4 % (0.00548 … 0.0055). 12 % is about three times the larger, and still fails a figure that
+// has really changed (a dB or more).
 inline constexpr double kRelativeTolerance = 0.12;
 
 enum class BareNumbers {

@@ -67,7 +67,8 @@ Split split(const std::string& cell, BareNumbers bare) {
         continue;
       }
       if (const std::size_t n = numberLength(rest, false); n > 0 && startsWithWord(rest.substr(n), " dB")) {
-        out.figures.push_back({true, std::strtod(std::string(rest.substr(0, n)).c_str(), nullptr), std::string(rest.substr(0, n + 3))});
+        const std::string number(rest.substr(0, n));
+        out.figures.push_back({true, std::strtod(number.c_str(), nullptr), std::string(rest.substr(0, n + 3))});
         out.words += "{dB}";
         i += n + 3;
         continue;

@@ -527,8 +527,9 @@ int checkDoc(const fs::path& doc, const std::vector<stability::TableRow>& docume
     }
   }
   if (stale)
-    std::cerr << doc.string() << ": " << stale << " rows of the stability table do not match this run; regenerate the table with "
-              << "tools/update-stability-table.sh (it runs lenslab_stability --long and rewrites the table)\n";
+    std::cerr << doc.string() << ": " << stale << (stale == 1 ? " row" : " rows")
+              << " of the stability table not matching this run; regenerate the table with tools/update-stability-table.sh"
+              << " (it runs lenslab_stability --long and rewrites the table)\n";
   else
     std::cout << doc.string() << ": the stability table matches this run (" << rows.size() << " rows compared, " << skipped.size()
               << " slow rows not run; figures within the tolerances of tests/stability/TableCheck.h)\n";

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates docs/stability.md's "Numerical stability" table from lenslab_stability (every row, the slow
-# ones included), so that the table is the program's output and nothing typed by hand.
+# Regenerates docs/stability.md's numerical-stability table from lenslab_stability (every row, the
+# slow ones included), so that the table is the program's output and nothing typed by hand. The
+# ctest entry `stability` then checks the page against each run (lenslab_stability --check-doc:
+# rows by their case and bound, figures within the tolerances of tests/stability/TableCheck.h).
 # usage: tools/update-stability-table.sh [build-dir]   (default: build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,10 +16,10 @@ status=0
 python3 - "$table" <<'PY'
 import sys
 table = open(sys.argv[1]).read()
-readme = open("docs/stability.md").read()
+doc = open("docs/stability.md").read()
 begin, end = "<!-- stability-table:begin -->", "<!-- stability-table:end -->"
-a, b = readme.index(begin), readme.index(end)
-open("docs/stability.md", "w").write(readme[:a + len(begin)] + "\n" + table + readme[b:])
+a, b = doc.index(begin), doc.index(end)
+open("docs/stability.md", "w").write(doc[:a + len(begin)] + "\n" + table + doc[b:])
 PY
 echo "update-stability-table: docs/stability.md updated (lenslab_stability exit status $status)"
 exit "$status"

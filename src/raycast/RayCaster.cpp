@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -250,7 +251,14 @@ struct RayCaster::Impl {
 RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.scene = &scene;
-  m.device = rtcNewDevice(nullptr);
+  // LENSLAB_EMBREE_CONFIG is passed to Embree as its device configuration ("isa=sse2",
+  // "isa=avx", "verbose=1", ...): it forces another SIMD path for the ray caster, so a test can show
+  // that its figures do not hang on the ISA this CPU picks (docs/stability.md).
+  const char* config = std::getenv("LENSLAB_EMBREE_CONFIG");
+  m.device = rtcNewDevice(config && *config ? config : nullptr);
+  if (!m.device && config && *config)
+    throw InputError(cat("LENSLAB_EMBREE_CONFIG: Embree refused the device configuration \"", config,
+                         "\"; valid is an Embree config string such as isa=sse2, isa=sse4.2, isa=avx, isa=avx2 or verbose=1"));
   if (!m.device) throw std::runtime_error("Embree: could not create a device");
   // The Embree scene is built on first use, relative to that camera (rebase): building it here too
   // would build it twice for every render.

@@ -155,6 +155,7 @@ struct ColmapFiles {
 // COLMAP model holds; warns once for each effect a pinhole model leaves out.
 ColmapFiles colmapModel(const CaptureOptions& o, const CameraPath& path, FrameRange range) {
   const fs::path base = framesFolder(o.out);
+  const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
   std::vector<ColmapCamera> cameras;
   std::vector<ColmapImage> images;
   std::map<std::string, std::uint32_t> cameraIdOfParams;
@@ -170,7 +171,6 @@ ColmapFiles colmapModel(const CaptureOptions& o, const CameraPath& path, FrameRa
       cameras.push_back(camera);
     }
     const fs::path file = formatFramePath(o.out, frame);
-    const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
     const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
     if (name.find_first_of(" \t") != std::string::npos)
       throw InputError(cat("--colmap-out: the frame name ", name, " holds a space, which COLMAP's text format cannot hold "

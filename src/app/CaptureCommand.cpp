@@ -117,18 +117,37 @@ struct FrameCamera {
   Camera camera;
 };
 
+// The path's camera at the frame's time and the frame's size: what the frame's camera file is
+// written from (cheap: the lens is checked when the file is read back, by frameCamera).
+struct FrameKey {
+  double timeSeconds = 0.0;
+  PathKey key;
+  Camera camera;  // the key's camera with its lens effects
+  ImageSize size;
+  std::string where;
+};
+
+FrameKey frameKey(const CameraPath& path, const CaptureOptions& o, int frame) {
+  FrameKey k;
+  k.timeSeconds = path.frameTimeSeconds(frame);
+  k.key = cameraAt(path, k.timeSeconds);
+  k.where = cat(o.pathFile, ": frame ", frame, " (", k.timeSeconds, " s)");
+  validate(k.key.camera, k.where);
+  k.camera = toCamera(k.key.camera, k.where);
+  k.camera.effects = k.key.effects;
+  k.size = resolveImageSize(k.camera, o.width, o.height);
+  return k;
+}
+
 FrameCamera frameCamera(const CameraPath& path, const CaptureOptions& o, int frame) {
+  const FrameKey k = frameKey(path, o, frame);
   FrameCamera f;
-  f.timeSeconds = path.frameTimeSeconds(frame);
-  f.key = cameraAt(path, f.timeSeconds);
-  const std::string where = cat(o.pathFile, ": frame ", frame, " (", f.timeSeconds, " s)");
-  validate(f.key.camera, where);
-  Camera keyCamera = toCamera(f.key.camera, where);
-  keyCamera.effects = f.key.effects;
-  f.size = resolveImageSize(keyCamera, o.width, o.height);
+  f.timeSeconds = k.timeSeconds;
+  f.key = k.key;
+  f.size = k.size;
   f.text = toIntrinsicsCameraJson(f.key.camera, f.key.effects, f.size, !path.nearFromScene, !path.farFromScene);
   // The frame's camera as `render --camera` will read it, from the very text written.
-  f.camera = parseCameraJson(f.text, where).camera;
+  f.camera = parseCameraJson(f.text, k.where).camera;
   return f;
 }
 
@@ -161,7 +180,9 @@ ColmapFiles colmapModel(const CaptureOptions& o, const CameraPath& path, FrameRa
   std::map<std::string, std::uint32_t> cameraIdOfParams;
   std::set<std::string> warnings;
   for (int frame = range.first; frame <= range.last; ++frame) {
-    const FrameCamera f = frameCamera(path, o, frame);
+    // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
+    // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
+    const FrameKey f = frameKey(path, o, frame);
     const std::string where = cat("--colmap-out: ", o.pathFile, ": frame ", frame);
     ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.effects.distortion, 0, where);
     const std::string key = colmapCamerasText({camera});

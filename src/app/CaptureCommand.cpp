@@ -21,6 +21,7 @@
 #include "io/CameraJson.h"
 #include "io/CameraPathJson.h"
 #include "io/CameraSelection.h"
+#include "io/ColmapModel.h"
 #include "io/FrameSequence.h"
 #include "io/ImageFile.h"
 #include "io/JsonLines.h"
@@ -39,6 +40,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -63,6 +65,7 @@ struct CaptureOptions {
   bool quiet = false;
   LensOptions lens;
   std::optional<glm::vec3> background;
+  std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
 };
 
 
@@ -85,7 +88,8 @@ std::string relativeTo(const fs::path& file, const fs::path& manifest) {
 nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
 
 // K, distCoeffs, R and t of the frame's camera in OpenCV's conventions, for vision tools that read
-// the manifest rather than the camera files (distCoeffs only where the lens is all OpenCV's).
+// the manifest rather than the camera files (distCoeffs only where the lens is all OpenCV's), with
+// the image size, focus and aperture: a camera file `render --camera` reads (docs/camera-files.md).
 nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
   const OpenCvPose pose = poseOf(camera.view);
@@ -98,7 +102,130 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   j["t"] = {pose.translation.x, pose.translation.y, pose.translation.z};
   j["width"] = size.widthPx;
   j["height"] = size.heightPx;
+  j["focus_distance"] = distanceJson(camera.focusDistance());
+  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
   return j;
+}
+
+// One frame's camera: the path's key at the frame's time, the image size, the camera file's text,
+// and the camera read back from that text (near and far not yet fitted to the scene).
+struct FrameCamera {
+  double timeSeconds = 0.0;
+  PathKey key;
+  ImageSize size;
+  std::string text;
+  Camera camera;
+};
+
+// The path's camera at the frame's time and the frame's size: what the frame's camera file is
+// written from (cheap: the lens is checked when the file is read back, by frameCamera).
+struct FrameKey {
+  double timeSeconds = 0.0;
+  PathKey key;
+  Camera camera;  // the key's camera with its lens effects
+  ImageSize size;
+  std::string where;
+};
+
+FrameKey frameKey(const CameraPath& path, const CaptureOptions& o, int frame) {
+  FrameKey k;
+  k.timeSeconds = path.frameTimeSeconds(frame);
+  k.key = cameraAt(path, k.timeSeconds);
+  k.where = cat(o.pathFile, ": frame ", frame, " (", k.timeSeconds, " s)");
+  validate(k.key.camera, k.where);
+  k.camera = toCamera(k.key.camera, k.where);
+  k.camera.effects = k.key.effects;
+  k.size = resolveImageSize(k.camera, o.width, o.height);
+  return k;
+}
+
+FrameCamera frameCamera(const CameraPath& path, const CaptureOptions& o, int frame) {
+  const FrameKey k = frameKey(path, o, frame);
+  FrameCamera f;
+  f.timeSeconds = k.timeSeconds;
+  f.key = k.key;
+  f.size = k.size;
+  f.text = toIntrinsicsCameraJson(f.key.camera, f.key.effects, f.size, !path.nearFromScene, !path.farFromScene);
+  // The frame's camera as `render --camera` will read it, from the very text written.
+  f.camera = parseCameraJson(f.text, k.where).camera;
+  return f;
+}
+
+// The folder COLMAP's NAMEs are relative to: --out's leading folders up to the first that holds
+// the frame number (give it to COLMAP as --image_path).
+fs::path framesFolder(const std::string& pattern) {
+  fs::path folder;
+  for (const fs::path& part : fs::path(pattern).parent_path()) {
+    if (part.string().find('%') != std::string::npos) break;
+    folder /= part;
+  }
+  return folder;
+}
+
+// The files of a COLMAP text model: cameras.txt, images.txt, points3D.txt.
+struct ColmapFiles {
+  std::string cameras, images, points3D;
+};
+
+// The cameras of every frame of `range` as a COLMAP text model: whichever frames this shard
+// renders, the model is the whole range's, a pure function of the path, the range and the size
+// options, so every shard writes the same bytes. Identical intrinsics share one CAMERA_ID;
+// IMAGE_ID is the frame number + 1 (stable whatever the range). Throws InputError for a lens no
+// COLMAP model holds; warns once for each effect a pinhole model leaves out.
+ColmapFiles colmapModel(const CaptureOptions& o, const CameraPath& path, FrameRange range) {
+  const fs::path base = framesFolder(o.out);
+  const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
+  std::vector<ColmapCamera> cameras;
+  std::vector<ColmapImage> images;
+  std::map<std::string, std::uint32_t> cameraIdOfParams;
+  std::set<std::string> warnings;
+  for (int frame = range.first; frame <= range.last; ++frame) {
+    // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
+    // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
+    const FrameKey f = frameKey(path, o, frame);
+    const std::string where = cat("--colmap-out: ", o.pathFile, ": frame ", frame);
+    ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.effects.distortion, 0, where);
+    const std::string key = colmapCamerasText({camera});
+    const auto [it, added] = cameraIdOfParams.emplace(key, static_cast<std::uint32_t>(cameras.size() + 1));
+    if (added) {
+      camera.id = it->second;
+      cameras.push_back(camera);
+    }
+    const fs::path file = formatFramePath(o.out, frame);
+    const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
+    if (name.find_first_of(" \t") != std::string::npos)
+      throw InputError(cat("--colmap-out: the frame name ", name, " holds a space, which COLMAP's text format cannot hold "
+                           "(it reads NAME up to the first); give an --out without spaces"));
+    images.push_back(colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, it->second, name));
+    // What a pinhole model cannot hold. Blur (depth of field, axial colour, field curvature) is
+    // centred where the pinhole at the lens centre projects, so the geometry stays right.
+    const LensEffects& e = f.camera.effects;
+    if (!f.camera.isPinhole())
+      warnings.insert("the depth of field (aperture and focus) is not in the model: COLMAP's cameras are pinholes "
+                      "(each blur is centred where the model projects)");
+    if (e.chromatic.hasAxial())
+      warnings.insert("the axial colour is not in the model (it blurs, centred where the model projects)");
+    if (!e.fieldCurvature.isZero())
+      warnings.insert("the field curvature is not in the model (it blurs, centred where the model projects)");
+    if (e.chromatic.hasLateral())
+      warnings.insert("the lateral colour is not in the model: it holds green's geometry, while red's and blue's "
+                      "images are magnified about the principal point");
+  }
+  if (!o.quiet)
+    for (const std::string& w : warnings) std::cerr << "lenslab: warning: --colmap-out: " << w << "\n";
+  return {colmapCamerasText(cameras), colmapImagesText(images), colmapPoints3DText()};
+}
+
+// Each file is written whole under a temporary name of its own (io/AtomicFile.h: the process id
+// and a random token, so shards on other machines sharing the folder never collide) and renamed
+// into place, so shards writing the same model at once leave one of their identical versions,
+// never a mixture or a partial file.
+void writeColmapModel(const fs::path& dir, const ColmapFiles& files) {
+  OutputSet outputs;
+  outputs.add(dir / "cameras.txt", files.cameras);
+  outputs.add(dir / "images.txt", files.images);
+  outputs.add(dir / "points3D.txt", files.points3D);
+  outputs.commit();
 }
 
 int runCapture(const CaptureOptions& o) {
@@ -128,6 +255,16 @@ int runCapture(const CaptureOptions& o) {
   if (depthAov && firstImage.extension() != ".exr")
     throw InputError(cat("--aov depth: ", o.out, ": depth goes in an EXR's Z channel; give an --out ending in .exr"));
   checkOutputPath(manifest, OutputKind::Any, "--manifest");
+  if (!o.colmapOut.empty()) {
+    std::error_code error;
+    fs::create_directories(o.colmapOut, error);
+    if (error) throw InputError(cat("--colmap-out ", o.colmapOut, ": cannot make the folder: ", error.message()));
+    checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
+  }
+  // Every frame's camera checked for what COLMAP can hold before any work; written once the
+  // scene has loaded, before the first frame.
+  const std::optional<ColmapFiles> colmapFiles =
+      o.colmapOut.empty() ? std::nullopt : std::optional<ColmapFiles>(colmapModel(o, path, range));
 
   const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "camera.json");
   Scene scene = loadGltf(scenePath);
@@ -139,6 +276,8 @@ int runCapture(const CaptureOptions& o) {
   Renderer renderer(scene);
   std::unique_ptr<RayCaster> caster;  // the depth AOV; rebuilt each frame when the scene moves
   const RenderTargetLimits limits = queryRenderTargetLimits();
+
+  if (colmapFiles) writeColmapModel(o.colmapOut, *colmapFiles);
 
   const bool terminal = !o.quiet && isTerminal(stderr);
   std::set<std::string> warned;
@@ -154,18 +293,13 @@ int runCapture(const CaptureOptions& o) {
       continue;
     }
     const auto frameStart = std::chrono::steady_clock::now();
-    const double time = path.frameTimeSeconds(frame);
+    const FrameCamera f = frameCamera(path, o, frame);
+    const double time = f.timeSeconds;
     if (animated) poseScene(scene, time);  // glTF node animations at the frame's time
-    const PathKey key = cameraAt(path, time);
-    const std::string where = cat(o.pathFile, ": frame ", frame, " (", time, " s)");
-    validate(key.camera, where);
-    Camera keyCamera = toCamera(key.camera, where);
-    keyCamera.effects = key.effects;
-    const ImageSize size = resolveImageSize(keyCamera, o.width, o.height);
-    const std::string cameraText =
-        toIntrinsicsCameraJson(key.camera, key.effects, size, !path.nearFromScene, !path.farFromScene);
-    // The frame's camera as `render --camera` will read it, from the very text written.
-    const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
+    const PathKey& key = f.key;
+    const ImageSize size = f.size;
+    const std::string& cameraText = f.text;
+    const Camera camera = withDepthRangeFitted(f.camera, scene.bounds);
 
     LensOptions lens = o.lens;
     lens.seed = frameSeed(o.lens.seed, frame);
@@ -271,6 +405,11 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       "(the manifest's seed; render --seed with it reproduces the frame)");
   addTargetOption(*cmd, o->lens);
   addBackgroundOption(*cmd, o->background);
+  cmd->add_option("--colmap-out", o->colmapOut,
+                  "also write the cameras of every frame of --frames as a COLMAP text model in DIR (cameras.txt, "
+                  "images.txt with the frames' names relative to --out's folder, an empty points3D.txt); every shard "
+                  "writes the same files (docs/capture.md)")
+      ->type_name("DIR");
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success");
   return [cmd, o]() { return cmd->parsed() ? runCapture(*o) : -1; };
 }

@@ -1,6 +1,7 @@
 // lenslab render: one image of a scene through the lecture's camera, rasterized headless.
 // lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
 #include "app/CliOptions.h"
+#include "app/ColmapOptions.h"
 #include "app/FrameRender.h"
 #include "app/Commands.h"
 #include "app/Stats.h"
@@ -53,6 +54,7 @@ struct RenderOptions {
   std::optional<glm::vec3> background;
   int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
+  ColmapChoice colmap;                // --colmap DIR --image NAME: the base camera
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -155,6 +157,9 @@ int runRender(const RenderOptions& o) {
   const PlanOptions planOptions = toPlanOptions(o.lens);
 
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
+  // A COLMAP image's camera replaces the camera file or the scene's camera (read before the scene,
+  // so that a bad model is refused at once).
+  const std::optional<SelectedCamera> colmapCamera = selectColmapCamera(o.colmap, o.cameraFile);
 
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
@@ -167,7 +172,8 @@ int runRender(const RenderOptions& o) {
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
   // The camera as selected and refocused; rendered with its open near/far fitted to the scene.
-  SelectedCamera selected = applyLensOptions(selectCamera(scene, cameraPath, requestedAspect), o.lens);
+  SelectedCamera selected =
+      applyLensOptions(colmapCamera ? *colmapCamera : selectCamera(scene, cameraPath, requestedAspect), o.lens);
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
   const Camera& camera = selected.camera;
   const ImageSize size = resolveImageSize(camera, o.width, o.height);
@@ -247,6 +253,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->check(CLI::Range(1, 1 << 20))
         ->capture_default_str();
   }
+  addColmapOptions(*cmd, options->colmap);
   addLensOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addBackgroundOption(*cmd, options->background);

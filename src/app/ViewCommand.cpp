@@ -1,5 +1,6 @@
 // lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
 #include "app/CliOptions.h"
+#include "app/ColmapOptions.h"
 #include "app/Commands.h"
 #include "io/OutputPath.h"
 #include "view/ViewApp.h"
@@ -11,6 +12,7 @@ namespace lenslab {
 
 std::function<int()> addViewCommand(CLI::App& app) {
   auto o = std::make_shared<view::ViewOptions>();
+  auto colmap = std::make_shared<ColmapChoice>();
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window: the image converging, every camera and lens parameter, click to focus, the lecture's diagram");
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
@@ -39,10 +41,12 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_option("--frame-budget-ms", o->frameBudgetMs, "accumulation work per frame, at least one sample")
       ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
+  addColmapOptions(*cmd, *colmap);
   cmd->add_option("--save-camera", o->saveCamera, "scripted: write the final camera as JSON (lecture form), as the panel's Save camera does");
   cmd->add_option("--stats", o->statsFile, "scripted: write frames, samples, ms per sample and focus distance as JSON");
-  return [cmd, o]() {
+  return [cmd, o, colmap]() {
     if (!cmd->parsed()) return -1;
+    o->baseCamera = selectColmapCamera(*colmap, o->cameraFile);
     // Each file the scripted run writes is checked before the window opens (io/OutputPath.h).
     if (!o->screenshot.empty()) checkOutputPath(o->screenshot, OutputKind::Image, "--screenshot");
     if (!o->saveCamera.empty()) checkOutputPath(o->saveCamera, OutputKind::Any, "--save-camera");

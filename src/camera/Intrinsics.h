@@ -6,7 +6,9 @@
 // so a window w wide spread over W pixels makes fx = d·W / w. For a thin lens focused at z_f that d
 // is the image distance z_i scaled onto the plane of focus, which is what a calibration measures.
 // The inverse is the OpenCV-intrinsics camera form (io/CameraJson.h).
+#include "camera/Camera.h"
 #include "camera/ImageSize.h"
+#include "camera/Rotation.h"
 #include "camera/ViewSpec.h"
 
 #include <array>
@@ -26,9 +28,35 @@ OpenCvIntrinsics intrinsicsOf(const ViewSpec& view, ImageSize size);
 // right (u), y down (−v) and z forward (−n, the optical axis), its origin the PRP. With K from
 // intrinsicsOf, (x/z·fx + cx, y/z·fy + cy) is OpenCV's pixel of X: lenslab's pixel minus ½.
 struct OpenCvPose {
-  std::array<glm::dvec3, 3> rows;  // R, row by row
+  RotationRows rows;               // R, row by row
   glm::dvec3 translation{0.0};     // t
 };
 OpenCvPose poseOf(const ViewSpec& view);
+
+// Where a pinhole stands and looks, in the lecture's terms.
+struct PinholePlacement {
+  glm::dvec3 eye{0.0};               // the PRP (the pinhole), world
+  glm::dvec3 vpn{0.0, 0.0, 1.0};     // toward the viewer: the camera looks along −VPN
+  glm::dvec3 vup{0.0, 1.0, 0.0};     // up in the image
+};
+
+// The placement of an OpenCV pose: the PRP is the camera centre −Rᵀt; OpenCV's z looks forward, so
+// VPN = −(R's third row); its y runs down the image, so VUP = −(R's second row). R must be a
+// rotation (det +1): its first row, x to the right, is then VUP × VPN, which the view basis rebuilds.
+PinholePlacement placementOf(const OpenCvPose& pose);
+
+// The viewing description of a pinhole with intrinsics `k` at `placement`, its view plane
+// `viewPlaneDistance` in front of the PRP: VRP on the optical axis there, PRP (0, 0, d), and the
+// window the image's border seen from the PRP, so that pixel (x, y) of OpenCV's convention is
+// window point (d·(x − cx)/fx, −d·(y − cy)/fy). Near and far are left for the caller to set.
+ViewSpec viewSpecOf(const OpenCvIntrinsics& k, const PinholePlacement& placement, double viewPlaneDistance);
+
+// A pinhole camera from OpenCV's K, distortion and pose alone, with no focus or aperture: a COLMAP
+// image's camera. Its view plane is at unit distance (a pinhole images every depth alike, and
+// `--focus-distance` moves it like any camera's), near is 1/1000 of that and near and far are
+// fitted to the scene (camera/DepthRange.h), and the calibrated size is k's. `source` names it
+// in messages. Throws InputError naming `source` when the description is degenerate.
+Camera pinholeFromOpenCv(const OpenCvIntrinsics& k, const Distortion& distortion, const OpenCvPose& pose,
+                         const std::string& source);
 
 }  // namespace lenslab

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <random>
 #include <system_error>
 
 #include <fcntl.h>
@@ -19,6 +20,16 @@ namespace {
 std::atomic<unsigned> counter{0};
 
 fs::path folderOf(const fs::path& file) { return file.has_parent_path() ? file.parent_path() : fs::path("."); }
+
+// The temporary file's name: ".NAME.tmp-PID-TOKEN-N.EXT". The process id alone is not unique
+// where processes on several machines write into one shared folder (shards of a cluster job, each
+// container's process often with the same small pid) and may write the same target (capture
+// --colmap-out): a random token drawn once per process keeps their temporary files apart.
+fs::path temporaryFor(const fs::path& target) {
+  static const unsigned token = std::random_device{}();
+  return folderOf(target) / cat(".", target.stem().string(), ".tmp-", ::getpid(), "-", std::hex, token, std::dec, "-",
+                                counter++, target.extension().string());
+}
 
 InputError cannotWrite(const fs::path& target, int error) {
   return InputError(cat(target.string(), ": cannot write it: ", std::system_category().message(error)));
@@ -77,8 +88,7 @@ void OutputSet::createFolders(const fs::path& folder) {
 }
 
 void OutputSet::add(const fs::path& target, std::string_view bytes) {
-  entries_.push_back({target, folderOf(target) / cat(".", target.stem().string(), ".tmp-", ::getpid(), "-", counter++,
-                                                     target.extension().string())});
+  entries_.push_back({target, temporaryFor(target)});
   const fs::path& temporary = entries_.back().temporary;
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) {
@@ -101,9 +111,7 @@ void OutputSet::add(const fs::path& target, std::string_view bytes) {
 }
 
 fs::path OutputSet::addStreamed(const fs::path& target) {
-  entries_.push_back({target, folderOf(target) / cat(".", target.stem().string(), ".tmp-", ::getpid(), "-", counter++,
-                                                     target.extension().string()),
-                      true});
+  entries_.push_back({target, temporaryFor(target), true});
   return entries_.back().temporary;
 }
 

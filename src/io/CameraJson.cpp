@@ -2,12 +2,14 @@
 
 #include "camera/Intrinsics.h"
 #include "camera/LensMap.h"
+#include "camera/Rotation.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "io/TextFile.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +17,7 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace lenslab {
 namespace {
@@ -29,8 +32,12 @@ const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "
                                             "aperture_radius", "focus_distance"};
 const std::set<std::string> kPhysicalKeys = {"eye", "target", "up", "focal_length_mm", "sensor_mm",
                                              "f_number", "focus_distance", "near", "far"};
-const std::set<std::string> kIntrinsicsFormKeys = {"eye", "target", "up", "intrinsics", "focus_distance",
-                                                   "aperture_radius", "near", "far"};
+// The OpenCV form: intrinsics as "intrinsics" or "K" (+ "width", "height"), the pose as eye/target/up
+// or R/t, OpenCV's distCoeffs as "dist" (or "distortion").
+const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", "intrinsics", "K", "width", "height",
+                                               "dist", "focus_distance", "aperture_radius", "near", "far"};
+// Keys that only the OpenCV form takes: any of them selects it.
+const std::set<std::string> kOpenCvOnlyKeys = {"intrinsics", "K", "R", "t", "dist"};
 // Lens effects and the image size, in any form.
 const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size"};
 const std::set<std::string> kDistortionKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
@@ -83,6 +90,23 @@ class Reader {
       if (!std::isfinite(out[i])) fail(key, "must hold finite numbers");
     }
     return out;
+  }
+
+  // A 3×3 matrix given row by row, [[a, b, c], [d, e, f], [g, h, i]], of finite numbers.
+  RotationRows matrix3(const std::string& key, const std::string& shape) const {
+    const json& v = object_.at(key);
+    const auto bad = [&] { fail(key, cat("must be a 3×3 matrix given row by row, ", shape, ", of finite numbers, not ", v.dump())); };
+    if (!v.is_array() || v.size() != 3) bad();
+    RotationRows m;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!v[i].is_array() || v[i].size() != 3) bad();
+      for (std::size_t c = 0; c < 3; ++c) {
+        if (!v[i][c].is_number()) bad();
+        m[i][static_cast<int>(c)] = v[i][c].get<double>();
+        if (!std::isfinite(m[i][static_cast<int>(c)])) bad();
+      }
+    }
+    return m;
   }
 
   std::string string(const std::string& key) const {
@@ -187,46 +211,144 @@ CameraFile parsePhysical(const Reader& r) {
   return file;
 }
 
-CameraFile parseIntrinsics(const Reader& r) {
-  for (const char* key : {"eye", "target", "intrinsics"}) r.require(key, "OpenCV intrinsics");
-  const glm::dvec3 eye = r.vector<3>("eye");
-  const glm::dvec3 target = r.vector<3>("target");
-  const glm::dvec3 up = r.has("up") ? r.vector<3>("up") : glm::dvec3(0.0, 1.0, 0.0);
-  const Reader k = r.object("intrinsics", kIntrinsicsKeys);
-  for (const char* key : {"fx", "fy", "cx", "cy", "width", "height"}) k.require(key, "intrinsics");
-  const double fx = k.number("fx"), fy = k.number("fy"), cx = k.number("cx"), cy = k.number("cy");
-  if (!(fx > 0.0)) k.fail("fx", cat("is ", fx, "; give the focal length in pixels (> 0)"));
-  if (!(fy > 0.0)) k.fail("fy", cat("is ", fy, "; give the focal length in pixels (> 0)"));
-  const int width = k.integer("width"), height = k.integer("height");
-  if (width < 1 || width > kMaxImageSidePx) k.fail("width", cat("is ", width, "; use 1 to ", kMaxImageSidePx, " pixels"));
-  if (height < 1 || height > kMaxImageSidePx) k.fail("height", cat("is ", height, "; use 1 to ", kMaxImageSidePx, " pixels"));
-  const double toTarget = glm::length(target - eye);
-  if (!(toTarget > 0.0)) r.fail("target", "must differ from \"eye\"");
-  const double focus = r.has("focus_distance") ? r.distance("focus_distance") : toTarget;
-  if (!(focus > 0.0)) r.fail("focus_distance", cat("is ", focus, "; give a distance > 0 or \"infinity\""));
+// fx, fy > 0 and a size of 1 to kMaxImageSidePx a side; `reader` and the keys name them in messages.
+void checkIntrinsics(const OpenCvIntrinsics& k, const Reader& reader, const std::string& fxKey, const std::string& fyKey,
+                     const std::string& widthKey, const std::string& heightKey) {
+  if (!(k.fx > 0.0)) reader.fail(fxKey, cat("is ", k.fx, "; give the focal length in pixels (> 0)"));
+  if (!(k.fy > 0.0)) reader.fail(fyKey, cat("is ", k.fy, "; give the focal length in pixels (> 0)"));
+  if (k.widthPx < 1 || k.widthPx > kMaxImageSidePx)
+    reader.fail(widthKey, cat("is ", k.widthPx, "; use 1 to ", kMaxImageSidePx, " pixels"));
+  if (k.heightPx < 1 || k.heightPx > kMaxImageSidePx)
+    reader.fail(heightKey, cat("is ", k.heightPx, "; use 1 to ", kMaxImageSidePx, " pixels"));
+}
 
-  // The view plane is the plane of focus (at |target − eye| when focus is at infinity), its VRP the
-  // foot of the PRP, so the principal point is (0, 0) of the window. OpenCV puts pixel centres on
-  // integers with (0, 0) the centre of the top-left pixel; lenslab puts them at i + 0.5 with (0, 0)
-  // the top-left corner: lenslab x = OpenCV x + 0.5. OpenCV's y runs down, the window's v up.
-  // As for the physical form: a focus beyond kMaxViewPlaneMove × |target − eye| is held as 1/z_f.
-  const double d = viewPlaneDistanceFor(focus, toTarget);
-  ViewSpec spec;
-  spec.vpn = glm::normalize(eye - target);
-  spec.vup = up;
-  spec.vrp = eye - d * spec.vpn;
-  spec.prp = {0.0, 0.0, d};
-  spec.window = {d * (-0.5 - cx) / fx, -d * (height - 0.5 - cy) / fy, d * (width - 0.5 - cx) / fx, d * (0.5 + cy) / fy};
-  spec.nearDistance = r.has("near") ? r.distance("near") : 0.05;
+// "intrinsics": {"fx", "fy", "cx", "cy", "width", "height"}.
+OpenCvIntrinsics intrinsicsFromObject(const Reader& r) {
+  if (r.has("width") || r.has("height"))
+    r.fail(r.has("width") ? "width" : "height", "goes inside \"intrinsics\" in this form (beside a \"K\" matrix it stands alone)");
+  const Reader o = r.object("intrinsics", kIntrinsicsKeys);
+  for (const char* key : {"fx", "fy", "cx", "cy", "width", "height"}) o.require(key, "intrinsics");
+  OpenCvIntrinsics k;
+  k.fx = o.number("fx"), k.fy = o.number("fy"), k.cx = o.number("cx"), k.cy = o.number("cy");
+  k.widthPx = o.integer("width"), k.heightPx = o.integer("height");
+  checkIntrinsics(k, o, "fx", "fy", "width", "height");
+  return k;
+}
+
+// "K": [[fx, 0, cx], [0, fy, cy], [0, 0, 1]], with "width" and "height" (or "image_size") beside it.
+// The zeros must be zeros: K[0][1] is the skew, which a window of rectangular pixels cannot hold.
+OpenCvIntrinsics intrinsicsFromMatrix(const Reader& r) {
+  const RotationRows m = r.matrix3("K", "[[fx, 0, cx], [0, fy, cy], [0, 0, 1]]");
+  if (m[0].y != 0.0)
+    r.fail("K", cat("has skew K[0][1] = ", m[0].y, "; lenslab's window has rectangular pixels and cannot hold skew: give 0 "
+                    "(OpenCV's calibrateCamera never estimates it)"));
+  if (m[1].x != 0.0) r.fail("K", cat("has K[1][0] = ", m[1].x, "; a camera matrix has 0 there"));
+  if (m[2] != glm::dvec3(0.0, 0.0, 1.0))
+    r.fail("K", cat("has the last row [", m[2].x, ", ", m[2].y, ", ", m[2].z, "]; a camera matrix has [0, 0, 1] there"));
+  OpenCvIntrinsics k;
+  k.fx = m[0].x, k.fy = m[1].y, k.cx = m[0].z, k.cy = m[1].z;
+  const bool hasWidthHeight = r.has("width") || r.has("height");
+  if (hasWidthHeight && r.has("image_size")) r.fail("image_size", "and \"width\"/\"height\" both give the image size; give one");
+  if (hasWidthHeight) {
+    r.require("width", "OpenCV \"K\"");
+    r.require("height", "OpenCV \"K\"");
+    k.widthPx = r.integer("width"), k.heightPx = r.integer("height");
+    checkIntrinsics(k, r, "K", "K", "width", "height");
+  } else if (r.has("image_size")) {
+    const glm::dvec2 size = r.vector<2>("image_size");
+    if (size != glm::floor(size) || size.x < 1 || size.y < 1 || size.x > kMaxImageSidePx || size.y > kMaxImageSidePx)
+      r.fail("image_size", cat("must be [width, height] in whole pixels from 1 to ", kMaxImageSidePx));
+    k.widthPx = static_cast<int>(size.x), k.heightPx = static_cast<int>(size.y);
+    checkIntrinsics(k, r, "K", "K", "image_size", "image_size");
+  } else {
+    throw InputError(cat(r.where(), ": \"K\" needs the image size it was calibrated for: give \"width\" and \"height\" "
+                                    "(pixels), or \"image_size\": [width, height]"));
+  }
+  return k;
+}
+
+// R must be a rotation to this tolerance on every entry of R·Rᵀ − I: a matrix printed to 7
+// significant digits (float precision, or OpenCV's and numpy's short formats) is off by about
+// 1e-7 and passes; the view basis then rebuilds an exact rotation from its last two rows, moving
+// the optical axis by at most ~1e-6 rad (0.001 px at a focal length of 1000 px). A matrix scaled,
+// sheared or typed with four digits is refused rather than silently straightened.
+constexpr double kRotationTolerance = 1e-6;
+
+OpenCvPose poseFromRt(const Reader& r) {
+  r.require("R", "OpenCV pose (R, t)");
+  r.require("t", "OpenCV pose (R, t)");
+  OpenCvPose pose;
+  pose.rows = r.matrix3("R", "[[r00, r01, r02], [r10, r11, r12], [r20, r21, r22]]");
+  pose.translation = r.vector<3>("t");
+  const RotationCheck check = checkRotation(pose.rows);
+  if (!(check.orthonormalityError <= kRotationTolerance))
+    r.fail("R", cat("is not a rotation: R·Rᵀ differs from the identity by ", check.orthonormalityError, " (at most ",
+                    kRotationTolerance, " is accepted); give R with at least 7 significant digits"));
+  if (!(check.determinant > 0.0))
+    r.fail("R", cat("is a reflection (det R = ", check.determinant, "), not a rotation: OpenCV's camera frame is "
+                    "right-handed (x right, y down, z forward); give det R = +1"));
+  return pose;
+}
+
+// The OpenCV form: intrinsics as "intrinsics" {fx, fy, cx, cy, width, height} or "K"; the pose as
+// "eye", "target" (and "up"), or OpenCV's "R" and "t" (a world point X is at R·X + t in the camera
+// frame: x right, y down, z forward).
+CameraFile parseOpenCv(const Reader& r) {
+  if (r.has("intrinsics") && r.has("K")) r.fail("K", "and \"intrinsics\" both give the intrinsics; give one");
+  if (!r.has("intrinsics") && !r.has("K"))
+    throw InputError(cat(r.where(), ": an OpenCV camera needs its intrinsics: \"K\" ([[fx, 0, cx], [0, fy, cy], [0, 0, 1]] "
+                                    "with \"width\" and \"height\") or \"intrinsics\" {fx, fy, cx, cy, width, height}"));
+  const bool rt = r.has("R") || r.has("t");
+  const bool look = r.has("eye") || r.has("target") || r.has("up");
+  if (rt && look)
+    r.fail(r.has("R") ? "R" : "t", "and \"eye\"/\"target\"/\"up\" both give the pose; give R and t, or eye and target");
+  if (!rt && !look)
+    throw InputError(cat(r.where(), ": an OpenCV camera needs its pose: \"R\" and \"t\" (X_cam = R·X_world + t), or "
+                                    "\"eye\" and \"target\""));
+  const OpenCvIntrinsics k = r.has("K") ? intrinsicsFromMatrix(r) : intrinsicsFromObject(r);
+
+  PinholePlacement placement;
+  double focus = 0.0, d = 0.0, defaultNear = 0.0;
+  if (look) {
+    r.require("eye", "OpenCV intrinsics");
+    r.require("target", "OpenCV intrinsics");
+    placement.eye = r.vector<3>("eye");
+    const glm::dvec3 target = r.vector<3>("target");
+    placement.vup = r.has("up") ? r.vector<3>("up") : glm::dvec3(0.0, 1.0, 0.0);
+    const double toTarget = glm::length(target - placement.eye);
+    if (!(toTarget > 0.0)) r.fail("target", "must differ from \"eye\"");
+    placement.vpn = placement.eye - target;  // viewSpecOf normalises it
+    focus = r.has("focus_distance") ? r.distance("focus_distance") : toTarget;
+    if (!(focus > 0.0)) r.fail("focus_distance", cat("is ", focus, "; give a distance > 0 or \"infinity\""));
+    // As for the physical form: the view plane is the plane of focus, unless focus lies beyond
+    // kMaxViewPlaneMove × |target − eye| (or at infinity): then it is held as 1/z_f.
+    d = viewPlaneDistanceFor(focus, toTarget);
+    defaultNear = 0.05;
+  } else {
+    placement = placementOf(poseFromRt(r));
+    // No target to focus on: a pinhole's view plane at unit distance, unless focus_distance says
+    // where (a plane of focus further than kMaxViewPlaneMove units is held as 1/z_f).
+    if (r.has("focus_distance")) {
+      focus = r.distance("focus_distance");
+      if (!(focus > 0.0)) r.fail("focus_distance", cat("is ", focus, "; give a distance > 0 or \"infinity\""));
+    } else if (apertureRadiusOf(r) > 0.0) {
+      r.fail("aperture_radius", "needs \"focus_distance\" beside \"R\" and \"t\" (there is no target to focus on)");
+    } else {
+      focus = 1.0;
+    }
+    d = viewPlaneDistanceFor(focus, 1.0);
+    defaultNear = d * 1e-3;  // the lecture form's PRP.n / 1000: this camera's scale is not known
+  }
+  ViewSpec spec = viewSpecOf(k, placement, d);
+  spec.nearDistance = r.has("near") ? r.distance("near") : defaultNear;
   if (r.has("far")) spec.farDistance = r.distance("far");
   validate(spec, r.where());
-  const double aperture = apertureRadiusOf(r);
   CameraFile file;
-  file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
+  file.camera = cameraFocusedOnViewPlane(spec, apertureRadiusOf(r), r.where());
   if (d != focus) file.camera.inverseFocusOffPlane = 1.0 / focus;
   file.camera.nearFromScene = !r.has("near");
   file.camera.farFromScene = !r.has("far");
-  file.camera.calibratedSize = ImageSize{width, height};
+  file.camera.calibratedSize = ImageSize{k.widthPx, k.heightPx};
   return file;
 }
 
@@ -235,6 +357,30 @@ double inverseOf(const Reader& r, const std::string& key) {
   const double distance = r.distance(key);
   if (!(distance > 0.0)) r.fail(key, cat("is ", distance, "; give a distance > 0 or \"infinity\""));
   return std::isinf(distance) ? 0.0 : 1.0 / distance;
+}
+
+// OpenCV's distCoeffs as a calibration prints them: [k1, k2, p1, p2] or [k1, k2, p1, p2, k3]; the
+// 8-, 12- and 14-element forms too when what lenslab's model lacks is zero (k4, k5, k6 of the rational
+// model, s1..s4 of the thin prism, τx, τy of a tilted sensor).
+Distortion distCoeffsOf(const Reader& r, const std::string& key) {
+  const json& raw = r.raw(key);
+  const std::size_t n = raw.size();
+  if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
+    r.fail(key, cat("as an array is OpenCV's distCoeffs [k1, k2, p1, p2] or [k1, k2, p1, p2, k3] (or the 8, 12 or 14 "
+                    "of the fuller models), not ", raw.dump()));
+  std::vector<double> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!raw[i].is_number() || !std::isfinite(raw[i].get<double>())) r.fail(key, "must hold finite numbers");
+    c[i] = raw[i].get<double>();
+  }
+  static const char* const kBeyond[] = {"k4", "k5", "k6", "s1", "s2", "s3", "s4", "tauX", "tauY"};
+  for (std::size_t i = 5; i < n; ++i)
+    if (c[i] != 0.0)
+      r.fail(key, cat("has ", kBeyond[i - 5], " = ", c[i], " (element ", i, "); lenslab's lens model is OpenCV's k1, k2, p1, "
+                      "p2, k3: the rational, thin-prism and tilt terms must be 0"));
+  Distortion d;
+  d.k1 = c[0], d.k2 = c[1], d.p1 = c[2], d.p2 = c[3], d.k3 = n > 4 ? c[4] : 0.0;
+  return d;
 }
 
 // distortion, chromatic, field_curvature and image_size, on a camera already built.
@@ -247,19 +393,16 @@ void parseCommon(const Reader& r, CameraFile& file) {
       r.fail("image_size", cat("must be [width, height] in whole pixels from 1 to ", kMaxImageSidePx));
     camera.calibratedSize = ImageSize{static_cast<int>(size.x), static_cast<int>(size.y)};
   }
+  if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
+  if (r.has("dist")) {
+    if (!r.raw("dist").is_array()) r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3], not ", r.raw("dist").dump()));
+    e.distortion = distCoeffsOf(r, "dist");
+  }
   if (r.has("distortion")) {
     Distortion& d = e.distortion;
     const json& raw = r.raw("distortion");
     if (raw.is_array()) {
-      // OpenCV's distCoeffs as printed by a calibration: [k1, k2, p1, p2] or [k1, k2, p1, p2, k3].
-      if (raw.size() != 4 && raw.size() != 5)
-        r.fail("distortion", cat("as an array is OpenCV's [k1, k2, p1, p2] or [k1, k2, p1, p2, k3], not ", raw.dump()));
-      double c[5] = {0, 0, 0, 0, 0};
-      for (std::size_t i = 0; i < raw.size(); ++i) {
-        if (!raw[i].is_number() || !std::isfinite(raw[i].get<double>())) r.fail("distortion", "must hold finite numbers");
-        c[i] = raw[i].get<double>();
-      }
-      d.k1 = c[0], d.k2 = c[1], d.p1 = c[2], d.p2 = c[3], d.k3 = c[4];
+      d = distCoeffsOf(r, "distortion");
     } else {
       const Reader o = r.object("distortion", kDistortionKeys);
       const auto get = [&](const char* key, double& out) { if (o.has(key)) out = o.number(key); };
@@ -356,12 +499,14 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
   if (!root.is_object()) throw InputError(cat(where, ": a camera file must hold a JSON object, not ", root.type_name()));
 
   const Reader reader(root, where);
-  if (root.contains("intrinsics")) {
+  const bool openCv = std::any_of(kOpenCvOnlyKeys.begin(), kOpenCvOnlyKeys.end(),
+                                  [&](const std::string& key) { return root.contains(key); });
+  if (openCv) {
     for (const auto& item : root.items())
-      if (kIntrinsicsFormKeys.count(item.key()) == 0 && kCommonKeys.count(item.key()) == 0)
-        throw InputError(cat(where, ": unknown key \"", item.key(), "\" in an OpenCV-intrinsics camera; it takes ",
-                             joined(kIntrinsicsFormKeys), " and ", joined(kCommonKeys)));
-    CameraFile file = parseIntrinsics(reader);
+      if (kOpenCvFormKeys.count(item.key()) == 0 && kCommonKeys.count(item.key()) == 0)
+        throw InputError(cat(where, ": unknown key \"", item.key(), "\" in an OpenCV camera; it takes ",
+                             joined(kOpenCvFormKeys), " and ", joined(kCommonKeys)));
+    CameraFile file = parseOpenCv(reader);
     parseCommon(reader, file);
     return file;
   }
@@ -373,7 +518,8 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
     const bool inPhysical = kPhysicalKeys.count(key) > 0;
     if (!inLecture && !inPhysical)
       throw InputError(cat(where, ": unknown key \"", key, "\"; the lecture form takes ", joined(kLectureKeys),
-                           "; the physical form takes ", joined(kPhysicalKeys), "; any form takes ",
+                           "; the physical form takes ", joined(kPhysicalKeys), "; the OpenCV form (chosen by ",
+                           joined(kOpenCvOnlyKeys), ") takes ", joined(kOpenCvFormKeys), "; any form takes ",
                            joined(kCommonKeys)));
     if (inLecture && !inPhysical) lecture = true;
     if (inPhysical && !inLecture) physical = true;

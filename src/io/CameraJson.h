@@ -21,6 +21,15 @@
 //    "f_number": 2.8,                               default: none (a pinhole)
 //    "focus_distance": d | "infinity",              default |target − eye|
 //    "near": 0.05, "far": d | "infinity"}           defaults
+// OpenCV form — a calibrated pinhole (chosen by any of intrinsics, K, R, t, dist):
+//   intrinsics: {"intrinsics": {"fx", "fy", "cx", "cy", "width", "height"}}, or
+//               {"K": [[fx, 0, cx], [0, fy, cy], [0, 0, 1]], "width": W, "height": H} (or
+//               "image_size"); pixels in OpenCV's convention (pixel centres on integers)
+//   pose:       {"eye", "target", "up"} as in the physical form, or OpenCV's {"R": 3×3 row by row,
+//               "t": [x, y, z]}: X_cam = R·X_world + t, x right, y down, z forward
+//   "dist": [k1, k2, p1, p2(, k3)] (or "distortion"), "focus_distance", "aperture_radius",
+//   "near", "far". With R and t and no focus_distance the camera is a pinhole whose view plane is
+//   at unit distance (near defaults to 1/1000 of it); an aperture needs a focus_distance.
 // Unknown keys, wrong types and mixed forms are errors naming the file and the key.
 #include "camera/Camera.h"
 #include "camera/PhysicalCamera.h"

@@ -84,7 +84,7 @@ int runView(const ViewOptions& o) {
   applyBackground(scene, o.background);
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0;
-  const SelectedCamera selected = selectCamera(scene, cameraPath, requestedAspect);
+  const SelectedCamera selected = o.baseCamera ? *o.baseCamera : selectCamera(scene, cameraPath, requestedAspect);
   const SelectedCamera refocusedCamera = applyLensOptions(selected, o.lens);
   EditableCamera camera{refocusedCamera.camera, refocusedCamera.physical};
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.

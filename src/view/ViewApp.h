@@ -29,6 +29,7 @@ struct ViewOptions {
   std::string saveCamera;             // scripted: the camera at the end, as the panel's "Save camera" writes it
   std::optional<glm::ivec2> windowSize;  // window size in screen coordinates
   double frameBudgetMs = 16.0;        // accumulation work per frame (at least one sample)
+  std::optional<SelectedCamera> baseCamera;  // given (--colmap's): used instead of the camera file or the scene's
 };
 
 // Returns the exit code; throws InputError for bad input (files, cameras, options) and

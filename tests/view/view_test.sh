@@ -83,6 +83,16 @@ else
   fail "view/render with lens effects failed"
 fi
 
+# A COLMAP image's camera (--colmap DIR --image NAME), from a model capture writes for a still path.
+printf '{"fps": 1, "frames": 1, "keys": [{"time": 0, "eye": [0.5, 1.1, 3], "target": [0, 0.55, -2]}]}' >"$work/still.json"
+if "$lenslab" capture --path "$work/still.json" --width 200 --out "$work/still/f_%d.png" --colmap-out "$work/still-model" -q &&
+   "$lenslab" view --colmap "$work/still-model" --image f_0.png --max-samples 4 --frames 2 --no-ui --screenshot "$work/colmap.exr" >/dev/null 2>&1 &&
+   "$lenslab" render --colmap "$work/still-model" --image f_0.png --max-samples 4 --out "$work/colmap-render.exr" -q; then
+  if "$check" psnr "$work/colmap.exr" "$work/colmap-render.exr" 35; then pass; else fail "--colmap: view differs from render"; fi
+else
+  fail "capture --colmap-out, view --colmap or render --colmap failed"
+fi
+
 # ---- 2. click to focus ----
 # The centre of the front face of the 4 m box of `rows` (x 0.75, half size 0.25, centre z −1, so
 # the face is at z −0.75, y 0.25), projected by the lecture's formula through camera-dof.json
@@ -162,6 +172,7 @@ expect_refusal "bad screenshot extension" "unsupported image type" view --frames
 expect_refusal "screenshot without frames" "--frames" view --screenshot "$work/out.png"
 expect_refusal "click on the sky" "nothing of the scene" view --camera "$dof" --width 96 --frames 1 --no-ui --click 50,2
 expect_refusal "missing camera" "nope.json" view --camera "$work/nope.json" --frames 1
+expect_refusal "--image without --colmap" "give --colmap" view --image f_0.png --frames 1
 [ ! -e "$work/out.png" ] && pass || fail "a refused run left a screenshot"
 
 echo "view tests: $passed passed, $failed failed"

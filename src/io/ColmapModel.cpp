@@ -1,0 +1,368 @@
+#include "io/ColmapModel.h"
+
+#include "camera/ImageSize.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/TextFile.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string_view>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+const char* const kColmapModelsRendered =
+    "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV, and FULL_OPENCV with k4 = k5 = k6 = 0";
+
+namespace {
+
+// The models lenslab renders and their parameters, in COLMAP's order (src/colmap/sensor/models.h).
+struct ModelInfo {
+  const char* name;
+  const char* params;
+  std::size_t count;
+};
+constexpr ModelInfo kModels[] = {
+    {"SIMPLE_PINHOLE", "f, cx, cy", 3},
+    {"PINHOLE", "fx, fy, cx, cy", 4},
+    {"SIMPLE_RADIAL", "f, cx, cy, k", 4},
+    {"RADIAL", "f, cx, cy, k1, k2", 5},
+    {"OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2", 8},
+    {"FULL_OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2, k3, k4, k5, k6", 12},
+};
+
+const ModelInfo* modelInfo(const std::string& name) {
+  for (const ModelInfo& m : kModels)
+    if (name == m.name) return &m;
+  return nullptr;
+}
+
+// One line of a file, for messages: "sparse/images.txt:12".
+struct Where {
+  const std::string& file;
+  int line;
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(cat(file, ":", line, ": ", message)); }
+};
+
+std::string_view trimmed(std::string_view s) {
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+  while (!s.empty() && space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> lines(std::string_view text) {
+  std::vector<std::string_view> out;
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    out.push_back(text.substr(0, end));
+    if (end == std::string_view::npos) break;
+    text.remove_prefix(end + 1);
+  }
+  return out;
+}
+
+// Fields separated by runs of spaces or tabs (COLMAP writes single spaces; a run is forgiven).
+std::vector<std::string_view> fields(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+double number(std::string_view field, const Where& where, const std::string& what) {
+  std::string_view s = field;
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);  // COLMAP reads with stold, which allows it
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (error != std::errc() || end != s.data() + s.size() || s.empty())
+    where.fail(cat(what, " is \"", field, "\"; give a number"));
+  if (!std::isfinite(value)) where.fail(cat(what, " is ", field, "; give a finite number"));
+  return value;
+}
+
+std::uint64_t whole(std::string_view field, const Where& where, const std::string& what, std::uint64_t max) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (error != std::errc() || end != field.data() + field.size() || value > max)
+    where.fail(cat(what, " is \"", field, "\"; give a whole number from 0 to ", max));
+  return value;
+}
+
+constexpr std::uint64_t kMaxId = std::numeric_limits<std::uint32_t>::max() - 1;  // COLMAP's max is "invalid"
+
+// The shortest decimal that reads back as the same double (−0 written as 0).
+std::string shortest(double value) {
+  if (value == 0.0) return "0";
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, error == std::errc() ? end : buffer);
+}
+
+}  // namespace
+
+std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std::string& file) {
+  std::vector<ColmapCamera> cameras;
+  std::map<std::uint32_t, int> lineOfId;
+  const std::vector<std::string_view> all = lines(text);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const std::string_view line = trimmed(all[i]);
+    if (line.empty() || line.front() == '#') continue;
+    const Where where{file, static_cast<int>(i) + 1};
+    const std::vector<std::string_view> f = fields(line);
+    if (f.size() < 4)
+      where.fail(cat("a camera line is CAMERA_ID MODEL WIDTH HEIGHT PARAMS[]; this one has ", f.size(), " field",
+                     f.size() == 1 ? "" : "s"));
+    ColmapCamera c;
+    c.line = where.line;
+    c.id = static_cast<std::uint32_t>(whole(f[0], where, "CAMERA_ID", kMaxId));
+    c.model = std::string(f[1]);
+    const std::uint64_t width = whole(f[2], where, "WIDTH", std::numeric_limits<int>::max());
+    const std::uint64_t height = whole(f[3], where, "HEIGHT", std::numeric_limits<int>::max());
+    if (width < 1 || height < 1) where.fail(cat("camera ", c.id, " is ", width, "x", height, " pixels; give a size of at least 1x1"));
+    c.widthPx = static_cast<int>(width);
+    c.heightPx = static_cast<int>(height);
+    for (std::size_t p = 4; p < f.size(); ++p) c.params.push_back(number(f[p], where, cat("parameter ", p - 3)));
+    if (const ModelInfo* m = modelInfo(c.model); m && c.params.size() != m->count)
+      where.fail(cat("camera ", c.id, " is ", m->name, ", which takes ", m->count, " parameters (", m->params, "), not ",
+                     c.params.size()));
+    if (const auto [it, added] = lineOfId.emplace(c.id, where.line); !added)
+      where.fail(cat("CAMERA_ID ", c.id, " is given again (first on line ", it->second, "); each camera needs its own ID"));
+    cameras.push_back(std::move(c));
+  }
+  return cameras;
+}
+
+std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::string& file) {
+  std::vector<ColmapImage> images;
+  std::map<std::uint32_t, int> lineOfId;
+  std::map<std::string, int> lineOfName;
+  const std::vector<std::string_view> all = lines(text);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const std::string_view line = trimmed(all[i]);
+    if (line.empty() || line.front() == '#') continue;
+    const Where where{file, static_cast<int>(i) + 1};
+    const std::vector<std::string_view> f = fields(line);
+    if (f.size() != 10)
+      where.fail(cat("an image line is IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME (10 fields); this one has ", f.size(),
+                     f.size() > 10 ? " (a NAME cannot hold spaces: COLMAP reads it only up to the first)" : ""));
+    ColmapImage image;
+    image.line = where.line;
+    image.id = static_cast<std::uint32_t>(whole(f[0], where, "IMAGE_ID", kMaxId));
+    Quaternion q{number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"), number(f[4], where, "QZ")};
+    const double length = q.length();
+    if (!(std::abs(length - 1.0) <= kQuaternionLengthTolerance))
+      where.fail(cat("image ", image.id, "'s quaternion QW QX QY QZ has length ", length, "; COLMAP writes unit quaternions "
+                     "(lengths within ", kQuaternionLengthTolerance, " of 1 are normalised)"));
+    image.rotation = {q.w / length, q.x / length, q.y / length, q.z / length};
+    image.translation = {number(f[5], where, "TX"), number(f[6], where, "TY"), number(f[7], where, "TZ")};
+    image.cameraId = static_cast<std::uint32_t>(whole(f[8], where, "CAMERA_ID", kMaxId));
+    image.name = std::string(f[9]);
+    if (const auto [it, added] = lineOfId.emplace(image.id, where.line); !added)
+      where.fail(cat("IMAGE_ID ", image.id, " is given again (first on line ", it->second, "); each image needs its own ID"));
+    if (const auto [it, added] = lineOfName.emplace(image.name, where.line); !added)
+      where.fail(cat("NAME ", image.name, " is given again (first on line ", it->second, "); each image needs its own name"));
+    // Its POINTS2D line: the next line, whatever it holds (it may be empty). Lenslab does not use
+    // the points, but a line that cannot be one means the two-line layout is broken.
+    if (i + 1 < all.size()) {
+      ++i;
+      const Where pointsWhere{file, static_cast<int>(i) + 1};
+      const std::string_view points = trimmed(all[i]);
+      if (!points.empty() && points.front() == '#')
+        pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
+                             "image takes two lines"));
+      if (const std::size_t n = fields(points).size(); n % 3 != 0)
+        pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
+                             "image takes two lines (the second may be empty)"));
+    }
+    images.push_back(std::move(image));
+  }
+  return images;
+}
+
+ColmapModel readColmapModel(const fs::path& dir) {
+  std::error_code error;
+  if (!fs::is_directory(dir, error))
+    throw InputError(cat("--colmap ", dir.string(), ": not a folder; give the folder of a COLMAP text model (cameras.txt, "
+                         "images.txt)"));
+  ColmapModel model;
+  model.camerasFile = (dir / "cameras.txt").string();
+  model.imagesFile = (dir / "images.txt").string();
+  for (const char* name : {"cameras", "images"}) {
+    const fs::path text = dir / cat(name, ".txt");
+    if (!fs::exists(text, error) && fs::exists(dir / cat(name, ".bin"), error))
+      throw InputError(cat(text.string(), ": missing; ", dir.string(), " holds COLMAP's binary model (", name,
+                           ".bin), and lenslab reads the text format: convert it with colmap model_converter "
+                           "--input_path ", dir.string(), " --output_path ", dir.string(), " --output_type TXT"));
+  }
+  model.cameras = parseColmapCameras(readTextFile(model.camerasFile, "COLMAP cameras file"), model.camerasFile);
+  model.images = parseColmapImages(readTextFile(model.imagesFile, "COLMAP images file"), model.imagesFile);
+  std::set<std::uint32_t> ids;
+  for (const ColmapCamera& c : model.cameras) ids.insert(c.id);
+  for (const ColmapImage& image : model.images)
+    if (ids.count(image.cameraId) == 0)
+      throw InputError(cat(model.imagesFile, ":", image.line, ": image ", image.id, " (", image.name, ") names CAMERA_ID ",
+                           image.cameraId, ", which ", model.camerasFile, " does not hold"));
+  return model;
+}
+
+OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
+  const Where where{file, c.line};
+  const ModelInfo* m = modelInfo(c.model);
+  if (!m)
+    where.fail(cat("camera ", c.id, " is ", c.model, ", a model lenslab does not render; it renders ", kColmapModelsRendered));
+  if (c.widthPx > kMaxImageSidePx || c.heightPx > kMaxImageSidePx)
+    where.fail(cat("camera ", c.id, " is ", c.widthPx, "x", c.heightPx, " pixels; lenslab renders at most ", kMaxImageSidePx,
+                   " a side"));
+  const std::vector<double>& p = c.params;
+  const bool oneFocal = m->name == std::string("SIMPLE_PINHOLE") || m->name == std::string("SIMPLE_RADIAL") ||
+                        m->name == std::string("RADIAL");
+  OpenCvLens lens;
+  OpenCvIntrinsics& k = lens.intrinsics;
+  Distortion& d = lens.distortion;
+  const std::size_t pp = oneFocal ? 1 : 2;  // index of cx
+  k.fx = p[0];
+  k.fy = oneFocal ? p[0] : p[1];
+  // COLMAP's pixel centres are at i + 0.5, OpenCV's at i.
+  k.cx = p[pp] - 0.5;
+  k.cy = p[pp + 1] - 0.5;
+  k.widthPx = c.widthPx;
+  k.heightPx = c.heightPx;
+  const std::size_t extra = pp + 2;
+  const std::string name = m->name;
+  if (name == "SIMPLE_RADIAL") {
+    d.k1 = p[extra];
+  } else if (name == "RADIAL") {
+    d.k1 = p[extra], d.k2 = p[extra + 1];
+  } else if (name == "OPENCV" || name == "FULL_OPENCV") {
+    d.k1 = p[extra], d.k2 = p[extra + 1], d.p1 = p[extra + 2], d.p2 = p[extra + 3];
+    if (name == "FULL_OPENCV") {
+      d.k3 = p[extra + 4];
+      for (int i = 0; i < 3; ++i)
+        if (p[extra + 5 + static_cast<std::size_t>(i)] != 0.0)
+          where.fail(cat("camera ", c.id, " is FULL_OPENCV with k", 4 + i, " = ", p[extra + 5 + static_cast<std::size_t>(i)],
+                         "; lenslab renders its rational terms k4, k5, k6 only at 0 (it renders ", kColmapModelsRendered, ")"));
+    }
+  }
+  if (!(k.fx > 0.0) || !(k.fy > 0.0))
+    where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (", m->name,
+                   " takes ", m->params, ")"));
+  return lens;
+}
+
+OpenCvPose poseOf(const ColmapImage& image) {
+  OpenCvPose pose;
+  pose.rows = rotationFromQuaternion(image.rotation);
+  pose.translation = image.translation;
+  return pose;
+}
+
+Camera colmapImageCamera(const ColmapModel& model, const std::string& name) {
+  const auto image = std::find_if(model.images.begin(), model.images.end(),
+                                  [&](const ColmapImage& i) { return i.name == name; });
+  if (image == model.images.end()) {
+    if (model.images.empty()) throw InputError(cat("--image ", name, ": ", model.imagesFile, " holds no images"));
+    // The one image whose file name matches, when the request left out its folder.
+    std::vector<std::string> sameFile;
+    for (const ColmapImage& i : model.images)
+      if (fs::path(i.name).filename() == fs::path(name).filename()) sameFile.push_back(i.name);
+    if (sameFile.size() == 1)
+      throw InputError(cat("--image ", name, ": ", model.imagesFile, " has no image named so; did you mean ", sameFile[0], "?"));
+    std::string some;
+    const std::size_t shown = std::min<std::size_t>(model.images.size(), 5);
+    for (std::size_t i = 0; i < shown; ++i) some += (i ? ", " : "") + model.images[i].name;
+    throw InputError(cat("--image ", name, ": ", model.imagesFile, " has no image named so; its ", model.images.size(),
+                         " image", model.images.size() == 1 ? "" : "s", " include", model.images.size() == 1 ? "s " : " ",
+                         some, model.images.size() > shown ? ", ..." : ""));
+  }
+  const auto camera = std::find_if(model.cameras.begin(), model.cameras.end(),
+                                   [&](const ColmapCamera& c) { return c.id == image->cameraId; });
+  if (camera == model.cameras.end())
+    throw InputError(cat(model.imagesFile, ":", image->line, ": image ", image->id, " names CAMERA_ID ", image->cameraId,
+                         ", which ", model.camerasFile, " does not hold"));
+  const OpenCvLens lens = lensOf(*camera, model.camerasFile);
+  return pinholeFromOpenCv(lens.intrinsics, lens.distortion, poseOf(*image),
+                           cat("COLMAP image ", name, " (", model.imagesFile, ":", image->line, ")"));
+}
+
+ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std::uint32_t id, const std::string& where) {
+  if (d.alpha != 0.0 || d.gamma != 0.0)
+    throw InputError(cat(where, ": the lens has the lecture's odd-power distortion (alpha ", d.alpha, ", gamma ", d.gamma,
+                         "), which no COLMAP camera model holds; give the distortion as OpenCV's k1, k2, p1, p2, k3"));
+  ColmapCamera c;
+  c.id = id;
+  c.widthPx = k.widthPx;
+  c.heightPx = k.heightPx;
+  // COLMAP's pixel centres are at i + 0.5, OpenCV's at i.
+  c.params = {k.fx, k.fy, k.cx + 0.5, k.cy + 0.5};
+  const double k1 = d.k1 + d.beta;  // β is the r² coefficient, as k1 is
+  if (k1 == 0.0 && d.k2 == 0.0 && d.p1 == 0.0 && d.p2 == 0.0 && d.k3 == 0.0) {
+    c.model = "PINHOLE";
+  } else if (d.k3 == 0.0) {
+    c.model = "OPENCV";
+    c.params.insert(c.params.end(), {k1, d.k2, d.p1, d.p2});
+  } else {
+    c.model = "FULL_OPENCV";
+    c.params.insert(c.params.end(), {k1, d.k2, d.p1, d.p2, d.k3, 0.0, 0.0, 0.0});
+  }
+  return c;
+}
+
+ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name) {
+  if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
+    throw InputError(cat("image name \"", name, "\": COLMAP's text format cannot hold an empty name or one with spaces "
+                         "(it reads NAME up to the first)"));
+  ColmapImage image;
+  image.id = id;
+  image.rotation = quaternionFromRotation(pose.rows);
+  image.translation = pose.translation;
+  image.cameraId = cameraId;
+  image.name = std::move(name);
+  return image;
+}
+
+std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras) {
+  std::string text = cat("# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n",
+                         "# Number of cameras: ", cameras.size(), "\n");
+  for (const ColmapCamera& c : cameras) {
+    text += cat(c.id, " ", c.model, " ", c.widthPx, " ", c.heightPx);
+    for (const double p : c.params) {
+      text += ' ';
+      text += shortest(p);
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+std::string colmapImagesText(const std::vector<ColmapImage>& images) {
+  std::string text = cat("# Image list with two lines of data per image:\n",
+                         "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n",
+                         "#   POINTS2D[] as (X, Y, POINT3D_ID)\n", "# Number of images: ", images.size(),
+                         ", mean observations per image: 0\n");
+  for (const ColmapImage& i : images) {
+    const Quaternion& q = i.rotation;
+    text += cat(i.id, " ", shortest(q.w), " ", shortest(q.x), " ", shortest(q.y), " ", shortest(q.z), " ",
+                shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ", i.cameraId,
+                " ", i.name, "\n\n");  // and its POINTS2D line, empty
+  }
+  return text;
+}
+
+std::string colmapPoints3DText() {
+  return "# 3D point list with one line of data per point:\n"
+         "#   POINT3D_ID, X, Y, Z, R, G, B, ERROR, TRACK[] as (IMAGE_ID, POINT2D_IDX)\n"
+         "# Number of points: 0, mean track length: 0\n";
+}
+
+}  // namespace lenslab

@@ -1,0 +1,156 @@
+#!/usr/bin/env bash
+# OpenCV and COLMAP cameras as a user meets them: capture --colmap-out writes the frames' cameras as
+# a COLMAP text model, and render --colmap DIR --image NAME gives each frame's pixels back from it;
+# a manifest line's opencv block is a camera file that gives its frame's pixels; shards writing one
+# model at once leave the files one run writes; bad models and options get one line and no image.
+# usage: colmap_test.sh path/to/lenslab source-dir
+set -u
+lenslab=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/test_lib.sh"
+python=/usr/bin/python3
+
+# Identical pixels.
+same_pixels() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1; }
+# The same view from a camera built another way (COLMAP's K, R, t instead of eye and target, its
+# view plane elsewhere): the rays agree to rounding (1e-16), the float pipeline's last bits do not,
+# so a pixel may land one 8-bit step away. No channel more than one step (1/255 = 0.0039) off, and
+# at most 1% of the pixels off at all. (A half-pixel shift, the OpenCV/COLMAP convention mixed up,
+# fails this: checked below.)
+close_pixels() { idiff -fail 0 -failpercent 1 -hardfail 0.004 -warn 1 "$1" "$2" >/dev/null 2>&1; }
+seed_of() {  # seed_of MANIFEST FRAME
+  $python -c 'import json,sys; print([l for l in map(json.loads, open(sys.argv[1])) if l["frame"] == int(sys.argv[2])][0]["seed"])' "$1" "$2"
+}
+
+# A pinhole path through the bundled rows scene: the camera moves and turns, and its focus (so its
+# focal length in pixels) changes from frame to frame.
+cat >"$work/path.json" <<'EOF'
+{"fps": 4, "keys": [
+  {"time": 0, "eye": [0, 1, 3], "target": [0, 0.55, -2]},
+  {"time": 1, "eye": [1.2, 1.3, 3.5], "target": [-0.3, 0.5, -2], "up": [0.1, 1, 0]}]}
+EOF
+common=(--path "$work/path.json" --width 160 -q)
+
+# --- capture writes the model ---
+"$lenslab" capture "${common[@]}" --out "$work/frames/frame_%04d.png" --colmap-out "$work/sparse" || fail "capture --colmap-out"
+for f in cameras images points3D; do
+  if [ -f "$work/sparse/$f.txt" ]; then pass; else fail "no $f.txt"; fi
+done
+check_model=$(cat <<'EOF'
+import sys
+lines = lambda f: [l.rstrip("\n") for l in open(f)]
+cams = [l.split() for l in lines(sys.argv[1] + "/cameras.txt") if l and not l.startswith("#")]
+assert len(cams) == 5 and all(c[1] == "PINHOLE" and c[2:4] == ["160", "107"] and len(c) == 8 for c in cams), cams
+body = [l for l in lines(sys.argv[1] + "/images.txt") if not l.startswith("#")]
+assert len(body) == 10, body                       # two lines an image
+imgs = [l.split() for l in body[0::2]]
+assert all(p == "" for p in body[1::2]), body      # empty POINTS2D lines
+assert [i[9] for i in imgs] == [f"frame_{f:04d}.png" for f in range(5)], imgs
+assert [i[0] for i in imgs] == ["1", "2", "3", "4", "5"], imgs
+for i in imgs:
+    q = [float(x) for x in i[1:5]]
+    assert abs(sum(x * x for x in q) - 1) < 1e-12 and q[0] >= 0, q
+assert [l for l in lines(sys.argv[1] + "/points3D.txt") if not l.startswith("#")] == []
+EOF
+)
+if out=$($python -c "$check_model" "$work/sparse" 2>&1); then pass; else fail "the model's layout: $out"; fi
+
+# --- round trip: render --colmap gives each frame's pixels; raycast takes it too ---
+for f in 0 2 4; do
+  name=$(printf 'frame_%04d.png' "$f")
+  seed=$(seed_of "$work/frames/manifest.jsonl" "$f")
+  "$lenslab" render --colmap "$work/sparse" --image "$name" --seed "$seed" --out "$work/colmap_$f.png" -q || fail "render --colmap frame $f"
+  if close_pixels "$work/colmap_$f.png" "$work/frames/$name"; then pass
+  else fail "render --colmap $work/sparse --image $name differs from the frame: $(idiff "$work/colmap_$f.png" "$work/frames/$name" | tail -3 | tr '\n' ' ')"; fi
+done
+"$lenslab" raycast --colmap "$work/sparse" --image frame_0003.png --spp 1 --out "$work/ray_colmap.png" -q || fail "raycast --colmap"
+"$lenslab" raycast --camera "$work/frames/frame_0003.camera.json" --spp 1 --out "$work/ray_camera.png" -q || fail "raycast --camera"
+if close_pixels "$work/ray_colmap.png" "$work/ray_camera.png"; then pass; else fail "raycast --colmap differs from raycast --camera of the frame"; fi
+
+# The bound above is tight enough to see COLMAP's half pixel: the model with each principal point
+# moved by 0.5 px (as if OpenCV's convention had been written) must not pass.
+mkdir "$work/shifted"
+cp "$work/sparse/images.txt" "$work/shifted/"
+awk '/^#/ {print; next} {$7 += 0.5; $8 += 0.5; print}' "$work/sparse/cameras.txt" >"$work/shifted/cameras.txt"
+seed=$(seed_of "$work/frames/manifest.jsonl" 2)
+"$lenslab" render --colmap "$work/shifted" --image frame_0002.png --seed "$seed" --out "$work/shifted.png" -q
+if [ -f "$work/shifted.png" ] && ! close_pixels "$work/shifted.png" "$work/frames/frame_0002.png"; then pass
+else fail "a half-pixel shift of the principal point passed as the frame's pixels"; fi
+
+# --- a manifest line's opencv block is a camera file giving its frame's pixels ---
+block() {  # block MANIFEST FRAME OUT
+  $python -c 'import json,sys; l=[l for l in map(json.loads, open(sys.argv[1])) if l["frame"] == int(sys.argv[2])][0]; json.dump(l["opencv"], open(sys.argv[3], "w"))' "$1" "$2" "$3"
+}
+for f in 1 4; do
+  block "$work/frames/manifest.jsonl" "$f" "$work/block_$f.json"
+  seed=$(seed_of "$work/frames/manifest.jsonl" "$f")
+  "$lenslab" render --camera "$work/block_$f.json" --seed "$seed" --out "$work/block_$f.png" -q || fail "render --camera block $f"
+  if same_pixels "$work/block_$f.png" "$(printf "$work/frames/frame_%04d.png" "$f")"; then pass; else fail "the opencv block of frame $f differs from the frame"; fi
+done
+# Depth of field too: the rack focus at f/1.4 (the block carries focus_distance and aperture_radius).
+rack=(--path "$src/assets/rows/rack-focus.json" --width 64 --aperture-samples 4 --frames 40 -q)
+"$lenslab" capture "${rack[@]}" --out "$work/rack/frame_%04d.png" --colmap-out "$work/rack-sparse" 2>"$work/rack.err" || fail "capture rack focus"
+block "$work/rack/manifest.jsonl" 40 "$work/block_rack.json"
+"$lenslab" render --camera "$work/block_rack.json" --seed "$(seed_of "$work/rack/manifest.jsonl" 40)" --aperture-samples 4 \
+  --out "$work/block_rack.png" -q || fail "render --camera rack block"
+if same_pixels "$work/block_rack.png" "$work/rack/frame_0040.png"; then pass; else fail "the opencv block of a depth-of-field frame differs from the frame"; fi
+# Without -q, --colmap-out says once that the depth of field is not in COLMAP's pinhole model.
+rm -rf "$work/rack-sparse"
+"$lenslab" capture --path "$src/assets/rows/rack-focus.json" --width 32 --aperture-samples 1 --frames 38:41 \
+  --out "$work/rack2/frame_%04d.png" --colmap-out "$work/rack-sparse" 2>"$work/rack.err" || fail "capture rack focus, not quiet"
+if [ "$(grep -c 'warning: --colmap-out: the depth of field' "$work/rack.err")" -eq 1 ]; then pass
+else fail "the depth-of-field warning: $(cat "$work/rack.err")"; fi
+
+# --- shards writing one model at once leave the files one run writes ---
+for i in 0 1 2; do
+  "$lenslab" capture "${common[@]}" --out "$work/sharded/frame_%04d.png" --colmap-out "$work/sharded-sparse" --shard "$i/3" &
+done
+wait
+for f in cameras images points3D; do
+  if cmp -s "$work/sparse/$f.txt" "$work/sharded-sparse/$f.txt"; then pass; else fail "the shards' $f.txt differs from one run's"; fi
+done
+if [ -z "$(find "$work/sharded-sparse" -name '.*tmp*')" ]; then pass; else fail "temporary files left: $(ls -a "$work/sharded-sparse")"; fi
+
+# --- what COLMAP cannot hold is refused before any frame ---
+cat >"$work/odd.json" <<'EOF'
+{"fps": 1, "frames": 2, "keys": [{"time": 0, "eye": [0, 1, 3], "target": [0, 0.55, -2], "distortion": {"alpha": 0.05}}]}
+EOF
+if one_line_error "odd-power distortion" "alpha" -- capture --path "$work/odd.json" --width 64 --out "$work/odd/f_%d.png" \
+     --colmap-out "$work/odd-sparse" -q; then
+  if [ ! -e "$work/odd/f_0.png" ] && [ ! -e "$work/odd-sparse/cameras.txt" ]; then pass; else fail "odd-power distortion: files written"; fi
+fi
+if one_line_error "name with a space" "holds a space" -- capture "${common[@]}" --out "$work/spaced/frame %d.png" \
+     --colmap-out "$work/spaced-sparse"; then
+  if [ -z "$(ls "$work/spaced" 2>/dev/null)" ] && [ ! -e "$work/spaced-sparse/cameras.txt" ]; then pass; else fail "name with a space: files written"; fi
+fi
+
+# --- bad models and options: one line, no image ---
+mkdir -p "$work/bad/fisheye" "$work/bad/binary" "$work/bad/nopoints"
+printf '# fisheye\n1 OPENCV_FISHEYE 64 48 50 50 32 24 0.1 0 0 0\n' >"$work/bad/fisheye/cameras.txt"
+printf '1 1 0 0 0 0 0 5 1 a.png\n\n' >"$work/bad/fisheye/images.txt"
+touch "$work/bad/binary/cameras.bin" "$work/bad/binary/images.bin"
+printf '1 PINHOLE 64 48 50 50 32 24\n' >"$work/bad/nopoints/cameras.txt"
+printf '1 1 0 0 0 0 0 5 1 a.png\n2 1 0 0 0 0 0 5 1 b.png\n' >"$work/bad/nopoints/images.txt"
+bad() {  # bad NAME FRAGMENT -- ARGS: one line holding FRAGMENT, and no image
+  rm -f "$work/bad.png"
+  if one_line_error "$@" --out "$work/bad.png"; then
+    if [ ! -e "$work/bad.png" ]; then pass; else fail "$1: wrote an image"; fi
+  fi
+}
+bad "--colmap without --image" "give --image" -- render --colmap "$work/sparse"
+bad "--image without --colmap" "give --colmap" -- render --image frame_0000.png
+bad "--colmap with --camera" "both give the camera" -- render --colmap "$work/sparse" --image frame_0000.png \
+  --camera "$src/assets/rows/camera.json"
+bad "unknown image" "frame_0000.png, frame_0001.png" -- render --colmap "$work/sparse" --image nothere.png
+bad "no such folder" "not a folder" -- render --colmap "$work/missing" --image a.png
+bad "fisheye" "cameras.txt:2: camera 1 is OPENCV_FISHEYE" -- render --colmap "$work/bad/fisheye" --image a.png
+bad "binary model" "colmap model_converter" -- raycast --colmap "$work/bad/binary" --image a.png
+bad "no POINTS2D lines" "images.txt:2:" -- render --colmap "$work/bad/nopoints" --image a.png
+printf '{"K": [[50, 0.1, 32], [0, 50, 24], [0, 0, 1]], "width": 64, "height": 48, "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, 5]}' \
+  >"$work/skew.json"
+bad "skew" "skew" -- render --camera "$work/skew.json"
+
+echo "colmap: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -258,15 +258,34 @@ TEST_F(AnimationFile, BoundsFollowThePose) {
 
 // ---- what the loader keeps and notes ----
 
-TEST_F(AnimationFile, DurationIsTheLastKeyOfAllAnimationsOnOneClock) {
+TEST_F(AnimationFile, EachAnimationIsAClipAndTheFirstPlaysByDefault) {
   AnimatedGltf g;
   const int a = g.node({{"mesh", g.triangle()}});
   const int b = g.node({{"mesh", g.triangle()}});
   g.channel(a, "translation", "LINEAR", {0, 2}, {0, 0, 0, 1, 0, 0}, 0);
   g.channel(b, "scale", "STEP", {0.5, 3.5}, {1, 1, 1, 2, 2, 2}, 1);
+  g.gltf["animations"][1]["name"] = "grow";
   Scene scene = load(g);
+  ASSERT_EQ(scene.animation.clips.size(), 2u);
+  EXPECT_EQ(scene.animation.clips[0].name, "");
+  EXPECT_EQ(scene.animation.clips[1].name, "grow");
+  EXPECT_EQ(scene.animation.clips[1].fileChannelCount, 1u);
+  EXPECT_EQ(scene.animation.playing, 0);
+  EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 2.0) << "the first clip's";
+  EXPECT_TRUE(mentions(scene, "2 animation(s) (`lenslab info` lists them): `render --time` and `capture` play the first"))
+      << testing::PrintToString(scene.notes);
+  poseScene(scene, 3.6);  // clip 0 only: a at its last value, b at rest although clip 1 has passed its last key
+  expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "clip 0 moves a");
+  EXPECT_EQ(scene.instances[1].worldFromModel[0].x, 1.0) << "clip 1 does not play";
+
+  scene.animation.playing = 1;
   EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 3.5);
-  EXPECT_TRUE(mentions(scene, "2 animation(s), 3.50 s: played by `lenslab capture`")) << testing::PrintToString(scene.notes);
+  poseScene(scene, 3.6);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 0, 0}, 0, "clip 0 no longer plays: a at rest");
+  EXPECT_EQ(scene.instances[1].worldFromModel[0].x, 2.0) << "clip 1 scales b";
+
+  scene.animation.playing = kAllClips;
+  EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 3.5) << "the longest clip's, on one clock";
   poseScene(scene, 3.0);  // both play: a at its last value, b still at its first
   expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "animation 0");
   EXPECT_EQ(scene.instances[1].worldFromModel[0].x, 1.0) << "animation 1";
@@ -283,17 +302,60 @@ TEST_F(AnimationFile, AStillSceneHasNoDurationAndPosingLeavesIt) {
   expectNear(origin(scene.instances[0].worldFromModel), {1, 2, 3}, 0, "untouched");
 }
 
-TEST_F(AnimationFile, ALaterChannelOnTheSameNodeAndPathWinsWithANote) {
+// Two clips moving the same node (a walk and a run move the same bones): each plays alone; all
+// together, the later one wins, as glTF viewers that play every clip at once do.
+TEST_F(AnimationFile, ClipsOnTheSameNodeAndPathPlayAloneOrTheLaterWins) {
   AnimatedGltf g;
   const int node = g.node({{"mesh", g.triangle()}});
   g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0}, 0);
   g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 0, 8, 0}, 1);
   Scene scene = load(g);
-  EXPECT_EQ(scene.animation.channels.size(), 1u);
-  EXPECT_TRUE(mentions(scene, "animation 1 channel 0 drives the translation of node 0 that an earlier channel drives too"))
+  ASSERT_EQ(scene.animation.clips.size(), 2u);
+  EXPECT_FALSE(mentions(scene, "drives too")) << "channels in different clips are no conflict";
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "the first clip");
+  scene.animation.playing = 1;
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "the second clip");
+  scene.animation.playing = kAllClips;
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "all: the later channel");
+}
+
+TEST_F(AnimationFile, ALaterChannelOnTheSameNodeAndPathInOneClipWinsWithANote) {
+  AnimatedGltf g;
+  const int node = g.node({{"mesh", g.triangle()}});
+  g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0}, 0);
+  g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 0, 8, 0}, 0);
+  Scene scene = load(g);
+  ASSERT_EQ(scene.animation.clips.size(), 1u);
+  EXPECT_EQ(scene.animation.clips[0].channels.size(), 1u);
+  EXPECT_EQ(scene.animation.clips[0].fileChannelCount, 2u);
+  EXPECT_TRUE(mentions(scene, "animation 0 channel 1 drives the translation of node 0 that an earlier channel of the same "
+                              "animation drives too"))
       << testing::PrintToString(scene.notes);
   poseScene(scene, 1.0);
   expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "the later channel");
+}
+
+// A first clip that moves nothing drawn (morph weights only) leaves the scene still until another
+// is chosen; the hierarchy is kept for it.
+TEST_F(AnimationFile, AFirstClipThatMovesNothingLeavesTheSceneStillUntilAnotherPlays) {
+  AnimatedGltf g;
+  const int node = g.node({{"mesh", g.triangle()}});
+  const int weighted = g.node(json::object());
+  g.channel(weighted, "translation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0}, 0);
+  g.gltf["animations"][0]["channels"][0]["target"]["path"] = "weights";
+  g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 5, 0, 0}, 1);
+  Scene scene = load(g);
+  EXPECT_TRUE(scene.animation.empty()) << "clip 0 plays and moves nothing";
+  EXPECT_FALSE(scene.animation.nodes.empty());
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 0, 0}, 0, "still");
+  scene.animation.playing = 1;
+  EXPECT_FALSE(scene.animation.empty());
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {5, 0, 0}, 0, "clip 1");
 }
 
 TEST_F(AnimationFile, MorphWeightChannelsAreNotPlayedAndNoted) {

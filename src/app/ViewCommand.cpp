@@ -14,11 +14,17 @@ std::function<int()> addViewCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window: the image converging, every camera and lens parameter, click to focus, the lecture's diagram");
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default as for render");
+  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default as for render; the lens "
+                  "and pose options override it field by field");
   cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
   cmd->add_option("--height", o->height, "image height in pixels");
   addLensOptions(*cmd, o->lens);
   addTargetOption(*cmd, o->lens);
+  addCameraOptions(*cmd, o->camera);
+  cmd->add_option("--time", o->timeSeconds,
+                  "pose the scene's glTF animation at this time (seconds), as render --time does; default: the rest pose")
+      ->check(CLI::Range(-1e9, 1e9))
+      ->type_name("SECONDS");
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--frames", o->frames,
                   "scripted: run at least N frames (and on until the accumulation is complete), write --screenshot, exit");

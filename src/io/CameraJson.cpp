@@ -179,6 +179,7 @@ CameraFile parsePhysical(const Reader& r) {
   if (r.has("far")) c.farDistance = r.distance("far");
   validate(c, r.where());
   CameraFile file;
+  file.form = CameraFile::Form::Physical;
   file.physical = c;
   file.camera = toCamera(c, r.where());
   file.camera.nearFromScene = !r.has("near");
@@ -222,6 +223,7 @@ CameraFile parseIntrinsics(const Reader& r) {
   validate(spec, r.where());
   const double aperture = apertureRadiusOf(r);
   CameraFile file;
+  file.form = CameraFile::Form::Intrinsics;
   file.camera = cameraFocusedOnViewPlane(spec, aperture, r.where());
   if (d != focus) file.camera.inverseFocusOffPlane = 1.0 / focus;
   file.camera.nearFromScene = !r.has("near");

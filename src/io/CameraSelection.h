@@ -1,8 +1,15 @@
 #pragma once
-// Which camera a command uses: a camera file when given; else the scene's first glTF camera;
-// else an automatic framing of the scene's bounds.
+// Which camera a command uses. The base camera comes from the first of these sources that gives
+// one:
+//   1. --camera FILE             a camera file (lecture, physical or OpenCV-intrinsics form)
+//   2. --camera-node NAME|INDEX  that glTF camera of the scene
+//   3. the scene's first glTF camera
+//   4. automatic framing of the scene's bounding sphere
+// (a new source goes into baseCamera, in its place in this order). The lens and pose options then
+// override it field by field (plan/CameraOptions.h: composeCamera).
 #include "camera/Camera.h"
 #include "camera/PhysicalCamera.h"
+#include "plan/CameraOptions.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -11,16 +18,17 @@
 
 namespace lenslab {
 
-// `imageAspect` is used for a glTF perspective camera that gives no aspectRatio (0 = use 3:2).
-SelectedCamera selectCamera(const Scene& scene, const std::optional<std::filesystem::path>& cameraFile,
-                            double imageAspect);
+// The base camera, from the first source in the order above. Throws InputError for a bad file, an
+// unknown --camera-node, or both a file and a node.
+BaseCamera baseCamera(const Scene& scene, const std::optional<std::filesystem::path>& cameraFile, const std::string& cameraNode);
 
-// A 35 mm lens on a 36×24 mm sensor looking at the bounds' centre from the front and a little
-// above, far enough back that the bounding sphere fits the vertical field of view.
-PhysicalCamera autoFramingCamera(const Bounds& bounds);
+// The base camera with `options` applied. `imageAspect` (--width / --height when both are given,
+// else 0) is used for a glTF perspective camera that gives no aspectRatio (0 = use 3:2).
+SelectedCamera chooseCamera(const Scene& scene, const std::optional<std::filesystem::path>& cameraFile,
+                            const CameraOptions& options, double imageAspect);
 
 // The scene and camera files a command uses: with no scene, the bundled `rows` scene with its
-// camera file `defaultCamera` (e.g. "camera.json"); an explicit --camera always wins.
+// camera file `defaultCamera` (e.g. "camera.json"; empty: none); an explicit --camera always wins.
 struct SceneAndCamera {
   std::filesystem::path scene;
   std::optional<std::filesystem::path> camera;

@@ -63,10 +63,14 @@ SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focal
   spec.window = {-0.5 * window.x, -0.5 * window.y, 0.5 * window.x, 0.5 * window.y};
   spec.nearDistance = std::max(d - r, d * 1e-4) * 0.5;
   SelectedCamera selected;
+  // At magnification m the frame's smaller side shows side / m: filling it with the sphere needs
+  // about side / (2r); life size shows `side`, so a sensor no larger than the sphere is the cure.
   selected.camera = cameraFocusedOnViewPlane(
       spec, 0.0,
-      cat("automatic framing: the scene (bounding sphere radius ", radius, ") is too small for a ", lens,
-          " lens to focus on at life size or less, so a pinhole with that lens's field of view frames it (no focus, no blur)"));
+      cat("automatic framing: the scene (bounding sphere radius ", radius, ") would need a ", lens, " lens at magnification ",
+          f / (distance - f), ", beyond life size (1), so a pinhole with that lens's field of view frames it (no focus, no blur); "
+          "a sensor no larger than the sphere (--sensor ", 2.0 * r / kMetresPerMillimetre, "x", 2.0 * r / kMetresPerMillimetre,
+          " or smaller) or --eye and --target give a lens"));
   selected.camera.nearFromScene = selected.camera.farFromScene = true;
   return selected;
 }

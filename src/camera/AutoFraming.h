@@ -10,9 +10,9 @@
 // max(m·r, f); see framingDistance).
 //
 // A thin lens focuses no closer than its focal length, and real lenses reach life size (1:1, a
-// subject at D = 2f) at most. A subject that would need more — a 1 mm part under a 35 mm lens —
-// gets a pinhole with the lens's field of view at infinity focus instead (no focus, no blur), and
-// the camera's source says so.
+// subject at D = 2f) at most. A subject smaller than the sensor would need more — a 1 mm part on a
+// 24 mm high sensor, whatever the lens — and gets a pinhole with the lens's field of view at
+// infinity focus instead (no focus, no blur); the camera's source says so and what to change.
 #include "camera/Camera.h"
 #include "camera/PhysicalCamera.h"
 

@@ -141,7 +141,7 @@ SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
   const double n = parseFNumber(o.fNumber);
   if (!framed.physical) {
     if (std::isinf(n)) return framed;
-    refuse(cat("--f-number ", o.fNumber), cat(framed.camera.source, "; give a shorter --focal-length, or --eye and --target"));
+    refuse(cat("--f-number ", o.fNumber), framed.camera.source);
   }
   PhysicalCamera p = *framed.physical;
   p.fNumber = n;

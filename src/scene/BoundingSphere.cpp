@@ -117,16 +117,19 @@ BoundingSphere smallestEnclosingSphere(const std::vector<glm::dvec3>& points) {
   static const glm::dvec3 directions[13] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1},
                                             {0, 1, 1}, {0, 1, -1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
   std::vector<glm::dvec3> core;
-  for (const glm::dvec3& d : directions) {
-    std::size_t lo = 0, hi = 0;
-    for (std::size_t i = 1; i < points.size(); ++i) {
-      const double s = glm::dot(points[i], d);
-      if (s < glm::dot(points[lo], d)) lo = i;
-      if (s > glm::dot(points[hi], d)) hi = i;
+  // One pass for all 13 directions: each point's projections against the lowest and highest yet.
+  std::array<std::size_t, 13> lo{}, hi{};
+  std::array<double, 13> loValue{}, hiValue{};
+  for (std::size_t k = 0; k < 13; ++k) loValue[k] = hiValue[k] = glm::dot(points[0], directions[k]);
+  for (std::size_t i = 1; i < points.size(); ++i)
+    for (std::size_t k = 0; k < 13; ++k) {
+      const double s = glm::dot(points[i], directions[k]);
+      if (s < loValue[k]) { loValue[k] = s; lo[k] = i; }
+      if (s > hiValue[k]) { hiValue[k] = s; hi[k] = i; }
     }
-    for (const std::size_t i : {lo, hi})
+  for (std::size_t k = 0; k < 13; ++k)
+    for (const std::size_t i : {lo[k], hi[k]})
       if (std::find(core.begin(), core.end(), points[i]) == core.end()) core.push_back(points[i]);
-  }
   Ball ball;
   for (int round = 0; round < 64; ++round) {
     std::array<glm::dvec3, 4> boundary{};

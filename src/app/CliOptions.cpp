@@ -59,7 +59,7 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose) {
       ->type_name("WxH|NAME");
   if (withPose) {
     addPointOption(cmd, "--eye", o.eye, "put the lens centre here (world units), overriding the camera's");
-    addPointOption(cmd, "--target", o.target, "look at this point (world units), overriding the camera's; focus follows it");
+    addPointOption(cmd, "--target", o.target, "look at this point (world units), overriding the camera's; a camera focused on its target stays focused on it");
   }
   addCameraNodeOption(cmd, o);
   cmd.add_option("--animation", o.animation,

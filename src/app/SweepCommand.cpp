@@ -36,7 +36,7 @@ struct SweepCommandOptions {
   std::optional<int> height;
   std::string backend = "osmesa";
   LensOptions lens;
-  CameraOptions camera;  // --camera-node only
+  CameraOptions camera;  // the lens, pose and glTF camera; no clip (a sweep draws the rest pose)
   std::optional<glm::vec3> background;
   SweepOptions sweep;
 };
@@ -136,7 +136,8 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->check(CLI::IsMember(sweepSeriesNames()))
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
-  addCameraNodeOption(*cmd, o->camera);
+  addCameraOptions(*cmd, o->camera);
+  cmd->remove_option(cmd->get_option("--animation"));
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
 }

@@ -78,9 +78,14 @@ for cmd in render raycast view capture; do
     if grep -q -- "$option" <<<"$help"; then pass; else fail "$cmd --help lacks $option"; fi
   done
 done
-for cmd in info sweep; do
-  if "$lenslab" $cmd --help | grep -q -- --camera-node; then pass; else fail "$cmd --help lacks --camera-node"; fi
+if "$lenslab" info --help | grep -q -- --camera-node; then pass; else fail "info --help lacks --camera-node"; fi
+for option in --focal-length --f-number --sensor --eye --target --camera-node; do
+  if "$lenslab" sweep --help | grep -q -- "$option"; then pass; else fail "sweep --help lacks $option"; fi
 done
+# A sweep needs an aperture: a glTF camera gets one from --f-number.
+if "$lenslab" sweep "$scene" --camera-node Right --f-number 2 --width 24 --reference-spp 2 --max-views 2 --max-spp 2 \
+     --methods concentric --out "$work/sweep" 2>/dev/null && grep -q "camera glTF camera 1 (Right) as .* mm on 36x24 mm, --f-number 2" "$work/sweep/sweep.md"; then pass
+else fail "sweep --camera-node Right --f-number 2"; fi
 for line in '\[0\] node "Left" (camera "LeftLens"): perspective, yfov 40.107' '\[1\] node "Right" (camera "RightLens")' \
             '\[0\] "up": 1 s, 2 channel' '\[1\] "down": 2 s, 1 channel'; do
   if grep -q "$line" "$work/info.txt"; then pass; else fail "info lacks $line: $(cat "$work/info.txt")"; fi

@@ -3,8 +3,8 @@
 // (the loader only takes a path; going through the file also covers reading it). The bytes decide
 // the container, as in the loader: a GLB when they start with the magic "glTF" (named fuzz.glb),
 // else glTF JSON (named fuzz.gltf; relative URIs resolve in the empty scratch folder, data: URIs
-// are read). A scene that loads is then given a camera as `render` would (selectCamera: its first
-// glTF camera, else an automatic framing).
+// are read). A scene that loads is then given a camera as `render` would (chooseCamera: its first
+// glTF camera, else an automatic framing of its bounding sphere).
 //
 // The loader's contract: any input loads or is refused with an InputError. Any other exception,
 // a crash, an abort, a hang (-timeout), a sanitizer report or a large allocation (-rss_limit_mb,
@@ -65,7 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   writeFile(file, data, size);
   try {
     const lenslab::Scene scene = lenslab::loadGltf(file);
-    (void)lenslab::selectCamera(scene, std::nullopt, 1.5);
+    (void)lenslab::chooseCamera(scene, std::nullopt, {}, 1.5);
     if (verbose) std::fprintf(stderr, "loaded: %zu triangles, %zu images, %zu cameras\n", scene.triangleCount(), scene.images.size(), scene.cameras.size());
   } catch (const lenslab::InputError& e) {
     if (verbose) std::fprintf(stderr, "refused: %s\n", e.what());

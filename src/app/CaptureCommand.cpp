@@ -64,8 +64,76 @@ struct CaptureOptions {
   std::vector<std::string> aovs;
   bool quiet = false;
   LensOptions lens;
+  CameraOptions camera;
+  std::optional<double> fps;  // frames per second without --path
   std::optional<glm::vec3> background;
   std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
+};
+
+// Where each frame's camera comes from: the path's keys, or (no --path) the scene's own camera —
+// a glTF camera following its node through the playing animation, or a still one (automatic
+// framing, --eye/--target) — at --fps over the animation's duration. Either way each frame's
+// camera is a physical description, which is what the frame's camera file is written from.
+class FrameCameras {
+ public:
+  FrameCameras(const CaptureOptions& o, Scene& scene, double imageAspect) : o_(o), imageAspect_(imageAspect) {
+    if (!o.pathFile.empty()) {
+      if (o.camera.changesPose())
+        throw InputError(cat(o.camera.eye ? "--eye" : "--target", ": --path ", o.pathFile,
+                             " gives each frame's eye and target; leave the option out, or edit the path's keys"));
+      if (!o.camera.cameraNode.empty())
+        throw InputError(cat("--camera-node ", o.camera.cameraNode, ": --path ", o.pathFile, " gives each frame's camera; give one or the other"));
+      if (o.fps) throw InputError(cat("--fps ", *o.fps, ": --path ", o.pathFile, " gives its own fps; edit it there"));
+      path_ = loadCameraPath(o.pathFile);
+      return;
+    }
+    fps_ = o.fps.value_or(24.0);
+    if (!(fps_ > 0.0 && fps_ <= 1e4)) throw InputError(cat("--fps ", fps_, ": give a frame rate from above 0 to 10000"));
+    // A still camera is chosen at the animation's start, whichever frames this process renders.
+    if (!scene.animation.empty()) poseScene(scene, 0.0);
+    base_ = baseCamera(scene, std::nullopt, o.camera.cameraNode);
+    if (base_.form != CameraForm::GltfPerspective) still_ = physicalOf(composeCamera(base_, o.camera, imageAspect_));
+  }
+
+  int frameCount(const Scene& scene) const {
+    if (path_) return path_->frameCount();
+    return static_cast<int>(std::floor(animationDurationSeconds(scene) * fps_ + 1e-9)) + 1;
+  }
+  double timeOf(int frame) const { return path_ ? path_->frameTimeSeconds(frame) : frame / fps_; }
+  std::string name() const { return path_ ? o_.pathFile : base_.name; }
+  // Near / far given by the camera (written into its file) rather than fitted to the scene.
+  bool nearGiven() const { return path_ ? !path_->nearFromScene : base_.form == CameraForm::GltfPerspective; }
+  bool farGiven() const { return path_ ? !path_->farFromScene : base_.form == CameraForm::GltfPerspective && std::isfinite(base_.gltf.zfar); }
+
+  // The frame's camera, the scene posed at `time` already; `where` names it in errors.
+  PathKey at(const Scene& scene, double time, const std::string& where) const {
+    if (path_) {
+      PathKey key = cameraAt(*path_, time);
+      validate(key.camera, where);
+      if (o_.camera.changesLens()) key.camera = withCameraOptions(key.camera, o_.camera, where);  // the command line wins
+      return key;
+    }
+    if (still_) return {time, *still_, {}};
+    // A glTF camera where its node is at this time, its focus on the scene's centre then.
+    const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
+    return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}};
+  }
+
+ private:
+  PhysicalCamera physicalOf(const SelectedCamera& selected) const {
+    if (selected.physical) return *selected.physical;
+    const std::string why = base_.form == CameraForm::GltfOrthographic ? cat(base_.name, " is orthographic")
+                                                                      : selected.camera.source;
+    throw InputError(cat(why, "; capture writes each frame's camera as a perspective lens (OpenCV intrinsics and a focus), which "
+                              "this camera is not: give --path, or a perspective camera"));
+  }
+
+  const CaptureOptions& o_;
+  double imageAspect_ = 0.0;
+  std::optional<CameraPath> path_;
+  double fps_ = 24.0;
+  BaseCamera base_;
+  std::optional<PhysicalCamera> still_;
 };
 
 
@@ -107,18 +175,8 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   return j;
 }
 
-// One frame's camera: the path's key at the frame's time, the image size, the camera file's text,
-// and the camera read back from that text (near and far not yet fitted to the scene).
-struct FrameCamera {
-  double timeSeconds = 0.0;
-  PathKey key;
-  ImageSize size;
-  std::string text;
-  Camera camera;
-};
-
-// The path's camera at the frame's time and the frame's size: what the frame's camera file is
-// written from (cheap: the lens is checked when the file is read back, by frameCamera).
+// The frame's camera (the scene posed at the frame's time already) and the frame's size: what the
+// frame's camera file is written from (cheap: the lens is checked when the file is read back).
 struct FrameKey {
   double timeSeconds = 0.0;
   PathKey key;
@@ -127,28 +185,15 @@ struct FrameKey {
   std::string where;
 };
 
-FrameKey frameKey(const CameraPath& path, const CaptureOptions& o, int frame) {
+FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const CaptureOptions& o, int frame) {
   FrameKey k;
-  k.timeSeconds = path.frameTimeSeconds(frame);
-  k.key = cameraAt(path, k.timeSeconds);
-  k.where = cat(o.pathFile, ": frame ", frame, " (", k.timeSeconds, " s)");
-  validate(k.key.camera, k.where);
+  k.timeSeconds = cameras.timeOf(frame);
+  k.where = cat(cameras.name(), ": frame ", frame, " (", k.timeSeconds, " s)");
+  k.key = cameras.at(scene, k.timeSeconds, k.where);
   k.camera = toCamera(k.key.camera, k.where);
   k.camera.effects = k.key.effects;
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
-}
-
-FrameCamera frameCamera(const CameraPath& path, const CaptureOptions& o, int frame) {
-  const FrameKey k = frameKey(path, o, frame);
-  FrameCamera f;
-  f.timeSeconds = k.timeSeconds;
-  f.key = k.key;
-  f.size = k.size;
-  f.text = toIntrinsicsCameraJson(f.key.camera, f.key.effects, f.size, !path.nearFromScene, !path.farFromScene);
-  // The frame's camera as `render --camera` will read it, from the very text written.
-  f.camera = parseCameraJson(f.text, k.where).camera;
-  return f;
 }
 
 // The folder COLMAP's NAMEs are relative to: --out's leading folders up to the first that holds
@@ -172,7 +217,8 @@ struct ColmapFiles {
 // options, so every shard writes the same bytes. Identical intrinsics share one CAMERA_ID;
 // IMAGE_ID is the frame number + 1 (stable whatever the range). Throws InputError for a lens no
 // COLMAP model holds; warns once for each effect a pinhole model leaves out.
-ColmapFiles colmapModel(const CaptureOptions& o, const CameraPath& path, FrameRange range) {
+// A glTF camera following its node poses `scene` at each frame's time.
+ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range) {
   const fs::path base = framesFolder(o.out);
   const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
   std::vector<ColmapCamera> cameras;
@@ -182,8 +228,9 @@ ColmapFiles colmapModel(const CaptureOptions& o, const CameraPath& path, FrameRa
   for (int frame = range.first; frame <= range.last; ++frame) {
     // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
     // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
-    const FrameKey f = frameKey(path, o, frame);
-    const std::string where = cat("--colmap-out: ", o.pathFile, ": frame ", frame);
+    if (!scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
+    const FrameKey f = frameKey(frameCameras, scene, o, frame);
+    const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
     ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.effects.distortion, 0, where);
     const std::string key = colmapCamerasText({camera});
     const auto [it, added] = cameraIdOfParams.emplace(key, static_cast<std::uint32_t>(cameras.size() + 1));
@@ -230,8 +277,16 @@ void writeColmapModel(const fs::path& dir, const ColmapFiles& files) {
 
 int runCapture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  const CameraPath path = loadCameraPath(o.pathFile);
-  const int frameCount = path.frameCount();
+  // Without --path the scene's animation gives the frame count: the scene is read first.
+  if (o.pathFile.empty() && o.scene.empty())
+    throw InputError("--path: give a camera path, or a SCENE whose own camera (or automatic framing) is captured over its animation");
+  const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
+  Scene scene = loadGltf(scenePath);
+  applyBackground(scene, o.background);
+  if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
+  selectAnimation(scene, o.camera.animation);
+  const FrameCameras cameras(o, scene, o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0);
+  const int frameCount = cameras.frameCount(scene);
   const FrameRange range = o.frames.empty() ? FrameRange{0, frameCount - 1} : parseFrameRange(o.frames, frameCount);
   const Shard shard = parseShard(o.shard);
   const std::vector<int> frames = shardFrames(range, shard);
@@ -261,15 +316,11 @@ int runCapture(const CaptureOptions& o) {
     if (error) throw InputError(cat("--colmap-out ", o.colmapOut, ": cannot make the folder: ", error.message()));
     checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
   }
-  // Every frame's camera checked for what COLMAP can hold before any work; written once the
-  // scene has loaded, before the first frame.
+  // Every frame's camera checked for what COLMAP can hold before any work; written before the
+  // first frame.
   const std::optional<ColmapFiles> colmapFiles =
-      o.colmapOut.empty() ? std::nullopt : std::optional<ColmapFiles>(colmapModel(o, path, range));
+      o.colmapOut.empty() ? std::nullopt : std::optional<ColmapFiles>(colmapModel(o, cameras, scene, range));
 
-  const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "camera.json");
-  Scene scene = loadGltf(scenePath);
-  applyBackground(scene, o.background);
-  if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const bool animated = !scene.animation.empty();
 
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
@@ -293,13 +344,16 @@ int runCapture(const CaptureOptions& o) {
       continue;
     }
     const auto frameStart = std::chrono::steady_clock::now();
-    const FrameCamera f = frameCamera(path, o, frame);
-    const double time = f.timeSeconds;
+    const double time = cameras.timeOf(frame);
     if (animated) poseScene(scene, time);  // glTF node animations at the frame's time
+    const FrameKey f = frameKey(cameras, scene, o, frame);
+    const std::string& where = f.where;
     const PathKey& key = f.key;
     const ImageSize size = f.size;
-    const std::string& cameraText = f.text;
-    const Camera camera = withDepthRangeFitted(f.camera, scene.bounds);
+    const std::string cameraText =
+        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven());
+    // The frame's camera as `render --camera` will read it, from the very text written.
+    const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
 
     LensOptions lens = o.lens;
     lens.seed = frameSeed(o.lens.seed, frame);
@@ -375,8 +429,11 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
   cmd->add_option("--path", o->pathFile,
                   "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in the physical form>}, ...]} "
-                  "(see docs/capture.md)")
-      ->required();
+                  "(see docs/capture.md); without it, the scene's glTF camera (--camera-node; else automatic framing) over "
+                  "its animation at --fps");
+  cmd->add_option("--fps", o->fps, "without --path: frames per second over the playing animation (default 24)")
+      ->check(CLI::Range(1e-3, 1e4))
+      ->type_name("F");
   cmd->add_option("--out,-o", o->out,
                   "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "
                   "each frame's camera goes beside it as frame_NNNN.camera.json")
@@ -404,12 +461,13 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       "seed for the aperture and sub-pixel samples: each frame's seed is a hash of this and the frame number "
       "(the manifest's seed; render --seed with it reproduces the frame)");
   addTargetOption(*cmd, o->lens);
-  addBackgroundOption(*cmd, o->background);
+  addCameraOptions(*cmd, o->camera);
   cmd->add_option("--colmap-out", o->colmapOut,
                   "also write the cameras of every frame of --frames as a COLMAP text model in DIR (cameras.txt, "
                   "images.txt with the frames' names relative to --out's folder, an empty points3D.txt); every shard "
                   "writes the same files (docs/capture.md)")
       ->type_name("DIR");
+  addBackgroundOption(*cmd, o->background);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success");
   return [cmd, o]() { return cmd->parsed() ? runCapture(*o) : -1; };
 }

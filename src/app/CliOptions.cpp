@@ -24,6 +24,50 @@ void addLensOptions(CLI::App& cmd, LensOptions& o, bool withFocus) {
                 "focus on the depth under pixel X,Y of the image");
 }
 
+namespace {
+
+// An option that takes a point as X,Y,Z (three finite numbers).
+void addPointOption(CLI::App& cmd, const std::string& name, std::optional<glm::dvec3>& point, const std::string& description) {
+  cmd.add_option_function<std::vector<double>>(name, [&point, name](const std::vector<double>& xyz) {
+       for (const double v : xyz)
+         if (!std::isfinite(v)) throw CLI::ValidationError(name, "give three finite numbers X,Y,Z (world units)");
+       point = glm::dvec3(xyz[0], xyz[1], xyz[2]);
+     },
+     description)
+      ->delimiter(',')
+      ->expected(3)
+      ->type_name("X,Y,Z");
+}
+
+}  // namespace
+
+void addCameraNodeOption(CLI::App& cmd, CameraOptions& o) {
+  cmd.add_option("--camera-node", o.cameraNode,
+                 "use this glTF camera of the scene: its node's name, its camera's name, or its index (as `lenslab info` "
+                 "lists them; default: the first)")
+      ->type_name("NAME|INDEX");
+}
+
+void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose) {
+  cmd.add_option("--focal-length", o.focalLengthMm,
+                 "lens focal length in mm, overriding the camera's (a new focal length changes the field of view)")
+      ->check(CLI::Range(0.01, 1e6))
+      ->type_name("MM");
+  cmd.add_option("--f-number", o.fNumber, "aperture as an f-number N (radius f/2N), e.g. 2.8, for depth of field; infinity: a pinhole")
+      ->type_name("N");
+  cmd.add_option("--sensor", o.sensor, "sensor size: WxH in mm (e.g. 36x24), or " + namedSensorList())
+      ->type_name("WxH|NAME");
+  if (withPose) {
+    addPointOption(cmd, "--eye", o.eye, "put the lens centre here (world units), overriding the camera's");
+    addPointOption(cmd, "--target", o.target, "look at this point (world units), overriding the camera's; a camera focused on its target stays focused on it");
+  }
+  addCameraNodeOption(cmd, o);
+  cmd.add_option("--animation", o.animation,
+                 "which glTF animation plays: its name, its index (as `lenslab info` lists them), or all (together); "
+                 "default: the first")
+      ->type_name("NAME|INDEX|all");
+}
+
 void addTargetOption(CLI::App& cmd, LensOptions& o) {
   cmd.add_option("--target-psnr", o.targetPsnrDb,
                  "render to an error instead of a count: each 32-px tile gets its own number of samples, in a "
@@ -52,6 +96,14 @@ void addBackgroundOption(CLI::App& cmd, std::optional<glm::vec3>& background) {
      "colour where no surface is seen, linear R,G,B (e.g. 0,0,0); default: the scene's (a dark blue grey, 0.05,0.06,0.08)")
       ->delimiter(',')
       ->expected(3);
+}
+
+void addColmapOptions(CLI::App& cmd, CameraOptions& o) {
+  cmd.add_option("--colmap", o.colmapDir,
+                 "a COLMAP text model's folder (cameras.txt, images.txt): render the view of the photograph --image "
+                 "names, with its camera's intrinsics and distortion (docs/camera-files.md)")
+      ->type_name("DIR");
+  cmd.add_option("--image", o.colmapImage, "with --colmap: the photograph's NAME in images.txt")->type_name("NAME");
 }
 
 }  // namespace lenslab

@@ -1,7 +1,9 @@
 #pragma once
 // The command-line options that render, raycast, sweep and view share, registered with CLI11:
 // aperture pattern, sample count, seed, focus (plan/UserOptions.h holds what they mean), the
-// background colour, and X,Y pairs.
+// camera's lens, pose, glTF camera and animation clip (plan/CameraOptions.h), the background
+// colour, and X,Y pairs.
+#include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
 
 #include <CLI/CLI.hpp>
@@ -17,6 +19,15 @@ namespace lenslab {
 void addLensOptions(CLI::App& command, LensOptions& options, bool withFocus = true);
 // --target-psnr DB (render and view; sweep runs its adaptive method at several targets).
 void addTargetOption(CLI::App& command, LensOptions& options);
+
+// --focal-length, --f-number, --sensor, --eye, --target, --camera-node and --animation (render,
+// raycast, view, capture): what they mean and how they compose with the camera is
+// plan/CameraOptions.h. `withPose`: --eye and --target too.
+void addCameraOptions(CLI::App& command, CameraOptions& options, bool withPose = true);
+// --colmap DIR --image NAME: a COLMAP photograph's camera as the base (render, raycast, view).
+void addColmapOptions(CLI::App& command, CameraOptions& options);
+// --camera-node alone (info, sweep).
+void addCameraNodeOption(CLI::App& command, CameraOptions& options);
 
 // --background R,G,B: the colour (linear RGB, each finite, 0 to 65504) where no surface is seen.
 void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);

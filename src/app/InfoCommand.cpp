@@ -1,9 +1,11 @@
 // lenslab info: what a scene holds and what a render of it would need.
+#include "app/CliOptions.h"
 #include "app/Commands.h"
 #include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
+#include "core/Text.h"
 #include "io/CameraSelection.h"
 #include "gl/GlContext.h"
 #include "plan/FramePlan.h"
@@ -39,7 +41,7 @@ std::optional<VisibleBlur> measureBlur(const Scene& scene, const Camera& camera,
   }
 }
 
-int runInfo(const std::string& path, const std::string& cameraFile) {
+int runInfo(const std::string& path, const std::string& cameraFile, const CameraOptions& cameraOptions) {
   const Scene scene = loadGltf(path);
   std::ostream& out = std::cout;
   out.precision(6);
@@ -57,10 +59,11 @@ int runInfo(const std::string& path, const std::string& cameraFile) {
     printVector(out, scene.bounds.size());
     out << ")\n";
   }
-  out << "cameras     " << scene.cameras.size() << "\n";
+  out << "cameras     " << scene.cameras.size() << (scene.cameras.empty() ? "" : " (render --camera-node NAME|INDEX picks one; default: [0])")
+      << "\n";
   for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
     const SceneCamera& c = scene.cameras[i];
-    out << "  [" << i << "] " << (c.name.empty() ? "(unnamed)" : c.name) << ": ";
+    out << "  " << sceneCameraLabel(scene, i) << ": ";
     if (c.perspective)
       out << "perspective, yfov " << c.yfovRadians * kDegreesPerRadian << " deg, aspect "
           << (c.aspectRatio > 0 ? std::to_string(c.aspectRatio) : "from image");
@@ -70,6 +73,13 @@ int runInfo(const std::string& path, const std::string& cameraFile) {
     printVector(out, glm::dvec3(c.worldFromCamera[3]));
     out << "\n";
   }
+  const std::vector<AnimationClip>& clips = scene.animation.clips;
+  out << "animations  " << clips.size() << (clips.empty() ? "" : " (--animation NAME|INDEX|all picks what plays; default: [0])") << "\n";
+  for (std::size_t i = 0; i < clips.size(); ++i)
+    out << "  [" << i << "] " << (clips[i].name.empty() ? "(unnamed)" : "\"" + clips[i].name + "\"") << ": "
+        << clipDurationSeconds(clips[i]) << " s, " << clips[i].fileChannelCount << " channel(s)"
+        << (clips[i].channels.size() < clips[i].fileChannelCount ? cat(", ", clips[i].channels.size(), " played") : std::string())
+        << "\n";
   out << "materials   " << scene.materials.size() << "\n";
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
@@ -83,7 +93,8 @@ int runInfo(const std::string& path, const std::string& cameraFile) {
   for (const std::string& note : scene.notes) out << "note        " << note << "\n";
 
   if (scene.triangleCount() > 0) {
-    SelectedCamera selected = selectCamera(scene, cameraFile.empty() ? std::nullopt : std::optional<std::filesystem::path>(cameraFile), 0.0);
+    SelectedCamera selected =
+        chooseCamera(scene, cameraFile.empty() ? std::nullopt : std::optional<std::filesystem::path>(cameraFile), cameraOptions, 0.0);
     selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
     const ImageSize size = resolveImageSize(selected.camera, std::nullopt, std::nullopt);
     const std::optional<VisibleBlur> visible = measureBlur(scene, selected.camera, size, out);
@@ -117,10 +128,12 @@ int runInfo(const std::string& path, const std::string& cameraFile) {
 std::function<int()> addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto camera = std::make_shared<std::string>();
-  CLI::App* cmd = app.add_subcommand("info", "Describe a glTF scene: triangles, bounds, cameras, materials, render plan");
+  auto cameraOptions = std::make_shared<CameraOptions>();
+  CLI::App* cmd = app.add_subcommand("info", "Describe a glTF scene: triangles, bounds, cameras, animations, materials, render plan");
   cmd->add_option("scene", *path, "glTF 2.0 scene (.gltf or .glb)")->required();
   cmd->add_option("--camera", *camera, "camera JSON to plan for (default: the scene's first glTF camera, else an automatic framing)");
-  return [cmd, path, camera]() { return cmd->parsed() ? runInfo(*path, *camera) : -1; };
+  addCameraNodeOption(*cmd, *cameraOptions);
+  return [cmd, path, camera, cameraOptions]() { return cmd->parsed() ? runInfo(*path, *camera, *cameraOptions) : -1; };
 }
 
 }  // namespace lenslab

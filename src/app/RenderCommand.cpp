@@ -1,7 +1,6 @@
 // lenslab render: one image of a scene through the lecture's camera, rasterized headless.
 // lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
 #include "app/CliOptions.h"
-#include "app/ColmapOptions.h"
 #include "app/FrameRender.h"
 #include "app/Commands.h"
 #include "app/Stats.h"
@@ -51,10 +50,10 @@ struct RenderOptions {
   std::string statsFile;
   bool quiet = false;
   LensOptions lens;
+  CameraOptions camera;
   std::optional<glm::vec3> background;
   int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
-  ColmapChoice colmap;                // --colmap DIR --image NAME: the base camera
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -75,8 +74,11 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   Renderer renderer(scene);
   stats.setupSeconds = secondsSince(t);
 
-  if (o.lens.focusAt)
-    camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer)).camera, scene.bounds);
+  if (o.lens.focusAt) {
+    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer));
+    camera = withDepthRangeFitted(focused.camera, scene.bounds);
+    stats.setCamera(focused);
+  }
   const auto renderStart = std::chrono::steady_clock::now();
   const FramePlan plan = planFrame(renderer, scene, camera, size, planOptions, stats);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
@@ -127,12 +129,13 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   stats.setupSeconds = secondsSince(t);
   stats.renderer = "lenslab ray caster (Embree, TBB)";
   stats.backend = "cpu";
-  if (o.lens.focusAt)
-    camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt,
-                                               [&](const Camera& c, ImageSize depthSize, int x, int y) {
-                                                 return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
-                                               }).camera,
-                                  scene.bounds);
+  if (o.lens.focusAt) {
+    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, [&](const Camera& c, ImageSize depthSize, int x, int y) {
+      return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
+    });
+    camera = withDepthRangeFitted(focused.camera, scene.bounds);
+    stats.setCamera(focused);
+  }
   stats.camera = camera.source;
   stats.plan.apertureSamples = o.samplesPerPixel;
   stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
@@ -156,24 +159,21 @@ int runRender(const RenderOptions& o) {
   if (!o.statsFile.empty()) checkOutputPath(o.statsFile, OutputKind::Json, "--stats");
   const PlanOptions planOptions = toPlanOptions(o.lens);
 
-  const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
-  // A COLMAP image's camera replaces the camera file or the scene's camera (read before the scene,
-  // so that a bad model is refused at once).
-  const std::optional<SelectedCamera> colmapCamera = selectColmapCamera(o.colmap, o.cameraFile);
+  // The bundled scene's camera file is its base camera unless a glTF camera is asked for.
+  const auto [scenePath, cameraPath] =
+      resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
 
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
-  if (o.timeSeconds) {
-    if (scene.animation.empty())
-      std::cerr << "lenslab: warning: --time " << *o.timeSeconds << ": " << scenePath.string() << " has no animation that moves what it draws\n";
-    poseScene(scene, *o.timeSeconds);
-  }
+  for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
   // The camera as selected and refocused; rendered with its open near/far fitted to the scene.
-  SelectedCamera selected =
-      applyLensOptions(colmapCamera ? *colmapCamera : selectCamera(scene, cameraPath, requestedAspect), o.lens);
+  SelectedCamera selected = chooseCamera(scene, cameraPath, o.camera, requestedAspect);
+  const std::vector<std::string> focusNotes = focusWarnings(selected.camera, o.lens);
+  selected = applyLensOptions(selected, o.lens);
+  for (const std::string& w : focusNotes) std::cerr << "lenslab: warning: " << w << "\n";
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
   const Camera& camera = selected.camera;
   const ImageSize size = resolveImageSize(camera, o.width, o.height);
@@ -187,6 +187,7 @@ int runRender(const RenderOptions& o) {
   stats.size = size;
   stats.backend = o.backend;
   stats.triangles = scene.triangleCount();
+  stats.setCamera(selected);
 
   // The image and the stats appear together or not at all (io/AtomicFile.h).
   OutputSet outputs;
@@ -229,7 +230,9 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
       ? app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model")
       : app.add_subcommand("raycast", "Ray cast a glTF scene on the CPU: the reference for `render`, same camera and shading");
   cmd->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--camera", options->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default: the scene's first glTF camera, else an automatic framing");
+  cmd->add_option("--camera", options->cameraFile,
+                  "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default: the scene's first "
+                  "glTF camera, else an automatic framing; the lens and pose options below override it field by field");
   cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")->capture_default_str();
   cmd->add_option("--width", options->width,
                   method == Method::Raster
@@ -253,9 +256,10 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->check(CLI::Range(1, 1 << 20))
         ->capture_default_str();
   }
-  addColmapOptions(*cmd, options->colmap);
+  addColmapOptions(*cmd, options->camera);
   addLensOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
+  addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);
   cmd->add_option("--time", options->timeSeconds,
                   "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "

@@ -2,13 +2,37 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace lenslab {
+
+void RunStats::setCamera(const SelectedCamera& selected) {
+  camera = selected.camera.source;
+  focusDistance = selected.camera.focusDistance();
+  apertureRadius = selected.camera.apertureRadius;
+  physical = selected.physical;
+}
+
+namespace {
+
+nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
+
+}  // namespace
 
 std::string toJson(const RunStats& s) {
   nlohmann::json j;
   j["command"] = s.command;
   j["scene"] = s.scene;
   j["camera"] = s.camera;
+  j["lens"] = {{"focus_distance", distanceJson(s.focusDistance)}, {"aperture_radius", s.apertureRadius}};
+  if (s.physical) {
+    const PhysicalCamera& p = *s.physical;
+    j["lens"]["focal_length_mm"] = p.focalLengthMm;
+    j["lens"]["f_number"] = distanceJson(p.fNumber);
+    j["lens"]["sensor_mm"] = {p.sensorMm.x, p.sensorMm.y};
+    j["lens"]["eye"] = {p.eye.x, p.eye.y, p.eye.z};
+    j["lens"]["target"] = {p.target.x, p.target.y, p.target.z};
+  }
   j["width"] = s.size.widthPx;
   j["height"] = s.size.heightPx;
   j["backend"] = s.backend;

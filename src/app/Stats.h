@@ -1,6 +1,7 @@
 #pragma once
 // --stats: what a run did, as JSON, for scripts and reports.
 #include "camera/ImageSize.h"
+#include "camera/PhysicalCamera.h"
 #include "io/AtomicFile.h"
 #include "plan/FramePlan.h"
 #include "plan/TileBudget.h"
@@ -27,6 +28,13 @@ struct RunStats {
   double writeSeconds = 0.0;     // encoding and writing the image
   double prepassSeconds = 0.0;   // the pinhole depth pre-pass and its blur map (part of renderSeconds)
   std::optional<FrameEstimate> estimate;  // with --target-psnr
+  // The lens as rendered (after --focus-distance / --focus-at): "lens" in the JSON.
+  double focusDistance = 0.0;             // from the PRP along the view direction; +infinity allowed
+  double apertureRadius = 0.0;            // world units; 0 = a pinhole
+  std::optional<PhysicalCamera> physical; // focal length, f-number, sensor, eye, target when there is one
+
+  // The camera's source, focus, aperture and physical description.
+  void setCamera(const SelectedCamera& selected);
 };
 
 std::string toJson(const RunStats& stats);

@@ -36,15 +36,18 @@ struct SweepCommandOptions {
   std::optional<int> height;
   std::string backend = "osmesa";
   LensOptions lens;
+  CameraOptions camera;  // the lens, pose and glTF camera; no clip (a sweep draws the rest pose)
   std::optional<glm::vec3> background;
   SweepOptions sweep;
 };
 
 int runSweepCommand(SweepCommandOptions& o) {
-  const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera-dof.json");
+  const auto [scenePath, cameraPath] =
+      resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera-dof.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
-  const Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, 0.0), o.lens).camera, scene.bounds);
+  const Camera camera =
+      withDepthRangeFitted(applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens).camera, scene.bounds);
   const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
   requireOneTarget(size, RenderTargetLimits{}, "sweep");
   const fs::path out = o.outDir;
@@ -133,6 +136,8 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->check(CLI::IsMember(sweepSeriesNames()))
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
+  addCameraOptions(*cmd, o->camera);
+  cmd->remove_option(cmd->get_option("--animation"));
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
 }

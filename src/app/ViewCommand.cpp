@@ -1,6 +1,5 @@
 // lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
 #include "app/CliOptions.h"
-#include "app/ColmapOptions.h"
 #include "app/Commands.h"
 #include "io/OutputPath.h"
 #include "view/ViewApp.h"
@@ -12,15 +11,20 @@ namespace lenslab {
 
 std::function<int()> addViewCommand(CLI::App& app) {
   auto o = std::make_shared<view::ViewOptions>();
-  auto colmap = std::make_shared<ColmapChoice>();
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window: the image converging, every camera and lens parameter, click to focus, the lecture's diagram");
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default as for render");
+  cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default as for render; the lens "
+                  "and pose options override it field by field");
   cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
   cmd->add_option("--height", o->height, "image height in pixels");
   addLensOptions(*cmd, o->lens);
   addTargetOption(*cmd, o->lens);
+  addCameraOptions(*cmd, o->camera);
+  cmd->add_option("--time", o->timeSeconds,
+                  "pose the scene's glTF animation at this time (seconds), as render --time does; default: the rest pose")
+      ->check(CLI::Range(-1e9, 1e9))
+      ->type_name("SECONDS");
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--frames", o->frames,
                   "scripted: run at least N frames (and on until the accumulation is complete), write --screenshot, exit");
@@ -41,12 +45,11 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_option("--frame-budget-ms", o->frameBudgetMs, "accumulation work per frame, at least one sample")
       ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
-  addColmapOptions(*cmd, *colmap);
+  addColmapOptions(*cmd, o->camera);
   cmd->add_option("--save-camera", o->saveCamera, "scripted: write the final camera as JSON (lecture form), as the panel's Save camera does");
   cmd->add_option("--stats", o->statsFile, "scripted: write frames, samples, ms per sample and focus distance as JSON");
-  return [cmd, o, colmap]() {
+  return [cmd, o]() {
     if (!cmd->parsed()) return -1;
-    o->baseCamera = selectColmapCamera(*colmap, o->cameraFile);
     // Each file the scripted run writes is checked before the window opens (io/OutputPath.h).
     if (!o->screenshot.empty()) checkOutputPath(o->screenshot, OutputKind::Image, "--screenshot");
     if (!o->saveCamera.empty()) checkOutputPath(o->saveCamera, OutputKind::Any, "--save-camera");

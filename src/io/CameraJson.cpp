@@ -203,6 +203,7 @@ CameraFile parsePhysical(const Reader& r) {
   if (r.has("far")) c.farDistance = r.distance("far");
   validate(c, r.where());
   CameraFile file;
+  file.form = CameraFile::Form::Physical;
   file.physical = c;
   file.camera = toCamera(c, r.where());
   file.camera.nearFromScene = !r.has("near");
@@ -344,6 +345,7 @@ CameraFile parseOpenCv(const Reader& r) {
   if (r.has("far")) spec.farDistance = r.distance("far");
   validate(spec, r.where());
   CameraFile file;
+  file.form = CameraFile::Form::Intrinsics;
   file.camera = cameraFocusedOnViewPlane(spec, apertureRadiusOf(r), r.where());
   if (d != focus) file.camera.inverseFocusOffPlane = 1.0 / focus;
   file.camera.nearFromScene = !r.has("near");

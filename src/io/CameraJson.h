@@ -41,6 +41,8 @@
 namespace lenslab {
 
 struct CameraFile {
+  enum class Form { Lecture, Physical, Intrinsics };
+  Form form = Form::Lecture;               // which of the three forms the file is in
   Camera camera;
   std::optional<PhysicalCamera> physical;  // when given in the physical form
 };

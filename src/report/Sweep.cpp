@@ -139,7 +139,7 @@ double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask)
 SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {
   if (camera.isPinhole())
     throw InputError("sweep: the camera is a pinhole, so there is no depth of field to converge to; give a camera with "
-                     "f_number (physical form) or aperture_radius (lecture form)");
+                     "f_number (physical form) or aperture_radius (lecture form), or --f-number N");
   SweepResult result;
   const fs::path imageDir = o.outDir.empty() ? fs::path() : o.outDir / "images";
   assert(o.outDir.empty() || o.outputs);

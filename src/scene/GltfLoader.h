@@ -6,8 +6,8 @@
 // triangle primitives (lists, strips and fans; indexed or not), normals (flat ones generated when
 // absent, as the glTF spec asks), TEXCOORD_0, COLOR_0, base colour factor and texture with its
 // sampler, KHR_materials_unlit, alpha mode and cutoff, double-sidedness, cameras, and the node
-// animations (translation, rotation, scale; STEP, LINEAR, CUBICSPLINE) of every animation in the
-// file, on one clock, in Scene::animation. The returned scene is at rest (the nodes' own
+// animations (translation, rotation, scale; STEP, LINEAR, CUBICSPLINE), each of the file's
+// animations a clip of Scene::animation. The returned scene is at rest (the nodes' own
 // transforms); poseScene (scene/SceneAnimation.h) moves it to a time.
 // What is left out, with a line in Scene::notes: points and lines, other PBR inputs, other
 // texture coordinate sets, skins (bind pose), morph targets (base mesh) and the animation channels

@@ -97,7 +97,9 @@ struct Bounds {
 
 // A camera stored in the glTF file, with its node's placement (it looks along -Z, up +Y).
 struct SceneCamera {
-  std::string name;
+  std::string name;          // the camera's name in the file, may be empty
+  std::string nodeName;      // the name of the node that places it, may be empty
+  int gltfNode = -1;         // that node's index in the file
   bool perspective = true;
   double yfovRadians = 0.0;  // perspective
   double aspectRatio = 0.0;  // perspective, 0 = not given (use the image's)

@@ -113,9 +113,27 @@ void refuseFarVertices(const Scene& scene, double seconds) {
 
 }  // namespace
 
-double animationDurationSeconds(const Scene& scene) {
+bool SceneAnimation::empty() const {
+  if (playing == kAllClips) {
+    for (const AnimationClip& clip : clips)
+      if (!clip.channels.empty()) return false;
+    return true;
+  }
+  return playing < 0 || static_cast<std::size_t>(playing) >= clips.size() || clips[toIndex(playing)].channels.empty();
+}
+
+double clipDurationSeconds(const AnimationClip& clip) {
   double seconds = 0.0;
-  for (const AnimationChannel& c : scene.animation.channels) seconds = std::max(seconds, c.keyTimesSeconds.back());
+  for (const AnimationChannel& c : clip.channels) seconds = std::max(seconds, c.keyTimesSeconds.back());
+  return seconds;
+}
+
+double animationDurationSeconds(const Scene& scene) {
+  const SceneAnimation& animation = scene.animation;
+  if (animation.empty()) return 0.0;
+  if (animation.playing != kAllClips) return clipDurationSeconds(animation.clips[toIndex(animation.playing)]);
+  double seconds = 0.0;
+  for (const AnimationClip& clip : animation.clips) seconds = std::max(seconds, clipDurationSeconds(clip));
   return seconds;
 }
 
@@ -132,16 +150,20 @@ void poseScene(Scene& scene, double seconds) {
   std::vector<Trs> trs(animation.nodes.size());
   for (std::size_t i = 0; i < animation.nodes.size(); ++i)
     trs[i] = {animation.nodes[i].translation, animation.nodes[i].rotation, animation.nodes[i].scale, false};
-  for (const AnimationChannel& c : animation.channels) {
-    Trs& node = trs[toIndex(c.node)];
-    const glm::dvec4 v = sample(c, seconds);
-    switch (c.path) {
-      case AnimationPath::Translation: node.t = glm::dvec3(v); break;
-      case AnimationPath::Rotation: node.r = toQuat(v); break;
-      case AnimationPath::Scale: node.s = glm::dvec3(v); break;
+  // All clips: in the file's order, so that a later channel on the same node and path wins.
+  const std::size_t first = animation.playing == kAllClips ? 0 : toIndex(animation.playing);
+  const std::size_t last = animation.playing == kAllClips ? animation.clips.size() : first + 1;
+  for (std::size_t k = first; k < last; ++k)
+    for (const AnimationChannel& c : animation.clips[k].channels) {
+      Trs& node = trs[toIndex(c.node)];
+      const glm::dvec4 v = sample(c, seconds);
+      switch (c.path) {
+        case AnimationPath::Translation: node.t = glm::dvec3(v); break;
+        case AnimationPath::Rotation: node.r = toQuat(v); break;
+        case AnimationPath::Scale: node.s = glm::dvec3(v); break;
+      }
+      node.animated = true;
     }
-    node.animated = true;
-  }
   // Down the hierarchy (parents come first), in double precision as the loader composes.
   std::vector<glm::dmat4> worldFromNode(animation.nodes.size());
   for (std::size_t i = 0; i < animation.nodes.size(); ++i) {

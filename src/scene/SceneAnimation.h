@@ -6,12 +6,17 @@
 // transform, which instances and cameras hang on each) and the channels that move them. Posing
 // reads no file and allocates little: it is meant to be called once per frame.
 //
-// Conventions, as glTF has them: times in seconds on one clock shared by every animation of the
-// file; a node's local transform is T * R * S (rotation a unit quaternion); before the first key a
-// channel holds its first value, after the last its last value.
+// Each of the file's animations is a clip (glTF's "animation": a walk, a run, a survey). One clip
+// plays at a time — by default the first, as viewers do; several clips posed at once mix their
+// poses (a fox half walking, half running) — or all of them together on one clock.
+//
+// Conventions, as glTF has them: times in seconds from each clip's start (all on one clock when
+// all play); a node's local transform is T * R * S (rotation a unit quaternion); before the first
+// key a channel holds its first value, after the last its last value.
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -51,17 +56,34 @@ struct AnimationChannel {
   std::vector<glm::dvec4> values;
 };
 
-struct SceneAnimation {
-  std::vector<AnimatedNode> nodes;        // empty when nothing is animated
-  std::vector<AnimationChannel> channels; // at most one per node and path
-  bool empty() const { return channels.empty(); }
+// One of the file's animations: its channels that move drawn nodes.
+struct AnimationClip {
+  std::string name;                        // the animation's name in the file, may be empty
+  std::vector<AnimationChannel> channels;  // at most one per node and path; empty when it moves nothing drawn
+  std::size_t fileChannelCount = 0;        // its channels in the file, played or not (what `info` lists)
 };
 
-// The largest key time over all channels; 0 when the scene is not animated.
+// Which clips play: one, by its index in SceneAnimation::clips, or all of them together.
+constexpr int kAllClips = -1;
+
+struct SceneAnimation {
+  std::vector<AnimatedNode> nodes;  // empty when no clip moves anything
+  std::vector<AnimationClip> clips; // every animation of the file, in the file's order
+  int playing = 0;                  // index into clips, or kAllClips; poseScene plays these
+  // True when what plays moves nothing (no clips, or the playing clip moves no drawn node).
+  bool empty() const;
+};
+
+// The largest key time of a clip's channels (0 when it has none).
+double clipDurationSeconds(const AnimationClip& clip);
+
+// The duration of what plays: the playing clip's, or the longest clip's when all play; 0 when the
+// scene is not animated.
 double animationDurationSeconds(const Scene& scene);
 
-// Moves the scene's instances and cameras to where its animation puts them at `seconds`, and
-// updates its bounds. A scene that is not animated is left as it is. Throws InputError (one line:
+// Moves the scene's instances and cameras to where the playing clip (or all clips, in the file's
+// order: a later channel on the same node and path wins) puts them at `seconds`, and updates its
+// bounds. A scene whose playing clips move nothing is left as it is. Throws InputError (one line:
 // the scene file, the node, the time) when the pose is not finite or puts a vertex beyond
 // ±kMaxWorldCoordinate; the scene then holds part of that pose until it is posed again.
 void poseScene(Scene& scene, double seconds);

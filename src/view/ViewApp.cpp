@@ -14,6 +14,7 @@
 #include "plan/TilePlan.h"
 #include "scene/GltfLoader.h"
 
+#include <iostream>
 #include <stdexcept>
 
 namespace lenslab::view {
@@ -79,13 +80,16 @@ int runView(const ViewOptions& o) {
   if (o.frames < 0) throw InputError(cat("--frames ", o.frames, ": give a number of frames (0 = interactive)"));
   if (!o.screenshot.empty() && o.frames == 0) throw InputError("--screenshot needs --frames N (scripted mode)");
   const PlanOptions planOptions = toPlanOptions(o.lens);
-  const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
+  const auto [scenePath, cameraPath] =
+      resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
+  for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0;
-  const SelectedCamera selected = o.baseCamera ? *o.baseCamera : selectCamera(scene, cameraPath, requestedAspect);
+  const SelectedCamera selected = chooseCamera(scene, cameraPath, o.camera, requestedAspect);
   const SelectedCamera refocusedCamera = applyLensOptions(selected, o.lens);
+  for (const std::string& w : focusWarnings(selected.camera, o.lens)) std::cerr << "lenslab: warning: " << w << "\n";
   EditableCamera camera{refocusedCamera.camera, refocusedCamera.physical};
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.
   const std::optional<int> width = o.width || o.height || o.frames > 0 ? o.width : std::optional<int>(640);

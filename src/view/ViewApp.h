@@ -3,6 +3,7 @@
 // camera's image converging by progressive accumulation, a Dear ImGui panel with every camera and
 // lens parameter, and an outside view that draws the lecture's diagram of the camera in the scene.
 // Scripted mode (--frames) runs a fixed number of frames and writes a screenshot, for tests.
+#include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
 
 #include <glm/glm.hpp>
@@ -18,6 +19,8 @@ struct ViewOptions {
   std::optional<int> width;           // the rendered image, as in `render`
   std::optional<int> height;
   LensOptions lens;
+  CameraOptions camera;               // lens, pose, glTF camera and animation clip over the base camera
+  std::optional<double> timeSeconds;  // pose the playing animation at this time; none = the rest pose
   std::optional<glm::vec3> background;
   int frames = 0;                     // > 0: scripted; run at least this many frames, then exit
   std::string screenshot;             // written at the end of a scripted run (.png or .exr)
@@ -29,7 +32,6 @@ struct ViewOptions {
   std::string saveCamera;             // scripted: the camera at the end, as the panel's "Save camera" writes it
   std::optional<glm::ivec2> windowSize;  // window size in screen coordinates
   double frameBudgetMs = 16.0;        // accumulation work per frame (at least one sample)
-  std::optional<SelectedCamera> baseCamera;  // given (--colmap's): used instead of the camera file or the scene's
 };
 
 // Returns the exit code; throws InputError for bad input (files, cameras, options) and

@@ -1,6 +1,7 @@
 // glTF node animation (scene/SceneAnimation, read by scene/gltf/Animations): small files written
 // here with answers computed by hand in the comments, and the corpus's AnimatedTriangle (suite
 // GltfSamples, which ctest runs as the entry `corpus`).
+#include "../common/animated_gltf.h"
 #include "../common/temp_dir_test.h"
 #include "core/Error.h"
 #include "scene/GltfLoader.h"
@@ -22,75 +23,9 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
+using test::AnimatedGltf;
 
-constexpr int kFloat = 5126, kUShort = 5123;
 const double kHalfSqrt2 = std::sqrt(0.5);
-
-// A glTF with one buffer (in a data: URI), a one-triangle mesh (0,0,0), (1,0,0), (0,1,0), and
-// helpers for nodes and animation channels.
-class AnimatedGltf {
- public:
-  json gltf = {{"asset", {{"version", "2.0"}}}, {"scenes", json::array({{{"nodes", json::array()}}})}};
-
-  int floats(const std::vector<float>& values, const char* type, std::size_t count) {
-    return accessor(values.data(), values.size() * sizeof(float), kFloat, type, count);
-  }
-
-  int triangle() {
-    if (triangleMesh_ >= 0) return triangleMesh_;
-    const int positions = floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
-    gltf["accessors"][static_cast<std::size_t>(positions)]["min"] = {0, 0, 0};
-    gltf["accessors"][static_cast<std::size_t>(positions)]["max"] = {1, 1, 0};
-    const std::vector<std::uint16_t> i = {0, 1, 2};
-    const int indices = accessor(i.data(), i.size() * sizeof(std::uint16_t), kUShort, "SCALAR", 3);
-    return triangleMesh_ = push("meshes", {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}});
-  }
-
-  // A node (its JSON given), a root of the drawn scene unless it has a parent.
-  int node(json n, int parent = -1) {
-    const int index = push("nodes", n);
-    if (parent >= 0)
-      gltf["nodes"][static_cast<std::size_t>(parent)]["children"].push_back(index);
-    else
-      gltf["scenes"][0]["nodes"].push_back(index);
-    return index;
-  }
-
-  // A channel with its own sampler in animation `animation` (made when needed).
-  void channel(int target, const char* path, const char* interpolation, const std::vector<float>& timesSeconds,
-               const std::vector<float>& values, std::size_t animation = 0) {
-    const std::size_t components = std::string(path) == "rotation" ? 4 : 3;
-    const int input = floats(timesSeconds, "SCALAR", timesSeconds.size());
-    const int output = floats(values, components == 4 ? "VEC4" : "VEC3", values.size() / components);
-    while (gltf["animations"].size() <= animation) gltf["animations"].push_back({{"samplers", json::array()}, {"channels", json::array()}});
-    json& a = gltf["animations"][animation];
-    a["samplers"].push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
-    a["channels"].push_back({{"sampler", a["samplers"].size() - 1}, {"target", {{"node", target}, {"path", path}}}});
-  }
-
-  fs::path write(const fs::path& file) const {
-    json g = gltf;
-    g["buffers"] = {{{"byteLength", bin_.size()}, {"uri", "data:application/octet-stream;base64," + OIIO::Strutil::base64_encode(bin_)}}};
-    std::ofstream(file, std::ios::binary) << g.dump();
-    return file;
-  }
-
- private:
-  int accessor(const void* data, std::size_t bytes, int componentType, const char* type, std::size_t count) {
-    while (bin_.size() % 4) bin_.push_back('\0');
-    const int view = push("bufferViews", {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", bytes}});
-    bin_.append(static_cast<const char*>(data), bytes);
-    return push("accessors", {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}});
-  }
-
-  int push(const char* collection, const json& item) {
-    gltf[collection].push_back(item);
-    return static_cast<int>(gltf[collection].size()) - 1;
-  }
-
-  std::string bin_;
-  int triangleMesh_ = -1;
-};
 
 void expectNear(const glm::dvec3& actual, const glm::dvec3& expected, double tolerance, const std::string& what) {
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << what << ", component " << i;
@@ -258,15 +193,34 @@ TEST_F(AnimationFile, BoundsFollowThePose) {
 
 // ---- what the loader keeps and notes ----
 
-TEST_F(AnimationFile, DurationIsTheLastKeyOfAllAnimationsOnOneClock) {
+TEST_F(AnimationFile, EachAnimationIsAClipAndTheFirstPlaysByDefault) {
   AnimatedGltf g;
   const int a = g.node({{"mesh", g.triangle()}});
   const int b = g.node({{"mesh", g.triangle()}});
   g.channel(a, "translation", "LINEAR", {0, 2}, {0, 0, 0, 1, 0, 0}, 0);
   g.channel(b, "scale", "STEP", {0.5, 3.5}, {1, 1, 1, 2, 2, 2}, 1);
+  g.gltf["animations"][1]["name"] = "grow";
   Scene scene = load(g);
+  ASSERT_EQ(scene.animation.clips.size(), 2u);
+  EXPECT_EQ(scene.animation.clips[0].name, "");
+  EXPECT_EQ(scene.animation.clips[1].name, "grow");
+  EXPECT_EQ(scene.animation.clips[1].fileChannelCount, 1u);
+  EXPECT_EQ(scene.animation.playing, 0);
+  EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 2.0) << "the first clip's";
+  EXPECT_TRUE(mentions(scene, "2 animation(s) (`lenslab info` lists them): `render --time` and `capture` play the first"))
+      << testing::PrintToString(scene.notes);
+  poseScene(scene, 3.6);  // clip 0 only: a at its last value, b at rest although clip 1 has passed its last key
+  expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "clip 0 moves a");
+  EXPECT_EQ(scene.instances[1].worldFromModel[0].x, 1.0) << "clip 1 does not play";
+
+  scene.animation.playing = 1;
   EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 3.5);
-  EXPECT_TRUE(mentions(scene, "2 animation(s), 3.50 s: played by `lenslab capture`")) << testing::PrintToString(scene.notes);
+  poseScene(scene, 3.6);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 0, 0}, 0, "clip 0 no longer plays: a at rest");
+  EXPECT_EQ(scene.instances[1].worldFromModel[0].x, 2.0) << "clip 1 scales b";
+
+  scene.animation.playing = kAllClips;
+  EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 3.5) << "the longest clip's, on one clock";
   poseScene(scene, 3.0);  // both play: a at its last value, b still at its first
   expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "animation 0");
   EXPECT_EQ(scene.instances[1].worldFromModel[0].x, 1.0) << "animation 1";
@@ -283,17 +237,60 @@ TEST_F(AnimationFile, AStillSceneHasNoDurationAndPosingLeavesIt) {
   expectNear(origin(scene.instances[0].worldFromModel), {1, 2, 3}, 0, "untouched");
 }
 
-TEST_F(AnimationFile, ALaterChannelOnTheSameNodeAndPathWinsWithANote) {
+// Two clips moving the same node (a walk and a run move the same bones): each plays alone; all
+// together, the later one wins, as glTF viewers that play every clip at once do.
+TEST_F(AnimationFile, ClipsOnTheSameNodeAndPathPlayAloneOrTheLaterWins) {
   AnimatedGltf g;
   const int node = g.node({{"mesh", g.triangle()}});
   g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0}, 0);
   g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 0, 8, 0}, 1);
   Scene scene = load(g);
-  EXPECT_EQ(scene.animation.channels.size(), 1u);
-  EXPECT_TRUE(mentions(scene, "animation 1 channel 0 drives the translation of node 0 that an earlier channel drives too"))
+  ASSERT_EQ(scene.animation.clips.size(), 2u);
+  EXPECT_FALSE(mentions(scene, "drives too")) << "channels in different clips are no conflict";
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "the first clip");
+  scene.animation.playing = 1;
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "the second clip");
+  scene.animation.playing = kAllClips;
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "all: the later channel");
+}
+
+TEST_F(AnimationFile, ALaterChannelOnTheSameNodeAndPathInOneClipWinsWithANote) {
+  AnimatedGltf g;
+  const int node = g.node({{"mesh", g.triangle()}});
+  g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0}, 0);
+  g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 0, 8, 0}, 0);
+  Scene scene = load(g);
+  ASSERT_EQ(scene.animation.clips.size(), 1u);
+  EXPECT_EQ(scene.animation.clips[0].channels.size(), 1u);
+  EXPECT_EQ(scene.animation.clips[0].fileChannelCount, 2u);
+  EXPECT_TRUE(mentions(scene, "animation 0 channel 1 drives the translation of node 0 that an earlier channel of the same "
+                              "animation drives too"))
       << testing::PrintToString(scene.notes);
   poseScene(scene, 1.0);
   expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "the later channel");
+}
+
+// A first clip that moves nothing drawn (morph weights only) leaves the scene still until another
+// is chosen; the hierarchy is kept for it.
+TEST_F(AnimationFile, AFirstClipThatMovesNothingLeavesTheSceneStillUntilAnotherPlays) {
+  AnimatedGltf g;
+  const int node = g.node({{"mesh", g.triangle()}});
+  const int weighted = g.node(json::object());
+  g.channel(weighted, "translation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0}, 0);
+  g.gltf["animations"][0]["channels"][0]["target"]["path"] = "weights";
+  g.channel(node, "translation", "LINEAR", {0, 1}, {0, 0, 0, 5, 0, 0}, 1);
+  Scene scene = load(g);
+  EXPECT_TRUE(scene.animation.empty()) << "clip 0 plays and moves nothing";
+  EXPECT_FALSE(scene.animation.nodes.empty());
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {0, 0, 0}, 0, "still");
+  scene.animation.playing = 1;
+  EXPECT_FALSE(scene.animation.empty());
+  poseScene(scene, 1.0);
+  expectNear(origin(scene.instances[0].worldFromModel), {5, 0, 0}, 0, "clip 1");
 }
 
 TEST_F(AnimationFile, MorphWeightChannelsAreNotPlayedAndNoted) {

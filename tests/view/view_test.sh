@@ -93,6 +93,15 @@ else
   fail "capture --colmap-out, view --colmap or render --colmap failed"
 fi
 
+# The camera options compose with the camera file in view as in render.
+lens=(--focal-length 50 --f-number 2 --sensor aps-c --eye 0.3,1,3.5 --width 160 --aperture-samples 8 --seed 2)
+if "$lenslab" view "${lens[@]}" --frames 2 --no-ui --screenshot "$work/options.exr" >"$work/options.out" 2>&1 &&
+   "$lenslab" render "${lens[@]}" --out "$work/options-render.exr" -q; then
+  if "$check" psnr "$work/options.exr" "$work/options-render.exr" 35; then pass; else fail "camera options: view differs from render"; fi
+else
+  fail "view or render with camera options failed: $(cat "$work/options.out")"
+fi
+
 # ---- 2. click to focus ----
 # The centre of the front face of the 4 m box of `rows` (x 0.75, half size 0.25, centre z −1, so
 # the face is at z −0.75, y 0.25), projected by the lecture's formula through camera-dof.json

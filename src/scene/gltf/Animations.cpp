@@ -3,9 +3,7 @@
 #include "scene/gltf/Problems.h"
 
 #include <cstddef>
-#include <iomanip>
 #include <map>
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -56,20 +54,17 @@ std::vector<glm::dvec4> readValues(const AccessorReader& reader, int accessor, A
   return values;
 }
 
-std::string seconds(double value) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(2) << value;
-  return out.str();
-}
-
 }  // namespace
 
 void readAnimations(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& slotOfNode, Scene& scene) {
   SceneAnimation& animation = scene.animation;
-  std::map<std::pair<int, AnimationPath>, std::size_t> channelOf;  // (node slot, path) → index in channels
   std::size_t weights = 0, undrawn = 0, matrixNodes = 0;
   for (std::size_t i = 0; i < model.animations.size(); ++i) {
     const tinygltf::Animation& a = model.animations[i];
+    AnimationClip clip;
+    clip.name = a.name;
+    clip.fileChannelCount = a.channels.size();
+    std::map<std::pair<int, AnimationPath>, std::size_t> channelOf;  // (node slot, path) → index in clip.channels
     for (std::size_t c = 0; c < a.channels.size(); ++c) {
       const tinygltf::AnimationChannel& channel = a.channels[c];
       const tinygltf::AnimationSampler& sampler = a.samplers[toIndex(channel.sampler)];  // indices checked by checkModel
@@ -98,30 +93,36 @@ void readAnimations(const tinygltf::Model& model, const AccessorReader& reader, 
         ++matrixNodes;  // glTF: an animated node has no matrix; which would win is not defined
         continue;
       }
+      // Within one clip glTF forbids two channels on one node and path; should a file have them,
+      // the later plays. Across clips they are the norm (each clip moves the same bones).
       const auto key = std::make_pair(out.node, out.path);
       if (const auto found = channelOf.find(key); found != channelOf.end()) {
         noteOnce(scene.notes, cat(where, " drives the ", path, " of node ", channel.target_node,
-                                  " that an earlier channel drives too: the later one plays"));
-        animation.channels[found->second] = std::move(out);
+                                  " that an earlier channel of the same animation drives too: the later one plays"));
+        clip.channels[found->second] = std::move(out);
       } else {
-        channelOf.emplace(key, animation.channels.size());
-        animation.channels.push_back(std::move(out));
+        channelOf.emplace(key, clip.channels.size());
+        clip.channels.push_back(std::move(out));
       }
     }
+    animation.clips.push_back(std::move(clip));
   }
   if (weights > 0)
     noteOnce(scene.notes, cat(weights, " animation channel(s) drive morph target weights: not played (morph targets are ignored)"));
   if (undrawn > 0) noteOnce(scene.notes, cat(undrawn, " animation channel(s) move nodes outside the drawn scene: not played"));
   if (matrixNodes > 0)
     noteOnce(scene.notes, cat(matrixNodes, " animation channel(s) target nodes given by a matrix, which glTF does not allow: not played"));
-  if (animation.empty()) {
+  animation.playing = kAllClips;  // to ask whether any clip moves anything
+  const bool moves = !animation.empty();
+  animation.playing = 0;  // the first clip plays unless the user picks another (--animation)
+  if (!moves) {
     animation.nodes.clear();  // nothing moves: keep no copy of the hierarchy
     if (!model.animations.empty())
       noteOnce(scene.notes, cat(model.animations.size(), " animation(s), none of which moves a drawn node: the scene is drawn at rest"));
     return;
   }
-  noteOnce(scene.notes, cat(model.animations.size(), " animation(s), ", seconds(animationDurationSeconds(scene)),
-                            " s: played by `lenslab capture` and `render --time`; otherwise the rest pose is drawn"));
+  noteOnce(scene.notes, cat(model.animations.size(), " animation(s) (`lenslab info` lists them): `render --time` and `capture` play the first, "
+                            "or the one --animation names (all: every one together); otherwise the rest pose is drawn"));
 }
 
 }  // namespace lenslab::gltf

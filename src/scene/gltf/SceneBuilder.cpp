@@ -124,6 +124,8 @@ class SceneBuilder {
     if (node.camera >= 0) {
       placed.cameras.push_back(static_cast<int>(scene_.cameras.size()));
       addCamera(node.camera, worldFromNode);
+      scene_.cameras.back().nodeName = node.name;
+      scene_.cameras.back().gltfNode = placed.gltfNode;
     }
     if (node.skin >= 0) noteOnce(scene_.notes, "skins are ignored: skinned meshes are drawn in their bind pose");
   }

@@ -148,6 +148,21 @@ bad "no such folder" "not a folder" -- render --colmap "$work/missing" --image a
 bad "fisheye" "cameras.txt:2: camera 1 is OPENCV_FISHEYE" -- render --colmap "$work/bad/fisheye" --image a.png
 bad "binary model" "colmap model_converter" -- raycast --colmap "$work/bad/binary" --image a.png
 bad "no POINTS2D lines" "images.txt:2:" -- render --colmap "$work/bad/nopoints" --image a.png
+bad "--colmap with --camera-node" "gives the camera already" -- render --colmap "$work/sparse" --image frame_0000.png \
+  --camera-node 0
+
+# --- a COLMAP camera composes with the lens options: an aperture and a focus give depth of field ---
+seed=$(seed_of "$work/frames/manifest.jsonl" 2)
+if "$lenslab" render --colmap "$work/sparse" --image frame_0002.png --seed "$seed" --focal-length 50 --f-number 1.4 \
+     --focus-distance 0.5 --aperture-samples 16 --out "$work/colmap_dof.png" --stats "$work/colmap_dof.json" -q; then
+  if $python -c 'import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if abs(s["lens"]["aperture_radius"] - 0.05/2.8) < 1e-9 else 1)' \
+       "$work/colmap_dof.json"; then pass; else fail "--colmap with --focal-length 50 --f-number 1.4: aperture radius $(cat "$work/colmap_dof.json")"; fi
+  if ! close_pixels "$work/colmap_dof.png" "$work/frames/frame_0002.png"; then pass
+  else fail "--colmap with an aperture focused at 0.5 gives the pinhole frame's pixels"; fi
+else
+  fail "render --colmap with --focal-length, --f-number and --focus-distance"
+fi
+
 printf '{"K": [[50, 0.1, 32], [0, 50, 24], [0, 0, 1]], "width": 64, "height": 48, "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, 5]}' \
   >"$work/skew.json"
 bad "skew" "skew" -- render --camera "$work/skew.json"

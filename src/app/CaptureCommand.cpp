@@ -91,7 +91,7 @@ class FrameCameras {
     if (!(fps_ > 0.0 && fps_ <= 1e4)) throw InputError(cat("--fps ", fps_, ": give a frame rate from above 0 to 10000"));
     // A still camera is chosen at the animation's start, whichever frames this process renders.
     if (!scene.animation.empty()) poseScene(scene, 0.0);
-    base_ = baseCamera(scene, std::nullopt, o.camera.cameraNode);
+    base_ = baseCamera(scene, std::nullopt, o.camera);
     if (base_.form != CameraForm::GltfPerspective) still_ = physicalOf(composeCamera(base_, o.camera, imageAspect_));
   }
 

@@ -140,10 +140,11 @@ int runCapture(const CaptureOptions& o) {
   std::unique_ptr<RayCaster> caster;  // the depth AOV; rebuilt each frame when the scene moves
   const RenderTargetLimits limits = queryRenderTargetLimits();
 
-  const bool terminal = !o.quiet && isTerminal(stderr);
+  // One line a frame where nobody watches a bar (a cluster job's log), unless
+  // LENSLAB_PROGRESS_SECONDS asks for fewer.
+  ProgressReporter progress("capture", "frames", o.quiet, 0.0);
   std::set<std::string> warned;
   int rendered = 0, skipped = 0;
-  const auto loopStart = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int frame = frames[i];
     const fs::path imageFile = formatFramePath(o.out, frame);
@@ -172,11 +173,11 @@ int runCapture(const CaptureOptions& o) {
     RunStats stats;
     const FramePlan plan = planFrame(renderer, scene, camera, size, toPlanOptions(lens), stats);
     for (const std::string& w : plan.warnings)
-      if (!o.quiet && warned.insert(w).second) std::cerr << (terminal ? "\n" : "") << "lenslab: warning: " << w << "\n";
+      if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
-    const Image image = renderPlanned(renderer, camera, plan, size, stats, false, true);
+    const Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
     std::vector<float> depth;
     if (depthAov) {
       if (!caster || animated) caster = std::make_unique<RayCaster>(scene);
@@ -209,20 +210,11 @@ int runCapture(const CaptureOptions& o) {
     line["shard"] = cat(shard.index, "/", shard.count);
     appendLine(manifest, line.dump());
 
-    const int done = static_cast<int>(i) + 1;
-    const double elapsed = secondsSince(loopStart);
-    if (terminal) {
-      printProgress(done, static_cast<int>(frames.size()), elapsed, "frames");
-    } else if (!o.quiet) {
-      // One line a frame where nobody watches a bar: a cluster job's log.
-      char text[160];
-      std::snprintf(text, sizeof text, "lenslab: frame %d (%d/%zu): %.1f samples, %.2f s; %.1f s to go\n", frame, done,
-                    frames.size(), line["samples"].get<double>(), seconds,
-                    elapsed / done * static_cast<double>(frames.size() - static_cast<std::size_t>(done)));
-      std::cerr << text;
-    }
+    progress.update(static_cast<std::int64_t>(i) + 1, static_cast<std::int64_t>(frames.size()),
+                    cat("frame ", frame, ": ", std::round(line["samples"].get<double>() * 10.0) / 10.0, " samples, ",
+                        std::round(seconds * 100.0) / 100.0, " s"));
   }
-  if (terminal) std::cerr << "\n";
+  progress.finish();
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
               << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first

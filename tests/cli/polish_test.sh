@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# What a new user meets first: progress in a log (not a terminal), a mistyped command or option,
+# options a command does not take, messages that name the option given, the sweep's file names,
+# capture's stepped frames and the warning for pixels that are not square.
+# usage: polish_test.sh path/to/lenslab source-dir
+set -u
+lenslab=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/test_lib.sh"
+unset LENSLAB_PROGRESS_SECONDS
+dof=$src/assets/rows/camera-dof.json
+lens=$src/assets/rows/camera-lens.json
+
+# expect_refusal NAME FRAGMENT -- ARGS...: one line holding FRAGMENT, non-zero exit, nothing at $work/out.*
+expect_refusal() {
+  rm -f "$work"/out.*
+  one_line_error "$@" || return
+  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
+  pass
+}
+
+# check_progress NAME FILE LABEL UNIT_REGEX: FILE's progress lines for LABEL are well formed, their
+# counts never fall, there are at least two, and the last says done = total with no time to go.
+check_progress() {
+  local name=$1 file=$2 label=$3 unit=$4
+  local lines
+  lines=$(grep -E "^lenslab: $label: [0-9]+/[0-9]+ " "$file")
+  if [ "$(wc -l <<<"$lines")" -lt 2 ]; then fail "$name: fewer than two progress lines: $(cat "$file")"; return; fi
+  local format="^lenslab: $label: [0-9]+/[0-9]+ $unit, [0-9]+\.[0-9] s(, [0-9]+\.[0-9] s to go)?(; .*)?$"
+  if grep -vqE "$format" <<<"$lines"; then fail "$name: a line not in the format: $(grep -vE "$format" <<<"$lines" | head -1)"; return; fi
+  if ! awk -F'[ /]' '{ done = $3 + 0; if (done < last) exit 1; last = done }' <<<"$lines"; then
+    fail "$name: done fell: $lines"; return
+  fi
+  local final
+  final=$(tail -1 <<<"$lines")
+  if ! grep -qE "^lenslab: $label: ([0-9]+)/\1 $unit, [0-9]+\.[0-9] s(; .*)?$" <<<"$final"; then
+    fail "$name: the last line is not done = total: $final"; return
+  fi
+  pass
+}
+
+# ---- A. progress where stderr is not a terminal ----
+# A line at every step (LENSLAB_PROGRESS_SECONDS=0), so that a short render shows the format.
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 96 --aperture-samples 8 --out "$work/p.png" 2>"$work/p.err"; then
+  check_progress "render" "$work/p.err" render "samples"
+  # The last progress line comes before the line saying the file was written.
+  if tail -1 "$work/p.err" | grep -q "^lenslab: wrote " && tail -2 "$work/p.err" | head -1 | grep -q "^lenslab: render: 8/8 samples"; then pass
+  else fail "render: the last lines are not the final progress and 'wrote': $(tail -2 "$work/p.err")"; fi
+else
+  fail "render with progress lines: $(cat "$work/p.err")"
+fi
+# The ray caster counts rows.
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" raycast --width 64 --spp 1 --out "$work/r.png" 2>"$work/r.err"; then
+  check_progress "raycast" "$work/r.err" raycast "rows"
+  if grep -q "samples" <(grep -E '^lenslab: raycast: [0-9]' "$work/r.err"); then fail "raycast progress speaks of samples"; else pass; fi
+else
+  fail "raycast with progress lines: $(cat "$work/r.err")"
+fi
+# Tiles: samples over all tiles, and the lens tables each tile builds first.
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$lens" --width 96 --tile-size 48 --aperture-samples 2 --out "$work/t.png" 2>"$work/t.err"; then
+  check_progress "tiled render" "$work/t.err" render "samples over [0-9]+ tiles"
+  if grep -qE '^lenslab: render: 0/[0-9]+ samples over [0-9]+ tiles, .*; tile 1 of [0-9]+: inverse lens table, [0-9]+/[0-9]+ rows$' "$work/t.err"; then pass
+  else fail "tiled render: no lens-table progress: $(head -3 "$work/t.err")"; fi
+else
+  fail "tiled render with progress lines: $(cat "$work/t.err")"
+fi
+# Target error: tiles at the target.
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 96 --target-psnr 30 --out "$work/a.png" 2>"$work/a.err"; then
+  check_progress "render to a target" "$work/a.err" render "tiles at the target"
+else
+  fail "render --target-psnr with progress lines: $(cat "$work/a.err")"
+fi
+# Capture: a line a frame.
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" capture --path "$src/assets/rows/rack-focus.json" --width 48 --aperture-samples 2 --frames 0:3 \
+     --out "$work/cap/f_%02d.png" 2>"$work/c.err"; then
+  check_progress "capture" "$work/c.err" capture "frames"
+  if [ "$(grep -cE '^lenslab: capture: [0-9]+/4 frames, .*; frame [0-9]+: ' "$work/c.err")" -eq 4 ]; then pass
+  else fail "capture: not one line per frame: $(cat "$work/c.err")"; fi
+else
+  fail "capture with progress lines: $(cat "$work/c.err")"
+fi
+# By default (5 s) short work prints no progress at all; --quiet prints nothing even at 0 s.
+if "$lenslab" render --camera "$dof" --width 64 --aperture-samples 4 --out "$work/d.png" 2>"$work/d.err" &&
+   [ "$(wc -l <"$work/d.err")" -eq 1 ] && grep -q "^lenslab: wrote " "$work/d.err"; then pass
+else fail "a short render printed more than its 'wrote' line: $(cat "$work/d.err")"; fi
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 64 --aperture-samples 4 -q --out "$work/q.png" 2>"$work/q.err" &&
+   [ ! -s "$work/q.err" ]; then pass
+else fail "--quiet still printed: $(cat "$work/q.err")"; fi
+LENSLAB_PROGRESS_SECONDS=soon expect_refusal "bad progress interval" "LENSLAB_PROGRESS_SECONDS=soon" -- render --width 32 --out "$work/out.png"
+
+echo "polish tests: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -11,11 +11,13 @@
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
+#include "io/Progress.h"
 #include "plan/TilePlan.h"
 #include "report/Plot.h"
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -38,9 +40,15 @@ struct SweepCommandOptions {
   LensOptions lens;
   std::optional<glm::vec3> background;
   SweepOptions sweep;
+  bool quiet = false;
 };
 
 int runSweepCommand(SweepCommandOptions& o) {
+  // Each adaptive image is named by its target: a target given twice would overwrite one.
+  for (std::size_t i = 0; i < o.sweep.targetsDb.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (o.sweep.targetsDb[i] == o.sweep.targetsDb[j])
+        throw InputError(cat("--target-psnr: ", o.sweep.targetsDb[i], " dB is given twice; give each target once"));
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera-dof.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
@@ -64,9 +72,24 @@ int runSweepCommand(SweepCommandOptions& o) {
   o.sweep.outDir = out;
   o.sweep.outputs = &outputs;
   o.sweep.seed = o.lens.seed;
-  o.sweep.log = [](const std::string& line) { std::cerr << "lenslab: sweep: " << line << "\n"; };
+  // One reporter a phase (the reference's rows, then the images), each with its own clock.
+  std::unique_ptr<ProgressReporter> progress;
+  const bool quiet = o.quiet;
+  o.sweep.log = [&progress, quiet](const std::string& line) {
+    if (quiet) return;
+    if (progress) progress->note("lenslab: sweep: " + line);
+    else std::cerr << "lenslab: sweep: " << line << "\n";
+  };
+  o.sweep.progress = [&progress, quiet](const std::string& unit, std::int64_t done, std::int64_t total) {
+    if (!progress || progress->unit() != unit) {
+      if (progress) progress->finish();
+      progress = std::make_unique<ProgressReporter>("sweep", unit, quiet);
+    }
+    progress->update(done, total);
+  };
   t = std::chrono::steady_clock::now();
   const SweepResult result = runSweep(scene, camera, size, o.sweep);
+  if (progress) progress->finish();
   const double sweepSeconds = secondsSince(t);
 
   const std::string header = cat(
@@ -99,8 +122,10 @@ int runSweepCommand(SweepCommandOptions& o) {
   }
   writeImage(outputs, out / "error_vs_time.png", logLogPlot(series, "seconds", "RMSE", "error against run time"));
   outputs.commit();
-  std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and "
-            << result.rows.size() << " images\n";
+  const auto images = std::count_if(result.rows.begin(), result.rows.end(), [](const SweepRow& r) { return !r.image.empty(); });
+  if (!o.quiet)
+    std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and " << images
+              << " images in " << (out / "images").string() << "\n";
   return 0;
 }
 
@@ -134,6 +159,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
+  cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
   return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
 }
 

@@ -90,5 +90,25 @@ if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 64 --ape
 else fail "--quiet still printed: $(cat "$work/q.err")"; fi
 LENSLAB_PROGRESS_SECONDS=soon expect_refusal "bad progress interval" "LENSLAB_PROGRESS_SECONDS=soon" -- render --width 32 --out "$work/out.png"
 
+# ---- B4. the sweep: as many images written as it says, each named by its own parameter ----
+# Two targets low enough to stop at the same mean sample count on this small image.
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" \
+     --out "$work/sweep" --width 24 --reference-spp 4 --max-views 2 --max-spp 1 --target-psnr 15,16 2>"$work/s.err"; then
+  said=$(sed -n 's/^lenslab: sweep: wrote .* and \([0-9]*\) images in .*/\1/p' "$work/s.err")
+  written=$(find "$work/sweep/images" -type f | wc -l)
+  if [ -n "$said" ] && [ "$said" -eq "$written" ] && [ "$written" -eq $(($(wc -l <"$work/sweep/sweep.csv") - 1)) ]; then pass
+  else fail "sweep said '$said' images, wrote $written, has $(($(wc -l <"$work/sweep/sweep.csv") - 1)) rows"; fi
+  if [ -f "$work/sweep/images/adaptive-sobol-15dB.png" ] && [ -f "$work/sweep/images/adaptive-sobol-16dB.png" ]; then pass
+  else fail "sweep: adaptive images not named by target: $(ls "$work/sweep/images")"; fi
+  check_progress "sweep" <(grep -E '^lenslab: sweep: [0-9]+/[0-9]+ images' "$work/s.err") sweep "images"
+  check_progress "sweep reference" <(grep -E '^lenslab: sweep: [0-9]+/[0-9]+ reference rows' "$work/s.err") sweep "reference rows"
+else
+  fail "sweep: $(cat "$work/s.err")"
+fi
+if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" --out "$work/sweep-q" \
+     --width 16 --reference-spp 2 --max-views 1 --methods concentric -q 2>"$work/sq.err" && [ ! -s "$work/sq.err" ]; then pass
+else fail "sweep -q printed: $(cat "$work/sq.err")"; fi
+expect_refusal "sweep target given twice" "--target-psnr: 30 dB is given twice" -- sweep --out "$work/out.sweep" --target-psnr 30,40,30
+
 echo "polish tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

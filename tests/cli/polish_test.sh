@@ -90,6 +90,13 @@ if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 64 --ape
 else fail "--quiet still printed: $(cat "$work/q.err")"; fi
 LENSLAB_PROGRESS_SECONDS=soon expect_refusal "bad progress interval" "LENSLAB_PROGRESS_SECONDS=soon" -- render --width 32 --out "$work/out.png"
 
+# ---- B1. a mistyped command or option: the nearest name ----
+expect_refusal "unknown command" 'unknown command "rendr"; did you mean "render"? (see --help)' -- rendr --out "$work/out.png"
+expect_refusal "unknown command, nothing near" 'unknown command "paint"; the commands are render, raycast, capture, sweep, info, view' -- paint
+expect_refusal "unknown option" 'render: unknown option --widht; did you mean --width? (see lenslab render --help)' -- render --widht 64 --out "$work/out.png"
+expect_refusal "unknown option with a value" 'unknown option --focus-distanse; did you mean --focus-distance?' -- view --focus-distanse=3
+expect_refusal "another command's option" 'render: unknown option --spp: raycast takes it, render does not' -- render --spp 4 --out "$work/out.png"
+
 # ---- B4. the sweep: as many images written as it says, each named by its own parameter ----
 # Two targets low enough to stop at the same mean sample count on this small image.
 if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" \

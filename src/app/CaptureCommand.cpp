@@ -257,7 +257,8 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_option("--backend", o->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
       ->check(CLI::IsMember({"osmesa", "egl"}))
       ->capture_default_str();
-  addLensOptions(*cmd, o->lens, false);
+  addSamplingOptions(*cmd, o->lens);
+  addSeedOption(*cmd, o->lens);
   cmd->get_option("--seed")->description(
       "seed for the aperture and sub-pixel samples: each frame's seed is a hash of this and the frame number "
       "(the manifest's seed; render --seed with it reproduces the frame)");

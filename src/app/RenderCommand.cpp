@@ -250,7 +250,9 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->check(CLI::Range(1, 1 << 20))
         ->capture_default_str();
   }
-  addLensOptions(*cmd, options->lens);
+  if (method == Method::Raster) addSamplingOptions(*cmd, options->lens);
+  addSeedOption(*cmd, options->lens);
+  addFocusOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addBackgroundOption(*cmd, options->background);
   cmd->add_option("--time", options->timeSeconds,

@@ -53,7 +53,8 @@ int runSweepCommand(SweepCommandOptions& o) {
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   const Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, 0.0), o.lens).camera, scene.bounds);
-  const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
+  // 320 wide unless a side is given; a height alone sets the width from the window.
+  const ImageSize size = resolveImageSize(camera, o.width || o.height ? o.width : std::optional<int>(320), o.height);
   requireOneTarget(size, RenderTargetLimits{}, "sweep");
   const fs::path out = o.outDir;
   // Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a
@@ -160,7 +161,24 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
-  return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
+  return [cmd, o]() {
+    if (!cmd->parsed()) return -1;
+    // A budget for a series that does not run would be ignored: refused instead.
+    const auto runs = [&o](std::initializer_list<const char*> series) {
+      for (const char* name : series)
+        if (std::find(o->sweep.series.begin(), o->sweep.series.end(), name) != o->sweep.series.end()) return true;
+      return false;
+    };
+    const auto refuseUnless = [&](const char* option, std::initializer_list<const char*> series, const char* what) {
+      if (cmd->count(option) > 0 && !runs(series))
+        throw InputError(cat(option, " sets ", what, ", which --methods leaves out; add it to --methods or drop ", option));
+    };
+    refuseUnless("--max-spp", {"raycast"}, "the raycast series' largest budget");
+    refuseUnless("--target-psnr", {"adaptive"}, "the adaptive series' targets");
+    refuseUnless("--max-views", {"concentric", "r2", "random", "sobol", "adaptive"},
+                 "the raster series' largest budget");
+    return runSweepCommand(*o);
+  };
 }
 
 }  // namespace lenslab

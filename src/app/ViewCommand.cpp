@@ -17,7 +17,9 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_option("--camera", o->cameraFile, "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default as for render");
   cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
   cmd->add_option("--height", o->height, "image height in pixels");
-  addLensOptions(*cmd, o->lens);
+  addSamplingOptions(*cmd, o->lens);
+  addSeedOption(*cmd, o->lens);
+  addFocusOptions(*cmd, o->lens);
   addTargetOption(*cmd, o->lens);
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--frames", o->frames,

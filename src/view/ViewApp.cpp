@@ -77,7 +77,11 @@ struct ImGuiSession {
 int runView(const ViewOptions& o) {
   if (!o.screenshot.empty()) checkImageExtension(o.screenshot);  // fail before any work
   if (o.frames < 0) throw InputError(cat("--frames ", o.frames, ": give a number of frames (0 = interactive)"));
+  // The scripted run's files are written when it ends; a window a person closes writes none.
   if (!o.screenshot.empty() && o.frames == 0) throw InputError("--screenshot needs --frames N (scripted mode)");
+  if (!o.statsFile.empty() && o.frames == 0) throw InputError("--stats needs --frames N (scripted mode)");
+  if (!o.saveCamera.empty() && o.frames == 0)
+    throw InputError("--save-camera needs --frames N (scripted mode); in the window, the panel's Save camera writes it");
   const PlanOptions planOptions = toPlanOptions(o.lens);
   const auto [scenePath, cameraPath] = resolveSceneAndCamera(o.scene, o.cameraFile, "camera.json");
   Scene scene = loadGltf(scenePath);

@@ -97,6 +97,30 @@ expect_refusal "unknown option" 'render: unknown option --widht; did you mean --
 expect_refusal "unknown option with a value" 'unknown option --focus-distanse; did you mean --focus-distance?' -- view --focus-distanse=3
 expect_refusal "another command's option" 'render: unknown option --spp: raycast takes it, render does not' -- render --spp 4 --out "$work/out.png"
 
+# ---- B3. options a command would ignore: absent from its help, or refused ----
+help=$("$lenslab" raycast --help)
+for option in --pattern --aperture-samples --max-samples --target-psnr --backend --tile-size; do
+  if grep -qE -- "^ *$option " <<<"$help"; then fail "raycast --help lists $option, which the ray caster ignores"; else pass; fi
+done
+for option in --spp --seed --focus-distance --focus-at --width; do
+  if grep -qE -- "^ *$option " <<<"$help"; then pass; else fail "raycast --help lacks $option"; fi
+done
+expect_refusal "raycast --pattern" "raycast: unknown option --pattern: render, capture and view take it, raycast does not" -- \
+  raycast --pattern r2 --width 16 --out "$work/out.png"
+expect_refusal "a cap with a fixed count" "--max-samples: caps the count that auto (or --target-psnr) chooses" -- \
+  render --aperture-samples 8 --max-samples 4 --width 16 --out "$work/out.png"
+expect_refusal "two focus options" "--focus-distance excludes --focus-at" -- render --focus-at 1,1 --focus-distance 3 --out "$work/out.png"
+expect_refusal "sweep budget of a series not run" "--max-spp sets the raycast series' largest budget, which --methods leaves out" -- \
+  sweep --out "$work/out.sweep" --methods concentric --max-spp 8
+expect_refusal "sweep targets without adaptive" "--target-psnr sets the adaptive series' targets" -- \
+  sweep --out "$work/out.sweep" --methods raycast --target-psnr 30
+expect_refusal "view --stats without --frames" "--stats needs --frames N" -- view --stats "$work/out.json"
+expect_refusal "view --save-camera without --frames" "--save-camera needs --frames N" -- view --save-camera "$work/out.json"
+# sweep --height alone: the width follows the window (rows' camera-dof.json is 3:2), not 320.
+if "$lenslab" sweep --out "$work/sweep-h" --height 20 --reference-spp 2 --max-views 1 --methods concentric -q &&
+   grep -q ", 30x20" "$work/sweep-h/sweep.md"; then pass
+else fail "sweep --height 20: $(grep -o '[0-9]*x[0-9]*' "$work/sweep-h/sweep.md" | head -1)"; fi
+
 # ---- B4. the sweep: as many images written as it says, each named by its own parameter ----
 # Two targets low enough to stop at the same mean sample count on this small image.
 if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" \

@@ -75,7 +75,8 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   stats.setupSeconds = secondsSince(t);
 
   if (o.lens.focusAt)
-    camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer)).camera, scene.bounds);
+    camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer), "--focus-at").camera,
+                                  scene.bounds);
   const auto renderStart = std::chrono::steady_clock::now();
   const FramePlan plan = planFrame(renderer, scene, camera, size, planOptions, stats);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
@@ -130,7 +131,7 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
     camera = withDepthRangeFitted(focusOnPixel(selected, size, *o.lens.focusAt,
                                                [&](const Camera& c, ImageSize depthSize, int x, int y) {
                                                  return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
-                                               }).camera,
+                                               }, "--focus-at").camera,
                                   scene.bounds);
   stats.camera = camera.source;
   stats.plan.apertureSamples = o.samplesPerPixel;

@@ -109,7 +109,9 @@ std::optional<glm::dvec2> Viewer::imagePixelAt(ImVec2 mouse) const {
 }
 
 // A scripted focus (--focus-at, --click): an error ends the run.
-void Viewer::focusAt(glm::dvec2 pixel) { printFocus(model_.focusAt(pixel, rasterDepth(renderer_)), pixel); }
+void Viewer::focusAt(glm::dvec2 pixel, const std::string& asked) {
+  printFocus(model_.focusAt(pixel, rasterDepth(renderer_), asked), pixel);
+}
 
 void Viewer::handleInput() {
   ImGuiIO& io = ImGui::GetIO();
@@ -269,8 +271,8 @@ int Viewer::run() {
   layout();
   restart();
   // Scripted clicks act as a click on the first frame would.
-  if (options_.lens.focusAt) focusAt(*options_.lens.focusAt);
-  if (options_.click) focusAt(*options_.click);
+  if (options_.lens.focusAt) focusAt(*options_.lens.focusAt, "--focus-at");
+  if (options_.click) focusAt(*options_.click, "--click");
   while (!glfwWindowShouldClose(window_)) {
     const bool converged = renderer_.done();
     if (!scripted() && converged && !model_.needsRestart()) glfwWaitEventsTimeout(0.05);  // idle: no busy loop

@@ -46,7 +46,7 @@ class Viewer {
   bool scripted() const { return options_.frames > 0; }
   void layout();
   void handleInput();
-  void focusAt(glm::dvec2 pixel);
+  void focusAt(glm::dvec2 pixel, const std::string& asked);
   void restart();
   void accumulate();
   void draw();

@@ -160,7 +160,9 @@ expect_refusal() {
 }
 expect_refusal "bad screenshot extension" "unsupported image type" view --frames 1 --screenshot "$work/out.jpg"
 expect_refusal "screenshot without frames" "--frames" view --screenshot "$work/out.png"
-expect_refusal "click on the sky" "nothing of the scene" view --camera "$dof" --width 96 --frames 1 --no-ui --click 50,2
+expect_refusal "click on the sky" "--click 50,2: nothing of the scene" view --camera "$dof" --width 96 --frames 1 --no-ui --click 50,2
+expect_refusal "click outside the image" "--click 500,2: the pixel is outside the 96x64 image" view --camera "$dof" --width 96 --frames 1 --no-ui --click 500,2
+expect_refusal "focus outside the image" "--focus-at 500,2: the pixel is outside" view --camera "$dof" --width 96 --frames 1 --no-ui --focus-at 500,2
 expect_refusal "missing camera" "nope.json" view --camera "$work/nope.json" --frames 1
 [ ! -e "$work/out.png" ] && pass || fail "a refused run left a screenshot"
 

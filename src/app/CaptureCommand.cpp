@@ -218,7 +218,7 @@ int runCapture(const CaptureOptions& o) {
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
               << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first
-              << ".." << range.last << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
+              << ".." << range.last << (range.step > 1 ? cat(" step ", range.step) : std::string()) << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
               << " to " << o.out << ", manifest " << manifest.string() << " (" << std::round(secondsSince(start) * 10.0) / 10.0
               << " s)\n";
   return 0;
@@ -239,7 +239,9 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                   "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "
                   "each frame's camera goes beside it as frame_NNNN.camera.json")
       ->capture_default_str();
-  cmd->add_option("--frames", o->frames, "frames A to B, inclusive (A:B, A:, :B or one frame N); default: all of the path's");
+  cmd->add_option("--frames", o->frames,
+                  "frames A to B, inclusive (A:B, A:, :B or one frame N), every STEP-th with A:B:STEP (A::STEP, :B:STEP); "
+                  "default: all of the path's");
   cmd->add_option("--shard", o->shard,
                   "I/N: this is process I (0 to N-1) of N; it renders every N-th frame of the range from its I-th "
                   "(Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT; Kubernetes: $JOB_COMPLETION_INDEX/N)")

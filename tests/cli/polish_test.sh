@@ -141,5 +141,18 @@ if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/o
 else fail "sweep -q printed: $(cat "$work/sq.err")"; fi
 expect_refusal "sweep target given twice" "--target-psnr: 30 dB is given twice" -- sweep --out "$work/out.sweep" --target-psnr 30,40,30
 
+# ---- B5. capture --frames A:B:STEP, with shards splitting the stepped frames ----
+rack=$src/assets/rows/rack-focus.json
+if "$lenslab" capture --path "$rack" --width 32 --aperture-samples 2 --frames 0:72:24 --out "$work/step/f_%02d.png" 2>"$work/step.err" &&
+   [ "$(cd "$work/step" && ls f_*.png | tr '\n' ' ')" = "f_00.png f_24.png f_48.png f_72.png " ] &&
+   grep -q "captured 4 frames of frames 0..72 step 24" "$work/step.err"; then pass
+else fail "--frames 0:72:24: $(ls "$work/step" 2>&1 | tr '\n' ' ') $(cat "$work/step.err")"; fi
+if "$lenslab" capture --path "$rack" --width 32 --aperture-samples 2 --frames ::24 --shard 1/2 --out "$work/shard/f_%02d.png" -q &&
+   [ "$(cd "$work/shard" && ls f_*.png | tr '\n' ' ')" = "f_24.png f_72.png " ]; then pass
+else fail "--frames ::24 --shard 1/2: $(ls "$work/shard" 2>&1 | tr '\n' ' ')"; fi
+expect_refusal "a step of 0" "--frames 0:72:0: the step after the second colon must be a whole number of frames, 1 or more" -- \
+  capture --path "$rack" --frames 0:72:0 --out "$work/out.%02d.png"
+expect_refusal "a step that is not a number" "--frames 0:72:two: the step" -- capture --path "$rack" --frames 0:72:two --out "$work/out.%02d.png"
+
 echo "polish tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -163,6 +163,9 @@ int runCapture(const CaptureOptions& o) {
     Camera keyCamera = toCamera(key.camera, where);
     keyCamera.effects = key.effects;
     const ImageSize size = resolveImageSize(keyCamera, o.width, o.height);
+    if (const std::string shape = pixelShapeWarning(keyCamera, o.width, o.height, size);
+        !shape.empty() && !o.quiet && warned.insert(shape).second)
+      progress.note("lenslab: warning: " + shape);
     const std::string cameraText =
         toIntrinsicsCameraJson(key.camera, key.effects, size, !path.nearFromScene, !path.farFromScene);
     // The frame's camera as `render --camera` will read it, from the very text written.

@@ -170,9 +170,8 @@ int runRender(const RenderOptions& o) {
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
   const Camera& camera = selected.camera;
   const ImageSize size = resolveImageSize(camera, o.width, o.height);
-  if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
-    std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx
-              << ") differs from the window's; pixels will not be square (give only --width or --height)\n";
+  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
 
   RunStats stats;
   stats.command = o.method == Method::Raster ? "render" : "raycast";

@@ -53,8 +53,11 @@ int runSweepCommand(SweepCommandOptions& o) {
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   const Camera camera = withDepthRangeFitted(applyLensOptions(selectCamera(scene, cameraPath, 0.0), o.lens).camera, scene.bounds);
-  // 320 wide unless a side is given; a height alone sets the width from the window.
-  const ImageSize size = resolveImageSize(camera, o.width || o.height ? o.width : std::optional<int>(320), o.height);
+  // About 320 wide unless a side is given (the reference is costly); a height alone sets the
+  // width from the window.
+  const ImageSize size = resolveImageSize(camera, o.width, o.height, 320);
+  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
   requireOneTarget(size, RenderTargetLimits{}, "sweep");
   const fs::path out = o.outDir;
   // Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a
@@ -138,7 +141,8 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("scene", o->scene, "glTF 2.0 scene; default: the bundled 'rows' with camera-dof.json");
   cmd->add_option("--camera", o->cameraFile, "camera JSON with an aperture (f_number or aperture_radius)");
   cmd->add_option("--out,-o", o->outDir, "folder for sweep.csv, sweep.md, error_vs_time.png and images/")->required();
-  cmd->add_option("--width", o->width, "image width in pixels (default 320 here: the reference is costly)");
+  cmd->add_option("--width", o->width,
+                  "image width in pixels (default about 320 here, the nearest that keeps pixels square: the reference is costly)");
   cmd->add_option("--height", o->height, "image height in pixels");
   cmd->add_option("--backend", o->backend, "osmesa or egl")->check(CLI::IsMember({"osmesa", "egl"}))->capture_default_str();
   cmd->add_option("--reference-spp", o->sweep.referenceSpp, "samples per pixel of the reference")->check(CLI::Range(1, 1 << 20))->capture_default_str();

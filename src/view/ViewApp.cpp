@@ -14,6 +14,7 @@
 #include "plan/TilePlan.h"
 #include "scene/GltfLoader.h"
 
+#include <iostream>
 #include <stdexcept>
 
 namespace lenslab::view {
@@ -92,8 +93,10 @@ int runView(const ViewOptions& o) {
   const SelectedCamera refocusedCamera = applyLensOptions(selected, o.lens);
   EditableCamera camera{refocusedCamera.camera, refocusedCamera.physical};
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.
-  const std::optional<int> width = o.width || o.height || o.frames > 0 ? o.width : std::optional<int>(640);
-  const ImageSize size = resolveImageSize(camera.camera, width, o.height);
+  const int defaultWidth = o.frames > 0 ? kDefaultWidthPx : 640;
+  const ImageSize size = resolveImageSize(camera.camera, o.width, o.height, defaultWidth);
+  if (const std::string shape = pixelShapeWarning(camera.camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
   requireOneTarget(size, RenderTargetLimits{}, "view");
 
   GlfwLibrary glfw;

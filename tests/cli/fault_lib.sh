@@ -20,7 +20,7 @@ run_lenslab() {
 }
 
 # expect_fault NAME FRAGMENT WATCHED LIMIT_KB -- ARGS...: a non-zero exit, one line on stderr
-# holding FRAGMENT (besides progress lines and the sweep's), and the folder WATCHED exactly as it was
+# holding FRAGMENT (besides progress, warning and the sweep's lines), and the folder WATCHED exactly as it was
 # (no target, no temporary file, no folder made by the run).
 expect_fault() {
   local name=$1 fragment=$2 watched=$3 limit=$4

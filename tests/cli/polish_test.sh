@@ -82,10 +82,10 @@ else
   fail "capture with progress lines: $(cat "$work/c.err")"
 fi
 # By default (5 s) short work prints no progress at all; --quiet prints nothing even at 0 s.
-if "$lenslab" render --camera "$dof" --width 64 --aperture-samples 4 --out "$work/d.png" 2>"$work/d.err" &&
+if "$lenslab" render --camera "$dof" --width 66 --aperture-samples 4 --out "$work/d.png" 2>"$work/d.err" &&
    [ "$(wc -l <"$work/d.err")" -eq 1 ] && grep -q "^lenslab: wrote " "$work/d.err"; then pass
 else fail "a short render printed more than its 'wrote' line: $(cat "$work/d.err")"; fi
-if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 64 --aperture-samples 4 -q --out "$work/q.png" 2>"$work/q.err" &&
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" render --camera "$dof" --width 66 --aperture-samples 4 -q --out "$work/q.png" 2>"$work/q.err" &&
    [ ! -s "$work/q.err" ]; then pass
 else fail "--quiet still printed: $(cat "$work/q.err")"; fi
 LENSLAB_PROGRESS_SECONDS=soon expect_refusal "bad progress interval" "LENSLAB_PROGRESS_SECONDS=soon" -- render --width 32 --out "$work/out.png"
@@ -137,7 +137,7 @@ else
   fail "sweep: $(cat "$work/s.err")"
 fi
 if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera-dof.json" --out "$work/sweep-q" \
-     --width 16 --reference-spp 2 --max-views 1 --methods concentric -q 2>"$work/sq.err" && [ ! -s "$work/sq.err" ]; then pass
+     --width 18 --reference-spp 2 --max-views 1 --methods concentric -q 2>"$work/sq.err" && [ ! -s "$work/sq.err" ]; then pass
 else fail "sweep -q printed: $(cat "$work/sq.err")"; fi
 expect_refusal "sweep target given twice" "--target-psnr: 30 dB is given twice" -- sweep --out "$work/out.sweep" --target-psnr 30,40,30
 
@@ -153,6 +153,31 @@ else fail "--frames ::24 --shard 1/2: $(ls "$work/shard" 2>&1 | tr '\n' ' ')"; f
 expect_refusal "a step of 0" "--frames 0:72:0: the step after the second colon must be a whole number of frames, 1 or more" -- \
   capture --path "$rack" --frames 0:72:0 --out "$work/out.%02d.png"
 expect_refusal "a step that is not a number" "--frames 0:72:two: the step" -- capture --path "$rack" --frames 0:72:two --out "$work/out.%02d.png"
+
+# ---- B8. pixels that are not square: one warning line with the nearest sizes that keep them square ----
+square_hint="320x213 makes pixels 0.16 % taller than wide (the window is 1.5:1); --width 318 (212 high) or --width 321 (214 high) keeps them square"
+for cmd in render raycast; do
+  if "$lenslab" $cmd --width 320 --spp 1 --out "$work/sq-$cmd.png" 2>"$work/sq.err" ||
+     "$lenslab" $cmd --width 320 --out "$work/sq-$cmd.png" 2>"$work/sq.err"; then
+    if [ "$(grep -c '^lenslab: warning: ' "$work/sq.err")" -eq 1 ] && grep -qF "lenslab: warning: $square_hint" "$work/sq.err"; then pass
+    else fail "$cmd --width 320: $(cat "$work/sq.err")"; fi
+  else
+    fail "$cmd --width 320: $(cat "$work/sq.err")"
+  fi
+done
+if "$lenslab" render --width 321 --out "$work/sq-ok.png" 2>"$work/sq.err" && ! grep -q warning "$work/sq.err"; then pass
+else fail "render --width 321 warned: $(cat "$work/sq.err")"; fi
+if "$lenslab" render --width 320 --height 320 --out "$work/sq-both.png" 2>"$work/sq.err" &&
+   grep -qF "320x320 makes pixels 50 % wider than tall" "$work/sq.err" && [ "$(grep -c warning "$work/sq.err")" -eq 1 ]; then pass
+else fail "render --width 320 --height 320: $(cat "$work/sq.err")"; fi
+# capture says it once, not once a frame
+if "$lenslab" capture --path "$rack" --width 320 --aperture-samples 1 --frames 0:2 --out "$work/sqcap/f_%02d.png" 2>"$work/sq.err" &&
+   [ "$(grep -c "^lenslab: warning: 320x213 makes pixels" "$work/sq.err")" -eq 1 ]; then pass
+else fail "capture --width 320: $(cat "$work/sq.err")"; fi
+# sweep's default width (about 320) is one that keeps pixels square: 321x214 on the 3:2 camera, no warning
+if "$lenslab" sweep --out "$work/sweep-d" --reference-spp 1 --max-views 1 --methods concentric 2>"$work/sq.err" &&
+   grep -q ", 321x214" "$work/sweep-d/sweep.md" && ! grep -q warning "$work/sq.err"; then pass
+else fail "sweep's default size: $(grep -o '[0-9]*x[0-9]*' "$work/sweep-d/sweep.md" | head -1) $(grep warning "$work/sq.err")"; fi
 
 echo "polish tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -87,8 +87,8 @@ gl::PixelRect Viewer::toPixels(const WindowRect& r) const {
 void Viewer::layout() {
   glfwGetWindowSize(window_, &windowWidth_, &windowHeight_);
   glfwGetFramebufferSize(window_, &fbWidth_, &fbHeight_);
-  const double panelWidth = options_.noUi ? 0.0 : std::min(430.0 * uiScale_, 0.5 * windowWidth_);
-  WindowRect area{0.0, 0.0, windowWidth_ - panelWidth, static_cast<double>(windowHeight_)};
+  panelWidth_ = options_.noUi ? 0.0 : std::min(430.0 * uiScale_, 0.5 * windowWidth_);
+  WindowRect area{0.0, 0.0, windowWidth_ - panelWidth_, static_cast<double>(windowHeight_)};
   const double aspect = static_cast<double>(model_.size().widthPx) / model_.size().heightPx;
   if (showOutside_) {
     WindowRect top = area, bottom = area;
@@ -256,6 +256,15 @@ void Viewer::finishScripted() {
     j["accumulation_ms"] = accumulationMs;
     j["frame_ms_mean"] = frameMsSum_ / std::max(frames_, 1);
     j["frame_ms_max"] = frameMsMax_;  // the first frames include shader compilation
+    if (!options_.noUi) {
+      // Panel text cut off on the right: the most items in any frame (0 when everything fits).
+      j["panel_clipped_items"] = fit_.clippedMost();
+      if (fit_.clippedMost() > 0) {
+        j["panel_first_clipped"] = fit_.firstClipped();
+        j["panel_overflow_px"] = fit_.widestOverflowPx();
+      }
+      j["window"] = {windowWidth_, windowHeight_};
+    }
     const std::optional<double> focus = model_.lastFocusDistance();
     j["focus_distance"] = focus ? nlohmann::json(*focus) : nlohmann::json(nullptr);
     j["camera"] = model_.camera().camera.source;

@@ -10,6 +10,7 @@
 #include "render/ImageDrawer.h"
 #include "render/LineDrawer.h"
 #include "render/Renderer.h"
+#include "view/PanelFit.h"
 #include "view/ViewApp.h"
 #include "view/ViewerModel.h"
 
@@ -55,7 +56,11 @@ class Viewer {
   std::optional<glm::dvec2> imagePixelAt(ImVec2 mouse) const;
   void finishScripted();
 
-  // Panel sections, one function each (ViewerPanel.cpp).
+  // Panel sections, one function each (ViewerPanel.cpp). A scripted run opens every section, so
+  // that its screenshot and the fit check (fit_) cover the whole panel.
+  ImGuiTreeNodeFlags openFlags(bool openByDefault) const {
+    return openByDefault || scripted() ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None;
+  }
   void panel();
   void sectionProgress();
   void sectionLecture();
@@ -96,8 +101,11 @@ class Viewer {
   float uiScale_ = 1.0f;
   int windowWidth_ = 0, windowHeight_ = 0, fbWidth_ = 0, fbHeight_ = 0;
   WindowRect imageRect_, outsideRect_;
+  double panelWidth_ = 0.0;  // the panel's share of the window's right side (layout())
   Region pressRegion_ = Region::None;
   bool dragged_ = false;
+
+  PanelFit fit_;  // text cut off on the panel's right, counted each frame (--stats)
 
   bool saveWindowPending_ = false;
   std::string status_;  // the last thing saved

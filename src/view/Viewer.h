@@ -6,6 +6,7 @@
 // src/view.
 #include "gl/DefaultFramebuffer.h"
 #include "gl/ImageTexture.h"
+#include "io/Progress.h"
 #include "render/GatherDof.h"
 #include "render/ImageDrawer.h"
 #include "render/LineDrawer.h"
@@ -106,6 +107,7 @@ class Viewer {
   bool dragged_ = false;
 
   PanelFit fit_;  // text cut off on the panel's right, counted each frame (--stats)
+  std::unique_ptr<ProgressReporter> progress_;  // scripted runs: samples done, in a log
 
   bool saveWindowPending_ = false;
   std::string status_;  // the last thing saved

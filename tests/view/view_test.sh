@@ -166,6 +166,13 @@ if "$lenslab" view --camera "$dof" --width 320 --max-samples 2 --frames 1 --no-u
    grep -qF -- "--width 318 (212 high) or --width 321 (214 high)" "$work/sq.err"; then pass
 else fail "view --width 320: $(cat "$work/sq.err")"; fi
 
+# A scripted run reports progress in a log as render does (here a line at every frame).
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" view --camera "$dof" --width 96 --aperture-samples 16 --frame-budget-ms 1 --frames 2 --no-ui \
+     --screenshot "$work/progress.png" 2>"$work/progress.err" >/dev/null &&
+   grep -qE '^lenslab: view: [0-9]+/16 samples, [0-9.]+ s, [0-9.]+ s to go$' "$work/progress.err" &&
+   [ "$(grep -E '^lenslab: view: ' "$work/progress.err" | tail -1 | grep -cE '^lenslab: view: 16/16 samples, [0-9.]+ s$')" -eq 1 ]; then pass
+else fail "view progress lines: $(cat "$work/progress.err")"; fi
+
 # ---- bad input: one line, non-zero exit ----
 expect_refusal() {
   local name=$1 fragment=$2

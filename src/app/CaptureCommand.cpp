@@ -221,7 +221,8 @@ int runCapture(const CaptureOptions& o) {
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
               << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first
-              << ".." << range.last << (range.step > 1 ? cat(" step ", range.step) : std::string()) << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
+              << ".." << range.last << (range.step > 1 ? cat(" step ", range.step) : std::string())
+              << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
               << " to " << o.out << ", manifest " << manifest.string() << " (" << std::round(secondsSince(start) * 10.0) / 10.0
               << " s)\n";
   return 0;

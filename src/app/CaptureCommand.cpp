@@ -330,10 +330,11 @@ int runCapture(const CaptureOptions& o) {
 
   if (colmapFiles) writeColmapModel(o.colmapOut, *colmapFiles);
 
-  const bool terminal = !o.quiet && isTerminal(stderr);
+  // One line a frame where nobody watches a bar (a cluster job's log), unless
+  // LENSLAB_PROGRESS_SECONDS asks for fewer.
+  ProgressReporter progress("capture", "frames", o.quiet, 0.0);
   std::set<std::string> warned;
   int rendered = 0, skipped = 0;
-  const auto loopStart = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int frame = frames[i];
     const fs::path imageFile = formatFramePath(o.out, frame);
@@ -350,6 +351,9 @@ int runCapture(const CaptureOptions& o) {
     const std::string& where = f.where;
     const PathKey& key = f.key;
     const ImageSize size = f.size;
+    if (const std::string shape = pixelShapeWarning(f.camera, o.width, o.height, size);
+        !shape.empty() && !o.quiet && warned.insert(shape).second)
+      progress.note("lenslab: warning: " + shape);
     const std::string cameraText =
         toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven());
     // The frame's camera as `render --camera` will read it, from the very text written.
@@ -360,11 +364,11 @@ int runCapture(const CaptureOptions& o) {
     RunStats stats;
     const FramePlan plan = planFrame(renderer, scene, camera, size, toPlanOptions(lens), stats);
     for (const std::string& w : plan.warnings)
-      if (!o.quiet && warned.insert(w).second) std::cerr << (terminal ? "\n" : "") << "lenslab: warning: " << w << "\n";
+      if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
-    const Image image = renderPlanned(renderer, camera, plan, size, stats, false, true);
+    const Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
     std::vector<float> depth;
     if (depthAov) {
       if (!caster || animated) caster = std::make_unique<RayCaster>(scene);
@@ -397,24 +401,16 @@ int runCapture(const CaptureOptions& o) {
     line["shard"] = cat(shard.index, "/", shard.count);
     appendLine(manifest, line.dump());
 
-    const int done = static_cast<int>(i) + 1;
-    const double elapsed = secondsSince(loopStart);
-    if (terminal) {
-      printProgress(done, static_cast<int>(frames.size()), elapsed, "frames");
-    } else if (!o.quiet) {
-      // One line a frame where nobody watches a bar: a cluster job's log.
-      char text[160];
-      std::snprintf(text, sizeof text, "lenslab: frame %d (%d/%zu): %.1f samples, %.2f s; %.1f s to go\n", frame, done,
-                    frames.size(), line["samples"].get<double>(), seconds,
-                    elapsed / done * static_cast<double>(frames.size() - static_cast<std::size_t>(done)));
-      std::cerr << text;
-    }
+    progress.update(static_cast<std::int64_t>(i) + 1, static_cast<std::int64_t>(frames.size()),
+                    cat("frame ", frame, ": ", std::round(line["samples"].get<double>() * 10.0) / 10.0, " samples, ",
+                        std::round(seconds * 100.0) / 100.0, " s"));
   }
-  if (terminal) std::cerr << "\n";
+  progress.finish();
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
               << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first
-              << ".." << range.last << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
+              << ".." << range.last << (range.step > 1 ? cat(" step ", range.step) : std::string())
+              << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
               << " to " << o.out << ", manifest " << manifest.string() << " (" << std::round(secondsSince(start) * 10.0) / 10.0
               << " s)\n";
   return 0;
@@ -438,7 +434,9 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                   "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "
                   "each frame's camera goes beside it as frame_NNNN.camera.json")
       ->capture_default_str();
-  cmd->add_option("--frames", o->frames, "frames A to B, inclusive (A:B, A:, :B or one frame N); default: all of the path's");
+  cmd->add_option("--frames", o->frames,
+                  "frames A to B, inclusive (A:B, A:, :B or one frame N), every STEP-th with A:B:STEP (A::STEP, :B:STEP); "
+                  "default: all of the path's");
   cmd->add_option("--shard", o->shard,
                   "I/N: this is process I (0 to N-1) of N; it renders every N-th frame of the range from its I-th "
                   "(Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT; Kubernetes: $JOB_COMPLETION_INDEX/N)")
@@ -456,7 +454,8 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_option("--backend", o->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
       ->check(CLI::IsMember({"osmesa", "egl"}))
       ->capture_default_str();
-  addLensOptions(*cmd, o->lens, false);
+  addSamplingOptions(*cmd, o->lens);
+  addSeedOption(*cmd, o->lens);
   cmd->get_option("--seed")->description(
       "seed for the aperture and sub-pixel samples: each frame's seed is a hash of this and the frame number "
       "(the manifest's seed; render --seed with it reproduces the frame)");

@@ -1,27 +1,42 @@
 #include "app/CliOptions.h"
 
+#include "core/Text.h"
 #include "lens/AperturePattern.h"
 
 #include <cmath>
 
 namespace lenslab {
 
-void addLensOptions(CLI::App& cmd, LensOptions& o, bool withFocus) {
+void addSamplingOptions(CLI::App& cmd, LensOptions& o) {
   cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: concentric; sobol with --target-psnr)")
       ->check(CLI::IsMember(patternNameList()));
-  cmd.add_option("--aperture-samples", o.apertureSamples,
-                 "scene passes, one per aperture point: a number, or auto (from the largest circle of confusion in view)")
-      ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 65536))
-      ->capture_default_str();
-  cmd.add_option("--max-samples", o.maxSamples, "the most aperture samples auto may choose (with --target-psnr: per tile)")
-      ->check(CLI::Range(1, 65536))
-      ->capture_default_str();
+  CLI::Option* samples =
+      cmd.add_option("--aperture-samples", o.apertureSamples,
+                     "scene passes, one per aperture point: a number, or auto (from the largest circle of confusion in view)")
+          ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 65536))
+          ->capture_default_str();
+  CLI::Option* max = cmd.add_option("--max-samples", o.maxSamples, "the most aperture samples auto may choose (with --target-psnr: per tile)")
+                         ->check(CLI::Range(1, 65536))
+                         ->capture_default_str();
+  // A fixed count leaves nothing for a cap to do: say so rather than ignore it.
+  cmd.parse_complete_callback([samples, max, &o] {
+    if (max->count() > 0 && samples->count() > 0 && o.apertureSamples != "auto")
+      throw CLI::ValidationError("--max-samples", cat("caps the count that auto (or --target-psnr) chooses; --aperture-samples ",
+                                                      o.apertureSamples, " fixes it: give one or the other"));
+  });
+}
+
+void addSeedOption(CLI::App& cmd, LensOptions& o) {
   cmd.add_option("--seed", o.seed, "seed for the aperture and sub-pixel samples")->capture_default_str();
-  if (!withFocus) return;
-  cmd.add_option("--focus-distance", o.focusDistance,
-                 "put the plane of focus this far from the PRP (world units, or infinity)");
+}
+
+void addFocusOptions(CLI::App& cmd, LensOptions& o) {
+  CLI::Option* distance = cmd.add_option("--focus-distance", o.focusDistance,
+                                         "put the plane of focus this far from the PRP (world units, or infinity)");
+  // --focus-at sets the focus after --focus-distance would: one of the two.
   addPairOption(cmd, "--focus-at", [&o](double x, double y) { o.focusAt = glm::dvec2(x, y); },
-                "focus on the depth under pixel X,Y of the image");
+                "focus on the depth under pixel X,Y of the image")
+      ->excludes(distance);
 }
 
 namespace {

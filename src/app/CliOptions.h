@@ -15,8 +15,13 @@
 
 namespace lenslab {
 
-// `withFocus`: --focus-distance and --focus-at too (capture takes focus from its path instead).
-void addLensOptions(CLI::App& command, LensOptions& options, bool withFocus = true);
+// --pattern, --aperture-samples, --max-samples: the rasterizer's aperture sampling (render,
+// capture, view; the ray caster has --spp instead).
+void addSamplingOptions(CLI::App& command, LensOptions& options);
+// --seed: the aperture and sub-pixel samples' (every command that samples).
+void addSeedOption(CLI::App& command, LensOptions& options);
+// --focus-distance, --focus-at (render, raycast, view; capture takes focus from its path).
+void addFocusOptions(CLI::App& command, LensOptions& options);
 // --target-psnr DB (render and view; sweep runs its adaptive method at several targets).
 void addTargetOption(CLI::App& command, LensOptions& options);
 

@@ -1,10 +1,12 @@
 #include "app/FrameRender.h"
 
 #include "core/Clock.h"
-#include "io/Progress.h"
+#include "core/Text.h"
 #include "render/VisibleBlurPass.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -24,35 +26,41 @@ FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera
 }
 
 Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
-                    bool showProgress, bool quiet) {
-  const auto t = std::chrono::steady_clock::now();
-  renderer.begin(camera, plan, size);
+                    ProgressReporter* progress, bool quiet) {
+  if (progress && plan.adaptive) progress->setUnit("tiles at the target");
+  LensPass::TableProgress tables;
+  if (progress)
+    tables = [&](const char* table, int rowsDone, int rows) {
+      progress->update(0, std::max(plan.apertureSamples, 1), cat(table, " lens table, ", rowsDone, "/", rows, " rows"));
+    };
+  renderer.begin(camera, plan, size, tables);
   if (plan.adaptive) {
     while (renderer.step()) {
       const FrameEstimate e = renderer.estimate();
-      if (showProgress)
-        std::fprintf(stderr, "\r%5.1f dB of %.1f (estimate), %.1f samples per pixel, %d of %d tiles going, %.1f s   ",
-                     e.psnrDb, plan.adaptive->targetPsnrDb, e.meanSamples, e.tilesActive, e.tiles, secondsSince(t));
+      if (progress)
+        progress->update(e.tiles - e.tilesActive, e.tiles,
+                         cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", plan.adaptive->targetPsnrDb, " (estimate), ",
+                             std::round(e.meanSamples * 10.0) / 10.0, " samples per pixel"));
     }
     Image image = renderer.resolve();
     stats.estimate = renderer.estimate();
-    if (showProgress) std::cerr << "\n";
-    if (!quiet && !stats.estimate->targetMet)
-      std::cerr << "lenslab: warning: the estimate reached " << stats.estimate->psnrDb << " dB, short of --target-psnr "
-                << plan.adaptive->targetPsnrDb << ": the tiles still short of it are at the cap of " << plan.adaptive->maxSamples
-                << " samples (--max-samples, an even count for the two streams)\n";
+    if (!quiet && !stats.estimate->targetMet) {
+      const std::string warning =
+          cat("lenslab: warning: the estimate reached ", stats.estimate->psnrDb, " dB, short of --target-psnr ",
+              plan.adaptive->targetPsnrDb, ": the tiles still short of it are at the cap of ", plan.adaptive->maxSamples,
+              " samples (--max-samples, an even count for the two streams)");
+      if (progress) progress->note(warning);  // below the bar, not through it
+      else std::cerr << warning << "\n";
+    }
     return image;
   }
-  const bool samplesProgress = showProgress && plan.apertureSamples > 1;
-  // Samples in batches, so that long renders report progress on a terminal.
+  // Samples in batches, so that long renders report progress.
   const int batch = std::max(1, plan.apertureSamples / 50);
   while (renderer.samplesDone() < renderer.samplesPlanned()) {
     renderer.addSamples(batch);
-    if (samplesProgress) printProgress(renderer.samplesDone(), renderer.samplesPlanned(), secondsSince(t));
+    if (progress) progress->update(renderer.samplesDone(), renderer.samplesPlanned());
   }
-  Image image = renderer.resolve();
-  if (samplesProgress) std::cerr << "\n";
-  return image;
+  return renderer.resolve();
 }
 
 }  // namespace lenslab

@@ -6,6 +6,7 @@
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
+#include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "render/Renderer.h"
 #include "scene/Scene.h"
@@ -21,9 +22,10 @@ FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera
                     const PlanOptions& options, RunStats& stats);
 
 // Renders `plan` (not tiled): its fixed count in batches, or per-tile rounds to the target error.
-// Progress on stderr when `showProgress`; the warning that a target was not met unless `quiet`.
+// Progress to `progress` when given (the lens tables, then samples; tiles at the target with a
+// target error; the caller finishes it); the warning that a target was not met unless `quiet`.
 // Sets stats.estimate (with a target).
 Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
-                    bool showProgress, bool quiet);
+                    ProgressReporter* progress, bool quiet);
 
 }  // namespace lenslab

@@ -63,7 +63,8 @@ constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
 // `out`'s temporary file in `outputs`.
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
-                               const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats) {
+                               const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
+                               ProgressReporter& progress) {
   Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
@@ -75,7 +76,7 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   stats.setupSeconds = secondsSince(t);
 
   if (o.lens.focusAt) {
-    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer));
+    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer), "--focus-at");
     camera = withDepthRangeFitted(focused.camera, scene.bounds);
     stats.setCamera(focused);
   }
@@ -90,34 +91,34 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
                          "--width, or --aperture-samples"));
   if (tiles.tiled) {
     stats.plan.passes.push_back({"tiles", tiles.why, {}});
-    const bool showProgress = !o.quiet && isTerminal(stderr);
+    progress.setUnit(cat("samples over ", tiles.tiles.size(), " tiles"));
     t = std::chrono::steady_clock::now();
     double writeSeconds = 0.0;
     StripImageWriter writer(outputs, out, size);
+    const std::string writing = cat("writing ", out.string());
     renderTiles(renderer, camera, plan, size, tiles,
                 [&](const PixelRect& rect, const Image& pixels) {
+                  // A tile that completes a strip of rows writes it (seconds for a large PNG).
+                  progress.update(progress.done(), progress.total(), writing);
                   const auto w = std::chrono::steady_clock::now();
                   writer.add(rect.x0, rect.y0, pixels);
                   writeSeconds += secondsSince(w);
                 },
-                [&](int done, int total) {
-                  if (showProgress) printProgress(done, total, secondsSince(t));
-                });
+                [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); });
     const auto w = std::chrono::steady_clock::now();
     writer.finish();
     stats.writeSeconds = writeSeconds + secondsSince(w);
     stats.renderSeconds = secondsSince(t) - stats.writeSeconds;
-    if (showProgress) std::cerr << "\n";
     return std::nullopt;
   }
 
-  const bool showProgress = !o.quiet && isTerminal(stderr);
-  Image image = renderPlanned(renderer, camera, plan, size, stats, showProgress, o.quiet);
+  Image image = renderPlanned(renderer, camera, plan, size, stats, &progress, o.quiet);
   stats.renderSeconds = secondsSince(renderStart);
   return image;
 }
 
-Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats) {
+Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats,
+              ProgressReporter& progress) {
   Camera camera = selected.camera;
   if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
   if (size.pixelCount() > kMaxRaycastPixels)
@@ -132,7 +133,7 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   if (o.lens.focusAt) {
     const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, [&](const Camera& c, ImageSize depthSize, int x, int y) {
       return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
-    });
+    }, "--focus-at");
     camera = withDepthRangeFitted(focused.camera, scene.bounds);
     stats.setCamera(focused);
   }
@@ -141,13 +142,10 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
   stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.isPinhole() ? "the PRP" : "the thin lens",
                                         camera.effects.isZero() ? "" : ", each through the inverse lens model (exact)"), {}}};
-  const bool showProgress = !o.quiet && isTerminal(stderr);
   t = std::chrono::steady_clock::now();
-  Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed}, [&](int done, int rows) {
-    if (showProgress) printProgress(done, rows, secondsSince(t));
-  });
+  Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed},
+                              [&](int done, int rows) { progress.update(done, rows); });
   stats.renderSeconds = secondsSince(t);
-  if (showProgress) std::cerr << "\n";
   return image;
 }
 
@@ -177,9 +175,8 @@ int runRender(const RenderOptions& o) {
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
   const Camera& camera = selected.camera;
   const ImageSize size = resolveImageSize(camera, o.width, o.height);
-  if (o.width && o.height && pixelAspectMismatch(camera.view.window, size) > 0.01)
-    std::cerr << "lenslab: warning: the image's aspect ratio (" << size.widthPx << "x" << size.heightPx
-              << ") differs from the window's; pixels will not be square (give only --width or --height)\n";
+  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
 
   RunStats stats;
   stats.command = o.method == Method::Raster ? "render" : "raycast";
@@ -192,17 +189,22 @@ int runRender(const RenderOptions& o) {
   // The image and the stats appear together or not at all (io/AtomicFile.h).
   OutputSet outputs;
   std::optional<Image> image;
+  // One reporter for the whole run: its last line comes after the file is written.
+  ProgressReporter progress(stats.command, o.method == Method::Raster ? "samples" : "rows", o.quiet);
   if (o.method == Method::Raster) {
-    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats);
+    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress);
   } else {
-    image = raycast(o, scene, selected, size, stats);
+    image = raycast(o, scene, selected, size, stats, progress);
   }
 
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
+    progress.update(progress.done(), progress.total(), cat("writing ", out.string()));
     writeImage(outputs, out, *image);
     stats.writeSeconds = secondsSince(t);
   }
+  progress.update(progress.done(), progress.total());  // written: the last line says no more than the figures
+  progress.finish();
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
   outputs.commit();
@@ -257,7 +259,9 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->capture_default_str();
   }
   addColmapOptions(*cmd, options->camera);
-  addLensOptions(*cmd, options->lens);
+  if (method == Method::Raster) addSamplingOptions(*cmd, options->lens);
+  addSeedOption(*cmd, options->lens);
+  addFocusOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);

@@ -11,11 +11,13 @@
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
+#include "io/Progress.h"
 #include "plan/TilePlan.h"
 #include "report/Plot.h"
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -39,16 +41,26 @@ struct SweepCommandOptions {
   CameraOptions camera;  // the lens, pose and glTF camera; no clip (a sweep draws the rest pose)
   std::optional<glm::vec3> background;
   SweepOptions sweep;
+  bool quiet = false;
 };
 
 int runSweepCommand(SweepCommandOptions& o) {
+  // Each adaptive image is named by its target: a target given twice would overwrite one.
+  for (std::size_t i = 0; i < o.sweep.targetsDb.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (o.sweep.targetsDb[i] == o.sweep.targetsDb[j])
+        throw InputError(cat("--target-psnr: ", o.sweep.targetsDb[i], " dB is given twice; give each target once"));
   const auto [scenePath, cameraPath] =
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera-dof.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   const Camera camera =
       withDepthRangeFitted(applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens).camera, scene.bounds);
-  const ImageSize size = resolveImageSize(camera, o.width ? o.width : std::optional<int>(320), o.height);
+  // About 320 wide unless a side is given (the reference is costly); a height alone sets the
+  // width from the window.
+  const ImageSize size = resolveImageSize(camera, o.width, o.height, 320);
+  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
   requireOneTarget(size, RenderTargetLimits{}, "sweep");
   const fs::path out = o.outDir;
   // Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a
@@ -67,9 +79,24 @@ int runSweepCommand(SweepCommandOptions& o) {
   o.sweep.outDir = out;
   o.sweep.outputs = &outputs;
   o.sweep.seed = o.lens.seed;
-  o.sweep.log = [](const std::string& line) { std::cerr << "lenslab: sweep: " << line << "\n"; };
+  // One reporter a phase (the reference's rows, then the images), each with its own clock.
+  std::unique_ptr<ProgressReporter> progress;
+  const bool quiet = o.quiet;
+  o.sweep.log = [&progress, quiet](const std::string& line) {
+    if (quiet) return;
+    if (progress) progress->note("lenslab: sweep: " + line);
+    else std::cerr << "lenslab: sweep: " << line << "\n";
+  };
+  o.sweep.progress = [&progress, quiet](const std::string& unit, std::int64_t done, std::int64_t total) {
+    if (!progress || progress->unit() != unit) {
+      if (progress) progress->finish();
+      progress = std::make_unique<ProgressReporter>("sweep", unit, quiet);
+    }
+    progress->update(done, total);
+  };
   t = std::chrono::steady_clock::now();
   const SweepResult result = runSweep(scene, camera, size, o.sweep);
+  if (progress) progress->finish();
   const double sweepSeconds = secondsSince(t);
 
   const std::string header = cat(
@@ -102,8 +129,10 @@ int runSweepCommand(SweepCommandOptions& o) {
   }
   writeImage(outputs, out / "error_vs_time.png", logLogPlot(series, "seconds", "RMSE", "error against run time"));
   outputs.commit();
-  std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and "
-            << result.rows.size() << " images\n";
+  const auto images = std::count_if(result.rows.begin(), result.rows.end(), [](const SweepRow& r) { return !r.image.empty(); });
+  if (!o.quiet)
+    std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and " << images
+              << " images in " << (out / "images").string() << "\n";
   return 0;
 }
 
@@ -115,7 +144,8 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("scene", o->scene, "glTF 2.0 scene; default: the bundled 'rows' with camera-dof.json");
   cmd->add_option("--camera", o->cameraFile, "camera JSON with an aperture (f_number or aperture_radius)");
   cmd->add_option("--out,-o", o->outDir, "folder for sweep.csv, sweep.md, error_vs_time.png and images/")->required();
-  cmd->add_option("--width", o->width, "image width in pixels (default 320 here: the reference is costly)");
+  cmd->add_option("--width", o->width,
+                  "image width in pixels (default about 320 here, the nearest that keeps pixels square: the reference is costly)");
   cmd->add_option("--height", o->height, "image height in pixels");
   cmd->add_option("--backend", o->backend, "osmesa or egl")->check(CLI::IsMember({"osmesa", "egl"}))->capture_default_str();
   cmd->add_option("--reference-spp", o->sweep.referenceSpp, "samples per pixel of the reference")->check(CLI::Range(1, 1 << 20))->capture_default_str();
@@ -139,7 +169,25 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   addCameraOptions(*cmd, o->camera);
   cmd->remove_option(cmd->get_option("--animation"));
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
-  return [cmd, o]() { return cmd->parsed() ? runSweepCommand(*o) : -1; };
+  cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
+  return [cmd, o]() {
+    if (!cmd->parsed()) return -1;
+    // A budget for a series that does not run would be ignored: refused instead.
+    const auto runs = [&o](std::initializer_list<const char*> series) {
+      for (const char* name : series)
+        if (std::find(o->sweep.series.begin(), o->sweep.series.end(), name) != o->sweep.series.end()) return true;
+      return false;
+    };
+    const auto refuseUnless = [&](const char* option, std::initializer_list<const char*> series, const char* what) {
+      if (cmd->count(option) > 0 && !runs(series))
+        throw InputError(cat(option, " sets ", what, ", which --methods leaves out; add it to --methods or drop ", option));
+    };
+    refuseUnless("--max-spp", {"raycast"}, "the raycast series' largest budget");
+    refuseUnless("--target-psnr", {"adaptive"}, "the adaptive series' targets");
+    refuseUnless("--max-views", {"concentric", "r2", "random", "sobol", "adaptive"},
+                 "the raster series' largest budget");
+    return runSweepCommand(*o);
+  };
 }
 
 }  // namespace lenslab

@@ -18,7 +18,9 @@ std::function<int()> addViewCommand(CLI::App& app) {
                   "and pose options override it field by field");
   cmd->add_option("--width", o->width, "image width in pixels (default 640 in a window, 960 scripted as in render)");
   cmd->add_option("--height", o->height, "image height in pixels");
-  addLensOptions(*cmd, o->lens);
+  addSamplingOptions(*cmd, o->lens);
+  addSeedOption(*cmd, o->lens);
+  addFocusOptions(*cmd, o->lens);
   addTargetOption(*cmd, o->lens);
   addCameraOptions(*cmd, o->camera);
   cmd->add_option("--time", o->timeSeconds,

@@ -18,13 +18,29 @@ Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std
   return c;
 }
 
-ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx) {
-  if (!camera.calibratedSize || (widthPx && heightPx)) return resolveImageSize(camera.view.window, widthPx, heightPx);
+ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx, int defaultWidthPx) {
+  if (!camera.calibratedSize || (widthPx && heightPx))
+    return resolveImageSize(camera.view.window, widthPx, heightPx, defaultWidthPx);
   // A calibrated camera's pixels need not be square (fx ≠ fy): scale its own size.
   const ImageSize own = *camera.calibratedSize;
   if (!widthPx && !heightPx) return resolveImageSize(camera.view.window, own.widthPx, own.heightPx);
   const double aspect = static_cast<double>(own.widthPx) / own.heightPx;
   return resolveImageSize(aspect, "the calibrated image's", widthPx, heightPx);
+}
+
+std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx, ImageSize size) {
+  const bool widthGiven = widthPx.has_value(), heightGiven = heightPx.has_value();
+  if (!camera.calibratedSize)
+    return pixelShapeWarning(camera.view.window.width() / camera.view.window.height(), size, widthGiven, heightGiven);
+  // Calibrated pixels need not be square (fx ≠ fy): the shape to keep is the calibration's.
+  const ImageSize own = *camera.calibratedSize;
+  const double aspect = camera.view.window.width() / camera.view.window.height();
+  const double ownStretch = pixelStretch(aspect, own);
+  // The pixel shape of `size` against that of the calibrated image: the same window, so the
+  // stretch between them is the ratio of the two image aspects.
+  return pixelShapeWarning(static_cast<double>(own.widthPx) / own.heightPx, size, widthGiven, heightGiven,
+                           std::abs(ownStretch) <= kSquarePixelTolerance ? std::string()
+                                                                         : cat("the calibrated ", own.widthPx, "x", own.heightPx, " image"));
 }
 
 double viewPlaneDistanceFor(double focusDistance, double nearDistance) {

@@ -46,8 +46,14 @@ struct Camera {
 };
 
 // The image size for a camera: a calibrated camera's own size (scaled to a given width or height),
-// else resolveImageSize from the window.
-ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx);
+// else resolveImageSize from the window (with `defaultWidthPx` when no side is given).
+ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx,
+                           int defaultWidthPx = kDefaultWidthPx);
+
+// The warning for `size` (resolveImageSize's answer to the sides given) when it stretches the
+// camera's pixels: out of square, or for a calibrated camera out of its calibrated shape
+// (pixelShapeWarning in camera/ImageSize.h); empty when they keep their shape.
+std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx, ImageSize size);
 
 // A camera whose plane of focus is its view plane.
 Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std::string source);

@@ -8,11 +8,12 @@
 
 namespace lenslab {
 
-SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt) {
+SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt,
+                            const std::string& asked) {
   const Camera& camera = selected.camera;
   const int x = static_cast<int>(std::floor(pixel.x)), y = static_cast<int>(std::floor(pixel.y));
   if (x < 0 || y < 0 || x >= size.widthPx || y >= size.heightPx)
-    throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
+    throw InputError(cat(asked, " ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
                          size.heightPx, " image"));
   double distance = 0.0;
   if (camera.effects.needsRemap()) {
@@ -24,8 +25,8 @@ SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm:
     distance = depthAt(camera, size, x, y);
   }
   if (!std::isfinite(distance) || !(distance > 0.0))
-    throw InputError(cat("--focus-at ", pixel.x, ",", pixel.y, ": nothing of the scene is under that pixel to focus on"));
-  SelectedCamera c = refocused(selected, distance, "--focus-at");
+    throw InputError(cat(asked, " ", pixel.x, ",", pixel.y, ": nothing of the scene is under that pixel to focus on"));
+  SelectedCamera c = refocused(selected, distance, cat(asked, " ", pixel.x, ",", pixel.y));
   c.camera.source += cat(", focused at pixel ", pixel.x, ",", pixel.y, " (depth ", distance, ")");
   return c;
 }

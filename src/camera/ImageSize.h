@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace lenslab {
@@ -29,17 +30,36 @@ constexpr int kMaxImageSidePx = 65536;
 // strip at a time, so this bounds time rather than memory.
 constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 30;
 
+// Pixels count as square when their height and width differ by at most this (relative): a square
+// as tall as a 1000-px image is then drawn true to within a pixel. The rounding of a derived side
+// to whole pixels stays below it from about 500 px on.
+constexpr double kSquarePixelTolerance = 1e-3;
+
 // Throws InputError, naming the option and the window's aspect ratio, for a side outside
 // [1, kMaxImageSidePx] (given, or following from the other side and the window) or more than
-// kMaxImagePixels pixels.
-ImageSize resolveImageSize(const Window& window, std::optional<int> widthPx, std::optional<int> heightPx);
+// kMaxImagePixels pixels. With neither side given the width is `defaultWidthPx`, moved to the
+// nearest width whose rounded height keeps pixels square (within kSquarePixelTolerance) where
+// one lies within a tenth of it: 320 on a 3:2 window gives 321x214, not 320x213.
+ImageSize resolveImageSize(const Window& window, std::optional<int> widthPx, std::optional<int> heightPx,
+                           int defaultWidthPx = kDefaultWidthPx);
 
 // The same for an aspect ratio (width / height) that `aspectSource` names in messages, e.g.
 // "the window's" or "the calibrated image's".
 ImageSize resolveImageSize(double aspect, std::string_view aspectSource, std::optional<int> widthPx,
-                           std::optional<int> heightPx);
+                           std::optional<int> heightPx, int defaultWidthPx = kDefaultWidthPx);
 
-// Relative difference between the image's and the window's aspect ratios (0 = square pixels).
-double pixelAspectMismatch(const Window& window, ImageSize size);
+// How much taller than wide a pixel of `size` is when the image shows something of aspect ratio
+// `aspect` (width / height): 0 square, 0.0016 for 320x213 of a 3:2 window, negative when wider.
+double pixelStretch(double aspect, ImageSize size);
+
+// A one-line warning when `size`'s pixels are not square against `aspect` (beyond
+// kSquarePixelTolerance), else empty. It says by how much and the nearest sizes that keep them
+// square: along the width when the width was given (or defaulted), the height when only the
+// height was, and both sides when both were ("320x213 makes pixels 0.16 % taller than wide (the
+// window is 1.5:1); --width 318 (212 high) or --width 321 (214 high) keeps them square").
+// `shapeOf`: what square is measured against, for pixels meant to be non-square ("the
+// calibrated 640x480 image's"); empty for square.
+std::string pixelShapeWarning(double aspect, ImageSize size, bool widthGiven, bool heightGiven,
+                              const std::string& shapeOf = {});
 
 }  // namespace lenslab

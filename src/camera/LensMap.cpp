@@ -6,6 +6,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,10 +27,26 @@ std::vector<Channel> remappedChannels(const LensEffects& effects) {
 }
 
 // Runs `rows(first, last)` over bands of [0, height) on every core (TBB; an exception in a band
-// reaches the caller).
-void forEachRowBand(int height, const std::function<void(int, int)>& rows) {
-  tbb::parallel_for(tbb::blocked_range<int>(0, height, 8),
-                    [&](const tbb::blocked_range<int>& band) { rows(band.begin(), band.end()); });
+// reaches the caller). With `progress`, in about 20 slices one after the other, each on every
+// core, reporting `progress(offset + rows done, total)` from the calling thread after each: a
+// table for a large tile takes tens of seconds.
+void forEachRowBand(int height, const std::function<void(int, int)>& rows, const RowProgress& progress = {},
+                    int offset = 0, int total = 0) {
+  const auto parallel = [&](int first, int last) {
+    tbb::parallel_for(tbb::blocked_range<int>(first, last, 8),
+                      [&](const tbb::blocked_range<int>& band) { rows(band.begin(), band.end()); });
+  };
+  if (!progress) {
+    parallel(0, height);
+    return;
+  }
+  // Slices of at least 8 rows per core, so that every core has work in each.
+  const int slice = std::max(height / 20, 8 * tbb::this_task_arena::max_concurrency());
+  for (int first = 0; first < height; first += slice) {
+    const int last = std::min(height, first + slice);
+    parallel(first, last);
+    progress(offset + last, total);
+  }
 }
 
 glm::dvec2 undistortOrThrow(const Camera& camera, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
@@ -142,13 +159,14 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
   return o;
 }
 
-RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan) {
+RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
   RemapTable table{size, {}};
   const Window& w = camera.view.window;
   const int width = size.widthPx, height = size.heightPx;
   const glm::dvec2 inner(overscan.size.widthPx, overscan.size.heightPx);
   const glm::dvec2 pad(overscan.padPx);
-  for (const Channel c : remappedChannels(camera.effects)) {
+  const std::vector<Channel> channels = remappedChannels(camera.effects);
+  for (const Channel c : channels) {
     std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     const auto rows = [&](int first, int last) {
       for (int row = first; row < last; ++row) {
@@ -168,13 +186,14 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
     };
     // Rows are independent: bands on every core (the table is rebuilt only when the lens changes,
     // but a 4K table is 8 million Newton solves).
-    forEachRowBand(height, rows);
+    forEachRowBand(height, rows, progress, static_cast<int>(table.channels.size()) * height,
+                   static_cast<int>(channels.size()) * height);
     table.channels.push_back(std::move(map));
   }
   return table;
 }
 
-ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan) {
+ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
   ForwardTable table;
   table.size = overscan.size;
   const int width = size.widthPx, height = size.heightPx;
@@ -210,7 +229,7 @@ ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Oversc
           halfExtent[static_cast<std::size_t>(y)] = std::max({halfExtent[static_cast<std::size_t>(y)], hx, hy});
         }
       }
-  });
+  }, progress, 0, viewHeight);
   // Red and blue are green's image magnified by (1 + lateral): their pre-images are smaller or
   // larger by that factor.
   const double smallestScale = std::min({1.0, 1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue});

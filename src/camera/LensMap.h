@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,9 @@ struct RemapTable {
   std::vector<std::vector<glm::vec2>> channels;  // 1 or 3 tables, size.widthPx × size.heightPx each
   bool perChannel() const { return channels.size() == 3; }
 };
-RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan);
+// How far a table is: rows done of all it has to fill (called from the calling thread).
+using RowProgress = std::function<void(int rowsDone, int rows)>;
+RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress = {});
 
 // Forward, for the raster's per-view gather (render/LensPass.h): the overscan render's texel
 // centres carried through green's distortion into the output image. A view's texel t shows the
@@ -71,7 +74,7 @@ struct ForwardTable {
   double reachPx = 0.0;
   glm::dvec2 principalPointPx{0.0};  // the principal point in the output image, for lateral colour
 };
-ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan);
+ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress = {});
 
 // Exact, for the ray caster: channel `c` of output pixel position `pixel` (continuous, origin top
 // left) shows the true perspective pixel position returned (same image grid, may lie outside it),

@@ -79,14 +79,27 @@ std::string formatFramePath(const std::string& pattern, int frame) {
 
 FrameRange parseFrameRange(const std::string& text, int frameCount) {
   const std::string usage = cat("--frames ", text, ": give A:B (inclusive), A:, :B or one frame N, within 0:", frameCount - 1,
-                                " (the path has ", frameCount, " frame", frameCount == 1 ? "" : "s", ")");
-  FrameRange r{0, frameCount - 1};
+                                " (the path has ", frameCount, " frame", frameCount == 1 ? "" : "s",
+                                "), and :STEP after a range for every STEP-th frame (e.g. 0:", frameCount - 1, ":12)");
+  FrameRange r{0, frameCount - 1, 1};
   const auto colon = text.find(':');
   if (colon == std::string::npos) {
     r.first = r.last = parseInt(text, usage);
   } else {
-    const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
-    if (a.empty() && b.empty()) throw InputError(usage);
+    const auto second = text.find(':', colon + 1);
+    const std::string a = text.substr(0, colon);
+    const std::string b = text.substr(colon + 1, second == std::string::npos ? std::string::npos : second - colon - 1);
+    if (second != std::string::npos) {
+      const std::string step = text.substr(second + 1);
+      // The step's own message: 0, a negative or a fraction is the likely slip, not the range.
+      const std::string stepUsage = cat("--frames ", text, ": the step after the second colon must be a whole number of "
+                                        "frames, 1 or more (e.g. 0:", frameCount - 1, ":12 for every 12th frame)");
+      if (step.find(':') != std::string::npos) throw InputError(usage);
+      r.step = parseInt(step, stepUsage);
+      if (r.step < 1) throw InputError(stepUsage);
+    } else if (a.empty() && b.empty()) {
+      throw InputError(usage);  // ":" alone
+    }
     if (!a.empty()) r.first = parseInt(a, usage);
     if (!b.empty()) r.last = parseInt(b, usage);
   }
@@ -105,7 +118,8 @@ Shard parseShard(const std::string& text) {
 
 std::vector<int> shardFrames(FrameRange range, Shard shard) {
   std::vector<int> frames;
-  for (long long f = static_cast<long long>(range.first) + shard.index; f <= range.last; f += shard.count)
+  const long long step = range.step;
+  for (long long f = range.first + step * shard.index; f <= range.last; f += step * shard.count)
     frames.push_back(static_cast<int>(f));
   return frames;
 }

@@ -25,7 +25,12 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
 LensPass::LensPass()
     : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")) {}
 
-void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather) {
+void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather,
+                       const TableProgress& progress) {
+  const auto rowsOf = [&progress](const char* table) -> RowProgress {
+    if (!progress) return {};
+    return [&progress, table](int done, int rows) { progress(table, done, rows); };
+  };
   std::vector<double> key = keyOf(camera, size, overscan);
   const auto texture = [](GLenum format, ImageSize at, GLenum layout, const void* data) {
     gl::Texture t = gl::Texture::create();
@@ -36,7 +41,7 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
     return t;
   };
   if (key != key_ || tables_.empty()) {
-    const RemapTable table = makeRemapTable(camera, size, overscan);
+    const RemapTable table = makeRemapTable(camera, size, overscan, rowsOf("inverse"));
     tables_.clear();
     for (const std::vector<glm::vec2>& map : table.channels) tables_.push_back(texture(GL_RG32F, size, GL_RG, map.data()));
     gather_ = {};
@@ -55,7 +60,7 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
   // The forward tables serve only the per-view gather: a single view (apply) never reads them,
   // and at 20000 px they cost more than the render.
   if (forGather && !forwardPosition_) {
-    const ForwardTable forward = makeForwardTable(camera, size, overscan);
+    const ForwardTable forward = makeForwardTable(camera, size, overscan, rowsOf("forward"));
     forwardPosition_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.position.data());
     forwardJacobian_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.jacobian.data());
     gather_.forwardPosition = forwardPosition_.id();

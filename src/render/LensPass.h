@@ -12,6 +12,7 @@
 #include "gl/Object.h"
 #include "render/Accumulator.h"
 
+#include <functional>
 #include <vector>
 
 namespace lenslab {
@@ -22,7 +23,11 @@ class LensPass {
 
   // Makes the tables for this camera and image size; a no-op when nothing changed since the last call.
   // The forward tables (for gather()) only when `forGather`: a single view needs the inverse alone.
-  void prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather = true);
+  // `progress(table, rowsDone, rows)` as each table ("inverse" or "forward") fills: for a large
+  // image they take tens of seconds on the CPU.
+  using TableProgress = std::function<void(const char* table, int rowsDone, int rows)>;
+  void prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather = true,
+               const TableProgress& progress = {});
   // Remaps `undistorted` (one overscanned view) into `out` (the image size), bilinearly.
   void apply(const gl::RenderTarget& undistorted, const gl::RenderTarget& out);
   // The tables for the accumulator's per-view gather (after prepare with forGather).

@@ -40,7 +40,7 @@ std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
   return Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
 }
 
-void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size) {
+void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables) {
   plan_ = plan;
   camera_ = plan.remap ? plan.overscan.camera : camera;
   size_ = plan.remap ? plan.overscan.size : size;
@@ -51,7 +51,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     channelFocusShifts_[static_cast<std::size_t>(c)] = camera_.effects.chromatic.inverseFocusShift(c);
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
-    lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1);
+    lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1, tables);
   }
   adaptive_ = plan.adaptive.has_value();
   if (adaptive_) {

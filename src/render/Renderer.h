@@ -35,7 +35,8 @@ class Renderer {
   Image render(const Camera& camera, const FramePlan& plan, ImageSize size);
 
   // The same in steps, for progressive rendering: begin, then addSamples until done, resolve.
-  void begin(const Camera& camera, const FramePlan& plan, ImageSize size);
+  // `tables`: progress while the lens pass builds its tables (LensPass::prepare).
+  void begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables = {});
   int addSamples(int count);  // returns how many were added (stops at the plan's count)
   int samplesDone() const { return done_; }
   int samplesPlanned() const { return static_cast<int>(samples_.size()); }

@@ -1,5 +1,6 @@
 #include "render/TiledRender.h"
 
+#include "core/Text.h"
 #include "gl/Object.h"
 
 #include <algorithm>
@@ -36,12 +37,30 @@ RenderTargetLimits queryRenderTargetLimits() {
 
 void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, const TilePlan& tiles,
                  const TileSink& sink, const TileProgress& progress) {
-  const int total = static_cast<int>(tiles.tiles.size());
-  for (int i = 0; i < total; ++i) {
+  const std::int64_t count = static_cast<std::int64_t>(tiles.tiles.size());
+  const std::int64_t perTile = plan.adaptive ? 1 : std::max(plan.apertureSamples, 1);
+  // Samples in batches, so that progress moves within a tile too (a large tile with many samples
+  // takes minutes on a CPU renderer).
+  const int batch = std::max(1, plan.apertureSamples / 50);
+  for (std::int64_t i = 0; i < count; ++i) {
     const Tile& tile = tiles.tiles[static_cast<std::size_t>(i)];
     const TileView view = tileView(camera, size, plan, tile);
-    sink(tile.rect, cropped(renderer.render(view.camera, view.plan, view.size), view.crop));
-    if (progress) progress(i + 1, total);
+    if (plan.adaptive) {
+      sink(tile.rect, cropped(renderer.render(view.camera, view.plan, view.size), view.crop));
+      if (progress) progress(i + 1, count, {});
+    } else {
+      LensPass::TableProgress tables;
+      if (progress)
+        tables = [&](const char* table, int rowsDone, int rows) {
+          progress(i * perTile, count * perTile, cat("tile ", i + 1, " of ", count, ": ", table, " lens table, ", rowsDone, "/", rows, " rows"));
+        };
+      renderer.begin(view.camera, view.plan, view.size, tables);
+      while (renderer.samplesDone() < renderer.samplesPlanned()) {
+        renderer.addSamples(batch);
+        if (progress) progress(i * perTile + renderer.samplesDone(), count * perTile, {});
+      }
+      sink(tile.rect, cropped(renderer.resolve(), view.crop));
+    }
   }
 }
 

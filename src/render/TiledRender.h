@@ -9,7 +9,9 @@
 #include "plan/TilePlan.h"
 #include "render/Renderer.h"
 
+#include <cstdint>
 #include <functional>
+#include <string>
 
 namespace lenslab {
 
@@ -18,8 +20,10 @@ RenderTargetLimits queryRenderTargetLimits();
 
 // Called with each tile's rectangle in the image and its pixels (rect.size()), in plan order.
 using TileSink = std::function<void(const PixelRect& rect, const Image& pixels)>;
-// Called after each tile with how many are done and how many there are.
-using TileProgress = std::function<void(int done, int total)>;
+// Called as the scene passes go: how many are done of all the tiles' (each tile draws the plan's
+// aperture samples; a tile to a target error counts as one), and while a tile's lens tables are
+// built a note saying how far ("tile 2 of 4: inverse lens table, 1200/2800 rows"; else empty).
+using TileProgress = std::function<void(std::int64_t done, std::int64_t total, const std::string& note)>;
 
 void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, const TilePlan& tiles,
                  const TileSink& sink, const TileProgress& progress = {});

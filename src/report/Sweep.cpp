@@ -25,7 +25,9 @@
 #include <cstring>
 #include <iomanip>
 #include <map>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace lenslab {
 namespace fs = std::filesystem;
@@ -165,7 +167,10 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     say(o, cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp / 2, " spp (half ", k + 1,
                " of 2", cached.empty() ? std::string() : cat(", cached as ", cached.filename().string()), ")"));
     const auto t = std::chrono::steady_clock::now();
-    halves[k] = caster.render(camera, size, RaycastOptions{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)});
+    halves[k] = caster.render(camera, size, RaycastOptions{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)},
+                              [&](int rows, int height) {
+                                if (o.progress) o.progress("reference rows", std::int64_t{k} * height + rows, 2 * std::int64_t{height});
+                              });
     result.referenceSeconds += secondsSince(t);
     if (!cached.empty()) writeImage(*o.outputs, cached, halves[k]);
   }
@@ -213,14 +218,43 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     return t[1];
   };
 
-  auto record = [&](const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image) {
-    const ImageDifference d = compareImages(image, reference, 0.0);
-    result.rows.push_back({method, pattern, samples, seconds, d.rmse, d.psnrDb, d.maxAbs, maskedRmse(image, reference, edges)});
-    if (!imageDir.empty()) writeImage(*o.outputs, imageDir / cat(method, "-", pattern, "-", samples, ".png"), image);
-  };
-
   const auto wanted = [&](const std::string& series) {
     return std::find(o.series.begin(), o.series.end(), series) != o.series.end();
+  };
+  // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
+  // exact distorted reference would measure the missing distortion, not the method.
+  const std::vector<int> gatherTaps = camera.effects.isZero() && wanted("postprocess") ? o.gatherTaps : std::vector<int>{};
+  std::int64_t imagesPlanned = static_cast<std::int64_t>(gatherTaps.size());
+  for (const std::string& series : sweepSeriesNames()) {
+    if (!wanted(series)) continue;
+    if (series == "lecture17") imagesPlanned += 1;
+    else if (series == "adaptive") imagesPlanned += static_cast<std::int64_t>(o.targetsDb.size());
+    else if (series == "raycast") imagesPlanned += static_cast<std::int64_t>(doublings(o.maxSpp).size());
+    else if (series != "postprocess") imagesPlanned += static_cast<std::int64_t>(doublings(o.maxViews).size());
+  }
+  std::set<std::string> imageNames;
+  // `target`: the adaptive row's target PSNR (its image's name), 0 for the others.
+  auto record = [&](const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image,
+                    double target = 0.0) {
+    const ImageDifference d = compareImages(image, reference, 0.0);
+    SweepRow row;
+    row.method = method;
+    row.pattern = pattern;
+    row.samples = samples;
+    row.seconds = seconds;
+    row.rmse = d.rmse;
+    row.psnr = d.psnrDb;
+    row.maxError = d.maxAbs;
+    row.edgeRmse = maskedRmse(image, reference, edges);
+    row.targetPsnr = target;
+    if (!imageDir.empty()) {
+      row.image = sweepImageName(row);
+      // Two rows with one name would leave fewer files than rows (and the report would lie).
+      if (!imageNames.insert(row.image).second) throw std::logic_error(cat("sweep: two rows named ", row.image));
+      writeImage(*o.outputs, imageDir / row.image, image);
+    }
+    result.rows.push_back(row);
+    if (o.progress) o.progress("images", static_cast<std::int64_t>(result.rows.size()), imagesPlanned);
   };
   for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random,
                                   AperturePattern::Sobol}) {
@@ -248,9 +282,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
         estimate = renderer.estimate();
         return frame;
       }, image);
-      record("adaptive", "sobol", static_cast<int>(std::lround(estimate.meanSamples)), seconds, image);
+      record("adaptive", "sobol", static_cast<int>(std::lround(estimate.meanSamples)), seconds, image, target);
       SweepRow& row = result.rows.back();
-      row.targetPsnr = target;
       row.estimatePsnr = estimate.psnrDb;
       row.maxTileSamples = estimate.maxSamples;
       row.meanSamples = estimate.meanSamples;
@@ -263,9 +296,6 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     record("raycast", "stratified", spp, secondsSince(t), image);
   }
   if (wanted("raycast")) say(o, "raycast: done");
-  // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
-  // exact distorted reference would measure the missing distortion, not the method.
-  const std::vector<int> gatherTaps = camera.effects.isZero() && wanted("postprocess") ? o.gatherTaps : std::vector<int>{};
   if (gatherTaps.empty() && !o.gatherTaps.empty() && wanted("postprocess")) say(o, "postprocess gather: left out (it has no lens effects)");
   for (int taps : gatherTaps) {
     Image image;
@@ -274,6 +304,11 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   }
   say(o, "postprocess: done");
   return result;
+}
+
+std::string sweepImageName(const SweepRow& row) {
+  if (row.method == "adaptive") return cat(row.method, "-", row.pattern, "-", row.targetPsnr, "dB.png");
+  return cat(row.method, "-", row.pattern, "-", row.samples, ".png");
 }
 
 std::vector<std::string> sweepSeriesNames() {

@@ -43,7 +43,9 @@ struct SweepOptions {
   std::filesystem::path outDir;       // empty: write nothing
   OutputSet* outputs = nullptr;       // with outDir: its files go into this set (io/AtomicFile.h),
                                       // to appear with the report when the caller commits it
-  std::function<void(const std::string&)> log;  // progress lines
+  std::function<void(const std::string&)> log;  // a line as each series ends
+  // How far it is: `unit` is "reference rows" (both halves of the reference), then "images".
+  std::function<void(const std::string& unit, std::int64_t done, std::int64_t total)> progress;
 };
 
 struct SweepRow {
@@ -59,7 +61,13 @@ struct SweepRow {
   double estimatePsnr = 0.0;  // adaptive: what its estimate said when it stopped
   int maxTileSamples = 0;     // adaptive: samples of the busiest tile (`samples` is the mean, rounded)
   double meanSamples = 0.0;   // adaptive: samples per pixel
+  std::string image = {};     // its file in outDir/images (sweepImageName), empty when none was written
 };
+
+// A row's image file name: method, pattern and the row's own parameter — views, spp or taps, and
+// for adaptive the target ("adaptive-sobol-40dB.png"), since two targets can end at the same
+// mean sample count.
+std::string sweepImageName(const SweepRow& row);
 
 struct SweepResult {
   std::vector<SweepRow> rows;

@@ -78,7 +78,11 @@ struct ImGuiSession {
 int runView(const ViewOptions& o) {
   if (!o.screenshot.empty()) checkImageExtension(o.screenshot);  // fail before any work
   if (o.frames < 0) throw InputError(cat("--frames ", o.frames, ": give a number of frames (0 = interactive)"));
+  // The scripted run's files are written when it ends; a window a person closes writes none.
   if (!o.screenshot.empty() && o.frames == 0) throw InputError("--screenshot needs --frames N (scripted mode)");
+  if (!o.statsFile.empty() && o.frames == 0) throw InputError("--stats needs --frames N (scripted mode)");
+  if (!o.saveCamera.empty() && o.frames == 0)
+    throw InputError("--save-camera needs --frames N (scripted mode); in the window, the panel's Save camera writes it");
   const PlanOptions planOptions = toPlanOptions(o.lens);
   const auto [scenePath, cameraPath] =
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
@@ -92,8 +96,10 @@ int runView(const ViewOptions& o) {
   for (const std::string& w : focusWarnings(selected.camera, o.lens)) std::cerr << "lenslab: warning: " << w << "\n";
   EditableCamera camera{refocusedCamera.camera, refocusedCamera.physical};
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.
-  const std::optional<int> width = o.width || o.height || o.frames > 0 ? o.width : std::optional<int>(640);
-  const ImageSize size = resolveImageSize(camera.camera, width, o.height);
+  const int defaultWidth = o.frames > 0 ? kDefaultWidthPx : 640;
+  const ImageSize size = resolveImageSize(camera.camera, o.width, o.height, defaultWidth);
+  if (const std::string shape = pixelShapeWarning(camera.camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
   requireOneTarget(size, RenderTargetLimits{}, "view");
 
   GlfwLibrary glfw;

@@ -87,8 +87,8 @@ gl::PixelRect Viewer::toPixels(const WindowRect& r) const {
 void Viewer::layout() {
   glfwGetWindowSize(window_, &windowWidth_, &windowHeight_);
   glfwGetFramebufferSize(window_, &fbWidth_, &fbHeight_);
-  const double panelWidth = options_.noUi ? 0.0 : std::min(430.0 * uiScale_, 0.5 * windowWidth_);
-  WindowRect area{0.0, 0.0, windowWidth_ - panelWidth, static_cast<double>(windowHeight_)};
+  panelWidth_ = options_.noUi ? 0.0 : std::min(430.0 * uiScale_, 0.5 * windowWidth_);
+  WindowRect area{0.0, 0.0, windowWidth_ - panelWidth_, static_cast<double>(windowHeight_)};
   const double aspect = static_cast<double>(model_.size().widthPx) / model_.size().heightPx;
   if (showOutside_) {
     WindowRect top = area, bottom = area;
@@ -109,7 +109,9 @@ std::optional<glm::dvec2> Viewer::imagePixelAt(ImVec2 mouse) const {
 }
 
 // A scripted focus (--focus-at, --click): an error ends the run.
-void Viewer::focusAt(glm::dvec2 pixel) { printFocus(model_.focusAt(pixel, rasterDepth(renderer_)), pixel); }
+void Viewer::focusAt(glm::dvec2 pixel, const std::string& asked) {
+  printFocus(model_.focusAt(pixel, rasterDepth(renderer_), asked), pixel);
+}
 
 void Viewer::handleInput() {
   ImGuiIO& io = ImGui::GetIO();
@@ -254,6 +256,15 @@ void Viewer::finishScripted() {
     j["accumulation_ms"] = accumulationMs;
     j["frame_ms_mean"] = frameMsSum_ / std::max(frames_, 1);
     j["frame_ms_max"] = frameMsMax_;  // the first frames include shader compilation
+    if (!options_.noUi) {
+      // Panel text cut off on the right: the most items in any frame (0 when everything fits).
+      j["panel_clipped_items"] = fit_.clippedMost();
+      if (fit_.clippedMost() > 0) {
+        j["panel_first_clipped"] = fit_.firstClipped();
+        j["panel_overflow_px"] = fit_.widestOverflowPx();
+      }
+      j["window"] = {windowWidth_, windowHeight_};
+    }
     const std::optional<double> focus = model_.lastFocusDistance();
     j["focus_distance"] = focus ? nlohmann::json(*focus) : nlohmann::json(nullptr);
     j["camera"] = model_.camera().camera.source;
@@ -269,8 +280,8 @@ int Viewer::run() {
   layout();
   restart();
   // Scripted clicks act as a click on the first frame would.
-  if (options_.lens.focusAt) focusAt(*options_.lens.focusAt);
-  if (options_.click) focusAt(*options_.click);
+  if (options_.lens.focusAt) focusAt(*options_.lens.focusAt, "--focus-at");
+  if (options_.click) focusAt(*options_.click, "--click");
   while (!glfwWindowShouldClose(window_)) {
     const bool converged = renderer_.done();
     if (!scripted() && converged && !model_.needsRestart()) glfwWaitEventsTimeout(0.05);  // idle: no busy loop
@@ -311,8 +322,20 @@ int Viewer::run() {
     frameMsMax_ = std::max(frameMsMax_, frameMs);
     frameMsSum_ += frameMs;
     ++frames_;
+    if (scripted()) {
+      // A long scripted run (thousands of samples on a CPU renderer) says how far it is in a log.
+      if (!progress_) progress_ = std::make_unique<ProgressReporter>("view", "samples", false);
+      if (renderer_.adaptive()) {
+        const FrameEstimate e = renderer_.estimate();
+        progress_->setUnit("tiles at the target");
+        progress_->update(e.tiles - e.tilesActive, e.tiles);
+      } else {
+        progress_->update(renderer_.samplesDone(), renderer_.samplesPlanned());
+      }
+    }
     if (scripted() && frames_ >= options_.frames && renderer_.done()) {
       finishScripted();
+      progress_->finish();
       return 0;
     }
     glfwSwapBuffers(window_);

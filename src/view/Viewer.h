@@ -6,10 +6,12 @@
 // src/view.
 #include "gl/DefaultFramebuffer.h"
 #include "gl/ImageTexture.h"
+#include "io/Progress.h"
 #include "render/GatherDof.h"
 #include "render/ImageDrawer.h"
 #include "render/LineDrawer.h"
 #include "render/Renderer.h"
+#include "view/PanelFit.h"
 #include "view/ViewApp.h"
 #include "view/ViewerModel.h"
 
@@ -46,7 +48,7 @@ class Viewer {
   bool scripted() const { return options_.frames > 0; }
   void layout();
   void handleInput();
-  void focusAt(glm::dvec2 pixel);
+  void focusAt(glm::dvec2 pixel, const std::string& asked);
   void restart();
   void accumulate();
   void draw();
@@ -55,7 +57,11 @@ class Viewer {
   std::optional<glm::dvec2> imagePixelAt(ImVec2 mouse) const;
   void finishScripted();
 
-  // Panel sections, one function each (ViewerPanel.cpp).
+  // Panel sections, one function each (ViewerPanel.cpp). A scripted run opens every section, so
+  // that its screenshot and the fit check (fit_) cover the whole panel.
+  ImGuiTreeNodeFlags openFlags(bool openByDefault) const {
+    return openByDefault || scripted() ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None;
+  }
   void panel();
   void sectionProgress();
   void sectionLecture();
@@ -96,8 +102,12 @@ class Viewer {
   float uiScale_ = 1.0f;
   int windowWidth_ = 0, windowHeight_ = 0, fbWidth_ = 0, fbHeight_ = 0;
   WindowRect imageRect_, outsideRect_;
+  double panelWidth_ = 0.0;  // the panel's share of the window's right side (layout())
   Region pressRegion_ = Region::None;
   bool dragged_ = false;
+
+  PanelFit fit_;  // text cut off on the panel's right, counted each frame (--stats)
+  std::unique_ptr<ProgressReporter> progress_;  // scripted runs: samples done, in a log
 
   bool saveWindowPending_ = false;
   std::string status_;  // the last thing saved

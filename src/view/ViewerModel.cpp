@@ -169,11 +169,11 @@ void ViewerModel::setPlanOptions(const PlanOptions& options) {
   dirty_ = true;
 }
 
-double ViewerModel::focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt) {
+double ViewerModel::focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt, const std::string& asked) {
   // The camera's source names only the latest click, not every click since the start.
   Camera current = cam_.camera;
   current.source = baseSource_;
-  const SelectedCamera focused = focusOnPixel(SelectedCamera{current, cam_.physical}, size_, pixel, depthAt);
+  const SelectedCamera focused = focusOnPixel(SelectedCamera{current, cam_.physical}, size_, pixel, depthAt, asked);
   const double distance = focused.camera.focusDistance();
   cam_.camera = focused.camera;
   cam_.physical = focused.physical;
@@ -184,12 +184,9 @@ double ViewerModel::focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt) {
 
 std::optional<double> ViewerModel::clickAt(glm::dvec2 pixel, const DepthAtPixel& depthAt) {
   try {
-    return focusAt(pixel, depthAt);
+    return focusAt(pixel, depthAt, "click at image pixel");
   } catch (const InputError& e) {
-    // focusOnPixel speaks of the command-line option; here it was a click.
-    std::string message = e.what();
-    if (message.rfind("--focus-at ", 0) == 0) message = "click at image pixel " + message.substr(11);
-    reportError(message);
+    reportError(e.what());
     return std::nullopt;
   }
 }

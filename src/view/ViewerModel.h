@@ -102,7 +102,8 @@ class ViewerModel {
   void setPlanOptions(const PlanOptions& options);
   // Focuses on what image pixel `pixel` shows; returns the new focus distance. Throws InputError
   // (nothing there, outside the image) as --focus-at does.
-  double focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt);
+  // `asked`: the option that asked for it (--focus-at, --click), which an error names.
+  double focusAt(glm::dvec2 pixel, const DepthAtPixel& depthAt, const std::string& asked);
   // The same for a click in the window: an error is reported (in the click's words), not thrown.
   std::optional<double> clickAt(glm::dvec2 pixel, const DepthAtPixel& depthAt);
   std::optional<double> lastFocusDistance() const { return focusDistance_; }  // the last click's

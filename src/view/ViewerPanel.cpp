@@ -13,134 +13,203 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 
 namespace lenslab::view {
 namespace {
 
-bool dragDouble3(const char* label, glm::dvec3& v, float speed) {
-  return ImGui::DragScalarN(label, ImGuiDataType_Double, &v.x, 3, speed, nullptr, nullptr, "%.4g");
+// Each item is checked against the panel's width as it is drawn (PanelFit.h): a narrow window must
+// not cut text off on the right.
+// A widget with its label on the right, or above it when the panel is too narrow for both on one
+// line (fit.labelsAbove). `widget(label)` draws it under the label (an ImGui id) it is given.
+template <class Widget>
+bool labelled(PanelFit& fit, const char* label, Widget widget) {
+  if (!fit.labelsAbove) {
+    const bool changed = widget(label);
+    fit.check(label);
+    return changed;
+  }
+  ImGui::TextUnformatted(label);
+  fit.check(label);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const bool changed = widget(("##" + std::string(label)).c_str());
+  fit.check(label);
+  return changed;
 }
-bool dragDouble(const char* label, double& v, float speed, double lo, double hi, const char* format = "%.4g") {
-  return ImGui::DragScalar(label, ImGuiDataType_Double, &v, speed, &lo, &hi, format, ImGuiSliderFlags_AlwaysClamp);
+// Numbers in fields, each checked to show whole in its field.
+bool dragDoubles(PanelFit& fit, const char* label, double* v, int n, float speed, const char* format = "%.4g") {
+  return labelled(fit, label, [&](const char* id) {
+    fit.checkFields(label, v, n, format);
+    return ImGui::DragScalarN(id, ImGuiDataType_Double, v, n, speed, nullptr, nullptr, format);
+  });
 }
-void matrixTable(const char* name, const glm::dmat4& m) {
+bool dragDouble3(PanelFit& fit, const char* label, glm::dvec3& v, float speed) { return dragDoubles(fit, label, &v.x, 3, speed); }
+bool dragDouble(PanelFit& fit, const char* label, double& v, float speed, double lo, double hi, const char* format = "%.4g") {
+  return labelled(fit, label, [&](const char* id) {
+    fit.checkFields(label, &v, 1, format);
+    return ImGui::DragScalar(id, ImGuiDataType_Double, &v, speed, &lo, &hi, format, ImGuiSliderFlags_AlwaysClamp);
+  });
+}
+// Prose and figures, wrapped at the panel's edge: nothing to cut.
+void wrapped(const std::string& text) { ImGui::TextWrapped("%s", text.c_str()); }
+void wrappedColoured(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  wrapped(text);
+  ImGui::PopStyleColor();
+}
+// A line that must not wrap (a row of numbers), checked against the width left.
+void line(PanelFit& fit, const std::string& text) {
+  fit.checkText(text.c_str(), 0.0f);
+  ImGui::TextUnformatted(text.c_str());
+}
+// A section header: its title is drawn inside a full-width frame after the arrow.
+bool header(PanelFit& fit, const char* title, ImGuiTreeNodeFlags flags = 0) {
+  fit.checkText(title, ImGui::GetTreeNodeToLabelSpacing() + ImGui::GetStyle().FramePadding.x);
+  return ImGui::CollapsingHeader(title, flags);
+}
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+// A 4x4 matrix in four columns that share the width, each number checked against its cell.
+void matrixTable(PanelFit& fit, const char* name, const glm::dmat4& m) {
   ImGui::TextUnformatted(name);
-  for (int row = 0; row < 4; ++row)  // GLM is column-major: m[column][row]
-    ImGui::Text("  %9.4f %9.4f %9.4f %9.4f", m[0][row], m[1][row], m[2][row], m[3][row]);
+  fit.check(name);
+  if (!ImGui::BeginTable(name, 4, ImGuiTableFlags_SizingStretchSame)) return;
+  for (int row = 0; row < 4; ++row) {  // GLM is column-major: m[column][row]
+    ImGui::TableNextRow();
+    for (int column = 0; column < 4; ++column) {
+      ImGui::TableNextColumn();
+      line(fit, number(m[column][row]));
+    }
+  }
+  ImGui::EndTable();
 }
 
 }  // namespace
 
 void Viewer::sectionProgress() {
+  const ImVec4 amber(1.0f, 0.8f, 0.3f, 1.0f);
   if (renderer_.adaptive()) {
     // Per-tile budgets: the estimate (against the image's own converged limit) and the target.
     const FrameEstimate e = renderer_.estimate();
     const double target = model_.plan().adaptive->targetPsnrDb;
-    ImGui::ProgressBar(static_cast<float>(std::clamp(e.psnrDb / target, 0.0, 1.0)), ImVec2(-FLT_MIN, 0),
-                       cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", target, " dB (estimate)").c_str());
-    ImGui::Text("%.1f samples per pixel (%d to %d per tile), %d of %d tiles going, round %d", e.meanSamples, e.minSamples,
-                e.maxSamples, e.tilesActive, e.tiles, e.rounds);
-    if (renderer_.done() && !e.targetMet)
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "stopped at max samples short of the target");
+    const std::string overlay = cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", target, " dB (estimate)");
+    fit_.checkText(overlay.c_str(), 2.0f * ImGui::GetStyle().FramePadding.x);
+    ImGui::ProgressBar(static_cast<float>(std::clamp(e.psnrDb / target, 0.0, 1.0)), ImVec2(-FLT_MIN, 0), overlay.c_str());
+    wrapped(cat(std::round(e.meanSamples * 10.0) / 10.0, " samples per pixel (", e.minSamples, " to ", e.maxSamples,
+                " per tile), ", e.tilesActive, " of ", e.tiles, " tiles going, round ", e.rounds));
+    if (renderer_.done() && !e.targetMet) wrappedColoured(amber, "stopped at max samples short of the target");
   } else {
     const int done = renderer_.samplesDone(), planned = renderer_.samplesPlanned();
-    ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0),
-                       cat(done, " / ", planned, " samples").c_str());
+    const std::string overlay = cat(done, " / ", planned, " samples");
+    fit_.checkText(overlay.c_str(), 2.0f * ImGui::GetStyle().FramePadding.x);
+    ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0), overlay.c_str());
   }
   const SampleBudget& budget = model_.budget();
-  ImGui::Text("%.2f ms per sample, %.0f ms accumulated", budget.msPerSample(), budget.accumulationMs());
-  if (budget.convergedAfterMs() >= 0.0) ImGui::Text("converged %.0f ms after the last change", budget.convergedAfterMs());
-  else ImGui::Text("converging (%.1f fps)", static_cast<double>(ImGui::GetIO().Framerate));
-  if (showBaseline_) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing the post-process baseline (%d taps)", baselineTaps_);
+  char text[160];
+  std::snprintf(text, sizeof text, "%.2f ms per sample, %.0f ms accumulated", budget.msPerSample(), budget.accumulationMs());
+  wrapped(text);
+  if (budget.convergedAfterMs() >= 0.0) std::snprintf(text, sizeof text, "converged %.0f ms after the last change", budget.convergedAfterMs());
+  else std::snprintf(text, sizeof text, "converging (%.1f fps)", static_cast<double>(ImGui::GetIO().Framerate));
+  wrapped(text);
+  if (showBaseline_) wrappedColoured(amber, cat("showing the post-process baseline (", baselineTaps_, " taps)"));
   const Camera& c = model_.camera().camera;
-  ImGui::Text("image %d x %d; focus distance %.4g", model_.size().widthPx, model_.size().heightPx,
-              c.focusDistance());
+  wrapped(cat("image ", model_.size().widthPx, " x ", model_.size().heightPx, "; focus distance ", number(c.focusDistance())));
 }
 
 void Viewer::sectionLecture() {
-  if (!ImGui::CollapsingHeader("Viewing description (lecture)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!header(fit_, "Viewing description (lecture)", openFlags(true))) return;
   Camera c = model_.camera().camera;
   ViewSpec& s = c.view;
   const float step = static_cast<float>(0.005 * std::max(1.0, s.prp.z));
   bool changed = false;
   int projection = s.projection == Projection::Perspective ? 0 : 1;
-  if (ImGui::Combo("projection", &projection, "perspective\0parallel\0")) {
+  if (labelled(fit_, "projection", [&](const char* id) { return ImGui::Combo(id, &projection, "perspective\0parallel\0"); })) {
     s.projection = projection == 0 ? Projection::Perspective : Projection::Parallel;
     if (s.projection == Projection::Parallel && std::isinf(s.farDistance)) s.farDistance = 1000.0 * s.prp.z;
     if (s.projection == Projection::Parallel && c.focusAtInfinity()) c.inverseFocusOffPlane.reset();
     changed = true;
   }
-  changed |= dragDouble3("VRP (world)", s.vrp, step);
-  changed |= dragDouble3("VPN (world)", s.vpn, 0.005f);
-  changed |= dragDouble3("VUP (world)", s.vup, 0.005f);
-  changed |= dragDouble3("PRP (u, v, n)", s.prp, step);
-  changed |= ImGui::DragScalarN("window", ImGuiDataType_Double, &s.window.umin, 4, step, nullptr, nullptr, "%.4g");
-  changed |= dragDouble("near", s.nearDistance, step * 0.1f, 0.0, 1e9);
+  changed |= dragDouble3(fit_, "VRP (world)", s.vrp, step);
+  changed |= dragDouble3(fit_, "VPN (world)", s.vpn, 0.005f);
+  changed |= dragDouble3(fit_, "VUP (world)", s.vup, 0.005f);
+  changed |= dragDouble3(fit_, "PRP (u, v, n)", s.prp, step);
+  changed |= dragDoubles(fit_, "window", &s.window.umin, 4, step);
+  changed |= dragDouble(fit_, "near", s.nearDistance, step * 0.1f, 0.0, 1e9);
   bool farInfinite = std::isinf(s.farDistance);
   if (ImGui::Checkbox("far at infinity", &farInfinite)) {
     s.farDistance = farInfinite ? std::numeric_limits<double>::infinity() : 1000.0 * s.prp.z;
     changed = true;
   }
-  if (!farInfinite) changed |= dragDouble("far", s.farDistance, step * 10.0f, 0.0, 1e12);
-  changed |= dragDouble("aperture radius", c.apertureRadius, step * 0.01f, 0.0, 1e6);
+  fit_.check("far at infinity");
+  if (!farInfinite) changed |= dragDouble(fit_, "far", s.farDistance, step * 10.0f, 0.0, 1e12);
+  changed |= dragDouble(fit_, "aperture radius", c.apertureRadius, step * 0.01f, 0.0, 1e6);
   if (changed) model_.editLecture(c);  // checked at the restart: an invalid camera is rolled back
   // Focus distance: moves the view plane (the plane of focus), keeping the field of view.
   double focus = std::min(model_.camera().camera.focusDistance(), 1e9);
-  if (dragDouble("focus distance", focus, step, 1e-4, 1e9)) model_.refocus(focus);
+  if (dragDouble(fit_, "focus distance", focus, step, 1e-4, 1e9)) model_.refocus(focus);
 }
 
 void Viewer::sectionMatrices() {
-  if (!ImGui::CollapsingHeader("Matrices (clipFromWorld = clipFromEye * eyeFromView * viewFromWorld)")) return;
+  if (!header(fit_, "Matrices", openFlags(false))) return;
+  wrapped("clipFromWorld = clipFromEye * eyeFromView * viewFromWorld");
   const ViewSpec& s = model_.camera().camera.view;
   const ViewBasis b = viewBasis(s);
-  ImGui::Text("u = (%.3f %.3f %.3f)", b.u.x, b.u.y, b.u.z);
-  ImGui::Text("v = (%.3f %.3f %.3f)", b.v.x, b.v.y, b.v.z);
-  ImGui::Text("n = (%.3f %.3f %.3f)", b.n.x, b.n.y, b.n.z);
-  matrixTable("viewFromWorld", viewFromWorld(s));
-  matrixTable("eyeFromView", eyeFromView(s));
-  if (s.projection == Projection::Perspective) matrixTable("lecture perspective (1/f)", lecturePerspective(s.prp.z));
-  matrixTable("clipFromEye (reverse-Z)", clipFromEye(s));
-  matrixTable("clipFromWorld", clipFromWorld(s));
+  char text[96];
+  for (const auto& [name, axis] : {std::pair{"u", b.u}, std::pair{"v", b.v}, std::pair{"n", b.n}}) {
+    std::snprintf(text, sizeof text, "%s = (%.3f %.3f %.3f)", name, axis.x, axis.y, axis.z);
+    line(fit_, text);
+  }
+  matrixTable(fit_, "viewFromWorld", viewFromWorld(s));
+  matrixTable(fit_, "eyeFromView", eyeFromView(s));
+  if (s.projection == Projection::Perspective) matrixTable(fit_, "lecture perspective (1/f)", lecturePerspective(s.prp.z));
+  matrixTable(fit_, "clipFromEye (reverse-Z)", clipFromEye(s));
+  matrixTable(fit_, "clipFromWorld", clipFromWorld(s));
 }
 
 void Viewer::sectionPhysical() {
-  if (!ImGui::CollapsingHeader("Physical lens", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!header(fit_, "Physical lens", openFlags(true))) return;
   if (!model_.camera().physical) {
-    ImGui::TextWrapped("The camera is in the lecture form.");
+    wrapped("The camera is in the lecture form.");
     if (!model_.canDescribeAsLens()) {
-      ImGui::TextWrapped("(A physical lens needs a perspective projection with the PRP over the window centre.)");
+      wrapped("(A physical lens needs a perspective projection with the PRP over the window centre.)");
       return;
     }
     if (ImGui::Button("Describe it as a lens (35 mm)")) model_.describeAsLens();
+    fit_.check("Describe it as a lens (35 mm)");
     return;
   }
   PhysicalCamera p = *model_.camera().physical;
   bool changed = false;
   const float step = static_cast<float>(0.005 * std::max(1.0, glm::length(p.target - p.eye)));
-  changed |= dragDouble3("eye", p.eye, step);
-  changed |= dragDouble3("target", p.target, step);
-  changed |= dragDouble3("up", p.up, 0.005f);
-  changed |= dragDouble("focal length (mm)", p.focalLengthMm, 0.2f, 1.0, 2000.0);
-  changed |= ImGui::DragScalarN("sensor (mm)", ImGuiDataType_Double, &p.sensorMm.x, 2, 0.1f, nullptr, nullptr, "%.4g");
+  changed |= dragDouble3(fit_, "eye", p.eye, step);
+  changed |= dragDouble3(fit_, "target", p.target, step);
+  changed |= dragDouble3(fit_, "up", p.up, 0.005f);
+  changed |= dragDouble(fit_, "focal length (mm)", p.focalLengthMm, 0.2f, 1.0, 2000.0);
+  changed |= dragDoubles(fit_, "sensor (mm)", &p.sensorMm.x, 2, 0.1f);
   bool pinhole = std::isinf(p.fNumber);
   if (ImGui::Checkbox("pinhole (no aperture)", &pinhole)) {
     p.fNumber = pinhole ? std::numeric_limits<double>::infinity() : 2.8;
     changed = true;
   }
-  if (!pinhole) changed |= dragDouble("f-number", p.fNumber, 0.02f, 0.5, 64.0, "f/%.2f");
+  fit_.check("pinhole (no aperture)");
+  if (!pinhole) changed |= dragDouble(fit_, "f-number", p.fNumber, 0.02f, 0.5, 64.0, "f/%.2f");
   bool infinityFocus = std::isinf(p.focusDistance);
   if (ImGui::Checkbox("focus at infinity", &infinityFocus)) {
     p.focusDistance = infinityFocus ? std::numeric_limits<double>::infinity() : glm::length(p.target - p.eye);
     changed = true;
   }
-  if (!infinityFocus) changed |= dragDouble("focus distance (m)", p.focusDistance, step, 1e-3, 1e9);
+  fit_.check("focus at infinity");
+  if (!infinityFocus) changed |= dragDouble(fit_, "focus distance (m)", p.focusDistance, step, 1e-3, 1e9);
   if (changed) model_.editPhysical(p);
 }
 
 void Viewer::sectionSamples() {
-  if (!ImGui::CollapsingHeader("Aperture samples", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!header(fit_, "Aperture samples", openFlags(true))) return;
   PlanOptions o = model_.planOptions();
   const FramePlan& plan = model_.plan();
   bool changed = false;
@@ -150,7 +219,9 @@ void Viewer::sectionSamples() {
     *out = (*static_cast<const std::vector<std::string>*>(list))[static_cast<std::size_t>(i)].c_str();
     return true;
   };
-  if (ImGui::Combo("pattern", &pattern, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()))) {
+  if (labelled(fit_, "pattern", [&](const char* id) {
+        return ImGui::Combo(id, &pattern, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
+      })) {
     o.pattern = static_cast<AperturePattern>(pattern);
     changed = true;
   }
@@ -159,13 +230,13 @@ void Viewer::sectionSamples() {
     o.apertureSamples = automatic ? 0 : std::max(plan.apertureSamples, 1);
     changed = true;
   }
-  if (automatic) {
-    changed |= ImGui::SliderInt("max samples", &o.maxSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
-  } else {
-    changed |= ImGui::SliderInt("samples", &o.apertureSamples, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
-  }
+  fit_.check("auto sample count");
+  int& count = automatic ? o.maxSamples : o.apertureSamples;
+  changed |= labelled(fit_, automatic ? "max samples" : "samples", [&](const char* id) {
+    return ImGui::SliderInt(id, &count, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+  });
   bool target = o.targetPsnrDb.has_value();
-  if (ImGui::Checkbox("to a target PSNR (per-tile budgets)", &target)) {
+  if (ImGui::Checkbox("to a target PSNR", &target)) {
     o.targetPsnrDb = target ? std::optional<double>(40.0) : std::nullopt;
     if (target) {
       o.pattern = AperturePattern::Sobol;
@@ -173,95 +244,119 @@ void Viewer::sectionSamples() {
     }
     changed = true;
   }
+  fit_.check("to a target PSNR");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("per-tile budgets: each tile gets samples until its estimate reaches the target");
   if (o.targetPsnrDb) {
     float db = static_cast<float>(*o.targetPsnrDb);
-    if (ImGui::SliderFloat("target (dB)", &db, 20.0f, 60.0f, "%.1f")) {
+    if (labelled(fit_, "target (dB)", [&](const char* id) { return ImGui::SliderFloat(id, &db, 20.0f, 60.0f, "%.1f"); })) {
       o.targetPsnrDb = db;
       changed = true;
     }
   }
   int seed = static_cast<int>(o.seed);
-  if (ImGui::InputInt("seed", &seed)) {
+  if (labelled(fit_, "seed", [&](const char* id) { return ImGui::InputInt(id, &seed); })) {
     o.seed = static_cast<std::uint32_t>(std::max(seed, 0));
     changed = true;
   }
   if (changed) model_.setPlanOptions(o);
-  ImGui::TextWrapped("N = %d: %s", plan.apertureSamples, plan.samplesWhy.c_str());
-  ImGui::Text("circle of confusion in view: %.2f to %.2f px", plan.cocMinPx, plan.cocMaxPx);
+  wrapped(cat("N = ", plan.apertureSamples, ": ", plan.samplesWhy));
+  char text[96];
+  std::snprintf(text, sizeof text, "circle of confusion in view: %.2f to %.2f px", plan.cocMinPx, plan.cocMaxPx);
+  wrapped(text);
 }
 
 // The lecture's last part: distortion, chromatic aberration, the curved focal plane. Each adds a
 // pass or shader variant only when it is not zero; the plan's passes are listed to show it.
 void Viewer::sectionLensEffects() {
-  if (!ImGui::CollapsingHeader("Lens effects", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!header(fit_, "Lens effects", openFlags(true))) return;
   const Camera& c = model_.camera().camera;
   LensEffects e = c.effects;
   bool changed = false;
-  ImGui::TextWrapped("Distortion: Brown-Conrady in OpenCV's order (normalised coordinates about the principal point)");
-  changed |= dragDouble("k1", e.distortion.k1, 0.002f, -2.0, 2.0);
-  changed |= dragDouble("k2", e.distortion.k2, 0.002f, -2.0, 2.0);
-  changed |= dragDouble("k3", e.distortion.k3, 0.002f, -2.0, 2.0);
-  changed |= dragDouble("p1", e.distortion.p1, 0.0002f, -0.2, 0.2);
-  changed |= dragDouble("p2", e.distortion.p2, 0.0002f, -0.2, 0.2);
-  if (ImGui::TreeNode("the lecture's series: rho = rho'(1 + a rho' + b rho'^2 + c rho'^3)")) {
-    changed |= dragDouble("alpha", e.distortion.alpha, 0.002f, -2.0, 2.0);
-    changed |= dragDouble("beta", e.distortion.beta, 0.002f, -2.0, 2.0);
-    changed |= dragDouble("gamma", e.distortion.gamma, 0.002f, -2.0, 2.0);
+  wrapped("Distortion: Brown-Conrady in OpenCV's order (normalised coordinates about the principal point)");
+  changed |= dragDouble(fit_, "k1", e.distortion.k1, 0.002f, -2.0, 2.0);
+  changed |= dragDouble(fit_, "k2", e.distortion.k2, 0.002f, -2.0, 2.0);
+  changed |= dragDouble(fit_, "k3", e.distortion.k3, 0.002f, -2.0, 2.0);
+  changed |= dragDouble(fit_, "p1", e.distortion.p1, 0.0002f, -0.2, 0.2);
+  changed |= dragDouble(fit_, "p2", e.distortion.p2, 0.0002f, -0.2, 0.2);
+  if (scripted()) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // the whole panel in a scripted run
+  const bool lectureSeries = ImGui::TreeNode("the lecture's series");
+  fit_.check("the lecture's series");
+  if (lectureSeries) {
+    wrapped("rho = rho'(1 + a rho' + b rho'^2 + c rho'^3)");
+    changed |= dragDouble(fit_, "alpha", e.distortion.alpha, 0.002f, -2.0, 2.0);
+    changed |= dragDouble(fit_, "beta", e.distortion.beta, 0.002f, -2.0, 2.0);
+    changed |= dragDouble(fit_, "gamma", e.distortion.gamma, 0.002f, -2.0, 2.0);
     ImGui::TreePop();
   }
-  ImGui::TextWrapped("Chromatic aberration: lateral = red/blue magnification relative to green; axial = "
-                     "each colour's plane of focus, as a change of 1/focus distance (1/world unit)");
-  changed |= dragDouble("lateral red", e.chromatic.lateralRed, 0.0002f, -0.1, 0.1);
-  changed |= dragDouble("lateral blue", e.chromatic.lateralBlue, 0.0002f, -0.1, 0.1);
-  changed |= dragDouble("axial red (1/m)", e.chromatic.inverseFocusShiftRed, 0.002f, -10.0, 10.0);
-  changed |= dragDouble("axial blue (1/m)", e.chromatic.inverseFocusShiftBlue, 0.002f, -10.0, 10.0);
+  wrapped("Chromatic aberration: lateral = red/blue magnification relative to green; axial = each colour's plane of "
+          "focus, as a change of 1/focus distance (1/world unit)");
+  changed |= dragDouble(fit_, "lateral red", e.chromatic.lateralRed, 0.0002f, -0.1, 0.1);
+  changed |= dragDouble(fit_, "lateral blue", e.chromatic.lateralBlue, 0.0002f, -0.1, 0.1);
+  changed |= dragDouble(fit_, "axial red (1/m)", e.chromatic.inverseFocusShiftRed, 0.002f, -10.0, 10.0);
+  changed |= dragDouble(fit_, "axial blue (1/m)", e.chromatic.inverseFocusShiftBlue, 0.002f, -10.0, 10.0);
   const double focus = c.inverseFocusDistance();
   const auto distance = [](double inverse) { return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity(); };
   if (e.chromatic.hasAxial())
-    ImGui::Text("red in focus at %.4g, green %.4g, blue %.4g", distance(focus + e.chromatic.inverseFocusShiftRed),
-                distance(focus), distance(focus + e.chromatic.inverseFocusShiftBlue));
-  ImGui::TextWrapped("Field curvature: 1/focus distance grows by this times r^2 toward the corners");
-  changed |= dragDouble("curvature (1/m per r^2)", e.fieldCurvature.inverseFocusPerRadius2, 0.005f, -20.0, 20.0);
+    wrapped(cat("red in focus at ", number(distance(focus + e.chromatic.inverseFocusShiftRed)), ", green ",
+                number(distance(focus)), ", blue ", number(distance(focus + e.chromatic.inverseFocusShiftBlue))));
+  wrapped("Field curvature: 1/focus distance grows by this (1/m) times r^2 toward the corners");
+  changed |= dragDouble(fit_, "curvature", e.fieldCurvature.inverseFocusPerRadius2, 0.005f, -20.0, 20.0);
   if (!e.fieldCurvature.isZero()) {
     const double corner = normalisedWindow(c.view).cornerRadius();
-    ImGui::Text("centre in focus at %.4g, corners at %.4g", distance(focus),
-                distance(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner));
+    wrapped(cat("centre in focus at ", number(distance(focus)), ", corners at ",
+                number(distance(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner))));
   }
   if (ImGui::Button("no lens effects")) {
     e = LensEffects{};
     changed = true;
   }
+  fit_.check("no lens effects");
   if (changed) model_.editLensEffects(e);  // checked here: an invalid lens is reported and not taken
   std::string passes;
   for (const PlannedPass& pass : model_.plan().passes) {
     passes += (passes.empty() ? "" : ", ") + pass.name;
     for (const std::string& variant : pass.variants) passes += "+" + variant;
   }
-  ImGui::TextWrapped("passes: %s", passes.c_str());
-  for (const std::string& warning : model_.plan().warnings) ImGui::TextWrapped("note: %s", warning.c_str());
+  wrapped("passes: " + passes);
+  for (const std::string& warning : model_.plan().warnings) wrapped("note: " + warning);
 }
 
 void Viewer::sectionCompare() {
-  if (!ImGui::CollapsingHeader("Compare and outside view", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (ImGui::Checkbox("show the post-process gather baseline", &showBaseline_)) baselineValid_ = false;
-  if (showBaseline_ && ImGui::SliderInt("gather taps", &baselineTaps_, 8, 128)) baselineValid_ = false;
-  if (ImGui::Checkbox("outside view (the lecture's diagram)", &showOutside_)) outsideDirty_ = true;
+  if (!header(fit_, "Compare and outside view", openFlags(true))) return;
+  if (ImGui::Checkbox("post-process gather baseline", &showBaseline_)) baselineValid_ = false;
+  fit_.check("post-process gather baseline");
+  if (showBaseline_) {
+    if (labelled(fit_, "gather taps", [&](const char* id) { return ImGui::SliderInt(id, &baselineTaps_, 8, 128); }))
+      baselineValid_ = false;
+  }
+  if (ImGui::Checkbox("outside view (the diagram)", &showOutside_)) outsideDirty_ = true;
+  fit_.check("outside view (the diagram)");
   if (showOutside_) {
-    ImGui::TextWrapped("Yellow: PRP. White: window on the view plane (plane of focus). Grey: view volume. "
-                       "Cyan: aperture; orange: samples done. Red: rays through the window centre.");
+    wrapped("The lecture's diagram. Yellow: PRP. White: window on the view plane (plane of focus). Grey: view volume. "
+            "Cyan: aperture; orange: samples done. Red: rays through the window centre.");
     bool enlarge = model_.enlargeAperture();
-    if (ImGui::Checkbox("enlarge the aperture in the diagram", &enlarge)) model_.setEnlargeAperture(enlarge);
+    if (ImGui::Checkbox("enlarge the aperture", &enlarge)) model_.setEnlargeAperture(enlarge);
+    fit_.check("enlarge the aperture");
     const Camera& c = model_.camera().camera;
     if (enlarge && !c.isPinhole())
-      ImGui::Text("aperture drawn x%.0f (radius %.4g)", model_.diagramApertureScale(), c.apertureRadius);
+      wrapped(cat("aperture drawn x", std::round(model_.diagramApertureScale()), " (radius ", number(c.apertureRadius), ")"));
   }
 }
 
 void Viewer::sectionFiles() {
-  if (!ImGui::CollapsingHeader("Save", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  ImGui::InputText("##camera", cameraPath_.data(), cameraPath_.size());
-  ImGui::SameLine();
-  if (ImGui::Button("Save camera")) {
+  if (!header(fit_, "Save", openFlags(true))) return;
+  // Each path field leaves room on its line for its button.
+  const auto pathAndButton = [this](const char* id, std::array<char, 512>& path, const char* button) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float buttonWidth = ImGui::CalcTextSize(button).x + 2.0f * style.FramePadding.x;
+    ImGui::SetNextItemWidth(std::max(1.0f, ImGui::GetContentRegionAvail().x - buttonWidth - style.ItemSpacing.x));
+    ImGui::InputText(id, path.data(), path.size());
+    ImGui::SameLine();
+    const bool pressed = ImGui::Button(button);
+    fit_.check(button);
+    return pressed;
+  };
+  if (pathAndButton("##camera", cameraPath_, "Save camera")) {
     try {
       writeTextFileAtomically(cameraPath_.data(), toCameraJson(model_.camera().camera));
       status_ = cat("wrote ", cameraPath_.data(), " (lenslab render --camera loads it)");
@@ -269,9 +364,7 @@ void Viewer::sectionFiles() {
       model_.reportError(e.what());
     }
   }
-  ImGui::InputText("##image", imagePath_.data(), imagePath_.size());
-  ImGui::SameLine();
-  if (ImGui::Button("Save image")) {
+  if (pathAndButton("##image", imagePath_, "Save image")) {
     try {
       checkImageExtension(imagePath_.data());
       writeImage(imagePath_.data(), renderer_.resolve());
@@ -280,31 +373,32 @@ void Viewer::sectionFiles() {
       model_.reportError(e.what());
     }
   }
-  ImGui::InputText("##window", windowPath_.data(), windowPath_.size());
-  ImGui::SameLine();
-  if (ImGui::Button("Save window")) saveWindowPending_ = true;  // read once this frame is drawn
-  if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+  if (pathAndButton("##window", windowPath_, "Save window")) saveWindowPending_ = true;  // read once this frame is drawn
+  if (!status_.empty()) wrapped(status_);
 }
 
 void Viewer::sectionHelp() {
-  if (!ImGui::CollapsingHeader("Controls")) return;
-  ImGui::TextWrapped("Click the image: focus there. Left drag: orbit about the focus point. Right drag: look "
-                     "around from the PRP. Wheel: move forward. W/A/S/D/Q/E: fly (Shift: faster). "
-                     "Outside view: left drag orbits, wheel zooms. Ctrl+click a field to type. Esc: quit.");
+  if (!header(fit_, "Controls", openFlags(false))) return;
+  wrapped("Click the image: focus there. Left drag: orbit about the focus point. Right drag: look around from the PRP. "
+          "Wheel: move forward. W/A/S/D/Q/E: fly (Shift: faster). Outside view: left drag orbits, wheel zooms. "
+          "Ctrl+click a field to type. Esc: quit.");
 }
 
 void Viewer::panel() {
-  const float width = static_cast<float>(windowWidth_) - static_cast<float>(imageRect_.x + std::max(imageRect_.width, outsideRect_.width));
+  // The panel takes the right side layout() left it, whatever the image's letterboxing.
+  const float width = static_cast<float>(panelWidth_);
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(windowWidth_) - width, 0.0f));
   ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(windowHeight_)));
   ImGui::Begin("lenslab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);  // room for the labels on the right
-  if (!model_.error().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.35f, 1.0f));
-    ImGui::TextWrapped("%s", model_.error().c_str());
-    ImGui::PopStyleColor();
-  }
-  ImGui::TextWrapped("%s", model_.camera().camera.source.c_str());
+  fit_.beginFrame();
+  // Widgets share the width with their labels on the right, which get the room the longest needs;
+  // where that would leave a widget too little for its numbers (a narrow window), each label goes
+  // above its widget, which then takes the whole width.
+  const float labels = ImGui::CalcTextSize("focus distance (m)").x + ImGui::GetStyle().ItemInnerSpacing.x;
+  fit_.labelsAbove = ImGui::GetContentRegionAvail().x - labels < 16.0f * ImGui::GetFontSize();
+  ImGui::PushItemWidth(fit_.labelsAbove ? -FLT_MIN : -labels);
+  if (!model_.error().empty()) wrappedColoured(ImVec4(1.0f, 0.4f, 0.35f, 1.0f), model_.error());
+  wrapped(model_.camera().camera.source);
   sectionProgress();
   sectionLecture();
   sectionMatrices();
@@ -315,6 +409,7 @@ void Viewer::panel() {
   sectionFiles();
   sectionHelp();
   ImGui::PopItemWidth();
+  fit_.endFrame();
   ImGui::End();
 }
 

@@ -20,7 +20,7 @@ run_lenslab() {
 }
 
 # expect_fault NAME FRAGMENT WATCHED LIMIT_KB -- ARGS...: a non-zero exit, one line on stderr
-# holding FRAGMENT (besides the sweep's progress lines), and the folder WATCHED exactly as it was
+# holding FRAGMENT (besides progress, warning and the sweep's lines), and the folder WATCHED exactly as it was
 # (no target, no temporary file, no folder made by the run).
 expect_fault() {
   local name=$1 fragment=$2 watched=$3 limit=$4
@@ -30,7 +30,7 @@ expect_fault() {
   run_lenslab "$limit" "$@"
   local rc=$?
   local lines
-  lines=$(grep -vc '^lenslab: sweep: ' "$work/stderr")
+  lines=$(grep -vcE "^lenslab: sweep: |$progress_line" "$work/stderr")
   if [ "$rc" -eq 0 ]; then fail "$name: exit 0: $(cat "$work/stderr")"; return; fi
   if [ "$lines" -ne 1 ]; then fail "$name: $lines stderr lines: $(cat "$work/stderr")"; return; fi
   if ! grep -qF -- "$fragment" "$work/stderr"; then fail "$name: stderr lacks '$fragment': $(cat "$work/stderr")"; return; fi

@@ -1,7 +1,9 @@
 // The error-against-run-time sweep on the bundled occluder: accumulation converges, and the
 // post-process baseline fails where the lecture's partial obscuration matters (occlusion edges).
+#include "../common/temp_dir_test.h"
 #include "core/Error.h"
 #include "gl_test_context.h"
+#include "io/AtomicFile.h"
 #include "io/CameraJson.h"
 #include "report/Sweep.h"
 #include "scene/GltfLoader.h"
@@ -10,6 +12,9 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
+#include <utility>
+#include <vector>
 
 namespace lenslab {
 namespace {
@@ -79,6 +84,51 @@ TEST(Sweep, MarkdownHasTheEqualErrorTable) {
   EXPECT_NE(md.find("| 40 dB | 0.0339 | 0.0144 | 2.35x |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 40.0 dB | 40.10 dB | 40.50 dB |"), std::string::npos) << md;
   EXPECT_NE(sweepCsv(r).find("raster,concentric,4,0.04,0.008,41.9,0.2,0.02,0,0,0,0"), std::string::npos);
+}
+
+TEST(Sweep, ImagesAreNamedByTheirOwnParameter) {
+  SweepRow views{"raster", "concentric", 16, 0.1, 0.01, 40.0, 0.0, 0.0};
+  EXPECT_EQ(sweepImageName(views), "raster-concentric-16.png");
+  SweepRow spp{"raycast", "stratified", 4, 0.1, 0.01, 40.0, 0.0, 0.0};
+  EXPECT_EQ(sweepImageName(spp), "raycast-stratified-4.png");
+  // Two adaptive rows with the same mean sample count keep apart by their targets.
+  SweepRow a{"adaptive", "sobol", 8, 0.1, 0.01, 40.0, 0.0, 0.0, 25.0}, b{"adaptive", "sobol", 8, 0.1, 0.01, 40.0, 0.0, 0.0, 32.5};
+  EXPECT_EQ(sweepImageName(a), "adaptive-sobol-25dB.png");
+  EXPECT_EQ(sweepImageName(b), "adaptive-sobol-32.5dB.png");
+}
+
+class SweepFiles : public test::TempDirTest {};
+
+TEST_F(SweepFiles, EveryRowHasItsOwnImage) {
+  LENSLAB_REQUIRE_GL();
+  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
+  const Scene scene = loadGltf(assets / "occluder/occluder.gltf");
+  const Camera camera = loadCameraJson(assets / "occluder/camera-dof.json").camera;
+  OutputSet outputs;
+  SweepOptions options;
+  options.referenceSpp = 4;
+  options.maxViews = 2;
+  options.maxSpp = 1;
+  options.gatherTaps = {8};
+  // Targets so low and close on an image this small that both stop at the first round: the same
+  // mean sample count, which used to name both images alike.
+  options.targetsDb = {15.0, 16.0};
+  options.series = {"concentric", "adaptive", "raycast", "postprocess"};
+  options.outDir = dir_;
+  options.outputs = &outputs;
+  std::vector<std::pair<std::int64_t, std::int64_t>> progress;
+  options.progress = [&](const std::string& unit, std::int64_t done, std::int64_t total) {
+    if (unit == "images") progress.emplace_back(done, total);
+  };
+  const SweepResult r = runSweep(scene, camera, {24, 16}, options);
+  outputs.commit();
+  std::set<std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir_ / "images")) files.insert(entry.path().filename().string());
+  ASSERT_EQ(r.rows.size(), 2u + 2u + 1u + 1u);
+  EXPECT_EQ(files.size(), r.rows.size());
+  for (const SweepRow& row : r.rows) EXPECT_EQ(files.count(row.image), 1u) << row.image;
+  ASSERT_EQ(progress.size(), r.rows.size());  // one report an image, of the count it will make
+  EXPECT_EQ(progress.back(), std::make_pair(std::int64_t{6}, std::int64_t{6}));
 }
 
 TEST(Sweep, SecondsToReachInterpolatesInLogTime) {

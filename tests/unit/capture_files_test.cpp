@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -42,12 +43,43 @@ TEST(FrameSequence, RangesAreInclusiveAndInsideThePath) {
   EXPECT_EQ(parseFrameRange(":5", 73).first, 0);
   EXPECT_EQ(parseFrameRange("9", 73).first, 9);
   EXPECT_EQ(parseFrameRange("9", 73).last, 9);
-  for (const char* bad : {"5:2", "0:73", "73", "-1:3", ":", "a:b", "1:2:3", ""}) {
+  for (const char* bad : {"5:2", "0:73", "73", "-1:3", ":", "a:b", "1:2:3:4", ""}) {
     try {
       parseFrameRange(bad, 73);
       ADD_FAILURE() << bad << " accepted";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("0:72"), std::string::npos) << e.what();  // names what is valid
+    }
+  }
+}
+
+TEST(FrameSequence, AStepTakesEverySteppedFrameUpToTheEnd) {
+  const auto frames = [](const char* text, Shard shard = {}) { return shardFrames(parseFrameRange(text, 73), shard); };
+  EXPECT_EQ(frames("0:72:12"), (std::vector<int>{0, 12, 24, 36, 48, 60, 72}));
+  EXPECT_EQ(frames("5:30:10"), (std::vector<int>{5, 15, 25}));  // the end need not be a frame taken
+  EXPECT_EQ(frames("::24"), (std::vector<int>{0, 24, 48, 72}));
+  EXPECT_EQ(frames("60::5"), (std::vector<int>{60, 65, 70}));
+  EXPECT_EQ(frames(":30:15"), (std::vector<int>{0, 15, 30}));
+  EXPECT_EQ(frames("3:3:7"), (std::vector<int>{3}));
+  EXPECT_EQ(frames("0:72:1"), frames("0:72"));
+  // Shards split the stepped frames, interleaved: together they are the whole list, once.
+  std::vector<int> all;
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<int> part = frames("0:72:12", {i, 3});
+    all.insert(all.end(), part.begin(), part.end());
+  }
+  std::sort(all.begin(), all.end());
+  EXPECT_EQ(all, frames("0:72:12"));
+  EXPECT_EQ(frames("0:72:12", {1, 3}), (std::vector<int>{12, 48}));
+  // A step that is not a whole number of frames from 1 up gets its own message.
+  for (const char* bad : {"0:72:0", "0:72:-2", "0:72:x", "0:72:1.5", "0:72:", "::"}) {
+    try {
+      parseFrameRange(bad, 73);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the step after the second colon must be a whole number of frames, 1 or more"),
+                std::string::npos)
+          << e.what();
     }
   }
 }

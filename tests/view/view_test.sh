@@ -2,7 +2,8 @@
 # `lenslab view` in scripted mode, under its own Xvfb:
 #   1. --no-ui screenshot = `lenslab render` of the same camera and samples (PSNR >= 35 dB)
 #   2. a scripted click on a box focuses at its depth, computed here from the scene's geometry (1 %)
-#   3. a screenshot with the UI shows the panel (non-trivial pixels where the panel is)
+#   3. a screenshot with the UI shows the panel (non-trivial pixels where the panel is), and no
+#      text of the panel is cut off on the right in a narrow (640) or a wide (1920) window
 # plus bad input refused with one line. Exit 77 (ctest: skipped) when Xvfb cannot run.
 # usage: view_test.sh path/to/lenslab path/to/lenslab_image_check source-dir
 set -u
@@ -27,7 +28,7 @@ if ! command -v Xvfb >/dev/null 2>&1; then
   exit 77
 fi
 exec 5>"$work/display"
-Xvfb -displayfd 5 -screen 0 1600x1000x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+Xvfb -displayfd 5 -screen 0 2048x1200x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
 exec 5>&-
 for _ in $(seq 1 100); do
@@ -151,6 +152,18 @@ if "$lenslab" view --camera "$dof" --width 320 --max-samples 8 --frames 3 --wind
 else
   fail "view with UI failed: $(cat "$work/ui.out")"
 fi
+# Nothing of the panel's text is cut off on the right, in a narrow window (the panel half of it,
+# labels above their fields) and a wide one; a scripted run opens every section, the lens effects
+# camera fills them all. --stats counts the items cut off in the worst frame (view/PanelFit.h).
+for size in 640,800 1920,1080; do
+  if "$lenslab" view --camera "$src/assets/rows/camera-lens.json" --width 321 --max-samples 4 --frames 3 --window-size "$size" \
+       --screenshot "$work/fit.png" --stats "$work/fit.json" >"$work/fit.out" 2>&1; then
+    if grep -qF '"panel_clipped_items": 0' "$work/fit.json" && tr -d ' \n' <"$work/fit.json" | grep -qF "\"window\":[${size}]"; then pass
+    else fail "window $size: panel text cut off: $(grep -E 'panel|window' "$work/fit.json" | tr -d '\n')"; fi
+  else
+    fail "view --window-size $size failed: $(cat "$work/fit.out")"
+  fi
+done
 # The post-process baseline shown in place of the accumulated image.
 if "$lenslab" view --camera "$dof" --width 320 --max-samples 8 --frames 2 --window-size 1200,800 --baseline \
      --screenshot "$work/baseline.png" >"$work/baseline.out" 2>&1; then
@@ -166,6 +179,19 @@ else
   fail "view --no-ui with a window size failed"
 fi
 
+# A width whose rounded height makes pixels not square is said once, with the sizes that keep them square.
+if "$lenslab" view --camera "$dof" --width 320 --max-samples 2 --frames 1 --no-ui --screenshot "$work/sq.png" 2>"$work/sq.err" >/dev/null &&
+   [ "$(grep -c "^lenslab: warning: 320x213 makes pixels 0.16 % taller than wide" "$work/sq.err")" -eq 1 ] &&
+   grep -qF -- "--width 318 (212 high) or --width 321 (214 high)" "$work/sq.err"; then pass
+else fail "view --width 320: $(cat "$work/sq.err")"; fi
+
+# A scripted run reports progress in a log as render does (here a line at every frame).
+if LENSLAB_PROGRESS_SECONDS=0 "$lenslab" view --camera "$dof" --width 96 --aperture-samples 16 --frame-budget-ms 1 --frames 2 --no-ui \
+     --screenshot "$work/progress.png" 2>"$work/progress.err" >/dev/null &&
+   grep -qE '^lenslab: view: [0-9]+/16 samples, [0-9.]+ s, [0-9.]+ s to go$' "$work/progress.err" &&
+   [ "$(grep -E '^lenslab: view: ' "$work/progress.err" | tail -1 | grep -cE '^lenslab: view: 16/16 samples, [0-9.]+ s$')" -eq 1 ]; then pass
+else fail "view progress lines: $(cat "$work/progress.err")"; fi
+
 # ---- bad input: one line, non-zero exit ----
 expect_refusal() {
   local name=$1 fragment=$2
@@ -179,7 +205,9 @@ expect_refusal() {
 }
 expect_refusal "bad screenshot extension" "unsupported image type" view --frames 1 --screenshot "$work/out.jpg"
 expect_refusal "screenshot without frames" "--frames" view --screenshot "$work/out.png"
-expect_refusal "click on the sky" "nothing of the scene" view --camera "$dof" --width 96 --frames 1 --no-ui --click 50,2
+expect_refusal "click on the sky" "--click 50,2: nothing of the scene" view --camera "$dof" --width 96 --frames 1 --no-ui --click 50,2
+expect_refusal "click outside the image" "--click 500,2: the pixel is outside the 96x64 image" view --camera "$dof" --width 96 --frames 1 --no-ui --click 500,2
+expect_refusal "focus outside the image" "--focus-at 500,2: the pixel is outside" view --camera "$dof" --width 96 --frames 1 --no-ui --focus-at 500,2
 expect_refusal "missing camera" "nope.json" view --camera "$work/nope.json" --frames 1
 expect_refusal "--image without --colmap" "give --colmap" view --image f_0.png --frames 1
 [ ! -e "$work/out.png" ] && pass || fail "a refused run left a screenshot"

@@ -97,7 +97,12 @@ TEST(ViewerModel, EditsCheckedOnTheSpotAreRefusedWithoutARestart) {
   EXPECT_FALSE(f.model.clickAt({10.0, 10.0}, nothing));
   EXPECT_EQ(f.model.error().rfind("click at image pixel", 0), 0u) << f.model.error();
   EXPECT_FALSE(f.model.needsRestart());
-  EXPECT_THROW(f.model.focusAt({10.0, 10.0}, nothing), InputError) << "a scripted focus fails the run";
+  EXPECT_THROW(f.model.focusAt({10.0, 10.0}, nothing, "--click"), InputError) << "a scripted focus fails the run";
+  try {
+    f.model.focusAt({10.0, 10.0}, nothing, "--click");
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--click 10,10: nothing", 0), 0u) << "names the option given: " << e.what();
+  }
 }
 
 TEST(SampleBudget, FollowsTheMeasuredCostAndTheTimeBudgetAndNeverDropsBelowOne) {

@@ -150,7 +150,7 @@ def main():
         if scene == "required" and (" SCENE" not in entry or "[SCENE]" in entry):
             problems.append(f"lenslab {command}: SCENE is required, so write SCENE (not [SCENE])")
     for command in entries:
-        if command and command not in commands:
+        if command and command not in commands and not command.isupper():
             problems.append(f"the synopsis lists 'lenslab {command}', which is not a subcommand")
     for p in problems:
         print(f"{doc}: {p}")

@@ -83,7 +83,7 @@ for option in --focal-length --f-number --sensor --eye --target --camera-node; d
   if "$lenslab" sweep --help | grep -q -- "$option"; then pass; else fail "sweep --help lacks $option"; fi
 done
 # A sweep needs an aperture: a glTF camera gets one from --f-number.
-if "$lenslab" sweep "$scene" --camera-node Right --f-number 2 --width 24 --reference-spp 2 --max-views 2 --max-spp 2 \
+if "$lenslab" sweep "$scene" --camera-node Right --f-number 2 --width 24 --reference-spp 2 --max-views 2 \
      --methods concentric --out "$work/sweep" 2>/dev/null && grep -q "camera glTF camera 1 (Right) as .* mm on 36x24 mm, --f-number 2" "$work/sweep/sweep.md"; then pass
 else fail "sweep --camera-node Right --f-number 2"; fi
 for line in '\[0\] node "Left" (camera "LeftLens"): perspective, yfov 40.107' '\[1\] node "Right" (camera "RightLens")' \

@@ -88,7 +88,6 @@ class FrameCameras {
       return;
     }
     fps_ = o.fps.value_or(24.0);
-    if (!(fps_ > 0.0 && fps_ <= 1e4)) throw InputError(cat("--fps ", fps_, ": give a frame rate from above 0 to 10000"));
     // A still camera is chosen at the animation's start, whichever frames this process renders.
     if (!scene.animation.empty()) poseScene(scene, 0.0);
     base_ = baseCamera(scene, std::nullopt, o.camera);
@@ -97,12 +96,14 @@ class FrameCameras {
 
   int frameCount(const Scene& scene) const {
     if (path_) return path_->frameCount();
-    return static_cast<int>(std::floor(animationDurationSeconds(scene) * fps_ + 1e-9)) + 1;
+    return frameCountFor(animationDurationSeconds(scene), fps_, cat(base_.name, " over the animation at --fps ", fps_));
   }
   double timeOf(int frame) const { return path_ ? path_->frameTimeSeconds(frame) : frame / fps_; }
   std::string name() const { return path_ ? o_.pathFile : base_.name; }
   // Near / far given by the camera (written into its file) rather than fitted to the scene.
   bool nearGiven() const { return path_ ? !path_->nearFromScene : base_.form == CameraForm::GltfPerspective; }
+  // Whether a frame's camera depends on the scene's pose (a glTF camera following its node).
+  bool followsNode() const { return !path_ && !still_; }
   bool farGiven() const { return path_ ? !path_->farFromScene : base_.form == CameraForm::GltfPerspective && std::isfinite(base_.gltf.zfar); }
 
   // The frame's camera, the scene posed at `time` already; `where` names it in errors.
@@ -212,12 +213,13 @@ struct ColmapFiles {
   std::string cameras, images, points3D;
 };
 
-// The cameras of every frame of `range` as a COLMAP text model: whichever frames this shard
-// renders, the model is the whole range's, a pure function of the path, the range and the size
+// The cameras of every frame of `range` (its step included) as a COLMAP text model: whichever
+// frames this shard renders, the model is the whole range's, a pure function of the frames'
+// cameras (the path's keys, or the scene's camera over its animation), the range and the size
 // options, so every shard writes the same bytes. Identical intrinsics share one CAMERA_ID;
 // IMAGE_ID is the frame number + 1 (stable whatever the range). Throws InputError for a lens no
-// COLMAP model holds; warns once for each effect a pinhole model leaves out.
-// A glTF camera following its node poses `scene` at each frame's time.
+// COLMAP model holds; warns once for each effect a pinhole model leaves out. A glTF camera
+// following its node poses `scene` at each frame's time.
 ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range) {
   const fs::path base = framesFolder(o.out);
   const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
@@ -225,10 +227,10 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
   std::vector<ColmapImage> images;
   std::map<std::string, std::uint32_t> cameraIdOfParams;
   std::set<std::string> warnings;
-  for (int frame = range.first; frame <= range.last; ++frame) {
+  for (const int frame : shardFrames(range, Shard{})) {
     // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
     // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
-    if (!scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
+    if (frameCameras.followsNode() && !scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
     const FrameKey f = frameKey(frameCameras, scene, o, frame);
     const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
     ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.effects.distortion, 0, where);
@@ -436,7 +438,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--frames", o->frames,
                   "frames A to B, inclusive (A:B, A:, :B or one frame N), every STEP-th with A:B:STEP (A::STEP, :B:STEP); "
-                  "default: all of the path's");
+                  "default: all of the path's frames (or, without --path, of the animation at --fps)");
   cmd->add_option("--shard", o->shard,
                   "I/N: this is process I (0 to N-1) of N; it renders every N-th frame of the range from its I-th "
                   "(Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT; Kubernetes: $JOB_COMPLETION_INDEX/N)")

@@ -70,10 +70,16 @@ glm::dvec3 orthonormalUp(const PhysicalCamera& c, const glm::dvec3& up) {
 
 }  // namespace
 
+int frameCountFor(double durationSeconds, double fps, std::string_view where) {
+  const double frames = durationSeconds * fps;
+  if (!(frames <= kMaxFrames)) throw InputError(cat(where, ": ", frames, " frames (duration × fps): at most 10^7"));
+  return static_cast<int>(std::floor(frames + 1e-9)) + 1;
+}
+
 int CameraPath::frameCount() const {
   if (frames) return *frames;
   if (keys.empty()) return 0;
-  return static_cast<int>(std::floor(keys.back().timeSeconds * fps + 1e-9)) + 1;
+  return frameCountFor(keys.back().timeSeconds, fps, "camera path");
 }
 
 void validate(const CameraPath& path, std::string_view where) {
@@ -91,8 +97,7 @@ void validate(const CameraPath& path, std::string_view where) {
     validate(path.keys[i].camera, cat(where, ": keys[", i, "]"));
   }
   if (path.frames && *path.frames < 1) throw InputError(cat(where, ": frames ", *path.frames, " must be 1 or more"));
-  const double frames = path.keys.back().timeSeconds * path.fps;
-  if (!path.frames && frames > 1e7) throw InputError(cat(where, ": ", frames, " frames (last time × fps): at most 10^7"));
+  if (!path.frames) frameCountFor(path.keys.back().timeSeconds, path.fps, where);
 }
 
 glm::dvec3 centripetalCatmullRom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3,

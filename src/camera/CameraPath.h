@@ -46,6 +46,11 @@ struct CameraPath {
   double frameTimeSeconds(int frame) const { return frame / fps; }
 };
 
+// The frames of `durationSeconds` at `fps`: floor(duration × fps) + 1 (frame k at k / fps). Throws
+// InputError naming `where` beyond kMaxFrames, which an int frame number must hold.
+constexpr double kMaxFrames = 1e7;
+int frameCountFor(double durationSeconds, double fps, std::string_view where);
+
 // Throws InputError naming `where` and the key: no keys, fps not positive and finite, times not
 // finite or not strictly increasing, a frame count below 1, or f-numbers that mix a pinhole
 // (infinity) with a lens (stops cannot span them).

@@ -103,6 +103,13 @@ rm -rf "$work/rack-sparse"
 if [ "$(grep -c 'warning: --colmap-out: the depth of field' "$work/rack.err")" -eq 1 ]; then pass
 else fail "the depth-of-field warning: $(cat "$work/rack.err")"; fi
 
+# A stepped range's model holds the frames the range takes, and no other.
+"$lenslab" capture --path "$src/assets/rows/rack-focus.json" --width 32 --aperture-samples 1 --frames 0:72:24 \
+  --out "$work/stepped/frame_%04d.png" --colmap-out "$work/stepped-sparse" -q || fail "capture --frames 0:72:24 --colmap-out"
+names=$(grep -v '^#' "$work/stepped-sparse/images.txt" | awk 'NR % 2 == 1 {print $10}' | tr '\n' ' ')
+if [ "$names" = "frame_0000.png frame_0024.png frame_0048.png frame_0072.png " ]; then pass
+else fail "--frames 0:72:24 --colmap-out: images.txt names $names"; fi
+
 # --- shards writing one model at once leave the files one run writes ---
 for i in 0 1 2; do
   "$lenslab" capture "${common[@]}" --out "$work/sharded/frame_%04d.png" --colmap-out "$work/sharded-sparse" --shard "$i/3" &

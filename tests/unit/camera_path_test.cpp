@@ -36,6 +36,19 @@ CameraPath threeKeys(PathInterpolation mode) {
   return p;
 }
 
+TEST(CameraPath, FrameCountIsBoundedWhereverItComesFrom) {
+  EXPECT_EQ(frameCountFor(3.0, 24.0, "path"), 73);
+  EXPECT_EQ(frameCountFor(0.0, 24.0, "path"), 1);
+  // A glTF animation's last key at 1e9 s at 24 fps would wrap an int frame number.
+  try {
+    frameCountFor(1e9, 24.0, "scene.glb over the animation at --fps 24");
+    FAIL() << "2.4e10 frames accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scene.glb over the animation at --fps 24: 2.4e+10 frames"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at most 10^7"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CameraPath, KeysAreHitExactly) {
   for (PathInterpolation mode : {PathInterpolation::Smooth, PathInterpolation::Linear}) {
     const CameraPath p = threeKeys(mode);

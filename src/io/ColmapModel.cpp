@@ -159,12 +159,12 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
     ColmapImage image;
     image.line = where.line;
     image.id = static_cast<std::uint32_t>(whole(f[0], where, "IMAGE_ID", kMaxId));
-    Quaternion q{number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"), number(f[4], where, "QZ")};
-    const double length = q.length();
+    const glm::dquat q(number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"), number(f[4], where, "QZ"));
+    const double length = glm::length(q);
     if (!(std::abs(length - 1.0) <= kQuaternionLengthTolerance))
       where.fail(cat("image ", image.id, "'s quaternion QW QX QY QZ has length ", length, "; COLMAP writes unit quaternions "
                      "(lengths within ", kQuaternionLengthTolerance, " of 1 are normalised)"));
-    image.rotation = {q.w / length, q.x / length, q.y / length, q.z / length};
+    image.rotation = q / length;
     image.translation = {number(f[5], where, "TX"), number(f[6], where, "TY"), number(f[7], where, "TZ")};
     image.cameraId = static_cast<std::uint32_t>(whole(f[8], where, "CAMERA_ID", kMaxId));
     image.name = std::string(f[9]);
@@ -351,7 +351,7 @@ std::string colmapImagesText(const std::vector<ColmapImage>& images) {
                          "#   POINTS2D[] as (X, Y, POINT3D_ID)\n", "# Number of images: ", images.size(),
                          ", mean observations per image: 0\n");
   for (const ColmapImage& i : images) {
-    const Quaternion& q = i.rotation;
+    const glm::dquat& q = i.rotation;
     text += cat(i.id, " ", shortest(q.w), " ", shortest(q.x), " ", shortest(q.y), " ", shortest(q.z), " ",
                 shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ", i.cameraId,
                 " ", i.name, "\n\n");  // and its POINTS2D line, empty

@@ -39,7 +39,7 @@ struct ColmapCamera {
 // The pose line of an image in images.txt: IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME.
 struct ColmapImage {
   std::uint32_t id = 0;
-  Quaternion rotation;          // unit length (normalised when read)
+  glm::dquat rotation;          // unit length (normalised when read)
   glm::dvec3 translation{0.0};  // t
   std::uint32_t cameraId = 0;
   std::string name;             // relative to the image folder

@@ -67,17 +67,28 @@ std::vector<std::string_view> lines(std::string_view text) {
   return out;
 }
 
-// Fields separated by runs of spaces or tabs (COLMAP writes single spaces; a run is forgiven).
+// Fields are separated by runs of spaces or tabs (COLMAP writes single spaces; a run is forgiven).
+// The first field of `rest`, removed from it with the separators before it; empty when none is left.
+std::string_view takeField(std::string_view& rest) {
+  const std::size_t start = std::min(rest.find_first_not_of(" \t"), rest.size());
+  rest.remove_prefix(start);
+  const std::size_t length = std::min(rest.find_first_of(" \t"), rest.size());
+  const std::string_view field = rest.substr(0, length);
+  rest.remove_prefix(length);
+  return field;
+}
+
 std::vector<std::string_view> fields(std::string_view line) {
   std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
+  for (std::string_view field = takeField(line); !field.empty(); field = takeField(line)) out.push_back(field);
   return out;
+}
+
+// How many fields a line holds, without keeping them (a POINTS2D line may hold thousands).
+std::size_t fieldCount(std::string_view line) {
+  std::size_t n = 0;
+  while (!takeField(line).empty()) ++n;
+  return n;
 }
 
 double number(std::string_view field, const Where& where, const std::string& what) {
@@ -181,7 +192,7 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
       if (!points.empty() && points.front() == '#')
         pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
                              "image takes two lines"));
-      if (const std::size_t n = fields(points).size(); n % 3 != 0)
+      if (const std::size_t n = fieldCount(points); n % 3 != 0)
         pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
                              "image takes two lines (the second may be empty)"));
     }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -56,7 +57,7 @@ std::string_view trimmed(std::string_view s) {
   return s;
 }
 
-std::vector<std::string_view> lines(std::string_view text) {
+std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> out;
   while (!text.empty()) {
     const std::size_t end = text.find('\n');
@@ -120,17 +121,63 @@ std::string shortest(double value) {
   return std::string(buffer, error == std::errc() ? end : buffer);
 }
 
+// A COLMAP text file read line by line. next() gives the next data line: blank lines and '#'
+// comments are skipped. following() gives the line right after the last one given, whatever it
+// holds: an image's POINTS2D line, which may be empty.
+class DataLines {
+ public:
+  struct Line {
+    Where where;
+    std::string_view text;  // without white space at either end
+  };
+
+  DataLines(std::string_view text, const std::string& file) : lines_(splitLines(text)), file_(file) {}
+
+  std::optional<Line> next() {
+    while (std::optional<Line> line = following())
+      if (!line->text.empty() && line->text.front() != '#') return line;
+    return std::nullopt;
+  }
+
+  std::optional<Line> following() {
+    if (next_ == lines_.size()) return std::nullopt;
+    const std::size_t i = next_++;
+    return Line{Where{file_, static_cast<int>(i) + 1}, trimmed(lines_[i])};
+  }
+
+ private:
+  std::vector<std::string_view> lines_;
+  const std::string& file_;
+  std::size_t next_ = 0;
+};
+
+// The line on which each ID (or name) was first given, to refuse one given again:
+// "CAMERA_ID 3 is given again (first on line 1); each camera needs its own ID".
+template <class Key>
+class FirstLines {
+ public:
+  FirstLines(const char* field, const char* rule) : field_(field), rule_(rule) {}
+
+  void add(const Key& key, const Where& where) {
+    if (const auto [it, added] = lineOf_.emplace(key, where.line); !added)
+      where.fail(cat(field_, " ", key, " is given again (first on line ", it->second, "); ", rule_));
+  }
+
+ private:
+  const char* field_;
+  const char* rule_;
+  std::map<Key, int> lineOf_;
+};
+
 }  // namespace
 
 std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std::string& file) {
   std::vector<ColmapCamera> cameras;
-  std::map<std::uint32_t, int> lineOfId;
-  const std::vector<std::string_view> all = lines(text);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const std::string_view line = trimmed(all[i]);
-    if (line.empty() || line.front() == '#') continue;
-    const Where where{file, static_cast<int>(i) + 1};
-    const std::vector<std::string_view> f = fields(line);
+  FirstLines<std::uint32_t> ids("CAMERA_ID", "each camera needs its own ID");
+  DataLines lines(text, file);
+  while (const std::optional<DataLines::Line> line = lines.next()) {
+    const Where& where = line->where;
+    const std::vector<std::string_view> f = fields(line->text);
     if (f.size() < 4)
       where.fail(cat("a camera line is CAMERA_ID MODEL WIDTH HEIGHT PARAMS[]; this one has ", f.size(), " field",
                      f.size() == 1 ? "" : "s"));
@@ -147,8 +194,7 @@ std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std:
     if (const ModelInfo* m = modelInfo(c.model); m && c.params.size() != m->count)
       where.fail(cat("camera ", c.id, " is ", m->name, ", which takes ", m->count, " parameters (", m->params, "), not ",
                      c.params.size()));
-    if (const auto [it, added] = lineOfId.emplace(c.id, where.line); !added)
-      where.fail(cat("CAMERA_ID ", c.id, " is given again (first on line ", it->second, "); each camera needs its own ID"));
+    ids.add(c.id, where);
     cameras.push_back(std::move(c));
   }
   return cameras;
@@ -156,14 +202,12 @@ std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std:
 
 std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::string& file) {
   std::vector<ColmapImage> images;
-  std::map<std::uint32_t, int> lineOfId;
-  std::map<std::string, int> lineOfName;
-  const std::vector<std::string_view> all = lines(text);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const std::string_view line = trimmed(all[i]);
-    if (line.empty() || line.front() == '#') continue;
-    const Where where{file, static_cast<int>(i) + 1};
-    const std::vector<std::string_view> f = fields(line);
+  FirstLines<std::uint32_t> ids("IMAGE_ID", "each image needs its own ID");
+  FirstLines<std::string> names("NAME", "each image needs its own name");
+  DataLines lines(text, file);
+  while (const std::optional<DataLines::Line> line = lines.next()) {
+    const Where& where = line->where;
+    const std::vector<std::string_view> f = fields(line->text);
     if (f.size() != 10)
       where.fail(cat("an image line is IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME (10 fields); this one has ", f.size(),
                      f.size() > 10 ? " (a NAME cannot hold spaces: COLMAP reads it only up to the first)" : ""));
@@ -179,22 +223,17 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
     image.translation = {number(f[5], where, "TX"), number(f[6], where, "TY"), number(f[7], where, "TZ")};
     image.cameraId = static_cast<std::uint32_t>(whole(f[8], where, "CAMERA_ID", kMaxId));
     image.name = std::string(f[9]);
-    if (const auto [it, added] = lineOfId.emplace(image.id, where.line); !added)
-      where.fail(cat("IMAGE_ID ", image.id, " is given again (first on line ", it->second, "); each image needs its own ID"));
-    if (const auto [it, added] = lineOfName.emplace(image.name, where.line); !added)
-      where.fail(cat("NAME ", image.name, " is given again (first on line ", it->second, "); each image needs its own name"));
+    ids.add(image.id, where);
+    names.add(image.name, where);
     // Its POINTS2D line: the next line, whatever it holds (it may be empty). Lenslab does not use
     // the points, but a line that cannot be one means the two-line layout is broken.
-    if (i + 1 < all.size()) {
-      ++i;
-      const Where pointsWhere{file, static_cast<int>(i) + 1};
-      const std::string_view points = trimmed(all[i]);
-      if (!points.empty() && points.front() == '#')
-        pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
-                             "image takes two lines"));
-      if (const std::size_t n = fieldCount(points); n % 3 != 0)
-        pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
-                             "image takes two lines (the second may be empty)"));
+    if (const std::optional<DataLines::Line> points = lines.following()) {
+      if (!points->text.empty() && points->text.front() == '#')
+        points->where.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
+                               "image takes two lines"));
+      if (const std::size_t n = fieldCount(points->text); n % 3 != 0)
+        points->where.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
+                               "image takes two lines (the second may be empty)"));
     }
     images.push_back(std::move(image));
   }

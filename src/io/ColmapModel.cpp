@@ -169,6 +169,19 @@ class FirstLines {
   std::map<Key, int> lineOf_;
 };
 
+[[noreturn]] void failUnknownCamera(const ColmapModel& model, const ColmapImage& image) {
+  throw InputError(cat(model.imagesFile, ":", image.line, ": image ", image.id, " (", image.name, ") names CAMERA_ID ",
+                       image.cameraId, ", which ", model.camerasFile, " does not hold"));
+}
+
+// The camera that took `image`. Throws InputError naming the image's line when the model holds none.
+const ColmapCamera& cameraOf(const ColmapModel& model, const ColmapImage& image) {
+  const auto camera = std::find_if(model.cameras.begin(), model.cameras.end(),
+                                   [&](const ColmapCamera& c) { return c.id == image.cameraId; });
+  if (camera == model.cameras.end()) failUnknownCamera(model, image);
+  return *camera;
+}
+
 }  // namespace
 
 std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std::string& file) {
@@ -257,12 +270,12 @@ ColmapModel readColmapModel(const fs::path& dir) {
   }
   model.cameras = parseColmapCameras(readTextFile(model.camerasFile, "COLMAP cameras file"), model.camerasFile);
   model.images = parseColmapImages(readTextFile(model.imagesFile, "COLMAP images file"), model.imagesFile);
+  // Every image's camera, looked up in a set rather than by cameraOf: COLMAP makes a camera per
+  // image by default, and a search of the cameras for each image would take their product.
   std::set<std::uint32_t> ids;
   for (const ColmapCamera& c : model.cameras) ids.insert(c.id);
   for (const ColmapImage& image : model.images)
-    if (ids.count(image.cameraId) == 0)
-      throw InputError(cat(model.imagesFile, ":", image.line, ": image ", image.id, " (", image.name, ") names CAMERA_ID ",
-                           image.cameraId, ", which ", model.camerasFile, " does not hold"));
+    if (ids.count(image.cameraId) == 0) failUnknownCamera(model, image);
   return model;
 }
 
@@ -335,12 +348,7 @@ Camera colmapImageCamera(const ColmapModel& model, const std::string& name) {
                          " image", model.images.size() == 1 ? "" : "s", " include", model.images.size() == 1 ? "s " : " ",
                          some, model.images.size() > shown ? ", ..." : ""));
   }
-  const auto camera = std::find_if(model.cameras.begin(), model.cameras.end(),
-                                   [&](const ColmapCamera& c) { return c.id == image->cameraId; });
-  if (camera == model.cameras.end())
-    throw InputError(cat(model.imagesFile, ":", image->line, ": image ", image->id, " names CAMERA_ID ", image->cameraId,
-                         ", which ", model.camerasFile, " does not hold"));
-  const OpenCvLens lens = lensOf(*camera, model.camerasFile);
+  const OpenCvLens lens = lensOf(cameraOf(model, *image), model.camerasFile);
   return pinholeFromOpenCv(lens.intrinsics, lens.distortion, poseOf(*image),
                            cat("COLMAP image ", name, " (", model.imagesFile, ":", image->line, ")"));
 }

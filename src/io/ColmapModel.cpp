@@ -22,19 +22,25 @@ const char* const kColmapModelsRendered =
 
 namespace {
 
-// The models lenslab renders and their parameters, in COLMAP's order (src/colmap/sensor/models.h).
+// The models lenslab renders and their parameters, in COLMAP's order (src/colmap/sensor/models.h):
+// one focal length f or two (fx, fy), the principal point cx, cy, then the distortion coefficients,
+// each model's a leading part of OpenCV's k1, k2, p1, p2, k3, k4, k5, k6.
 struct ModelInfo {
   const char* name;
   const char* params;
   std::size_t count;
+  bool oneFocal;
+
+  std::size_t cxIndex() const { return oneFocal ? 1 : 2; }
+  std::size_t k1Index() const { return cxIndex() + 2; }  // = count for the pinholes, which have no k1
 };
 constexpr ModelInfo kModels[] = {
-    {"SIMPLE_PINHOLE", "f, cx, cy", 3},
-    {"PINHOLE", "fx, fy, cx, cy", 4},
-    {"SIMPLE_RADIAL", "f, cx, cy, k", 4},
-    {"RADIAL", "f, cx, cy, k1, k2", 5},
-    {"OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2", 8},
-    {"FULL_OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2, k3, k4, k5, k6", 12},
+    {"SIMPLE_PINHOLE", "f, cx, cy", 3, true},
+    {"PINHOLE", "fx, fy, cx, cy", 4, false},
+    {"SIMPLE_RADIAL", "f, cx, cy, k", 4, true},
+    {"RADIAL", "f, cx, cy, k1, k2", 5, true},
+    {"OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2", 8, false},
+    {"FULL_OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2, k3, k4, k5, k6", 12, false},
 };
 
 const ModelInfo* modelInfo(const std::string& name) {
@@ -288,34 +294,25 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
     where.fail(cat("camera ", c.id, " is ", c.widthPx, "x", c.heightPx, " pixels; lenslab renders at most ", kMaxImageSidePx,
                    " a side"));
   const std::vector<double>& p = c.params;
-  const bool oneFocal = m->name == std::string("SIMPLE_PINHOLE") || m->name == std::string("SIMPLE_RADIAL") ||
-                        m->name == std::string("RADIAL");
   OpenCvLens lens;
   OpenCvIntrinsics& k = lens.intrinsics;
   Distortion& d = lens.distortion;
-  const std::size_t pp = oneFocal ? 1 : 2;  // index of cx
   k.fx = p[0];
-  k.fy = oneFocal ? p[0] : p[1];
+  k.fy = m->oneFocal ? p[0] : p[1];
   // COLMAP's pixel centres are at i + 0.5, OpenCV's at i.
-  k.cx = p[pp] - 0.5;
-  k.cy = p[pp + 1] - 0.5;
+  k.cx = p[m->cxIndex()] - 0.5;
+  k.cy = p[m->cxIndex() + 1] - 0.5;
   k.widthPx = c.widthPx;
   k.heightPx = c.heightPx;
-  const std::size_t extra = pp + 2;
-  const std::string name = m->name;
-  if (name == "SIMPLE_RADIAL") {
-    d.k1 = p[extra];
-  } else if (name == "RADIAL") {
-    d.k1 = p[extra], d.k2 = p[extra + 1];
-  } else if (name == "OPENCV" || name == "FULL_OPENCV") {
-    d.k1 = p[extra], d.k2 = p[extra + 1], d.p1 = p[extra + 2], d.p2 = p[extra + 3];
-    if (name == "FULL_OPENCV") {
-      d.k3 = p[extra + 4];
-      for (int i = 0; i < 3; ++i)
-        if (p[extra + 5 + static_cast<std::size_t>(i)] != 0.0)
-          where.fail(cat("camera ", c.id, " is FULL_OPENCV with k", 4 + i, " = ", p[extra + 5 + static_cast<std::size_t>(i)],
-                         "; lenslab renders its rational terms k4, k5, k6 only at 0 (it renders ", kColmapModelsRendered, ")"));
-    }
+  // OpenCV's order; the rational terms k4, k5, k6 (i = 5, 6, 7) are only checked.
+  double* const coefficients[] = {&d.k1, &d.k2, &d.p1, &d.p2, &d.k3};
+  for (std::size_t i = 0; m->k1Index() + i < m->count; ++i) {
+    const double value = p[m->k1Index() + i];
+    if (i < std::size(coefficients))
+      *coefficients[i] = value;
+    else if (value != 0.0)
+      where.fail(cat("camera ", c.id, " is ", m->name, " with k", i - 1, " = ", value, "; lenslab renders its rational "
+                     "terms k4, k5, k6 only at 0 (it renders ", kColmapModelsRendered, ")"));
   }
   if (!(k.fx > 0.0) || !(k.fy > 0.0))
     where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (", m->name,

@@ -2,6 +2,7 @@
 
 #include "camera/ImageSize.h"
 #include "core/Error.h"
+#include "core/ParseNumber.h"
 #include "core/Text.h"
 #include "io/TextFile.h"
 
@@ -101,12 +102,10 @@ std::size_t fieldCount(std::string_view line) {
 double number(std::string_view field, const Where& where, const std::string& what) {
   std::string_view s = field;
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);  // COLMAP reads with stold, which allows it
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (error != std::errc() || end != s.data() + s.size() || s.empty())
-    where.fail(cat(what, " is \"", field, "\"; give a number"));
-  if (!std::isfinite(value)) where.fail(cat(what, " is ", field, "; give a finite number"));
-  return value;
+  const std::optional<double> value = parseDouble(s);
+  if (!value) where.fail(cat(what, " is \"", field, "\"; give a number"));
+  if (!std::isfinite(*value)) where.fail(cat(what, " is ", field, "; give a finite number"));
+  return *value;
 }
 
 std::uint64_t whole(std::string_view field, const Where& where, const std::string& what, std::uint64_t max) {

@@ -173,7 +173,8 @@ CameraFile parseLecture(const Reader& r) {
   const glm::dvec4 w = r.vector<4>("window");
   spec.window = {w.x, w.y, w.z, w.w};
   const bool perspective = spec.projection == Projection::Perspective;
-  spec.nearDistance = r.has("near") ? r.distance("near") : (perspective ? spec.prp.z * 1e-3 : 0.0);
+  const double defaultNear = perspective ? spec.prp.z * kDefaultNearPerViewPlaneDistance : 0.0;
+  spec.nearDistance = r.has("near") ? r.distance("near") : defaultNear;
   if (r.has("far")) spec.farDistance = r.distance("far");
   else if (!perspective) r.require("far", "parallel-projection lecture");
   validate(spec, r.where());
@@ -344,7 +345,7 @@ CameraFile parseOpenCv(const Reader& r) {
       focus = 1.0;
     }
     d = viewPlaneDistanceFor(focus, 1.0);
-    defaultNear = d * 1e-3;  // the lecture form's PRP.n / 1000: this camera's scale is not known
+    defaultNear = d * kDefaultNearPerViewPlaneDistance;  // this camera's scale is not known
   }
   ViewSpec spec = viewSpecOf(k, placement, d);
   spec.nearDistance = r.has("near") ? r.distance("near") : defaultNear;

@@ -372,10 +372,12 @@ ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std:
   return c;
 }
 
-ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name) {
-  if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
-    throw InputError(cat("image name \"", name, "\": COLMAP's text format cannot hold an empty name or one with spaces "
-                         "(it reads NAME up to the first)"));
+ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name,
+                          const std::string& where) {
+  if (name.empty()) throw InputError(cat(where, ": the image name is empty, which COLMAP's text format cannot hold"));
+  if (name.find_first_of(" \t\r\n") != std::string::npos)
+    throw InputError(cat(where, ": the image name ", name, " holds a space, which COLMAP's text format cannot hold (it "
+                         "reads NAME up to the first)"));
   ColmapImage image;
   image.id = id;
   image.rotation = quaternionFromRotation(pose.rows);

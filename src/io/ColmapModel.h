@@ -92,8 +92,9 @@ Camera colmapImageCamera(const ColmapModel& model, const std::string& name);
 // InputError naming `where` for the lecture's odd powers α and γ, which no COLMAP model holds.
 ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& distortion, std::uint32_t id,
                             const std::string& where);
-// Throws InputError for a name that is empty or holds white space.
-ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name);
+// Throws InputError naming `where` for a name that is empty or holds white space.
+ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name,
+                          const std::string& where);
 
 // The files' text, with COLMAP's header comments; numbers in the shortest form that reads back
 // to the same double.

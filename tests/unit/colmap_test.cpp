@@ -279,7 +279,7 @@ TEST(ColmapWrite, TheSimplestModelThatHoldsTheLensExactly) {
   EXPECT_EQ(c.params[8], 0.01);
   d.alpha = 0.02;
   expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }), {"path.json: frame 3", "alpha", "k1, k2, p1, p2, k3"});
-  EXPECT_THROW(colmapImageOf({}, 1, 1, "two words.png"), InputError);
+  EXPECT_THROW(colmapImageOf({}, 1, 1, "two words.png", "t"), InputError);
 }
 
 TEST(ColmapWrite, AWrittenModelReadsBackAsTheSameCameras) {
@@ -301,7 +301,7 @@ TEST(ColmapWrite, AWrittenModelReadsBackAsTheSameCameras) {
     const glm::dquat q{std::cos(angle / 2), axis.x * std::sin(angle / 2), axis.y * std::sin(angle / 2), axis.z * std::sin(angle / 2)};
     OpenCvPose pose{rotationFromQuaternion(q), glm::dvec3(uniform(rng), uniform(rng), uniform(rng)) * 10.0};
     poses.push_back(pose);
-    images.push_back(colmapImageOf(pose, 100 + i, i + 1, "frames/frame_" + std::to_string(i) + ".png"));
+    images.push_back(colmapImageOf(pose, 100 + i, i + 1, "frames/frame_" + std::to_string(i) + ".png", "t"));
   }
   const std::vector<ColmapCamera> camerasBack = parseColmapCameras(colmapCamerasText(cameras), "cameras.txt");
   const std::vector<ColmapImage> imagesBack = parseColmapImages(colmapImagesText(images), "images.txt");

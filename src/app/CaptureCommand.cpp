@@ -227,6 +227,7 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
   std::vector<ColmapImage> images;
   std::map<std::string, std::uint32_t> cameraIdOfParams;
   std::set<std::string> warnings;
+  const std::string imageWhere = cat("--colmap-out: --out ", o.out);  // the frames' names come from --out
   for (const int frame : shardFrames(range, Shard{})) {
     // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
     // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
@@ -242,10 +243,8 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
     }
     const fs::path file = formatFramePath(o.out, frame);
     const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
-    if (name.find_first_of(" \t") != std::string::npos)
-      throw InputError(cat("--colmap-out: the frame name ", name, " holds a space, which COLMAP's text format cannot hold "
-                           "(it reads NAME up to the first); give an --out without spaces"));
-    images.push_back(colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, it->second, name));
+    images.push_back(colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, it->second, name,
+                                   imageWhere));
     // What a pinhole model cannot hold. Blur (depth of field, axial colour, field curvature) is
     // centred where the pinhole at the lens centre projects, so the geometry stays right.
     const LensEffects& e = f.camera.effects;

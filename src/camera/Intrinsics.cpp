@@ -60,7 +60,7 @@ Camera pinholeFromOpenCv(const OpenCvIntrinsics& k, const Distortion& distortion
                          const std::string& source) {
   constexpr double kViewPlaneDistance = 1.0;
   ViewSpec spec = viewSpecOf(k, placementOf(pose), kViewPlaneDistance);
-  spec.nearDistance = kViewPlaneDistance * 1e-3;  // the lecture form's default, PRP.n / 1000
+  spec.nearDistance = kViewPlaneDistance * kDefaultNearPerViewPlaneDistance;
   validate(spec, source);
   Camera camera = cameraFocusedOnViewPlane(spec, 0.0, source);
   camera.nearFromScene = camera.farFromScene = true;

@@ -32,6 +32,11 @@ struct Window {
   glm::dvec2 center() const { return {0.5 * (umin + umax), 0.5 * (vmin + vmax)}; }
 };
 
+// A perspective camera's near distance when none is given, as a fraction of the view plane's
+// distance PRP.n: the lecture form's default (PRP.n / 1000), which the forms whose scale is not
+// known (an OpenCV pose, a COLMAP image) take too.
+constexpr double kDefaultNearPerViewPlaneDistance = 1e-3;
+
 struct ViewSpec {
   Projection projection = Projection::Perspective;
   glm::dvec3 vrp{0.0};              // View Reference Point: origin of the view plane's (u, v), world
@@ -39,7 +44,7 @@ struct ViewSpec {
   glm::dvec3 vup{0.0, 1.0, 0.0};    // View UP, world; its projection on the view plane is +v
   glm::dvec3 prp{0.0, 0.0, 1.0};    // Projection Reference Point (focal point), in VRC (u, v, n)
   Window window;                    // on the view plane, VRC units
-  double nearDistance = 1e-3;       // from the PRP along −n, world units
+  double nearDistance = kDefaultNearPerViewPlaneDistance;  // from the PRP along −n, world units (PRP.n is 1)
   double farDistance = std::numeric_limits<double>::infinity();  // from the PRP along −n
 };
 

@@ -32,21 +32,25 @@ bool isInside(const fs::path& path, const fs::path& folder) {
   return true;
 }
 
+// Whether the executable at `exe` (executablePath()'s) lies inside the build tree. Compared as text
+// (CMake gives the build tree with its symbolic links resolved, as the kernel gives the
+// executable): an installed lenslab does not so much as look at the build tree.
+bool insideBuildTree(const fs::path& exe) { return !exe.empty() && isInside(exe, LENSLAB_BUILD_DIR); }
+
 }  // namespace
 
 fs::path executablePath() {
-  std::error_code error;
-  fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  return error ? fs::path() : exe;
+  // Read once: the executable does not change while it runs, and shaderDirectory() asks on every
+  // shader load. (The environment variables are read each time: a test may set them.)
+  static const fs::path exe = [] {
+    std::error_code error;
+    fs::path path = fs::read_symlink("/proc/self/exe", error);
+    return error ? fs::path() : path;
+  }();
+  return exe;
 }
 
-bool runningFromBuildTree() {
-  const fs::path exe = executablePath();
-  if (exe.empty()) return false;
-  // Compared as text (CMake gives the build tree with its symbolic links resolved, as the kernel
-  // gives the executable): an installed lenslab does not so much as look at the build tree.
-  return isInside(exe, LENSLAB_BUILD_DIR);
-}
+bool runningFromBuildTree() { return insideBuildTree(executablePath()); }
 
 std::optional<fs::path> shaderDirectory() {
   if (auto env = fromEnvironment("LENSLAB_SHADER_DIR")) return env;
@@ -63,7 +67,7 @@ fs::path assetDirectory() {
     std::error_code error;
     if (fs::is_directory(installed, error)) return installed;
   }
-  if (runningFromBuildTree()) return fs::path(LENSLAB_SOURCE_DIR) / "assets";
+  if (insideBuildTree(exe)) return fs::path(LENSLAB_SOURCE_DIR) / "assets";
   throw InputError("bundled scenes: no assets folder at " +
                    (installed.empty() ? std::string("<executable>/" LENSLAB_DATA_FROM_BIN "/assets") : installed.string()) +
                    "; set LENSLAB_ASSET_DIR to lenslab's assets/ folder, or name a scene file");

@@ -21,7 +21,8 @@
 
 namespace lenslab {
 
-// The running executable (/proc/self/exe, symbolic links resolved); empty when it cannot be read.
+// The running executable (/proc/self/exe, symbolic links resolved, read once); empty when it cannot
+// be read.
 std::filesystem::path executablePath();
 
 // Whether the running executable lies inside the build tree this library was built in.

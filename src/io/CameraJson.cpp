@@ -173,7 +173,8 @@ CameraFile parseLecture(const Reader& r) {
   const glm::dvec4 w = r.vector<4>("window");
   spec.window = {w.x, w.y, w.z, w.w};
   const bool perspective = spec.projection == Projection::Perspective;
-  spec.nearDistance = r.has("near") ? r.distance("near") : (perspective ? spec.prp.z * 1e-3 : 0.0);
+  const double defaultNear = perspective ? spec.prp.z * kDefaultNearPerViewPlaneDistance : 0.0;
+  spec.nearDistance = r.has("near") ? r.distance("near") : defaultNear;
   if (r.has("far")) spec.farDistance = r.distance("far");
   else if (!perspective) r.require("far", "parallel-projection lecture");
   validate(spec, r.where());
@@ -236,6 +237,14 @@ OpenCvIntrinsics intrinsicsFromObject(const Reader& r) {
   return k;
 }
 
+// "image_size": [width, height], whole pixels from 1 to kMaxImageSidePx.
+ImageSize imageSizeOf(const Reader& r) {
+  const glm::dvec2 size = r.vector<2>("image_size");
+  if (size != glm::floor(size) || size.x < 1 || size.y < 1 || size.x > kMaxImageSidePx || size.y > kMaxImageSidePx)
+    r.fail("image_size", cat("must be [width, height] in whole pixels from 1 to ", kMaxImageSidePx));
+  return ImageSize{static_cast<int>(size.x), static_cast<int>(size.y)};
+}
+
 // "K": [[fx, 0, cx], [0, fy, cy], [0, 0, 1]], with "width" and "height" (or "image_size") beside it.
 // The zeros must be zeros: K[0][1] is the skew, which a window of rectangular pixels cannot hold.
 OpenCvIntrinsics intrinsicsFromMatrix(const Reader& r) {
@@ -256,10 +265,8 @@ OpenCvIntrinsics intrinsicsFromMatrix(const Reader& r) {
     k.widthPx = r.integer("width"), k.heightPx = r.integer("height");
     checkIntrinsics(k, r, "K", "K", "width", "height");
   } else if (r.has("image_size")) {
-    const glm::dvec2 size = r.vector<2>("image_size");
-    if (size != glm::floor(size) || size.x < 1 || size.y < 1 || size.x > kMaxImageSidePx || size.y > kMaxImageSidePx)
-      r.fail("image_size", cat("must be [width, height] in whole pixels from 1 to ", kMaxImageSidePx));
-    k.widthPx = static_cast<int>(size.x), k.heightPx = static_cast<int>(size.y);
+    const ImageSize size = imageSizeOf(r);
+    k.widthPx = size.widthPx, k.heightPx = size.heightPx;
     checkIntrinsics(k, r, "K", "K", "image_size", "image_size");
   } else {
     throw InputError(cat(r.where(), ": \"K\" needs the image size it was calibrated for: give \"width\" and \"height\" "
@@ -338,7 +345,7 @@ CameraFile parseOpenCv(const Reader& r) {
       focus = 1.0;
     }
     d = viewPlaneDistanceFor(focus, 1.0);
-    defaultNear = d * 1e-3;  // the lecture form's PRP.n / 1000: this camera's scale is not known
+    defaultNear = d * kDefaultNearPerViewPlaneDistance;  // this camera's scale is not known
   }
   ViewSpec spec = viewSpecOf(k, placement, d);
   spec.nearDistance = r.has("near") ? r.distance("near") : defaultNear;
@@ -389,12 +396,7 @@ Distortion distCoeffsOf(const Reader& r, const std::string& key) {
 void parseCommon(const Reader& r, CameraFile& file) {
   Camera& camera = file.camera;
   LensEffects& e = camera.effects;
-  if (r.has("image_size")) {
-    const glm::dvec2 size = r.vector<2>("image_size");
-    if (size.x < 1 || size.y < 1 || size.x > kMaxImageSidePx || size.y > kMaxImageSidePx || size != glm::floor(size))
-      r.fail("image_size", cat("must be [width, height] in whole pixels from 1 to ", kMaxImageSidePx));
-    camera.calibratedSize = ImageSize{static_cast<int>(size.x), static_cast<int>(size.y)};
-  }
+  if (r.has("image_size")) camera.calibratedSize = imageSizeOf(r);
   if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
   if (r.has("dist")) {
     if (!r.raw("dist").is_array()) r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3], not ", r.raw("dist").dump()));

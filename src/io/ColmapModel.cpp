@@ -2,6 +2,7 @@
 
 #include "camera/ImageSize.h"
 #include "core/Error.h"
+#include "core/ParseNumber.h"
 #include "core/Text.h"
 #include "io/TextFile.h"
 
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -21,19 +23,25 @@ const char* const kColmapModelsRendered =
 
 namespace {
 
-// The models lenslab renders and their parameters, in COLMAP's order (src/colmap/sensor/models.h).
+// The models lenslab renders and their parameters, in COLMAP's order (src/colmap/sensor/models.h):
+// one focal length f or two (fx, fy), the principal point cx, cy, then the distortion coefficients,
+// each model's a leading part of OpenCV's k1, k2, p1, p2, k3, k4, k5, k6.
 struct ModelInfo {
   const char* name;
   const char* params;
   std::size_t count;
+  bool oneFocal;
+
+  std::size_t cxIndex() const { return oneFocal ? 1 : 2; }
+  std::size_t k1Index() const { return cxIndex() + 2; }  // = count for the pinholes, which have no k1
 };
 constexpr ModelInfo kModels[] = {
-    {"SIMPLE_PINHOLE", "f, cx, cy", 3},
-    {"PINHOLE", "fx, fy, cx, cy", 4},
-    {"SIMPLE_RADIAL", "f, cx, cy, k", 4},
-    {"RADIAL", "f, cx, cy, k1, k2", 5},
-    {"OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2", 8},
-    {"FULL_OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2, k3, k4, k5, k6", 12},
+    {"SIMPLE_PINHOLE", "f, cx, cy", 3, true},
+    {"PINHOLE", "fx, fy, cx, cy", 4, false},
+    {"SIMPLE_RADIAL", "f, cx, cy, k", 4, true},
+    {"RADIAL", "f, cx, cy, k1, k2", 5, true},
+    {"OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2", 8, false},
+    {"FULL_OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2, k3, k4, k5, k6", 12, false},
 };
 
 const ModelInfo* modelInfo(const std::string& name) {
@@ -56,7 +64,7 @@ std::string_view trimmed(std::string_view s) {
   return s;
 }
 
-std::vector<std::string_view> lines(std::string_view text) {
+std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> out;
   while (!text.empty()) {
     const std::size_t end = text.find('\n');
@@ -67,28 +75,37 @@ std::vector<std::string_view> lines(std::string_view text) {
   return out;
 }
 
-// Fields separated by runs of spaces or tabs (COLMAP writes single spaces; a run is forgiven).
+// Fields are separated by runs of spaces or tabs (COLMAP writes single spaces; a run is forgiven).
+// The first field of `rest`, removed from it with the separators before it; empty when none is left.
+std::string_view takeField(std::string_view& rest) {
+  const std::size_t start = std::min(rest.find_first_not_of(" \t"), rest.size());
+  rest.remove_prefix(start);
+  const std::size_t length = std::min(rest.find_first_of(" \t"), rest.size());
+  const std::string_view field = rest.substr(0, length);
+  rest.remove_prefix(length);
+  return field;
+}
+
 std::vector<std::string_view> fields(std::string_view line) {
   std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
+  for (std::string_view field = takeField(line); !field.empty(); field = takeField(line)) out.push_back(field);
   return out;
+}
+
+// How many fields a line holds, without keeping them (a POINTS2D line may hold thousands).
+std::size_t fieldCount(std::string_view line) {
+  std::size_t n = 0;
+  while (!takeField(line).empty()) ++n;
+  return n;
 }
 
 double number(std::string_view field, const Where& where, const std::string& what) {
   std::string_view s = field;
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);  // COLMAP reads with stold, which allows it
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (error != std::errc() || end != s.data() + s.size() || s.empty())
-    where.fail(cat(what, " is \"", field, "\"; give a number"));
-  if (!std::isfinite(value)) where.fail(cat(what, " is ", field, "; give a finite number"));
-  return value;
+  const std::optional<double> value = parseDouble(s);
+  if (!value) where.fail(cat(what, " is \"", field, "\"; give a number"));
+  if (!std::isfinite(*value)) where.fail(cat(what, " is ", field, "; give a finite number"));
+  return *value;
 }
 
 std::uint64_t whole(std::string_view field, const Where& where, const std::string& what, std::uint64_t max) {
@@ -109,17 +126,76 @@ std::string shortest(double value) {
   return std::string(buffer, error == std::errc() ? end : buffer);
 }
 
+// A COLMAP text file read line by line. next() gives the next data line: blank lines and '#'
+// comments are skipped. following() gives the line right after the last one given, whatever it
+// holds: an image's POINTS2D line, which may be empty.
+class DataLines {
+ public:
+  struct Line {
+    Where where;
+    std::string_view text;  // without white space at either end
+  };
+
+  DataLines(std::string_view text, const std::string& file) : lines_(splitLines(text)), file_(file) {}
+
+  std::optional<Line> next() {
+    while (std::optional<Line> line = following())
+      if (!line->text.empty() && line->text.front() != '#') return line;
+    return std::nullopt;
+  }
+
+  std::optional<Line> following() {
+    if (next_ == lines_.size()) return std::nullopt;
+    const std::size_t i = next_++;
+    return Line{Where{file_, static_cast<int>(i) + 1}, trimmed(lines_[i])};
+  }
+
+ private:
+  std::vector<std::string_view> lines_;
+  const std::string& file_;
+  std::size_t next_ = 0;
+};
+
+// The line on which each ID (or name) was first given, to refuse one given again:
+// "CAMERA_ID 3 is given again (first on line 1); each camera needs its own ID".
+template <class Key>
+class FirstLines {
+ public:
+  FirstLines(const char* field, const char* rule) : field_(field), rule_(rule) {}
+
+  void add(const Key& key, const Where& where) {
+    if (const auto [it, added] = lineOf_.emplace(key, where.line); !added)
+      where.fail(cat(field_, " ", key, " is given again (first on line ", it->second, "); ", rule_));
+  }
+
+ private:
+  const char* field_;
+  const char* rule_;
+  std::map<Key, int> lineOf_;
+};
+
+[[noreturn]] void failUnknownCamera(const ColmapModel& model, const ColmapImage& image) {
+  throw InputError(cat(model.imagesFile, ":", image.line, ": image ", image.id, " (", image.name, ") names CAMERA_ID ",
+                       image.cameraId, ", which ", model.camerasFile, " does not hold"));
+}
+
+// The camera that took `image`. Throws InputError naming the image's line when the model holds none.
+const ColmapCamera& cameraOf(const ColmapModel& model, const ColmapImage& image) {
+  const auto camera = std::find_if(model.cameras.begin(), model.cameras.end(),
+                                   [&](const ColmapCamera& c) { return c.id == image.cameraId; });
+  if (camera == model.cameras.end()) failUnknownCamera(model, image);
+  return *camera;
+}
+
 }  // namespace
 
 std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std::string& file) {
   std::vector<ColmapCamera> cameras;
-  std::map<std::uint32_t, int> lineOfId;
-  const std::vector<std::string_view> all = lines(text);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const std::string_view line = trimmed(all[i]);
-    if (line.empty() || line.front() == '#') continue;
-    const Where where{file, static_cast<int>(i) + 1};
-    const std::vector<std::string_view> f = fields(line);
+  FirstLines<std::uint32_t> ids("CAMERA_ID", "each camera needs its own ID");
+  DataLines lines(text, file);
+  while (const std::optional<DataLines::Line> line = lines.next()) {
+    const Where& where = line->where;
+    const std::vector<std::string_view> f = fields(line->text);
     if (f.size() < 4)
       where.fail(cat("a camera line is CAMERA_ID MODEL WIDTH HEIGHT PARAMS[]; this one has ", f.size(), " field",
                      f.size() == 1 ? "" : "s"));
@@ -136,8 +212,7 @@ std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std:
     if (const ModelInfo* m = modelInfo(c.model); m && c.params.size() != m->count)
       where.fail(cat("camera ", c.id, " is ", m->name, ", which takes ", m->count, " parameters (", m->params, "), not ",
                      c.params.size()));
-    if (const auto [it, added] = lineOfId.emplace(c.id, where.line); !added)
-      where.fail(cat("CAMERA_ID ", c.id, " is given again (first on line ", it->second, "); each camera needs its own ID"));
+    ids.add(c.id, where);
     cameras.push_back(std::move(c));
   }
   return cameras;
@@ -145,45 +220,38 @@ std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std:
 
 std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::string& file) {
   std::vector<ColmapImage> images;
-  std::map<std::uint32_t, int> lineOfId;
-  std::map<std::string, int> lineOfName;
-  const std::vector<std::string_view> all = lines(text);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const std::string_view line = trimmed(all[i]);
-    if (line.empty() || line.front() == '#') continue;
-    const Where where{file, static_cast<int>(i) + 1};
-    const std::vector<std::string_view> f = fields(line);
+  FirstLines<std::uint32_t> ids("IMAGE_ID", "each image needs its own ID");
+  FirstLines<std::string> names("NAME", "each image needs its own name");
+  DataLines lines(text, file);
+  while (const std::optional<DataLines::Line> line = lines.next()) {
+    const Where& where = line->where;
+    const std::vector<std::string_view> f = fields(line->text);
     if (f.size() != 10)
       where.fail(cat("an image line is IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME (10 fields); this one has ", f.size(),
                      f.size() > 10 ? " (a NAME cannot hold spaces: COLMAP reads it only up to the first)" : ""));
     ColmapImage image;
     image.line = where.line;
     image.id = static_cast<std::uint32_t>(whole(f[0], where, "IMAGE_ID", kMaxId));
-    Quaternion q{number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"), number(f[4], where, "QZ")};
-    const double length = q.length();
+    const glm::dquat q(number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"), number(f[4], where, "QZ"));
+    const double length = glm::length(q);
     if (!(std::abs(length - 1.0) <= kQuaternionLengthTolerance))
       where.fail(cat("image ", image.id, "'s quaternion QW QX QY QZ has length ", length, "; COLMAP writes unit quaternions "
                      "(lengths within ", kQuaternionLengthTolerance, " of 1 are normalised)"));
-    image.rotation = {q.w / length, q.x / length, q.y / length, q.z / length};
+    image.rotation = q / length;
     image.translation = {number(f[5], where, "TX"), number(f[6], where, "TY"), number(f[7], where, "TZ")};
     image.cameraId = static_cast<std::uint32_t>(whole(f[8], where, "CAMERA_ID", kMaxId));
     image.name = std::string(f[9]);
-    if (const auto [it, added] = lineOfId.emplace(image.id, where.line); !added)
-      where.fail(cat("IMAGE_ID ", image.id, " is given again (first on line ", it->second, "); each image needs its own ID"));
-    if (const auto [it, added] = lineOfName.emplace(image.name, where.line); !added)
-      where.fail(cat("NAME ", image.name, " is given again (first on line ", it->second, "); each image needs its own name"));
+    ids.add(image.id, where);
+    names.add(image.name, where);
     // Its POINTS2D line: the next line, whatever it holds (it may be empty). Lenslab does not use
     // the points, but a line that cannot be one means the two-line layout is broken.
-    if (i + 1 < all.size()) {
-      ++i;
-      const Where pointsWhere{file, static_cast<int>(i) + 1};
-      const std::string_view points = trimmed(all[i]);
-      if (!points.empty() && points.front() == '#')
-        pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
-                             "image takes two lines"));
-      if (const std::size_t n = fields(points).size(); n % 3 != 0)
-        pointsWhere.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
-                             "image takes two lines (the second may be empty)"));
+    if (const std::optional<DataLines::Line> points = lines.following()) {
+      if (!points->text.empty() && points->text.front() == '#')
+        points->where.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
+                               "image takes two lines"));
+      if (const std::size_t n = fieldCount(points->text); n % 3 != 0)
+        points->where.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
+                               "image takes two lines (the second may be empty)"));
     }
     images.push_back(std::move(image));
   }
@@ -207,12 +275,12 @@ ColmapModel readColmapModel(const fs::path& dir) {
   }
   model.cameras = parseColmapCameras(readTextFile(model.camerasFile, "COLMAP cameras file"), model.camerasFile);
   model.images = parseColmapImages(readTextFile(model.imagesFile, "COLMAP images file"), model.imagesFile);
+  // Every image's camera, looked up in a set rather than by cameraOf: COLMAP makes a camera per
+  // image by default, and a search of the cameras for each image would take their product.
   std::set<std::uint32_t> ids;
   for (const ColmapCamera& c : model.cameras) ids.insert(c.id);
   for (const ColmapImage& image : model.images)
-    if (ids.count(image.cameraId) == 0)
-      throw InputError(cat(model.imagesFile, ":", image.line, ": image ", image.id, " (", image.name, ") names CAMERA_ID ",
-                           image.cameraId, ", which ", model.camerasFile, " does not hold"));
+    if (ids.count(image.cameraId) == 0) failUnknownCamera(model, image);
   return model;
 }
 
@@ -225,34 +293,25 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
     where.fail(cat("camera ", c.id, " is ", c.widthPx, "x", c.heightPx, " pixels; lenslab renders at most ", kMaxImageSidePx,
                    " a side"));
   const std::vector<double>& p = c.params;
-  const bool oneFocal = m->name == std::string("SIMPLE_PINHOLE") || m->name == std::string("SIMPLE_RADIAL") ||
-                        m->name == std::string("RADIAL");
   OpenCvLens lens;
   OpenCvIntrinsics& k = lens.intrinsics;
   Distortion& d = lens.distortion;
-  const std::size_t pp = oneFocal ? 1 : 2;  // index of cx
   k.fx = p[0];
-  k.fy = oneFocal ? p[0] : p[1];
+  k.fy = m->oneFocal ? p[0] : p[1];
   // COLMAP's pixel centres are at i + 0.5, OpenCV's at i.
-  k.cx = p[pp] - 0.5;
-  k.cy = p[pp + 1] - 0.5;
+  k.cx = p[m->cxIndex()] - 0.5;
+  k.cy = p[m->cxIndex() + 1] - 0.5;
   k.widthPx = c.widthPx;
   k.heightPx = c.heightPx;
-  const std::size_t extra = pp + 2;
-  const std::string name = m->name;
-  if (name == "SIMPLE_RADIAL") {
-    d.k1 = p[extra];
-  } else if (name == "RADIAL") {
-    d.k1 = p[extra], d.k2 = p[extra + 1];
-  } else if (name == "OPENCV" || name == "FULL_OPENCV") {
-    d.k1 = p[extra], d.k2 = p[extra + 1], d.p1 = p[extra + 2], d.p2 = p[extra + 3];
-    if (name == "FULL_OPENCV") {
-      d.k3 = p[extra + 4];
-      for (int i = 0; i < 3; ++i)
-        if (p[extra + 5 + static_cast<std::size_t>(i)] != 0.0)
-          where.fail(cat("camera ", c.id, " is FULL_OPENCV with k", 4 + i, " = ", p[extra + 5 + static_cast<std::size_t>(i)],
-                         "; lenslab renders its rational terms k4, k5, k6 only at 0 (it renders ", kColmapModelsRendered, ")"));
-    }
+  // OpenCV's order; the rational terms k4, k5, k6 (i = 5, 6, 7) are only checked.
+  double* const coefficients[] = {&d.k1, &d.k2, &d.p1, &d.p2, &d.k3};
+  for (std::size_t i = 0; m->k1Index() + i < m->count; ++i) {
+    const double value = p[m->k1Index() + i];
+    if (i < std::size(coefficients))
+      *coefficients[i] = value;
+    else if (value != 0.0)
+      where.fail(cat("camera ", c.id, " is ", m->name, " with k", i - 1, " = ", value, "; lenslab renders its rational "
+                     "terms k4, k5, k6 only at 0 (it renders ", kColmapModelsRendered, ")"));
   }
   if (!(k.fx > 0.0) || !(k.fy > 0.0))
     where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (", m->name,
@@ -285,12 +344,7 @@ Camera colmapImageCamera(const ColmapModel& model, const std::string& name) {
                          " image", model.images.size() == 1 ? "" : "s", " include", model.images.size() == 1 ? "s " : " ",
                          some, model.images.size() > shown ? ", ..." : ""));
   }
-  const auto camera = std::find_if(model.cameras.begin(), model.cameras.end(),
-                                   [&](const ColmapCamera& c) { return c.id == image->cameraId; });
-  if (camera == model.cameras.end())
-    throw InputError(cat(model.imagesFile, ":", image->line, ": image ", image->id, " names CAMERA_ID ", image->cameraId,
-                         ", which ", model.camerasFile, " does not hold"));
-  const OpenCvLens lens = lensOf(*camera, model.camerasFile);
+  const OpenCvLens lens = lensOf(cameraOf(model, *image), model.camerasFile);
   return pinholeFromOpenCv(lens.intrinsics, lens.distortion, poseOf(*image),
                            cat("COLMAP image ", name, " (", model.imagesFile, ":", image->line, ")"));
 }
@@ -318,10 +372,12 @@ ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std:
   return c;
 }
 
-ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name) {
-  if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
-    throw InputError(cat("image name \"", name, "\": COLMAP's text format cannot hold an empty name or one with spaces "
-                         "(it reads NAME up to the first)"));
+ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name,
+                          const std::string& where) {
+  if (name.empty()) throw InputError(cat(where, ": the image name is empty, which COLMAP's text format cannot hold"));
+  if (name.find_first_of(" \t\r\n") != std::string::npos)
+    throw InputError(cat(where, ": the image name ", name, " holds a space, which COLMAP's text format cannot hold (it "
+                         "reads NAME up to the first)"));
   ColmapImage image;
   image.id = id;
   image.rotation = quaternionFromRotation(pose.rows);
@@ -351,7 +407,7 @@ std::string colmapImagesText(const std::vector<ColmapImage>& images) {
                          "#   POINTS2D[] as (X, Y, POINT3D_ID)\n", "# Number of images: ", images.size(),
                          ", mean observations per image: 0\n");
   for (const ColmapImage& i : images) {
-    const Quaternion& q = i.rotation;
+    const glm::dquat& q = i.rotation;
     text += cat(i.id, " ", shortest(q.w), " ", shortest(q.x), " ", shortest(q.y), " ", shortest(q.z), " ",
                 shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ", i.cameraId,
                 " ", i.name, "\n\n");  // and its POINTS2D line, empty

@@ -39,7 +39,7 @@ struct ColmapCamera {
 // The pose line of an image in images.txt: IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME.
 struct ColmapImage {
   std::uint32_t id = 0;
-  Quaternion rotation;          // unit length (normalised when read)
+  glm::dquat rotation;          // unit length (normalised when read)
   glm::dvec3 translation{0.0};  // t
   std::uint32_t cameraId = 0;
   std::string name;             // relative to the image folder
@@ -92,8 +92,9 @@ Camera colmapImageCamera(const ColmapModel& model, const std::string& name);
 // InputError naming `where` for the lecture's odd powers α and γ, which no COLMAP model holds.
 ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& distortion, std::uint32_t id,
                             const std::string& where);
-// Throws InputError for a name that is empty or holds white space.
-ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name);
+// Throws InputError naming `where` for a name that is empty or holds white space.
+ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name,
+                          const std::string& where);
 
 // The files' text, with COLMAP's header comments; numbers in the shortest form that reads back
 // to the same double.

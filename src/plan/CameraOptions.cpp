@@ -3,6 +3,7 @@
 #include "camera/AutoFraming.h"
 #include "camera/GltfCamera.h"
 #include "core/Error.h"
+#include "core/ParseNumber.h"
 #include "core/Text.h"
 
 #include <algorithm>
@@ -22,11 +23,9 @@ bool isWholeNumber(const std::string& text) {
 }
 
 double parseNumber(const std::string& text, bool& ok) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  ok = error == std::errc() && stop == end && std::isfinite(value);
-  return value;
+  const std::optional<double> value = parseFiniteNumber(text);
+  ok = value.has_value();
+  return value.value_or(0.0);
 }
 
 // The physical rows of the composition table, on a description whose focus is on its target when

@@ -160,7 +160,7 @@ TEST(ColmapText, CommentsBlankLinesCarriageReturnsAndPointLinesAreRead) {
 TEST(ColmapText, QuaternionsNearUnitLengthAreNormalisedAndOthersRefused) {
   // Six digits, as COLMAP's documentation prints them: within 1e-6 of unit length.
   const auto q = parseColmapImages("1 0.851773 0.0165051 0.503764 -0.142941 0 0 0 1 P.JPG\n\n", "i.txt")[0].rotation;
-  EXPECT_NEAR(q.length(), 1.0, 1e-15);
+  EXPECT_NEAR(glm::length(q), 1.0, 1e-15);
   EXPECT_NEAR(q.w, 0.851773, 1e-6);
   // 2·(0.5, 0.5, 0.5, 0.5): the right rotation, but not what a COLMAP file holds.
   try {
@@ -279,7 +279,7 @@ TEST(ColmapWrite, TheSimplestModelThatHoldsTheLensExactly) {
   EXPECT_EQ(c.params[8], 0.01);
   d.alpha = 0.02;
   expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }), {"path.json: frame 3", "alpha", "k1, k2, p1, p2, k3"});
-  EXPECT_THROW(colmapImageOf({}, 1, 1, "two words.png"), InputError);
+  EXPECT_THROW(colmapImageOf({}, 1, 1, "two words.png", "t"), InputError);
 }
 
 TEST(ColmapWrite, AWrittenModelReadsBackAsTheSameCameras) {
@@ -298,10 +298,10 @@ TEST(ColmapWrite, AWrittenModelReadsBackAsTheSameCameras) {
     // Rotations all round, 180° about an axis included (where w = 0).
     const glm::dvec3 axis = glm::normalize(glm::dvec3(uniform(rng), uniform(rng), uniform(rng)));
     const double angle = i == 0 ? M_PI : M_PI * uniform(rng);
-    const Quaternion q{std::cos(angle / 2), axis.x * std::sin(angle / 2), axis.y * std::sin(angle / 2), axis.z * std::sin(angle / 2)};
+    const glm::dquat q{std::cos(angle / 2), axis.x * std::sin(angle / 2), axis.y * std::sin(angle / 2), axis.z * std::sin(angle / 2)};
     OpenCvPose pose{rotationFromQuaternion(q), glm::dvec3(uniform(rng), uniform(rng), uniform(rng)) * 10.0};
     poses.push_back(pose);
-    images.push_back(colmapImageOf(pose, 100 + i, i + 1, "frames/frame_" + std::to_string(i) + ".png"));
+    images.push_back(colmapImageOf(pose, 100 + i, i + 1, "frames/frame_" + std::to_string(i) + ".png", "t"));
   }
   const std::vector<ColmapCamera> camerasBack = parseColmapCameras(colmapCamerasText(cameras), "cameras.txt");
   const std::vector<ColmapImage> imagesBack = parseColmapImages(colmapImagesText(images), "images.txt");
@@ -328,9 +328,9 @@ TEST(Rotation, QuaternionAndMatrixRoundTripAtEveryAngle) {
   std::mt19937 rng(9);
   std::normal_distribution<double> gauss;
   for (int i = 0; i < 2000; ++i) {
-    Quaternion q{gauss(rng), gauss(rng), gauss(rng), gauss(rng)};
+    glm::dquat q{gauss(rng), gauss(rng), gauss(rng), gauss(rng)};
     if (i % 4 == 0) q.w = 1e-9 * gauss(rng);  // near 180°
-    const double n = q.length();
+    const double n = glm::length(q);
     q = {q.w / n, q.x / n, q.y / n, q.z / n};
     const RotationRows r = rotationFromQuaternion(q);
     const RotationCheck check = checkRotation(r);
@@ -340,7 +340,7 @@ TEST(Rotation, QuaternionAndMatrixRoundTripAtEveryAngle) {
     const glm::dvec3 p(gauss(rng), gauss(rng), gauss(rng));
     const glm::dvec3 byQuat = rotate({q.w, q.x, q.y, q.z}, p);
     EXPECT_NEAR(glm::length(glm::dvec3(glm::dot(r[0], p), glm::dot(r[1], p), glm::dot(r[2], p)) - byQuat), 0.0, 1e-13);
-    const Quaternion back = quaternionFromRotation(r);
+    const glm::dquat back = quaternionFromRotation(r);
     const double sign = (back.w * q.w + back.x * q.x + back.y * q.y + back.z * q.z) < 0 ? -1.0 : 1.0;  // q ≡ −q
     EXPECT_NEAR(back.w, sign * q.w, 1e-12);
     EXPECT_NEAR(back.x, sign * q.x, 1e-12);

@@ -1,5 +1,6 @@
 #include "io/Progress.h"
 
+#include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
 
@@ -14,10 +15,6 @@ namespace {
 
 // A bar is redrawn at most this often: a ray cast reports every band of 16 rows.
 constexpr double kBarRedrawSeconds = 0.1;
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 std::string figures(std::int64_t done, std::int64_t total, std::string_view unit, double seconds) {
   char text[160];
@@ -56,7 +53,8 @@ std::string progressLine(std::string_view label, std::int64_t done, std::int64_t
 ProgressReporter::ProgressReporter(std::string label, std::string unit, bool quiet, double defaultIntervalSeconds)
     : ProgressReporter(std::move(label), std::move(unit),
                        quiet ? Style::Silent : isTerminal(stderr) ? Style::Bar : Style::Lines,
-                       quiet ? 0.0 : progressIntervalSeconds(defaultIntervalSeconds), std::cerr, steadySeconds) {}
+                       quiet ? 0.0 : progressIntervalSeconds(defaultIntervalSeconds), std::cerr,
+                       [start = std::chrono::steady_clock::now()] { return secondsSince(start); }) {}
 
 ProgressReporter::ProgressReporter(std::string label, std::string unit, Style style, double intervalSeconds,
                                    std::ostream& out, std::function<double()> clock)

@@ -265,11 +265,9 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);
-  cmd->add_option("--time", options->timeSeconds,
-                  "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
-                  "default: the rest pose")
-      ->check(CLI::Range(-1e9, 1e9))
-      ->type_name("SECONDS");
+  addTimeOption(*cmd, options->timeSeconds,
+                "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
+                "default: the rest pose");
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
   return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };

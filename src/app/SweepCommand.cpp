@@ -166,8 +166,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->check(CLI::IsMember(sweepSeriesNames()))
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
-  addCameraOptions(*cmd, o->camera);
-  cmd->remove_option(cmd->get_option("--animation"));
+  addCameraOptions(*cmd, o->camera, /*withPose=*/true, /*withAnimation=*/false);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
   return [cmd, o]() {

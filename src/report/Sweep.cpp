@@ -34,6 +34,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The adaptive series' aperture pattern: its rows' pattern and its images' names.
+constexpr const char* kAdaptivePattern = "sobol";
+
 // FNV-1a, 64 bits: a cache key, not a security measure.
 struct Hash {
   std::uint64_t value = 1469598103934665603ull;
@@ -249,7 +252,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     row.targetPsnr = target;
     if (!imageDir.empty()) {
       row.image = sweepImageName(row);
-      // Two rows with one name would leave fewer files than rows (and the report would lie).
+      // Two rows with one name would leave fewer files than rows (and the report would lie). Cannot
+      // happen from the command line, which refuses targets that share a name before any work.
       if (!imageNames.insert(row.image).second) throw std::logic_error(cat("sweep: two rows named ", row.image));
       writeImage(*o.outputs, imageDir / row.image, image);
     }
@@ -282,7 +286,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
         estimate = renderer.estimate();
         return frame;
       }, image);
-      record("adaptive", "sobol", static_cast<int>(std::lround(estimate.meanSamples)), seconds, image, target);
+      record("adaptive", kAdaptivePattern, static_cast<int>(std::lround(estimate.meanSamples)), seconds, image, target);
       SweepRow& row = result.rows.back();
       row.estimatePsnr = estimate.psnrDb;
       row.maxTileSamples = estimate.maxSamples;
@@ -309,6 +313,14 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
 std::string sweepImageName(const SweepRow& row) {
   if (row.method == "adaptive") return cat(row.method, "-", row.pattern, "-", row.targetPsnr, "dB.png");
   return cat(row.method, "-", row.pattern, "-", row.samples, ".png");
+}
+
+std::string sweepAdaptiveImageName(double targetPsnrDb) {
+  SweepRow row;
+  row.method = "adaptive";
+  row.pattern = kAdaptivePattern;
+  row.targetPsnr = targetPsnrDb;
+  return sweepImageName(row);
 }
 
 std::vector<std::string> sweepSeriesNames() {

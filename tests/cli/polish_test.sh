@@ -141,6 +141,13 @@ if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/o
      --width 18 --reference-spp 2 --max-views 1 --methods concentric -q 2>"$work/sq.err" && [ ! -s "$work/sq.err" ]; then pass
 else fail "sweep -q printed: $(cat "$work/sq.err")"; fi
 expect_refusal "sweep target given twice" "--target-psnr: 30 dB is given twice" -- sweep --out "$work/out.sweep" --target-psnr 30,40,30
+# Targets that differ only past the 10 digits that name their images: refused before the reference
+# is cast (its progress lines would come first at 0 s), with no folder made.
+LENSLAB_PROGRESS_SECONDS=0 expect_refusal "sweep targets that name one image" \
+  "--target-psnr: 40 and 40.00000000001 dB both name the image adaptive-sobol-40dB.png" -- \
+  sweep --out "$work/out.sweep" --width 16 --reference-spp 1 --max-views 1 --methods adaptive --target-psnr 40,40.00000000001
+if grep -q "reference" "$work/stderr"; then fail "sweep targets that name one image: refused after the reference: $(cat "$work/stderr")"
+else pass; fi
 
 # ---- B5. capture --frames A:B:STEP, with shards splitting the stepped frames ----
 rack=$src/assets/rows/rack-focus.json

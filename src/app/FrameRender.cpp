@@ -31,8 +31,8 @@ Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& p
   if (progress && plan.adaptive) progress->setUnit(kTilesAtTargetUnit);
   LensPass::TableProgress tables;
   if (progress)
-    tables = [&](const char* table, int rowsDone, int rows) {
-      progress->update(0, std::max(plan.apertureSamples, 1), cat(table, " lens table, ", rowsDone, "/", rows, " rows"));
+    tables = [&, total = Renderer::progressTotal(plan, size)](const char* table, int rowsDone, int rows) {
+      progress->update(0, total, cat(table, " lens table, ", rowsDone, "/", rows, " rows"));
     };
   renderer.begin(camera, plan, size, tables);
   std::function<void()> afterBatch;

@@ -353,6 +353,10 @@ Renderer::Progress Renderer::progress() const {
   return {done_, samplesPlanned()};
 }
 
+int Renderer::progressTotal(const FramePlan& plan, ImageSize size) {
+  return plan.adaptive ? makeTileGrid(size, plan.adaptive->tileSizePx).count() : std::max(plan.apertureSamples, 1);
+}
+
 Image Renderer::render(const Camera& camera, const FramePlan& plan, ImageSize size) {
   begin(camera, plan, size);
   complete();

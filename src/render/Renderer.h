@@ -72,6 +72,8 @@ class Renderer {
     int total = 0;
   };
   Progress progress() const;
+  // progress().total for `plan` before begin() has set it up: for the lens tables, which come first.
+  static int progressTotal(const FramePlan& plan, ImageSize size);
 
   // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
   std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);

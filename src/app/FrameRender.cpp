@@ -29,14 +29,17 @@ FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera
 Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
                     ProgressReporter* progress, bool quiet) {
   if (progress && plan.adaptive) progress->setUnit(kTilesAtTargetUnit);
+  // Nothing to report to a silent reporter (--quiet): no callbacks, so that the lens tables are
+  // built in one parallel pass rather than in slices that report between them.
+  const bool shown = progress && progress->style() != ProgressReporter::Style::Silent;
   LensPass::TableProgress tables;
-  if (progress)
+  if (shown)
     tables = [&, total = Renderer::progressTotal(plan, size)](const char* table, int rowsDone, int rows) {
       progress->update(0, total, cat(table, " lens table, ", rowsDone, "/", rows, " rows"));
     };
   renderer.begin(camera, plan, size, tables);
   std::function<void()> afterBatch;
-  if (progress)
+  if (shown)
     afterBatch = [&] {
       const Renderer::Progress p = renderer.progress();
       if (!plan.adaptive) {

@@ -96,6 +96,10 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     double writeSeconds = 0.0;
     StripImageWriter writer(outputs, out, size);
     const std::string writing = cat("writing ", out.string());
+    // None for a silent reporter (--quiet): the lens tables are then built in one parallel pass.
+    TileProgress tileProgress;
+    if (progress.style() != ProgressReporter::Style::Silent)
+      tileProgress = [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); };
     renderTiles(renderer, camera, plan, size, tiles,
                 [&](const PixelRect& rect, const Image& pixels) {
                   // A tile that completes a strip of rows writes it (seconds for a large PNG).
@@ -104,7 +108,7 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
                   writer.add(rect.x0, rect.y0, pixels);
                   writeSeconds += secondsSince(w);
                 },
-                [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); });
+                tileProgress);
     const auto w = std::chrono::steady_clock::now();
     writer.finish();
     stats.writeSeconds = writeSeconds + secondsSince(w);

@@ -102,8 +102,9 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
       tileProgress = [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); };
     renderTiles(renderer, camera, plan, size, tiles,
                 [&](const PixelRect& rect, const Image& pixels) {
-                  // A tile that completes a strip of rows writes it (seconds for a large PNG).
-                  progress.update(progress.done(), progress.total(), writing);
+                  // Said at every tile: the writer takes it, and one that completes a strip of rows
+                  // has it written now (seconds for a large PNG).
+                  progress.setDetail(writing);
                   const auto w = std::chrono::steady_clock::now();
                   writer.add(rect.x0, rect.y0, pixels);
                   writeSeconds += secondsSince(w);
@@ -203,11 +204,11 @@ int runRender(const RenderOptions& o) {
 
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
-    progress.update(progress.done(), progress.total(), cat("writing ", out.string()));
+    progress.setDetail(cat("writing ", out.string()));
     writeImage(outputs, out, *image);
     stats.writeSeconds = secondsSince(t);
   }
-  progress.update(progress.done(), progress.total());  // written: the last line says no more than the figures
+  progress.setDetail({});  // written: the last line says no more than the figures
   progress.finish();
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);

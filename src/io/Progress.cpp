@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <unistd.h>
@@ -28,9 +29,9 @@ std::string figures(std::int64_t done, std::int64_t total, std::string_view unit
   return text;
 }
 
-}  // namespace
-
 bool isTerminal(std::FILE* stream) { return ::isatty(::fileno(stream)) != 0; }
+
+}  // namespace
 
 double progressIntervalSeconds(double defaultSeconds) {
   const char* text = std::getenv("LENSLAB_PROGRESS_SECONDS");
@@ -81,7 +82,6 @@ void ProgressReporter::update(std::int64_t done, std::int64_t total, std::string
     if (done < total && wroteAny_ && now - lastLine_ < kBarRedrawSeconds) return;
     constexpr int kWidth = 30;
     const int filled = total > 0 ? static_cast<int>(std::min<std::int64_t>(done, total) * kWidth / total) : kWidth;
-    // Spaces after the figures wipe what a longer earlier line left.
     const std::string bar = cat("[", std::string(static_cast<std::size_t>(filled), '#'),
                                 std::string(static_cast<std::size_t>(kWidth - filled), ' '), "] ",
                                 figures(done, total, unit_, now - start_), detail.empty() ? "" : ", ", detail);

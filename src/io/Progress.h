@@ -10,15 +10,12 @@
 //   --quiet      nothing
 // The time to go assumes the rest take as long each as those done so far.
 #include <cstdint>
-#include <cstdio>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <string_view>
 
 namespace lenslab {
-
-bool isTerminal(std::FILE* stream);
 
 constexpr double kProgressIntervalSeconds = 5.0;
 

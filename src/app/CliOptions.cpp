@@ -63,7 +63,7 @@ void addCameraNodeOption(CLI::App& cmd, CameraOptions& o) {
       ->type_name("NAME|INDEX");
 }
 
-void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose) {
+void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose, bool withAnimation) {
   cmd.add_option("--focal-length", o.focalLengthMm,
                  "lens focal length in mm, overriding the camera's (a new focal length changes the field of view)")
       ->check(CLI::Range(0.01, 1e6))
@@ -77,6 +77,7 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose) {
     addPointOption(cmd, "--target", o.target, "look at this point (world units), overriding the camera's; a camera focused on its target stays focused on it");
   }
   addCameraNodeOption(cmd, o);
+  if (!withAnimation) return;
   cmd.add_option("--animation", o.animation,
                  "which glTF animation plays: its name, its index (as `lenslab info` lists them), or all (together); "
                  "default: the first")
@@ -90,6 +91,10 @@ void addTargetOption(CLI::App& cmd, LensOptions& o) {
                  "(--max-samples still caps each tile)")
       ->check(CLI::Range(10.0, 100.0))
       ->type_name("DB");
+}
+
+void addTimeOption(CLI::App& cmd, std::optional<double>& seconds, const std::string& description) {
+  cmd.add_option("--time", seconds, description)->check(CLI::Range(-1e9, 1e9))->type_name("SECONDS");
 }
 
 CLI::Option* addPairOption(CLI::App& cmd, const std::string& name, std::function<void(double, double)> set,

@@ -1,8 +1,8 @@
 #pragma once
 // The command-line options that render, raycast, sweep and view share, registered with CLI11:
 // aperture pattern, sample count, seed, focus (plan/UserOptions.h holds what they mean), the
-// camera's lens, pose, glTF camera and animation clip (plan/CameraOptions.h), the background
-// colour, and X,Y pairs.
+// camera's lens, pose, glTF camera and animation clip (plan/CameraOptions.h), the animations'
+// time, the background colour, and X,Y pairs.
 #include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
 
@@ -27,12 +27,17 @@ void addTargetOption(CLI::App& command, LensOptions& options);
 
 // --focal-length, --f-number, --sensor, --eye, --target, --camera-node and --animation (render,
 // raycast, view, capture): what they mean and how they compose with the camera is
-// plan/CameraOptions.h. `withPose`: --eye and --target too.
-void addCameraOptions(CLI::App& command, CameraOptions& options, bool withPose = true);
+// plan/CameraOptions.h. `withPose`: --eye and --target too; `withAnimation`: --animation too (sweep
+// draws the rest pose).
+void addCameraOptions(CLI::App& command, CameraOptions& options, bool withPose = true, bool withAnimation = true);
 // --colmap DIR --image NAME: a COLMAP photograph's camera as the base (render, raycast, view).
 void addColmapOptions(CLI::App& command, CameraOptions& options);
 // --camera-node alone (info, sweep).
 void addCameraNodeOption(CLI::App& command, CameraOptions& options);
+
+// --time SECONDS: the glTF animations' pose for one image (render, raycast, view), -1e9 to 1e9;
+// `description` is the command's help text for it.
+void addTimeOption(CLI::App& command, std::optional<double>& seconds, const std::string& description);
 
 // --background R,G,B: the colour (linear RGB, each finite, 0 to 65504) where no surface is seen.
 void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -27,40 +28,42 @@ FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera
 
 Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
                     ProgressReporter* progress, bool quiet) {
-  if (progress && plan.adaptive) progress->setUnit("tiles at the target");
+  if (progress && plan.adaptive) progress->setUnit(kTilesAtTargetUnit);
+  // Nothing to report to a silent reporter (--quiet): no callbacks, so that the lens tables are
+  // built in one parallel pass rather than in slices that report between them.
+  const bool shown = progress && progress->style() != ProgressReporter::Style::Silent;
   LensPass::TableProgress tables;
-  if (progress)
-    tables = [&](const char* table, int rowsDone, int rows) {
-      progress->update(0, std::max(plan.apertureSamples, 1), cat(table, " lens table, ", rowsDone, "/", rows, " rows"));
+  if (shown)
+    tables = [&, total = Renderer::progressTotal(plan, size)](const char* table, int rowsDone, int rows) {
+      progress->update(0, total, cat(table, " lens table, ", rowsDone, "/", rows, " rows"));
     };
   renderer.begin(camera, plan, size, tables);
-  if (plan.adaptive) {
-    while (renderer.step()) {
+  std::function<void()> afterBatch;
+  if (shown)
+    afterBatch = [&] {
+      const Renderer::Progress p = renderer.progress();
+      if (!plan.adaptive) {
+        progress->update(p.done, p.total);
+        return;
+      }
       const FrameEstimate e = renderer.estimate();
-      if (progress)
-        progress->update(e.tiles - e.tilesActive, e.tiles,
-                         cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", plan.adaptive->targetPsnrDb, " (estimate), ",
-                             std::round(e.meanSamples * 10.0) / 10.0, " samples per pixel"));
-    }
-    Image image = renderer.resolve();
-    stats.estimate = renderer.estimate();
-    if (!quiet && !stats.estimate->targetMet) {
-      const std::string warning =
-          cat("lenslab: warning: the estimate reached ", stats.estimate->psnrDb, " dB, short of --target-psnr ",
-              plan.adaptive->targetPsnrDb, ": the tiles still short of it are at the cap of ", plan.adaptive->maxSamples,
-              " samples (--max-samples, an even count for the two streams)");
-      if (progress) progress->note(warning);  // below the bar, not through it
-      else std::cerr << warning << "\n";
-    }
-    return image;
+      progress->update(p.done, p.total,
+                       cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", plan.adaptive->targetPsnrDb, " (estimate), ",
+                           std::round(e.meanSamples * 10.0) / 10.0, " samples per pixel"));
+    };
+  renderer.complete(afterBatch);
+  Image image = renderer.resolve();
+  if (!plan.adaptive) return image;
+  stats.estimate = renderer.estimate();
+  if (!quiet && !stats.estimate->targetMet) {
+    const std::string warning =
+        cat("lenslab: warning: the estimate reached ", stats.estimate->psnrDb, " dB, short of --target-psnr ",
+            plan.adaptive->targetPsnrDb, ": the tiles still short of it are at the cap of ", plan.adaptive->maxSamples,
+            " samples (--max-samples, an even count for the two streams)");
+    if (progress) progress->note(warning);  // below the bar, not through it
+    else std::cerr << warning << "\n";
   }
-  // Samples in batches, so that long renders report progress.
-  const int batch = std::max(1, plan.apertureSamples / 50);
-  while (renderer.samplesDone() < renderer.samplesPlanned()) {
-    renderer.addSamples(batch);
-    if (progress) progress->update(renderer.samplesDone(), renderer.samplesPlanned());
-  }
-  return renderer.resolve();
+  return image;
 }
 
 }  // namespace lenslab

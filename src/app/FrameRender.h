@@ -22,8 +22,9 @@ FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera
                     const PlanOptions& options, RunStats& stats);
 
 // Renders `plan` (not tiled): its fixed count in batches, or per-tile rounds to the target error.
-// Progress to `progress` when given (the lens tables, then samples; tiles at the target with a
-// target error; the caller finishes it); the warning that a target was not met unless `quiet`.
+// Progress to `progress` when given and not silent (the lens tables, then samples; tiles at the
+// target with a target error; the caller finishes it); the warning that a target was not met
+// unless `quiet`.
 // Sets stats.estimate (with a target).
 Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
                     ProgressReporter* progress, bool quiet);

@@ -96,15 +96,20 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     double writeSeconds = 0.0;
     StripImageWriter writer(outputs, out, size);
     const std::string writing = cat("writing ", out.string());
+    // None for a silent reporter (--quiet): the lens tables are then built in one parallel pass.
+    TileProgress tileProgress;
+    if (progress.style() != ProgressReporter::Style::Silent)
+      tileProgress = [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); };
     renderTiles(renderer, camera, plan, size, tiles,
                 [&](const PixelRect& rect, const Image& pixels) {
-                  // A tile that completes a strip of rows writes it (seconds for a large PNG).
-                  progress.update(progress.done(), progress.total(), writing);
+                  // Said at every tile: the writer takes it, and one that completes a strip of rows
+                  // has it written now (seconds for a large PNG).
+                  progress.setDetail(writing);
                   const auto w = std::chrono::steady_clock::now();
                   writer.add(rect.x0, rect.y0, pixels);
                   writeSeconds += secondsSince(w);
                 },
-                [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); });
+                tileProgress);
     const auto w = std::chrono::steady_clock::now();
     writer.finish();
     stats.writeSeconds = writeSeconds + secondsSince(w);
@@ -199,11 +204,11 @@ int runRender(const RenderOptions& o) {
 
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
-    progress.update(progress.done(), progress.total(), cat("writing ", out.string()));
+    progress.setDetail(cat("writing ", out.string()));
     writeImage(outputs, out, *image);
     stats.writeSeconds = secondsSince(t);
   }
-  progress.update(progress.done(), progress.total());  // written: the last line says no more than the figures
+  progress.setDetail({});  // written: the last line says no more than the figures
   progress.finish();
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
@@ -265,11 +270,9 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);
-  cmd->add_option("--time", options->timeSeconds,
-                  "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
-                  "default: the rest pose")
-      ->check(CLI::Range(-1e9, 1e9))
-      ->type_name("SECONDS");
+  addTimeOption(*cmd, options->timeSeconds,
+                "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
+                "default: the rest pose");
   cmd->add_option("--stats", options->statsFile, "write what the run did (plan, timings, renderer) as JSON");
   cmd->add_flag("--quiet,-q", options->quiet, "print nothing on success");
   return [cmd, options]() { return cmd->parsed() ? runRender(*options) : -1; };

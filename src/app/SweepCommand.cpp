@@ -18,6 +18,7 @@
 #include "scene/GltfLoader.h"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -44,12 +45,26 @@ struct SweepCommandOptions {
   bool quiet = false;
 };
 
+// The shortest text that reads back as `v` (40.00000000001, where cat writes 40).
+std::string shortestText(double v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+  return std::string(text, end);
+}
+
 int runSweepCommand(SweepCommandOptions& o) {
-  // Each adaptive image is named by its target: a target given twice would overwrite one.
-  for (std::size_t i = 0; i < o.sweep.targetsDb.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (o.sweep.targetsDb[i] == o.sweep.targetsDb[j])
-        throw InputError(cat("--target-psnr: ", o.sweep.targetsDb[i], " dB is given twice; give each target once"));
+  // Each adaptive image is named by its target, to 10 significant digits: two targets with one
+  // name would overwrite one image, found only after the reference and the rows before it.
+  std::map<std::string, double> targetNamed;
+  for (const double target : o.sweep.targetsDb) {
+    const auto [named, added] = targetNamed.emplace(sweepAdaptiveImageName(target), target);
+    if (added) continue;
+    if (named->second == target)
+      throw InputError(cat("--target-psnr: ", target, " dB is given twice; give each target once"));
+    throw InputError(cat("--target-psnr: ", shortestText(named->second), " and ", shortestText(target),
+                         " dB both name the image ", named->first,
+                         " (targets name their images to 10 significant digits); give targets that differ within them"));
+  }
   const auto [scenePath, cameraPath] =
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera-dof.json");
   Scene scene = loadGltf(scenePath);
@@ -166,8 +181,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->check(CLI::IsMember(sweepSeriesNames()))
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
-  addCameraOptions(*cmd, o->camera);
-  cmd->remove_option(cmd->get_option("--animation"));
+  addCameraOptions(*cmd, o->camera, /*withPose=*/true, /*withAnimation=*/false);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
   return [cmd, o]() {

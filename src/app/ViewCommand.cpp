@@ -23,10 +23,8 @@ std::function<int()> addViewCommand(CLI::App& app) {
   addFocusOptions(*cmd, o->lens);
   addTargetOption(*cmd, o->lens);
   addCameraOptions(*cmd, o->camera);
-  cmd->add_option("--time", o->timeSeconds,
-                  "pose the scene's glTF animation at this time (seconds), as render --time does; default: the rest pose")
-      ->check(CLI::Range(-1e9, 1e9))
-      ->type_name("SECONDS");
+  addTimeOption(*cmd, o->timeSeconds,
+                "pose the scene's glTF animation at this time (seconds), as render --time does; default: the rest pose");
   addBackgroundOption(*cmd, o->background);
   cmd->add_option("--frames", o->frames,
                   "scripted: run at least N frames (and on until the accumulation is complete), write --screenshot, exit");

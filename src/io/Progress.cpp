@@ -1,10 +1,12 @@
 #include "io/Progress.h"
 
+#include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <unistd.h>
@@ -14,10 +16,6 @@ namespace {
 
 // A bar is redrawn at most this often: a ray cast reports every band of 16 rows.
 constexpr double kBarRedrawSeconds = 0.1;
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 std::string figures(std::int64_t done, std::int64_t total, std::string_view unit, double seconds) {
   char text[160];
@@ -31,9 +29,9 @@ std::string figures(std::int64_t done, std::int64_t total, std::string_view unit
   return text;
 }
 
-}  // namespace
-
 bool isTerminal(std::FILE* stream) { return ::isatty(::fileno(stream)) != 0; }
+
+}  // namespace
 
 double progressIntervalSeconds(double defaultSeconds) {
   const char* text = std::getenv("LENSLAB_PROGRESS_SECONDS");
@@ -56,7 +54,8 @@ std::string progressLine(std::string_view label, std::int64_t done, std::int64_t
 ProgressReporter::ProgressReporter(std::string label, std::string unit, bool quiet, double defaultIntervalSeconds)
     : ProgressReporter(std::move(label), std::move(unit),
                        quiet ? Style::Silent : isTerminal(stderr) ? Style::Bar : Style::Lines,
-                       quiet ? 0.0 : progressIntervalSeconds(defaultIntervalSeconds), std::cerr, steadySeconds) {}
+                       quiet ? 0.0 : progressIntervalSeconds(defaultIntervalSeconds), std::cerr,
+                       [start = std::chrono::steady_clock::now()] { return secondsSince(start); }) {}
 
 ProgressReporter::ProgressReporter(std::string label, std::string unit, Style style, double intervalSeconds,
                                    std::ostream& out, std::function<double()> clock)
@@ -83,7 +82,6 @@ void ProgressReporter::update(std::int64_t done, std::int64_t total, std::string
     if (done < total && wroteAny_ && now - lastLine_ < kBarRedrawSeconds) return;
     constexpr int kWidth = 30;
     const int filled = total > 0 ? static_cast<int>(std::min<std::int64_t>(done, total) * kWidth / total) : kWidth;
-    // Spaces after the figures wipe what a longer earlier line left.
     const std::string bar = cat("[", std::string(static_cast<std::size_t>(filled), '#'),
                                 std::string(static_cast<std::size_t>(kWidth - filled), ' '), "] ",
                                 figures(done, total, unit_, now - start_), detail.empty() ? "" : ", ", detail);

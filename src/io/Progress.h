@@ -10,15 +10,12 @@
 //   --quiet      nothing
 // The time to go assumes the rest take as long each as those done so far.
 #include <cstdint>
-#include <cstdio>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <string_view>
 
 namespace lenslab {
-
-bool isTerminal(std::FILE* stream);
 
 constexpr double kProgressIntervalSeconds = 5.0;
 
@@ -51,6 +48,8 @@ class ProgressReporter {
   // In Lines style the line for done = total is left to finish(), which knows the whole time
   // (work after the last unit, such as writing the file, included).
   void update(std::int64_t done, std::int64_t total, std::string_view detail = {});
+  // The same figures with another note (empty: none), e.g. while the file is written.
+  void setDetail(std::string_view detail) { update(done_, total_, detail); }
   // A line of its own (a warning, a phase that ended) that leaves the bar whole: on a terminal
   // it takes the bar's place and the bar is drawn again below it at the next update. Written in
   // every style, Silent included: the caller decides what --quiet hides.

@@ -332,14 +332,34 @@ Image Renderer::resolve() {
   return out.readColor();
 }
 
+void Renderer::complete(const std::function<void()>& afterBatch) {
+  if (adaptive_) {
+    while (step())
+      if (afterBatch) afterBatch();
+    return;
+  }
+  const int batch = std::max(1, plan_.apertureSamples / 50);
+  while (done_ < samplesPlanned()) {
+    addSamples(batch);
+    if (afterBatch) afterBatch();
+  }
+}
+
+Renderer::Progress Renderer::progress() const {
+  if (adaptive_) {
+    const FrameEstimate e = estimate();
+    return {e.tiles - e.tilesActive, e.tiles};
+  }
+  return {done_, samplesPlanned()};
+}
+
+int Renderer::progressTotal(const FramePlan& plan, ImageSize size) {
+  return plan.adaptive ? makeTileGrid(size, plan.adaptive->tileSizePx).count() : std::max(plan.apertureSamples, 1);
+}
+
 Image Renderer::render(const Camera& camera, const FramePlan& plan, ImageSize size) {
   begin(camera, plan, size);
-  if (adaptive_) {
-    while (step()) {
-    }
-  } else {
-    addSamples(samplesPlanned());
-  }
+  complete();
   return resolve();
 }
 

@@ -21,22 +21,32 @@
 #include "render/ScenePass.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
 namespace lenslab {
+
+// The unit progress counts a frame with per-tile budgets in (Renderer::progress).
+inline constexpr const char* kTilesAtTargetUnit = "tiles at the target";
 
 class Renderer {
  public:
   // Uploads the scene and builds the programs; `scene` must outlive the renderer.
   explicit Renderer(const Scene& scene);
 
-  // The whole frame; waits for the GPU (glFinish), so wall time around it is honest.
+  // The whole frame (begin, complete, resolve); waits for the GPU (glFinish), so wall time around
+  // it is honest.
   Image render(const Camera& camera, const FramePlan& plan, ImageSize size);
 
-  // The same in steps, for progressive rendering: begin, then addSamples until done, resolve.
+  // The same in steps, for progressive rendering: begin, then addSamples until done (or
+  // complete), resolve.
   // `tables`: progress while the lens pass builds its tables (LensPass::prepare).
   void begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables = {});
+  // The rest of the frame begun: per-tile rounds (step) until it is done, or the planned samples in
+  // batches of about a fiftieth of them, so that a long frame can report as it goes; `afterBatch`
+  // after each round or batch. The image does not depend on the batches.
+  void complete(const std::function<void()>& afterBatch = {});
   int addSamples(int count);  // returns how many were added (stops at the plan's count)
   int samplesDone() const { return done_; }
   int samplesPlanned() const { return static_cast<int>(samples_.size()); }
@@ -55,6 +65,15 @@ class Renderer {
   bool adaptive() const { return adaptive_; }
   // Whether the frame is complete: every planned sample added, or (per-tile) step() has ended it.
   bool done() const { return adaptive_ ? finished_ : done_ >= samplesPlanned(); }
+  // How far the frame is, as progress reports say it: with per-tile budgets the tiles at the
+  // target of all the tiles (kTilesAtTargetUnit), else the samples added of those planned.
+  struct Progress {
+    int done = 0;
+    int total = 0;
+  };
+  Progress progress() const;
+  // progress().total for `plan` before begin() has set it up: for the lens tables, which come first.
+  static int progressTotal(const FramePlan& plan, ImageSize size);
 
   // Reverse-Z depth (z_ndc) of a pinhole view, rows from the top: for focusing on a pixel.
   std::vector<float> pinholeDepth(const Camera& camera, ImageSize size);

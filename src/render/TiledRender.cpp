@@ -39,28 +39,23 @@ void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan
                  const TileSink& sink, const TileProgress& progress) {
   const std::int64_t count = static_cast<std::int64_t>(tiles.tiles.size());
   const std::int64_t perTile = plan.adaptive ? 1 : std::max(plan.apertureSamples, 1);
-  // Samples in batches, so that progress moves within a tile too (a large tile with many samples
-  // takes minutes on a CPU renderer).
-  const int batch = std::max(1, plan.apertureSamples / 50);
   for (std::int64_t i = 0; i < count; ++i) {
     const Tile& tile = tiles.tiles[static_cast<std::size_t>(i)];
     const TileView view = tileView(camera, size, plan, tile);
-    if (plan.adaptive) {
-      sink(tile.rect, cropped(renderer.render(view.camera, view.plan, view.size), view.crop));
-      if (progress) progress(i + 1, count, {});
-    } else {
-      LensPass::TableProgress tables;
-      if (progress)
-        tables = [&](const char* table, int rowsDone, int rows) {
-          progress(i * perTile, count * perTile, cat("tile ", i + 1, " of ", count, ": ", table, " lens table, ", rowsDone, "/", rows, " rows"));
-        };
-      renderer.begin(view.camera, view.plan, view.size, tables);
-      while (renderer.samplesDone() < renderer.samplesPlanned()) {
-        renderer.addSamples(batch);
-        if (progress) progress(i * perTile + renderer.samplesDone(), count * perTile, {});
-      }
-      sink(tile.rect, cropped(renderer.resolve(), view.crop));
+    // Progress within a tile too (a large tile with many samples takes minutes on a CPU renderer):
+    // its lens tables, then its samples batch by batch; a tile to a target error counts when done.
+    LensPass::TableProgress tables;
+    std::function<void()> afterBatch;
+    if (progress && !plan.adaptive) {
+      tables = [&](const char* table, int rowsDone, int rows) {
+        progress(i * perTile, count * perTile, cat("tile ", i + 1, " of ", count, ": ", table, " lens table, ", rowsDone, "/", rows, " rows"));
+      };
+      afterBatch = [&] { progress(i * perTile + renderer.samplesDone(), count * perTile, {}); };
     }
+    renderer.begin(view.camera, view.plan, view.size, tables);
+    renderer.complete(afterBatch);
+    sink(tile.rect, cropped(renderer.resolve(), view.crop));
+    if (progress && plan.adaptive) progress(i + 1, count, {});
   }
 }
 

@@ -34,6 +34,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The adaptive series' aperture pattern: its rows' pattern and its images' names.
+constexpr const char* kAdaptivePattern = "sobol";
+
 // FNV-1a, 64 bits: a cache key, not a security measure.
 struct Hash {
   std::uint64_t value = 1469598103934665603ull;
@@ -221,17 +224,19 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   const auto wanted = [&](const std::string& series) {
     return std::find(o.series.begin(), o.series.end(), series) != o.series.end();
   };
-  // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
-  // exact distorted reference would measure the missing distortion, not the method.
-  const std::vector<int> gatherTaps = camera.effects.isZero() && wanted("postprocess") ? o.gatherTaps : std::vector<int>{};
-  std::int64_t imagesPlanned = static_cast<std::int64_t>(gatherTaps.size());
-  for (const std::string& series : sweepSeriesNames()) {
-    if (!wanted(series)) continue;
-    if (series == "lecture17") imagesPlanned += 1;
-    else if (series == "adaptive") imagesPlanned += static_cast<std::int64_t>(o.targetsDb.size());
-    else if (series == "raycast") imagesPlanned += static_cast<std::int64_t>(doublings(o.maxSpp).size());
-    else if (series != "postprocess") imagesPlanned += static_cast<std::int64_t>(doublings(o.maxViews).size());
-  }
+  // Each series' budgets, an image each: views (lecture17 its own 17), spp or taps; none when it does
+  // not run. The adaptive series runs to its targets instead (counted apart).
+  const auto budgetsOf = [&](const std::string& series) -> std::vector<int> {
+    if (!wanted(series) || series == "adaptive") return {};
+    if (series == "lecture17") return {17};
+    if (series == "raycast") return doublings(o.maxSpp);
+    // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
+    // exact distorted reference would measure the missing distortion, not the method.
+    if (series == "postprocess") return camera.effects.isZero() ? o.gatherTaps : std::vector<int>{};
+    return doublings(o.maxViews);
+  };
+  std::int64_t imagesPlanned = wanted("adaptive") ? static_cast<std::int64_t>(o.targetsDb.size()) : 0;
+  for (const std::string& series : sweepSeriesNames()) imagesPlanned += static_cast<std::int64_t>(budgetsOf(series).size());
   std::set<std::string> imageNames;
   // `target`: the adaptive row's target PSNR (its image's name), 0 for the others.
   auto record = [&](const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image,
@@ -249,7 +254,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     row.targetPsnr = target;
     if (!imageDir.empty()) {
       row.image = sweepImageName(row);
-      // Two rows with one name would leave fewer files than rows (and the report would lie).
+      // Two rows with one name would leave fewer files than rows (and the report would lie). Cannot
+      // happen from the command line, which refuses targets that share a name before any work.
       if (!imageNames.insert(row.image).second) throw std::logic_error(cat("sweep: two rows named ", row.image));
       writeImage(*o.outputs, imageDir / row.image, image);
     }
@@ -259,8 +265,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random,
                                   AperturePattern::Sobol}) {
     if (!wanted(patternName(pattern))) continue;
-    const std::vector<int> budgets = pattern == AperturePattern::Lecture17 ? std::vector<int>{17} : doublings(o.maxViews);
-    for (int n : budgets) {
+    for (int n : budgetsOf(patternName(pattern))) {
       const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{pattern, n, n, o.seed});
       Image image;
       const double seconds = medianOf3([&] { return renderer.render(camera, plan, size); }, image);
@@ -282,7 +287,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
         estimate = renderer.estimate();
         return frame;
       }, image);
-      record("adaptive", "sobol", static_cast<int>(std::lround(estimate.meanSamples)), seconds, image, target);
+      record("adaptive", kAdaptivePattern, static_cast<int>(std::lround(estimate.meanSamples)), seconds, image, target);
       SweepRow& row = result.rows.back();
       row.estimatePsnr = estimate.psnrDb;
       row.maxTileSamples = estimate.maxSamples;
@@ -290,12 +295,13 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     }
     say(o, "adaptive: done");
   }
-  for (int spp : wanted("raycast") ? doublings(o.maxSpp) : std::vector<int>{}) {
+  for (int spp : budgetsOf("raycast")) {
     const auto t = std::chrono::steady_clock::now();
     const Image image = caster.render(camera, size, RaycastOptions{spp, o.seed});
     record("raycast", "stratified", spp, secondsSince(t), image);
   }
   if (wanted("raycast")) say(o, "raycast: done");
+  const std::vector<int> gatherTaps = budgetsOf("postprocess");
   if (gatherTaps.empty() && !o.gatherTaps.empty() && wanted("postprocess")) say(o, "postprocess gather: left out (it has no lens effects)");
   for (int taps : gatherTaps) {
     Image image;
@@ -309,6 +315,14 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
 std::string sweepImageName(const SweepRow& row) {
   if (row.method == "adaptive") return cat(row.method, "-", row.pattern, "-", row.targetPsnr, "dB.png");
   return cat(row.method, "-", row.pattern, "-", row.samples, ".png");
+}
+
+std::string sweepAdaptiveImageName(double targetPsnrDb) {
+  SweepRow row;
+  row.method = "adaptive";
+  row.pattern = kAdaptivePattern;
+  row.targetPsnr = targetPsnrDb;
+  return sweepImageName(row);
 }
 
 std::vector<std::string> sweepSeriesNames() {

@@ -68,6 +68,10 @@ struct SweepRow {
 // for adaptive the target ("adaptive-sobol-40dB.png"), since two targets can end at the same
 // mean sample count.
 std::string sweepImageName(const SweepRow& row);
+// The name sweepImageName gives the adaptive series' image for a target ("adaptive-sobol-40dB.png").
+// Targets are told apart to 10 significant digits, so that a caller can refuse two that share a
+// name before any work.
+std::string sweepAdaptiveImageName(double targetPsnrDb);
 
 struct SweepResult {
   std::vector<SweepRow> rows;

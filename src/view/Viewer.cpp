@@ -325,13 +325,9 @@ int Viewer::run() {
     if (scripted()) {
       // A long scripted run (thousands of samples on a CPU renderer) says how far it is in a log.
       if (!progress_) progress_ = std::make_unique<ProgressReporter>("view", "samples", false);
-      if (renderer_.adaptive()) {
-        const FrameEstimate e = renderer_.estimate();
-        progress_->setUnit("tiles at the target");
-        progress_->update(e.tiles - e.tilesActive, e.tiles);
-      } else {
-        progress_->update(renderer_.samplesDone(), renderer_.samplesPlanned());
-      }
+      if (renderer_.adaptive()) progress_->setUnit(kTilesAtTargetUnit);
+      const Renderer::Progress p = renderer_.progress();
+      progress_->update(p.done, p.total);
     }
     if (scripted() && frames_ >= options_.frames && renderer_.done()) {
       finishScripted();

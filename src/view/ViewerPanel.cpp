@@ -34,9 +34,22 @@ bool labelled(PanelFit& fit, const char* label, Widget widget) {
   ImGui::TextUnformatted(label);
   fit.check(label);
   ImGui::SetNextItemWidth(-FLT_MIN);
-  const bool changed = widget(("##" + std::string(label)).c_str());
+  ImGui::PushID(label);  // the widget's id: the label's, without its text
+  const bool changed = widget("##v");
+  ImGui::PopID();
   fit.check(label);
   return changed;
+}
+// A checkbox or a button: its label is its text and its id.
+bool checkbox(PanelFit& fit, const char* label, bool* value) {
+  const bool changed = ImGui::Checkbox(label, value);
+  fit.check(label);
+  return changed;
+}
+bool button(PanelFit& fit, const char* label) {
+  const bool pressed = ImGui::Button(label);
+  fit.check(label);
+  return pressed;
 }
 // Numbers in fields, each checked to show whole in its field.
 bool dragDoubles(PanelFit& fit, const char* label, double* v, int n, float speed, const char* format = "%.4g") {
@@ -141,11 +154,10 @@ void Viewer::sectionLecture() {
   changed |= dragDoubles(fit_, "window", &s.window.umin, 4, step);
   changed |= dragDouble(fit_, "near", s.nearDistance, step * 0.1f, 0.0, 1e9);
   bool farInfinite = std::isinf(s.farDistance);
-  if (ImGui::Checkbox("far at infinity", &farInfinite)) {
+  if (checkbox(fit_, "far at infinity", &farInfinite)) {
     s.farDistance = farInfinite ? std::numeric_limits<double>::infinity() : 1000.0 * s.prp.z;
     changed = true;
   }
-  fit_.check("far at infinity");
   if (!farInfinite) changed |= dragDouble(fit_, "far", s.farDistance, step * 10.0f, 0.0, 1e12);
   changed |= dragDouble(fit_, "aperture radius", c.apertureRadius, step * 0.01f, 0.0, 1e6);
   if (changed) model_.editLecture(c);  // checked at the restart: an invalid camera is rolled back
@@ -179,8 +191,7 @@ void Viewer::sectionPhysical() {
       wrapped("(A physical lens needs a perspective projection with the PRP over the window centre.)");
       return;
     }
-    if (ImGui::Button("Describe it as a lens (35 mm)")) model_.describeAsLens();
-    fit_.check("Describe it as a lens (35 mm)");
+    if (button(fit_, "Describe it as a lens (35 mm)")) model_.describeAsLens();
     return;
   }
   PhysicalCamera p = *model_.camera().physical;
@@ -192,18 +203,16 @@ void Viewer::sectionPhysical() {
   changed |= dragDouble(fit_, "focal length (mm)", p.focalLengthMm, 0.2f, 1.0, 2000.0);
   changed |= dragDoubles(fit_, "sensor (mm)", &p.sensorMm.x, 2, 0.1f);
   bool pinhole = std::isinf(p.fNumber);
-  if (ImGui::Checkbox("pinhole (no aperture)", &pinhole)) {
+  if (checkbox(fit_, "pinhole (no aperture)", &pinhole)) {
     p.fNumber = pinhole ? std::numeric_limits<double>::infinity() : 2.8;
     changed = true;
   }
-  fit_.check("pinhole (no aperture)");
   if (!pinhole) changed |= dragDouble(fit_, "f-number", p.fNumber, 0.02f, 0.5, 64.0, "f/%.2f");
   bool infinityFocus = std::isinf(p.focusDistance);
-  if (ImGui::Checkbox("focus at infinity", &infinityFocus)) {
+  if (checkbox(fit_, "focus at infinity", &infinityFocus)) {
     p.focusDistance = infinityFocus ? std::numeric_limits<double>::infinity() : glm::length(p.target - p.eye);
     changed = true;
   }
-  fit_.check("focus at infinity");
   if (!infinityFocus) changed |= dragDouble(fit_, "focus distance (m)", p.focusDistance, step, 1e-3, 1e9);
   if (changed) model_.editPhysical(p);
 }
@@ -226,17 +235,16 @@ void Viewer::sectionSamples() {
     changed = true;
   }
   bool automatic = o.apertureSamples == 0;
-  if (ImGui::Checkbox("auto sample count", &automatic)) {
+  if (checkbox(fit_, "auto sample count", &automatic)) {
     o.apertureSamples = automatic ? 0 : std::max(plan.apertureSamples, 1);
     changed = true;
   }
-  fit_.check("auto sample count");
   int& count = automatic ? o.maxSamples : o.apertureSamples;
   changed |= labelled(fit_, automatic ? "max samples" : "samples", [&](const char* id) {
     return ImGui::SliderInt(id, &count, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
   });
   bool target = o.targetPsnrDb.has_value();
-  if (ImGui::Checkbox("to a target PSNR", &target)) {
+  if (checkbox(fit_, "to a target PSNR", &target)) {
     o.targetPsnrDb = target ? std::optional<double>(40.0) : std::nullopt;
     if (target) {
       o.pattern = AperturePattern::Sobol;
@@ -244,7 +252,6 @@ void Viewer::sectionSamples() {
     }
     changed = true;
   }
-  fit_.check("to a target PSNR");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("per-tile budgets: each tile gets samples until its estimate reaches the target");
   if (o.targetPsnrDb) {
     float db = static_cast<float>(*o.targetPsnrDb);
@@ -306,11 +313,10 @@ void Viewer::sectionLensEffects() {
     wrapped(cat("centre in focus at ", number(distance(focus)), ", corners at ",
                 number(distance(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner))));
   }
-  if (ImGui::Button("no lens effects")) {
+  if (button(fit_, "no lens effects")) {
     e = LensEffects{};
     changed = true;
   }
-  fit_.check("no lens effects");
   if (changed) model_.editLensEffects(e);  // checked here: an invalid lens is reported and not taken
   std::string passes;
   for (const PlannedPass& pass : model_.plan().passes) {
@@ -323,20 +329,17 @@ void Viewer::sectionLensEffects() {
 
 void Viewer::sectionCompare() {
   if (!header(fit_, "Compare and outside view", openFlags(true))) return;
-  if (ImGui::Checkbox("post-process gather baseline", &showBaseline_)) baselineValid_ = false;
-  fit_.check("post-process gather baseline");
+  if (checkbox(fit_, "post-process gather baseline", &showBaseline_)) baselineValid_ = false;
   if (showBaseline_) {
     if (labelled(fit_, "gather taps", [&](const char* id) { return ImGui::SliderInt(id, &baselineTaps_, 8, 128); }))
       baselineValid_ = false;
   }
-  if (ImGui::Checkbox("outside view (the diagram)", &showOutside_)) outsideDirty_ = true;
-  fit_.check("outside view (the diagram)");
+  if (checkbox(fit_, "outside view (the diagram)", &showOutside_)) outsideDirty_ = true;
   if (showOutside_) {
     wrapped("The lecture's diagram. Yellow: PRP. White: window on the view plane (plane of focus). Grey: view volume. "
             "Cyan: aperture; orange: samples done. Red: rays through the window centre.");
     bool enlarge = model_.enlargeAperture();
-    if (ImGui::Checkbox("enlarge the aperture", &enlarge)) model_.setEnlargeAperture(enlarge);
-    fit_.check("enlarge the aperture");
+    if (checkbox(fit_, "enlarge the aperture", &enlarge)) model_.setEnlargeAperture(enlarge);
     const Camera& c = model_.camera().camera;
     if (enlarge && !c.isPinhole())
       wrapped(cat("aperture drawn x", std::round(model_.diagramApertureScale()), " (radius ", number(c.apertureRadius), ")"));
@@ -346,15 +349,13 @@ void Viewer::sectionCompare() {
 void Viewer::sectionFiles() {
   if (!header(fit_, "Save", openFlags(true))) return;
   // Each path field leaves room on its line for its button.
-  const auto pathAndButton = [this](const char* id, std::array<char, 512>& path, const char* button) {
+  const auto pathAndButton = [this](const char* id, std::array<char, 512>& path, const char* label) {
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float buttonWidth = ImGui::CalcTextSize(button).x + 2.0f * style.FramePadding.x;
+    const float buttonWidth = ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x;
     ImGui::SetNextItemWidth(std::max(1.0f, ImGui::GetContentRegionAvail().x - buttonWidth - style.ItemSpacing.x));
     ImGui::InputText(id, path.data(), path.size());
     ImGui::SameLine();
-    const bool pressed = ImGui::Button(button);
-    fit_.check(button);
-    return pressed;
+    return button(fit_, label);
   };
   if (pathAndButton("##camera", cameraPath_, "Save camera")) {
     try {

@@ -141,6 +141,13 @@ if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/o
      --width 18 --reference-spp 2 --max-views 1 --methods concentric -q 2>"$work/sq.err" && [ ! -s "$work/sq.err" ]; then pass
 else fail "sweep -q printed: $(cat "$work/sq.err")"; fi
 expect_refusal "sweep target given twice" "--target-psnr: 30 dB is given twice" -- sweep --out "$work/out.sweep" --target-psnr 30,40,30
+# Targets that differ only past the 10 digits that name their images: refused before the reference
+# is cast (its progress lines would come first at 0 s), with no folder made.
+LENSLAB_PROGRESS_SECONDS=0 expect_refusal "sweep targets that name one image" \
+  "--target-psnr: 40 and 40.00000000001 dB both name the image adaptive-sobol-40dB.png" -- \
+  sweep --out "$work/out.sweep" --width 16 --reference-spp 1 --max-views 1 --methods adaptive --target-psnr 40,40.00000000001
+if grep -q "reference" "$work/stderr"; then fail "sweep targets that name one image: refused after the reference: $(cat "$work/stderr")"
+else pass; fi
 
 # ---- B5. capture --frames A:B:STEP, with shards splitting the stepped frames ----
 rack=$src/assets/rows/rack-focus.json
@@ -158,8 +165,9 @@ expect_refusal "a step that is not a number" "--frames 0:72:two: the step" -- ca
 # ---- B8. pixels that are not square: one warning line with the nearest sizes that keep them square ----
 square_hint="320x213 makes pixels 0.16 % taller than wide (the window is 1.5:1); --width 318 (212 high) or --width 321 (214 high) keeps them square"
 for cmd in render raycast; do
-  if "$lenslab" $cmd --width 320 --spp 1 --out "$work/sq-$cmd.png" 2>"$work/sq.err" ||
-     "$lenslab" $cmd --width 320 --out "$work/sq-$cmd.png" 2>"$work/sq.err"; then
+  opts=(--width 320)
+  [ "$cmd" = raycast ] && opts+=(--spp 1)  # one sample per pixel for the ray caster; render takes no --spp
+  if "$lenslab" $cmd "${opts[@]}" --out "$work/sq-$cmd.png" 2>"$work/sq.err"; then
     if [ "$(grep -c '^lenslab: warning: ' "$work/sq.err")" -eq 1 ] && grep -qF "lenslab: warning: $square_hint" "$work/sq.err"; then pass
     else fail "$cmd --width 320: $(cat "$work/sq.err")"; fi
   else

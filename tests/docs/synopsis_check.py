@@ -23,16 +23,22 @@ def run_help(lenslab, *args):
     return out
 
 
-def help_options(text):
-    """Options of one --help text: {name: required}, with short and long names."""
-    options = {}
-    section = None
+def sections(text):
+    """The lines of a --help text under each heading ("Options:", "Subcommands:"): {heading: [lines]}."""
+    found, section = {}, None
     for line in text.splitlines():
         if re.match(r"^\S.*:$", line):
             section = line[:-1]
-            continue
-        if section != "Options":
-            continue
+            found.setdefault(section, [])
+        elif section is not None:
+            found[section].append(line)
+    return found
+
+
+def help_options(text):
+    """Options of one --help text: {name: required}, with short and long names."""
+    options = {}
+    for line in sections(text).get("Options", []):
         m = re.match(r"^  (\S+)", line)
         if not m or not m.group(1).startswith("-"):
             continue
@@ -44,13 +50,10 @@ def help_options(text):
 
 
 def help_subcommands(text):
-    subs, section = [], None
-    for line in text.splitlines():
-        if re.match(r"^\S.*:$", line):
-            section = line[:-1]
-            continue
+    subs = []
+    for line in sections(text).get("Subcommands", []):
         m = re.match(r"^  (\w+)\s", line)
-        if section == "Subcommands" and m:
+        if m:
             subs.append(m.group(1))
     return subs
 
@@ -102,8 +105,8 @@ def bracket_depths(text):
         elif c == "]":
             depth -= 1
         else:
-            m = OPTION.match(text, i)
-            if m and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] in "-_")):
+            m = OPTION.match(text, i)  # its lookbehind sees text[i - 1]: no match inside a word
+            if m:
                 found.append((m.group(1), depth > 0))
                 i = m.end()
                 continue
@@ -119,8 +122,10 @@ def main():
     problems = []
     top = run_help(lenslab)
     commands = help_subcommands(top)
+    # The line "lenslab --help | --version" (the entry named "").
+    top_options = {n for n, _ in bracket_depths(entries.get("", ""))}
     for name in ("--help", "--version"):
-        if name not in entries.get("", "") and name not in " ".join(entries.values()):
+        if name not in top_options:
             problems.append(f"the synopsis has no 'lenslab {name}' line")
     for command in commands:
         if command not in entries:

@@ -44,13 +44,9 @@ PhysicalCamera applyTo(PhysicalCamera p, const CameraOptions& o) {
 }
 
 // The physical description converted, keeping what the base camera had beyond it (lens effects,
-// calibrated image size, near/far left to the scene).
+// calibrated image size, near/far left to the scene), and its view checked as a camera file's is.
 SelectedCamera physicalCamera(const PhysicalCamera& p, const Camera& like, const std::string& source) {
-  SelectedCamera out{toCamera(p, source), p};
-  out.camera.effects = like.effects;
-  out.camera.calibratedSize = like.calibratedSize;
-  out.camera.nearFromScene = like.nearFromScene;
-  out.camera.farFromScene = like.farFromScene;
+  SelectedCamera out = toSelectedCamera(p, like, source);
   validate(out.camera.view, source);
   return out;
 }

@@ -191,15 +191,19 @@ std::string CameraOptions::describe() const {
 
 const std::vector<NamedSensor>& namedSensors() {
   static const std::vector<NamedSensor> sensors = {{"full-frame", {36.0, 24.0}},
-                                                   {"aps-c", {23.6, 15.6}},
+                                                   {"aps-c", {23.6, 15.6}, "Nikon's and Sony's; Canon's is --sensor 22.3x14.9"},
                                                    {"micro-four-thirds", {17.3, 13.0}},
                                                    {"1-inch", {13.2, 8.8}}};
   return sensors;
 }
 
 std::string namedSensorList() {
-  return "full-frame (36x24), aps-c (23.6x15.6, Nikon's and Sony's; Canon's is --sensor 22.3x14.9), "
-         "micro-four-thirds (17.3x13), 1-inch (13.2x8.8)";
+  std::string list;
+  for (const NamedSensor& s : namedSensors()) {
+    const std::string note = *s.note ? cat(", ", s.note) : "";
+    list += cat(list.empty() ? "" : ", ", s.name, " (", s.sizeMm.x, "x", s.sizeMm.y, note, ")");
+  }
+  return list;
 }
 
 glm::dvec2 parseSensorMm(const std::string& text) {

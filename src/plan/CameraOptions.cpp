@@ -176,6 +176,43 @@ SelectedCamera composeViewingDescription(const BaseCamera& base, const CameraOpt
   return out;
 }
 
+// One kind of name a choice can be picked by, and each choice's name of that kind.
+struct NameKind {
+  std::string what;  // for refusals: "node name"
+  std::vector<std::string> names;
+};
+
+// What --camera-node and --animation pick from, as their refusals name it.
+struct Choices {
+  std::string source;           // the scene file
+  std::string noun;             // "camera": refusals say "camera(s)", "2 cameras of ..."
+  std::string list;             // every choice as `info` lists it
+  std::vector<NameKind> kinds;  // tried in order; each holds one name per choice
+  std::string anyName;          // how "no ... has that ..." names all the kinds: "node or camera name"
+};
+
+// The choice `text` picks: a whole number is an index (as `info` lists them), else a name, tried
+// kind by kind (a camera's node name before its camera name): the first kind in which some choice
+// has it decides, and exactly one must. Refuses `option`, listing the choices, when the index is
+// beyond them or the name is no choice's or several's.
+std::size_t pickChoice(const Choices& c, const std::string& option, const std::string& text) {
+  const std::size_t count = c.kinds.front().names.size();
+  if (isWholeNumber(text)) {
+    const std::size_t index = std::stoul(text);
+    if (index < count) return index;
+    refuse(option, cat(c.source, " has ", count, " ", c.noun, "(s): ", c.list));
+  }
+  for (const NameKind& kind : c.kinds) {
+    std::vector<std::size_t> matches;
+    for (std::size_t i = 0; i < count; ++i)
+      if (kind.names[i] == text) matches.push_back(i);
+    if (matches.size() == 1) return matches.front();
+    if (matches.size() > 1)
+      refuse(option, cat(matches.size(), " ", c.noun, "s of ", c.source, " have that ", kind.what, "; give an index: ", c.list));
+  }
+  refuse(option, cat("no ", c.noun, " of ", c.source, " has that ", c.anyName, "; it has ", c.list));
+}
+
 }  // namespace
 
 std::string CameraOptions::describe() const {
@@ -238,23 +275,13 @@ std::size_t findSceneCamera(const Scene& scene, const std::string& text) {
   const std::string option = cat("--camera-node ", text);
   if (scene.cameras.empty())
     refuse(option, cat(scene.source, " has no cameras; leave the option out for the automatic framing, or give --camera FILE"));
-  std::string list;
-  for (std::size_t i = 0; i < scene.cameras.size(); ++i) list += (i ? ", " : "") + sceneCameraLabel(scene, i);
-  if (isWholeNumber(text)) {
-    const std::size_t index = std::stoul(text);
-    if (index < scene.cameras.size()) return index;
-    refuse(option, cat(scene.source, " has ", scene.cameras.size(), " camera(s): ", list));
+  Choices cameras{scene.source, "camera", "", {{"node name", {}}, {"camera name", {}}}, "node or camera name"};
+  for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+    cameras.list += (i ? ", " : "") + sceneCameraLabel(scene, i);
+    cameras.kinds[0].names.push_back(scene.cameras[i].nodeName);
+    cameras.kinds[1].names.push_back(scene.cameras[i].name);
   }
-  for (const bool byNode : {true, false}) {
-    std::vector<std::size_t> matches;
-    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
-      if ((byNode ? scene.cameras[i].nodeName : scene.cameras[i].name) == text) matches.push_back(i);
-    if (matches.size() == 1) return matches.front();
-    if (matches.size() > 1)
-      refuse(option, cat(matches.size(), " cameras of ", scene.source, " have that ", byNode ? "node" : "camera",
-                         " name; give an index: ", list));
-  }
-  refuse(option, cat("no camera of ", scene.source, " has that node or camera name; it has ", list));
+  return pickChoice(cameras, option, text);
 }
 
 void selectAnimation(Scene& scene, const std::string& text) {
@@ -262,26 +289,18 @@ void selectAnimation(Scene& scene, const std::string& text) {
   SceneAnimation& animation = scene.animation;
   const std::string option = cat("--animation ", text);
   if (animation.clips.empty()) refuse(option, cat(scene.source, " has no animations"));
-  std::string list;
-  for (std::size_t i = 0; i < animation.clips.size(); ++i)
-    list += cat(i ? ", " : "", "[", i, "]", animation.clips[i].name.empty() ? "" : cat(" \"", animation.clips[i].name, "\""));
-  list += ", or all";
   if (text == "all") {
     animation.playing = kAllClips;
     return;
   }
-  if (isWholeNumber(text)) {
-    const std::size_t index = std::stoul(text);
-    if (index >= animation.clips.size()) refuse(option, cat(scene.source, " has ", animation.clips.size(), " animation(s): ", list));
-    animation.playing = static_cast<int>(index);
-    return;
+  Choices clips{scene.source, "animation", "", {{"name", {}}}, "name"};
+  for (std::size_t i = 0; i < animation.clips.size(); ++i) {
+    const std::string& name = animation.clips[i].name;
+    clips.list += cat(i ? ", " : "", "[", i, "]", name.empty() ? "" : cat(" \"", name, "\""));
+    clips.kinds[0].names.push_back(name);
   }
-  std::vector<std::size_t> matches;
-  for (std::size_t i = 0; i < animation.clips.size(); ++i)
-    if (animation.clips[i].name == text) matches.push_back(i);
-  if (matches.size() > 1) refuse(option, cat(matches.size(), " animations of ", scene.source, " have that name; give an index: ", list));
-  if (matches.empty()) refuse(option, cat("no animation of ", scene.source, " has that name; it has ", list));
-  animation.playing = static_cast<int>(matches.front());
+  clips.list += ", or all";
+  animation.playing = static_cast<int>(pickChoice(clips, option, text));
 }
 
 std::vector<std::string> poseForOneImage(Scene& scene, const std::string& animation, std::optional<double> timeSeconds) {

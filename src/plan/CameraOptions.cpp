@@ -51,6 +51,13 @@ SelectedCamera physicalCamera(const PhysicalCamera& p, const Camera& like, const
   return out;
 }
 
+// The aspect ratio a glTF camera is drawn at: its own, else the image's (--width / --height), else
+// 3:2 (full frame's, as for its sensor).
+double gltfAspect(const SceneCamera& c, double imageAspect) {
+  if (c.aspectRatio > 0.0) return c.aspectRatio;
+  return imageAspect > 0.0 ? imageAspect : 1.5;
+}
+
 // A node transform looking from `eye` at `target` with +Y up (glTF cameras look along −Z, +Y up).
 glm::dmat4 lookingAt(const glm::dvec3& eye, const glm::dvec3& target, const std::string& where) {
   const glm::dvec3 forward = target - eye;
@@ -71,7 +78,7 @@ glm::dmat4 lookingAt(const glm::dvec3& eye, const glm::dvec3& target, const std:
 // A glTF camera as lenslab draws it without options: its own field of view, the view plane at the
 // base's focus distance.
 SelectedCamera gltfView(const BaseCamera& base, const SceneCamera& c, double focus, double imageAspect, const std::string& source) {
-  const double aspect = c.aspectRatio > 0.0 ? c.aspectRatio : (imageAspect > 0.0 ? imageAspect : 1.5);
+  const double aspect = gltfAspect(c, imageAspect);
   const ViewSpec view = c.perspective
                             ? viewSpecFromGltfPerspective(c.worldFromCamera, c.yfovRadians, aspect, c.znear, c.zfar, focus)
                             : viewSpecFromGltfOrthographic(c.worldFromCamera, c.xmag, c.ymag, c.znear, c.zfar, focus);
@@ -90,7 +97,7 @@ SelectedCamera gltfView(const BaseCamera& base, const SceneCamera& c, double foc
 // 4 cm from a 7 cm car, would otherwise see 2.6 times less of it).
 PhysicalCamera gltfAsPhysical(const BaseCamera& base, const CameraOptions& o, double imageAspect) {
   const SceneCamera& c = base.gltf;
-  const double aspect = c.aspectRatio > 0.0 ? c.aspectRatio : (imageAspect > 0.0 ? imageAspect : 1.5);
+  const double aspect = gltfAspect(c, imageAspect);
   PhysicalCamera p;
   p.sensorMm = o.sensor.empty() ? glm::dvec2(kDefaultSensorHeightMm * aspect, kDefaultSensorHeightMm) : parseSensorMm(o.sensor);
   const double imageDistance = p.sensorMm.y * kMetresPerMillimetre / (2.0 * std::tan(0.5 * c.yfovRadians));

@@ -120,8 +120,9 @@ PhysicalCamera gltfAsPhysical(const BaseCamera& base, const CameraOptions& o, do
 [[noreturn]] void refuse(const std::string& option, const std::string& why) { throw InputError(cat(option, ": ", why)); }
 
 SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
-  const double focalMm = o.focalLengthMm.value_or(35.0);
-  const glm::dvec2 sensorMm = o.sensor.empty() ? glm::dvec2(36.0, 24.0) : parseSensorMm(o.sensor);
+  const PhysicalCamera defaults;  // 35 mm on full frame
+  const double focalMm = o.focalLengthMm.value_or(defaults.focalLengthMm);
+  const glm::dvec2 sensorMm = o.sensor.empty() ? defaults.sensorMm : parseSensorMm(o.sensor);
   const std::string where = cat(base.name, " with ", o.describe());
   const BoundingSphere& s = base.subject;
   SelectedCamera framed;

@@ -139,6 +139,7 @@ SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
   } else {
     framed = frameSphere(o.target.value_or(s.center), s.radius, focalMm, sensorMm);
   }
+  // Either way near and far are placeholders: fit them to the scene (the one place that says so).
   framed.camera.nearFromScene = framed.camera.farFromScene = true;
   if (o.fNumber.empty()) return framed;
   const double n = parseFNumber(o.fNumber);

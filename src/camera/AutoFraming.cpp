@@ -40,15 +40,14 @@ SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focal
     c.focalLengthMm = focalLengthMm;
     c.sensorMm = sensorMm;
     c.focusDistance = distance;
-    // Near and far are fitted to the scene before rendering; these only have to be valid.
+    // Near and far are fitted to the scene before rendering (the caller marks them so); these only
+    // have to be valid.
     c.nearDistance = std::max(distance - r, distance * 1e-4) * 0.5;
     const double magnification = f / (distance - f);
     std::string source = cat("automatic framing: the scene's bounding sphere (radius ", radius, ") fills the frame's ", across,
                              " at ", distance, ", ", lens, ", focused on its centre");
     if (magnification > 0.1) source += cat(" (a close-up at magnification ", magnification, ")");
-    SelectedCamera selected{toCamera(c, source), c};
-    selected.camera.nearFromScene = selected.camera.farFromScene = true;
-    return selected;
+    return {toCamera(c, source), c};
   }
   // Beyond life size: a pinhole with the lens's infinity field of view, tan(half) = side / 2f.
   const double halfAngle = std::atan(side / (2.0 * f));
@@ -71,7 +70,6 @@ SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focal
           f / (distance - f), ", beyond life size (1), so a pinhole with that lens's field of view frames it (no focus, no blur); "
           "a sensor no larger than the sphere (--sensor ", 2.0 * r / kMetresPerMillimetre, "x", 2.0 * r / kMetresPerMillimetre,
           " or smaller) or --eye and --target give a lens"));
-  selected.camera.nearFromScene = selected.camera.farFromScene = true;
   return selected;
 }
 

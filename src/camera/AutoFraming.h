@@ -32,7 +32,9 @@ double framingDistance(double radius, double focalLength, double sensorSide);
 // Frames the sphere (centre, radius) with a `focalLengthMm` lens on a `sensorMm` sensor, the
 // camera on the side `towardCamera` points to (default: in front, 0.35 up for each 1 back). The
 // physical description when the lens can focus on the sphere's centre at life size or less;
-// otherwise a pinhole (no physical description) — the source says which.
+// otherwise a pinhole (no physical description) — the source says which. Its near and far only
+// have to be valid: the caller marks them to be fitted to the scene (Camera::nearFromScene and
+// farFromScene), as composeCamera does for every automatically framed camera.
 SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focalLengthMm, glm::dvec2 sensorMm,
                            const glm::dvec3& towardCamera = glm::dvec3(0.0, 0.35, 1.0));
 

@@ -5,6 +5,7 @@
 #include "lens/ThinLens.h"
 
 #include <cmath>
+#include <utility>
 
 namespace lenslab {
 namespace {
@@ -82,17 +83,21 @@ Camera toCamera(const PhysicalCamera& c, std::string source) {
   return camera;
 }
 
+SelectedCamera toSelectedCamera(const PhysicalCamera& camera, const Camera& like, std::string source) {
+  SelectedCamera out{toCamera(camera, std::move(source)), camera};
+  out.camera.effects = like.effects;
+  out.camera.calibratedSize = like.calibratedSize;
+  out.camera.nearFromScene = like.nearFromScene;
+  out.camera.farFromScene = like.farFromScene;
+  return out;
+}
+
 SelectedCamera refocused(const SelectedCamera& camera, double distance, const std::string& where) {
   if (!camera.physical) return {refocused(camera.camera, distance, where), std::nullopt};
   PhysicalCamera p = *camera.physical;
   p.focusDistance = distance;
   validate(p, where);
-  SelectedCamera out{toCamera(p, camera.camera.source), p};
-  out.camera.effects = camera.camera.effects;
-  out.camera.calibratedSize = camera.camera.calibratedSize;
-  out.camera.nearFromScene = camera.camera.nearFromScene;
-  out.camera.farFromScene = camera.camera.farFromScene;
-  return out;
+  return toSelectedCamera(p, camera.camera, camera.camera.source);
 }
 
 double apertureRadius(const PhysicalCamera& c) {

@@ -62,6 +62,11 @@ struct SelectedCamera {
   std::optional<PhysicalCamera> physical;
 };
 
+// The physical description converted (toCamera) and kept beside its camera, which also keeps what
+// `like` had beyond the description: lens effects, calibrated image size, and near/far left to be
+// fitted to the scene. How a description that replaces a camera's stays that camera otherwise.
+SelectedCamera toSelectedCamera(const PhysicalCamera& camera, const Camera& like, std::string source);
+
 // Refocuses at `distance` (+infinity allowed) along the one validation path a camera file's
 // focus_distance takes: a physical camera gets the new focus_distance, is validated (focus beyond
 // the focal length) and converted again, so its field of view follows z_i as a real lens's does;

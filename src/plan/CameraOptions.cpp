@@ -43,15 +43,18 @@ PhysicalCamera applyTo(PhysicalCamera p, const CameraOptions& o) {
 }
 
 // The physical description converted, keeping what the base camera had beyond it (lens effects,
-// calibrated image size, near/far left to the scene).
+// calibrated image size, near/far left to the scene), and its view checked as a camera file's is.
 SelectedCamera physicalCamera(const PhysicalCamera& p, const Camera& like, const std::string& source) {
-  SelectedCamera out{toCamera(p, source), p};
-  out.camera.effects = like.effects;
-  out.camera.calibratedSize = like.calibratedSize;
-  out.camera.nearFromScene = like.nearFromScene;
-  out.camera.farFromScene = like.farFromScene;
+  SelectedCamera out = toSelectedCamera(p, like, source);
   validate(out.camera.view, source);
   return out;
+}
+
+// The aspect ratio a glTF camera is drawn at: its own, else the image's (--width / --height), else
+// 3:2 (full frame's, as for its sensor).
+double gltfAspect(const SceneCamera& c, double imageAspect) {
+  if (c.aspectRatio > 0.0) return c.aspectRatio;
+  return imageAspect > 0.0 ? imageAspect : 1.5;
 }
 
 // A node transform looking from `eye` at `target` with +Y up (glTF cameras look along −Z, +Y up).
@@ -74,7 +77,7 @@ glm::dmat4 lookingAt(const glm::dvec3& eye, const glm::dvec3& target, const std:
 // A glTF camera as lenslab draws it without options: its own field of view, the view plane at the
 // base's focus distance.
 SelectedCamera gltfView(const BaseCamera& base, const SceneCamera& c, double focus, double imageAspect, const std::string& source) {
-  const double aspect = c.aspectRatio > 0.0 ? c.aspectRatio : (imageAspect > 0.0 ? imageAspect : 1.5);
+  const double aspect = gltfAspect(c, imageAspect);
   const ViewSpec view = c.perspective
                             ? viewSpecFromGltfPerspective(c.worldFromCamera, c.yfovRadians, aspect, c.znear, c.zfar, focus)
                             : viewSpecFromGltfOrthographic(c.worldFromCamera, c.xmag, c.ymag, c.znear, c.zfar, focus);
@@ -93,7 +96,7 @@ SelectedCamera gltfView(const BaseCamera& base, const SceneCamera& c, double foc
 // 4 cm from a 7 cm car, would otherwise see 2.6 times less of it).
 PhysicalCamera gltfAsPhysical(const BaseCamera& base, const CameraOptions& o, double imageAspect) {
   const SceneCamera& c = base.gltf;
-  const double aspect = c.aspectRatio > 0.0 ? c.aspectRatio : (imageAspect > 0.0 ? imageAspect : 1.5);
+  const double aspect = gltfAspect(c, imageAspect);
   PhysicalCamera p;
   p.sensorMm = o.sensor.empty() ? glm::dvec2(kDefaultSensorHeightMm * aspect, kDefaultSensorHeightMm) : parseSensorMm(o.sensor);
   const double imageDistance = p.sensorMm.y * kMetresPerMillimetre / (2.0 * std::tan(0.5 * c.yfovRadians));
@@ -116,8 +119,9 @@ PhysicalCamera gltfAsPhysical(const BaseCamera& base, const CameraOptions& o, do
 [[noreturn]] void refuse(const std::string& option, const std::string& why) { throw InputError(cat(option, ": ", why)); }
 
 SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
-  const double focalMm = o.focalLengthMm.value_or(35.0);
-  const glm::dvec2 sensorMm = o.sensor.empty() ? glm::dvec2(36.0, 24.0) : parseSensorMm(o.sensor);
+  const PhysicalCamera defaults;  // 35 mm on full frame
+  const double focalMm = o.focalLengthMm.value_or(defaults.focalLengthMm);
+  const glm::dvec2 sensorMm = o.sensor.empty() ? defaults.sensorMm : parseSensorMm(o.sensor);
   const std::string where = cat(base.name, " with ", o.describe());
   const BoundingSphere& s = base.subject;
   SelectedCamera framed;
@@ -134,6 +138,7 @@ SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
   } else {
     framed = frameSphere(o.target.value_or(s.center), s.radius, focalMm, sensorMm);
   }
+  // Either way near and far are placeholders: fit them to the scene (the one place that says so).
   framed.camera.nearFromScene = framed.camera.farFromScene = true;
   if (o.fNumber.empty()) return framed;
   const double n = parseFNumber(o.fNumber);
@@ -179,6 +184,43 @@ SelectedCamera composeViewingDescription(const BaseCamera& base, const CameraOpt
   return out;
 }
 
+// One kind of name a choice can be picked by, and each choice's name of that kind.
+struct NameKind {
+  std::string what;  // for refusals: "node name"
+  std::vector<std::string> names;
+};
+
+// What --camera-node and --animation pick from, as their refusals name it.
+struct Choices {
+  std::string source;           // the scene file
+  std::string noun;             // "camera": refusals say "camera(s)", "2 cameras of ..."
+  std::string list;             // every choice as `info` lists it
+  std::vector<NameKind> kinds;  // tried in order; each holds one name per choice
+  std::string anyName;          // how "no ... has that ..." names all the kinds: "node or camera name"
+};
+
+// The choice `text` picks: a whole number is an index (as `info` lists them), else a name, tried
+// kind by kind (a camera's node name before its camera name): the first kind in which some choice
+// has it decides, and exactly one must. Refuses `option`, listing the choices, when the index is
+// beyond them or the name is no choice's or several's.
+std::size_t pickChoice(const Choices& c, const std::string& option, const std::string& text) {
+  const std::size_t count = c.kinds.front().names.size();
+  if (isWholeNumber(text)) {
+    const std::size_t index = std::stoul(text);
+    if (index < count) return index;
+    refuse(option, cat(c.source, " has ", count, " ", c.noun, "(s): ", c.list));
+  }
+  for (const NameKind& kind : c.kinds) {
+    std::vector<std::size_t> matches;
+    for (std::size_t i = 0; i < count; ++i)
+      if (kind.names[i] == text) matches.push_back(i);
+    if (matches.size() == 1) return matches.front();
+    if (matches.size() > 1)
+      refuse(option, cat(matches.size(), " ", c.noun, "s of ", c.source, " have that ", kind.what, "; give an index: ", c.list));
+  }
+  refuse(option, cat("no ", c.noun, " of ", c.source, " has that ", c.anyName, "; it has ", c.list));
+}
+
 }  // namespace
 
 std::string CameraOptions::describe() const {
@@ -194,15 +236,19 @@ std::string CameraOptions::describe() const {
 
 const std::vector<NamedSensor>& namedSensors() {
   static const std::vector<NamedSensor> sensors = {{"full-frame", {36.0, 24.0}},
-                                                   {"aps-c", {23.6, 15.6}},
+                                                   {"aps-c", {23.6, 15.6}, "Nikon's and Sony's; Canon's is --sensor 22.3x14.9"},
                                                    {"micro-four-thirds", {17.3, 13.0}},
                                                    {"1-inch", {13.2, 8.8}}};
   return sensors;
 }
 
 std::string namedSensorList() {
-  return "full-frame (36x24), aps-c (23.6x15.6, Nikon's and Sony's; Canon's is --sensor 22.3x14.9), "
-         "micro-four-thirds (17.3x13), 1-inch (13.2x8.8)";
+  std::string list;
+  for (const NamedSensor& s : namedSensors()) {
+    const std::string note = *s.note ? cat(", ", s.note) : "";
+    list += cat(list.empty() ? "" : ", ", s.name, " (", s.sizeMm.x, "x", s.sizeMm.y, note, ")");
+  }
+  return list;
 }
 
 glm::dvec2 parseSensorMm(const std::string& text) {
@@ -237,23 +283,13 @@ std::size_t findSceneCamera(const Scene& scene, const std::string& text) {
   const std::string option = cat("--camera-node ", text);
   if (scene.cameras.empty())
     refuse(option, cat(scene.source, " has no cameras; leave the option out for the automatic framing, or give --camera FILE"));
-  std::string list;
-  for (std::size_t i = 0; i < scene.cameras.size(); ++i) list += (i ? ", " : "") + sceneCameraLabel(scene, i);
-  if (isWholeNumber(text)) {
-    const std::size_t index = std::stoul(text);
-    if (index < scene.cameras.size()) return index;
-    refuse(option, cat(scene.source, " has ", scene.cameras.size(), " camera(s): ", list));
+  Choices cameras{scene.source, "camera", "", {{"node name", {}}, {"camera name", {}}}, "node or camera name"};
+  for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+    cameras.list += (i ? ", " : "") + sceneCameraLabel(scene, i);
+    cameras.kinds[0].names.push_back(scene.cameras[i].nodeName);
+    cameras.kinds[1].names.push_back(scene.cameras[i].name);
   }
-  for (const bool byNode : {true, false}) {
-    std::vector<std::size_t> matches;
-    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
-      if ((byNode ? scene.cameras[i].nodeName : scene.cameras[i].name) == text) matches.push_back(i);
-    if (matches.size() == 1) return matches.front();
-    if (matches.size() > 1)
-      refuse(option, cat(matches.size(), " cameras of ", scene.source, " have that ", byNode ? "node" : "camera",
-                         " name; give an index: ", list));
-  }
-  refuse(option, cat("no camera of ", scene.source, " has that node or camera name; it has ", list));
+  return pickChoice(cameras, option, text);
 }
 
 void selectAnimation(Scene& scene, const std::string& text) {
@@ -261,26 +297,18 @@ void selectAnimation(Scene& scene, const std::string& text) {
   SceneAnimation& animation = scene.animation;
   const std::string option = cat("--animation ", text);
   if (animation.clips.empty()) refuse(option, cat(scene.source, " has no animations"));
-  std::string list;
-  for (std::size_t i = 0; i < animation.clips.size(); ++i)
-    list += cat(i ? ", " : "", "[", i, "]", animation.clips[i].name.empty() ? "" : cat(" \"", animation.clips[i].name, "\""));
-  list += ", or all";
   if (text == "all") {
     animation.playing = kAllClips;
     return;
   }
-  if (isWholeNumber(text)) {
-    const std::size_t index = std::stoul(text);
-    if (index >= animation.clips.size()) refuse(option, cat(scene.source, " has ", animation.clips.size(), " animation(s): ", list));
-    animation.playing = static_cast<int>(index);
-    return;
+  Choices clips{scene.source, "animation", "", {{"name", {}}}, "name"};
+  for (std::size_t i = 0; i < animation.clips.size(); ++i) {
+    const std::string& name = animation.clips[i].name;
+    clips.list += cat(i ? ", " : "", "[", i, "]", name.empty() ? "" : cat(" \"", name, "\""));
+    clips.kinds[0].names.push_back(name);
   }
-  std::vector<std::size_t> matches;
-  for (std::size_t i = 0; i < animation.clips.size(); ++i)
-    if (animation.clips[i].name == text) matches.push_back(i);
-  if (matches.size() > 1) refuse(option, cat(matches.size(), " animations of ", scene.source, " have that name; give an index: ", list));
-  if (matches.empty()) refuse(option, cat("no animation of ", scene.source, " has that name; it has ", list));
-  animation.playing = static_cast<int>(matches.front());
+  clips.list += ", or all";
+  animation.playing = static_cast<int>(pickChoice(clips, option, text));
 }
 
 std::vector<std::string> poseForOneImage(Scene& scene, const std::string& animation, std::optional<double> timeSeconds) {

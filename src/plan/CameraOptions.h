@@ -65,9 +65,11 @@ struct CameraOptions {
 struct NamedSensor {
   const char* name;
   glm::dvec2 sizeMm;
+  const char* note = "";  // for the list in --sensor's help, after the size; "" for none
 };
 const std::vector<NamedSensor>& namedSensors();
-// "full-frame (36x24), aps-c (23.6x15.6, Nikon and Sony; Canon's 22.3x14.9 is --sensor 22.3x14.9), ..."
+// namedSensors for help and messages: "full-frame (36x24), aps-c (23.6x15.6, Nikon's and Sony's;
+// Canon's is --sensor 22.3x14.9), micro-four-thirds (17.3x13), 1-inch (13.2x8.8)".
 std::string namedSensorList();
 
 // --sensor's text: a name, or WIDTHxHEIGHT in millimetres (x or X). Throws InputError naming the

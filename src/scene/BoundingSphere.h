@@ -1,8 +1,9 @@
 #pragma once
 // A tight sphere around a scene's vertices, for framing: the smallest enclosing ball of the world
 // positions (Welzl's algorithm on a small core set of the points, grown until every vertex lies
-// inside). The bounding box's circumsphere can be √3 times larger than the object (a sphere's box
-// corners), which is why a model framed by its box fills a third of the image.
+// inside). The bounding box's circumsphere can be √3 times larger than the object (a round
+// object's box corners), so a model framed by its box may span only 1/√3 ≈ 58 % of the frame's
+// height; DamagedHelmet spans 62 % of it framed by its box, 89 % framed by this sphere.
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

@@ -113,12 +113,12 @@ void refuseFarVertices(const Scene& scene, double seconds) {
 
 }  // namespace
 
+bool SceneAnimation::anyClipMoves() const {
+  return std::any_of(clips.begin(), clips.end(), [](const AnimationClip& clip) { return !clip.channels.empty(); });
+}
+
 bool SceneAnimation::empty() const {
-  if (playing == kAllClips) {
-    for (const AnimationClip& clip : clips)
-      if (!clip.channels.empty()) return false;
-    return true;
-  }
+  if (playing == kAllClips) return !anyClipMoves();
   return playing < 0 || static_cast<std::size_t>(playing) >= clips.size() || clips[toIndex(playing)].channels.empty();
 }
 

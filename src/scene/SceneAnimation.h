@@ -72,6 +72,8 @@ struct SceneAnimation {
   int playing = 0;                  // index into clips, or kAllClips; poseScene plays these
   // True when what plays moves nothing (no clips, or the playing clip moves no drawn node).
   bool empty() const;
+  // True when some clip, playing or not, moves a drawn node.
+  bool anyClipMoves() const;
 };
 
 // The largest key time of a clip's channels (0 when it has none).

@@ -2,6 +2,7 @@
 // here with answers computed by hand in the comments, and the corpus's AnimatedTriangle (suite
 // GltfSamples, which ctest runs as the entry `corpus`).
 #include "../common/animated_gltf.h"
+#include "../common/gltf_corpus.h"
 #include "../common/temp_dir_test.h"
 #include "core/Error.h"
 #include "scene/GltfLoader.h"
@@ -13,7 +14,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -361,18 +361,13 @@ TEST_F(AnimationFile, ANonFiniteTransformIsRefusedNamingFileNodeAndTime) {
 
 // ---- the corpus's AnimatedTriangle (suite GltfSamples: ctest's entry `corpus`) ----
 
-fs::path corpusDirectory() {
-  if (const char* env = std::getenv("LENSLAB_GLTF_CORPUS_DIR"); env && *env) return env;
-  return LENSLAB_GLTF_CORPUS_DIR;
-}
-
 // The file: one LINEAR rotation channel, keys at 0, 0.25, 0.5, 0.75, 1 s with quaternions (x, y, z, w)
 // (0,0,0,1), (0,0,.707,.707), (0,0,1,0), (0,0,.707,-.707), (0,0,0,1): 0, 90, 180, 270, 360 degrees
 // about Z. At 0.125 s (u = 0.5 between the first two) the slerp is half way: 45 degrees.
 // At 0.875 s the last two are 90 degrees apart only the short way (their dot is -.707): 315 degrees.
 TEST(GltfSamples, AnimatedTriangleTurnsAboutZBySlerp) {
-  const fs::path file = corpusDirectory() / "samples/AnimatedTriangle/glTF/AnimatedTriangle.gltf";
-  if (!fs::exists(file)) GTEST_SKIP() << file << " is absent (the external glTF corpus)";
+  const fs::path file = test::samplesDirectory() / "AnimatedTriangle/glTF/AnimatedTriangle.gltf";
+  SKIP_UNLESS_EXISTS(file);
   Scene scene = loadGltf(file);
   ASSERT_EQ(scene.instances.size(), 1u);
   EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 1.0);

@@ -2,6 +2,7 @@
 // external corpus (LENSLAB_GLTF_CORPUS_DIR; the suites GltfSamples, GltfSampleVariant and
 // GltfValidatorFile, which ctest runs as the entry `corpus`, not `unit`), and over small files
 // written here that each test one rule with a known answer.
+#include "../common/gltf_corpus.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "scene/GltfLoader.h"
@@ -20,7 +21,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -57,23 +57,12 @@ TEST(SceneTotals, TrianglesAndBoundsCountEveryInstance) {
   }
 }
 
-// ---- the external glTF corpus ----
+// ---- the external glTF corpus (../common/gltf_corpus.h) ----
 // A suite that reads it belongs in LENSLAB_CORPUS_SUITES (tests/CMakeLists.txt): those run as the
 // ctest entry `corpus`, which ctest shows as not run when the corpus is absent.
 
-// The environment variable wins over the path compiled in, so a build can be pointed elsewhere.
-fs::path corpusDirectory() {
-  if (const char* env = std::getenv("LENSLAB_GLTF_CORPUS_DIR"); env && *env) return env;
-  return LENSLAB_GLTF_CORPUS_DIR;
-}
-
-fs::path samplesDirectory() { return corpusDirectory() / "samples"; }
-fs::path invalidDirectory() { return corpusDirectory() / "invalid"; }
-
-#define SKIP_UNLESS_EXISTS(path)                                                              \
-  do {                                                                                        \
-    if (!fs::exists(path)) GTEST_SKIP() << (path) << " is absent (the external glTF corpus)"; \
-} while (false)
+using test::invalidDirectory;
+using test::samplesDirectory;
 
 Scene loadSample(const std::string& relative) { return loadGltf(samplesDirectory() / relative); }
 

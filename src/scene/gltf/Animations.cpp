@@ -112,10 +112,8 @@ void readAnimations(const tinygltf::Model& model, const AccessorReader& reader, 
   if (undrawn > 0) noteOnce(scene.notes, cat(undrawn, " animation channel(s) move nodes outside the drawn scene: not played"));
   if (matrixNodes > 0)
     noteOnce(scene.notes, cat(matrixNodes, " animation channel(s) target nodes given by a matrix, which glTF does not allow: not played"));
-  animation.playing = kAllClips;  // to ask whether any clip moves anything
-  const bool moves = !animation.empty();
   animation.playing = 0;  // the first clip plays unless the user picks another (--animation)
-  if (!moves) {
+  if (!animation.anyClipMoves()) {
     animation.nodes.clear();  // nothing moves: keep no copy of the hierarchy
     if (!model.animations.empty())
       noteOnce(scene.notes, cat(model.animations.size(), " animation(s), none of which moves a drawn node: the scene is drawn at rest"));

@@ -83,7 +83,7 @@ std::vector<double> extremeFocusShifts(const Camera& camera) {
   return shifts;
 }
 
-void validateLensEffects(const Camera& camera, const std::string& where) {
+void validateLensEffects(const Camera& camera, const std::string& where, std::optional<double> focalLength) {
   const LensEffects& e = camera.effects;
   if (e.isZero()) return;
   if (camera.view.projection != Projection::Perspective)
@@ -94,6 +94,25 @@ void validateLensEffects(const Camera& camera, const std::string& where) {
                          e.chromatic.lateralBlue, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue,
                          e.fieldCurvature.inverseFocusPerRadius2})
     if (!std::isfinite(v)) throw InputError(cat(where, ": lens effect coefficients must be finite numbers"));
+  // Each plane of focus the effects add (a channel's, the curved surface's at the corner) must be
+  // one the lens can form an image of: beyond its focal length. Without a focal length, beyond the
+  // aperture radius: no lens is faster than f/0.5 (f ≥ R). A plane nearer than that is no lens's,
+  // and at 1e-200 its rays overflow (a window shifted by 1e200 aperture radii).
+  const double phi = camera.inverseFocusDistance();
+  const double corner = normalisedWindow(camera.view).cornerRadius();
+  const double nearest = focalLength ? *focalLength : camera.apertureRadius;
+  for (const auto& [name, shift] : {std::pair{"chromatic.focus_distance_red", e.chromatic.inverseFocusShiftRed},
+                                    std::pair{"chromatic.focus_distance_blue", e.chromatic.inverseFocusShiftBlue},
+                                    std::pair{"field_curvature.corner_focus_distance",
+                                              e.fieldCurvature.inverseFocusPerRadius2 * corner * corner}}) {
+    const double inverse = phi + shift;
+    if (shift == 0.0 || !(nearest > 0.0) || !(inverse * nearest >= 1.0)) continue;
+    throw InputError(cat(where, ": ", name, " is ", 1.0 / inverse, "; it must be beyond ",
+                         focalLength ? cat("the focal length (", *focalLength, " world units), or the lens forms no real image there")
+                                     : cat("the aperture radius (", camera.apertureRadius, " world units): no lens is faster than "
+                                           "f/0.5, so none with this aperture forms a real image nearer"),
+                         "; \"infinity\" is allowed"));
+  }
   for (const auto& [name, value] : {std::pair{"lateral_red", e.chromatic.lateralRed},
                                     std::pair{"lateral_blue", e.chromatic.lateralBlue}})
     if (!(std::abs(value) < 0.5))

@@ -14,15 +14,18 @@
 #include <glm/glm.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace lenslab {
 
 // Throws InputError naming `where` when the camera's lens effects cannot be rendered: effects on a
-// parallel projection, non-finite or out-of-range values, or a distortion that folds over inside
-// the image (see findFoldOver); the message says where the fold is and what to change.
-void validateLensEffects(const Camera& camera, const std::string& where);
+// parallel projection, non-finite or out-of-range values, a channel's or the curved surface's plane
+// of focus no nearer than `focalLength` (world units; without one, the aperture radius), or a
+// distortion that folds over inside the image (see findFoldOver); the message says which field,
+// what it is and what to change.
+void validateLensEffects(const Camera& camera, const std::string& where, std::optional<double> focalLength = std::nullopt);
 
 // The normalised-coordinate rectangle covered by the camera's window.
 struct NormalisedRect {

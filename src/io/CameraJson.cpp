@@ -442,7 +442,7 @@ void parseCommon(const Reader& r, CameraFile& file) {
     const double corner = normalisedWindow(camera.view).cornerRadius();
     e.fieldCurvature.inverseFocusPerRadius2 = (inverseOf(o, "corner_focus_distance") - focus) / (corner * corner);
   }
-  validateLensEffects(camera, r.where());
+  validateLensEffects(camera, r.where(), file.physical ? std::optional(file.physical->focalLengthMm * kMetresPerMillimetre) : std::nullopt);
 }
 
 // distortion, chromatic and field_curvature of `camera` into `j`, as parseCommon reads them.

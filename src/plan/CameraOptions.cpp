@@ -2,6 +2,7 @@
 
 #include "camera/AutoFraming.h"
 #include "camera/GltfCamera.h"
+#include "camera/LensMap.h"
 #include "core/Error.h"
 #include "core/ParseNumber.h"
 #include "core/Text.h"
@@ -364,7 +365,9 @@ PhysicalCamera withCameraOptions(PhysicalCamera camera, const CameraOptions& opt
   return p;
 }
 
-SelectedCamera composeCamera(const BaseCamera& base, const CameraOptions& o, double imageAspect) {
+namespace {
+
+SelectedCamera composeForm(const BaseCamera& base, const CameraOptions& o, double imageAspect) {
   const std::string given = o.describe();
   const std::string with = " with " + given;
   const std::string& gltfName = base.gltf.nodeName.empty() ? base.gltf.name : base.gltf.nodeName;
@@ -402,6 +405,20 @@ SelectedCamera composeCamera(const BaseCamera& base, const CameraOptions& o, dou
     }
   }
   return base.selected;
+}
+
+}  // namespace
+
+SelectedCamera composeCamera(const BaseCamera& base, const CameraOptions& o, double imageAspect) {
+  SelectedCamera out = composeForm(base, o, imageAspect);
+  // A new focal length, aperture or sensor can move the file's lens effects out of what the lens
+  // can do (a channel's plane of focus inside a longer focal length, a fold inside a wider view).
+  if (o.changesLens() || o.changesPose())
+    validateLensEffects(out.camera, cat(base.name, " with ", o.describe()),
+                        out.physical ? std::optional(out.physical->focalLengthMm * kMetresPerMillimetre)
+                        : o.focalLengthMm ? std::optional(*o.focalLengthMm * kMetresPerMillimetre)
+                                          : std::nullopt);
+  return out;
 }
 
 std::vector<std::string> focusWarnings(const Camera& camera, const LensOptions& lens) {

@@ -126,6 +126,19 @@ struct RayCaster::Impl {
 
   static bool finite(const glm::dvec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 
+  // Embree's RayK::valid(), which it asserts before tracing.
+  static bool embreeTakes(const RTCRay& r) {
+    constexpr float kLarge = 1.8e18f;  // Embree's FLT_LARGE is 1.844e18
+    for (const float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z})
+      if (!(std::abs(v) <= kLarge)) return false;
+    return r.tnear >= 0.0f && r.tnear <= r.tfar;
+  }
+
+  static InputError unfiniteRay(const Camera& camera, glm::dvec2 pixel) {
+    return InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",", pixel.y,
+                          "; check its window, PRP, focus and lens effects"));
+  }
+
   // [enter, exit] of `ray` (relative to `origin`) through the scene's bounds, widened by a margin
   // so that a surface on a face of the box is never missed; empty (enter > exit) on a miss.
   std::pair<double, double> boundsSpan(const Ray& ray) const {
@@ -164,9 +177,10 @@ struct RayCaster::Impl {
     ray.origin -= origin;
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
     // Checked here, not left to Embree's assertions: no input may reach an abort.
-    if (!finite(ray.origin) || !finite(ray.direction) || std::isnan(ray.tNear) || std::isnan(ray.tFar))
-      throw InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",",
-                           pixel.y, "; check its window, PRP and focus"));
+    // A direction that normalised to zero (its length overflowed) counts as not finite.
+    if (!finite(ray.origin) || !(std::abs(glm::length(ray.direction) - 1.0) < 1e-6) || std::isnan(ray.tNear) ||
+        std::isnan(ray.tFar))
+      throw unfiniteRay(camera, pixel);
     // Embree's ray starts where this one enters the scene's bounds (in double), so that its float
     // origin is within the scene's size of `origin` however far away the camera stands; a start
     // before the PRP (a parallel projection's negative near) is fine there too.
@@ -189,6 +203,8 @@ struct RayCaster::Impl {
       rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart));
       rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>(tEnd - tStart);
       if (!(rh.ray.tnear <= rh.ray.tfar)) return miss;
+      // Embree asserts (aborts) on a ray it cannot take: every float finite and below 1.8e18.
+      if (!embreeTakes(rh.ray)) throw unfiniteRay(camera, pixel);
       rh.ray.mask = 0xFFFFFFFFu;
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;

@@ -211,5 +211,21 @@ else
 fi
 expect_refusal "capture with neither path nor scene" "--path: give a camera path, or a SCENE" -- capture --out "$work/out.d/f_%d.png"
 
+# --- lens effects' planes of focus: each command refuses one inside the focal length ---
+# (raycast and sweep used to abort in Embree, rc 134, on these; render drew garbage)
+for effect in '"chromatic": {"focus_distance_red": 1e-200}' '"field_curvature": {"corner_focus_distance": 1e-200}'; do
+  $python -c 'import json,sys; c=json.load(open(sys.argv[1])); c.update(json.loads("{"+sys.argv[2]+"}")); json.dump(c,open(sys.argv[3],"w"))' \
+    "$src/assets/rows/camera-dof.json" "$effect" "$work/near-focus.json"
+  field=$($python -c 'import sys; print("chromatic.focus_distance_red" if "chromatic" in sys.argv[1] else "field_curvature.corner_focus_distance")' "$effect")
+  for command in render raycast; do
+    expect_refusal "$command with $field 1e-200" "near-focus.json: $field is 1e-200; it must be beyond the focal length (0.035" \
+      -- $command --camera "$work/near-focus.json" --width 48 --out "$work/out.png"
+  done
+  expect_refusal "sweep with $field 1e-200" "$field is 1e-200; it must be beyond the focal length" \
+    -- sweep --camera "$work/near-focus.json" --width 48 --out "$work/out.d"
+  expect_refusal "render --focal-length 50 over $field" "$field is 1e-200" \
+    -- render --camera "$work/near-focus.json" --focal-length 50 --width 48 --out "$work/out.png"
+done
+
 echo "camera options: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,5 +1,6 @@
 // The rasterizer against the CPU ray-cast reference: same Camera, Scene and shading, so what
 // remains is each method's error (sampling noise, texture-filter approximations).
+#include "core/Error.h"
 #include "gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
@@ -74,6 +75,24 @@ TEST(RaycastPrecision, ASceneFarFromTheOriginRendersAsAtTheOrigin) {
     const double psnr = compareImages(RayCaster(moved).render(far, size, options), atOrigin, 0.0).psnrDb;
     std::cout << "[ measure  ] rows + camera-dof.json moved by " << distance << ": ray cast vs at the origin " << psnr << " dB\n";
     EXPECT_GE(psnr, 45.0) << "moved by " << distance;
+  }
+}
+
+// A camera whose rays overflow (a channel focused at 1e-200 shifts each lens view's window by
+// 1e200 aperture radii: directions normalise to zero) is a clear error, never Embree's assertion
+// (an abort). Camera files refuse such a plane of focus; this camera is built past that check.
+TEST(RaycastPrecision, RaysThatOverflowAreAnErrorNotAnAbort) {
+  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
+  const Scene scene = loadGltf(assets / "rows/rows.gltf");
+  for (const bool curvature : {false, true}) {
+    Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;
+    (curvature ? camera.effects.fieldCurvature.inverseFocusPerRadius2 : camera.effects.chromatic.inverseFocusShiftRed) = 1e200;
+    try {
+      RayCaster(scene).render(camera, {24, 16}, RaycastOptions{2, 1});
+      ADD_FAILURE() << "rendered" << (curvature ? " (field curvature)" : " (axial colour)");
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("rays that are not finite numbers"), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -163,6 +163,27 @@ BaseCamera lectureBase(CameraForm form) {
   return base;
 }
 
+// The file's lens effects are checked again against the composed lens: a channel's plane of focus
+// at 4 cm is a 35 mm lens's, not a 50 mm one's; a pinhole's channel at 1e-200 changes nothing
+// until --f-number gives it an aperture.
+TEST(CameraComposition, LensEffectsAreCheckedAgainstTheComposedLens) {
+  BaseCamera base = physicalBase(6.0);
+  base.selected.camera.effects.chromatic.inverseFocusShiftRed = 1.0 / 0.04 - 1.0 / 6.0;
+  CameraOptions o;
+  o.fNumber = "2";
+  EXPECT_NO_THROW(compose(base, o));
+  o.focalLengthMm = 50.0;
+  const std::string message = refusal([&] { compose(base, o); });
+  EXPECT_TRUE(contains(message, "cam.json with --focal-length 50 --f-number 2: chromatic.focus_distance_red is 0.04; it must be "
+                                "beyond the focal length (0.05 world units)")) << message;
+  BaseCamera lecture = lectureBase(CameraForm::Lecture);
+  lecture.selected.camera.effects.chromatic.inverseFocusShiftRed = 1e200;
+  o = {};
+  o.fNumber = "2";
+  o.focalLengthMm = 50.0;
+  EXPECT_TRUE(contains(refusal([&] { compose(lecture, o); }), "chromatic.focus_distance_red is 1e-200; it must be beyond the focal length"));
+}
+
 TEST(CameraComposition, LectureFormTakesAnFNumberWithAFocalLengthOnly) {
   for (const CameraForm form : {CameraForm::Lecture, CameraForm::Intrinsics}) {
     const BaseCamera base = lectureBase(form);

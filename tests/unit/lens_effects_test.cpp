@@ -254,6 +254,46 @@ TEST(LensEffectsJson, BadKeysAndFormsGiveOneLineErrors) {
                                   "cy": 240, "width": 640}})", "i.json"), InputError);
 }
 
+// A channel's plane of focus, and the curved surface's at the corner, must be one the lens can
+// form an image of: beyond the focal length (physical form), else beyond the aperture radius
+// (f ≥ R: no lens is faster than f/0.5). At 1e-200 the ray caster used to abort in Embree.
+TEST(LensEffectsJson, APlaneOfFocusInsideTheFocalLengthIsRefused) {
+  const std::string physical = R"({"eye": [0,1,3], "target": [0,0.55,-2], "focal_length_mm": 35, "focus_distance": 2,
+                                   "f_number": 1.4, )";
+  const std::string intrinsics = R"({"eye": [0,0,3], "target": [0,0,0], "intrinsics": {"fx": 686, "fy": 686, "cx": 480,
+      "cy": 320, "width": 960, "height": 640}, "aperture_radius": 0.08, )";
+  const auto message = [&](const std::string& text) {
+    try {
+      parseCameraJson(text, "c.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  for (const char* field : {"focus_distance_red", "focus_distance_blue"})
+    for (const char* distance : {"1e-200", "0.035", "0.001"}) {
+      const std::string m = message(cat(physical, R"("chromatic": {")", field, R"(": )", distance, "}}"));
+      EXPECT_TRUE(m.starts_with(cat("c.json: chromatic.", field, " is "))) << m;
+      EXPECT_NE(m.find("beyond the focal length (0.035 world units)"), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  for (const char* distance : {"1e-200", "0.03"}) {
+    const std::string m = message(cat(physical, R"("field_curvature": {"corner_focus_distance": )", distance, "}}"));
+    EXPECT_TRUE(m.starts_with("c.json: field_curvature.corner_focus_distance is ")) << m;
+    EXPECT_NE(m.find("beyond the focal length"), std::string::npos) << m;
+  }
+  const std::string m = message(intrinsics + R"("chromatic": {"focus_distance_red": 1e-200}})");
+  EXPECT_TRUE(m.starts_with("c.json: chromatic.focus_distance_red is 1e-200; it must be beyond the aperture radius (0.08")) << m;
+  EXPECT_NE(message(intrinsics + R"("field_curvature": {"corner_focus_distance": 0.05}})").find("aperture radius"), std::string::npos);
+  // Just beyond, and beyond infinity's side, are lenses.
+  EXPECT_NO_THROW(parseCameraJson(physical + R"("chromatic": {"focus_distance_red": 0.036, "focus_distance_blue": "infinity"},
+      "field_curvature": {"corner_focus_distance": 0.036}})", "c.json"));
+  EXPECT_NO_THROW(parseCameraJson(intrinsics + R"("chromatic": {"focus_distance_red": 0.081}})", "c.json"));
+  // A pinhole has no aperture to blur with: any positive distance changes nothing.
+  EXPECT_NO_THROW(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
+      "chromatic": {"focus_distance_red": 1e-200}})", "c.json"));
+}
+
 Scene oneQuad() {
   Scene scene;
   addUnlitQuad(scene, glm::dmat4(1.0), 1.0, 1.0, glm::vec3(1.0f));

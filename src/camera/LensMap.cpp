@@ -138,6 +138,58 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   }
 }
 
+double forwardLinearisationErrorPx(const Camera& camera, ImageSize size) {
+  if (!camera.effects.needsRemap()) return 0.0;
+  const Window& w = camera.view.window;
+  const int width = size.widthPx, height = size.heightPx;
+  // Pixel (image orientation) → normalised, and back: the rendered view has the image's pitch.
+  const auto normalised = [&](glm::dvec2 pixel) { return normalisedFromWindow(camera.view, windowFromPixel(w, pixel, width, height)); };
+  const auto pixel = [&](glm::dvec2 n) { return pixelFromWindow(w, windowFromNormalised(camera.view, n), width, height); };
+  const double scale = 1.0 + std::max({0.0, std::abs(camera.effects.chromatic.lateralRed), std::abs(camera.effects.chromatic.lateralBlue)});
+  // Where the lens puts the view's point q (view pixels), in output pixels.
+  const auto forward = [&](glm::dvec2 q) { return pixel(camera.effects.distortion.distort(normalised(q))); };
+  // The error is smooth over the image: a grid of up to 129 × 129 points, the border included.
+  const int nx = std::min(width, 128), ny = std::min(height, 128);
+  std::vector<double> worstPerRow(static_cast<std::size_t>(ny) + 1, 0.0);
+  forEachRowBand(ny + 1, [&](int first, int last) {
+    for (int j = first; j < last; ++j) {
+      glm::dvec2 guess(0.0);
+      for (int i = 0; i <= nx; ++i) {
+        const glm::dvec2 out(width * static_cast<double>(i) / nx, height * static_cast<double>(j) / ny);
+        const glm::dvec2 truth = undistortOrThrow(camera, Channel::Green, normalised(out), i == 0 ? normalised(out) : guess);
+        guess = truth;
+        // The forward table's texel: its centre's image and central differences over one texel.
+        const glm::dvec2 q = pixel(truth);
+        const glm::dvec2 p = forward(q);
+        const glm::dvec2 dx = forward(q + glm::dvec2(0.5, 0.0)) - forward(q - glm::dvec2(0.5, 0.0));
+        const glm::dvec2 dy = forward(q + glm::dvec2(0.0, 0.5)) - forward(q - glm::dvec2(0.0, 0.5));
+        double& worst = worstPerRow[static_cast<std::size_t>(j)];
+        for (const double sx : {-0.5, 0.5})
+          for (const double sy : {-0.5, 0.5})
+            worst = std::max(worst, glm::length(forward(q + glm::dvec2(sx, sy)) - (p + sx * dx + sy * dy)));
+      }
+    }
+  });
+  return scale * *std::max_element(worstPerRow.begin(), worstPerRow.end());
+}
+
+void validateForwardLinearisation(const Camera& camera, ImageSize size) {
+  const double errorPx = forwardLinearisationErrorPx(camera, size);
+  if (errorPx <= kMaxForwardLinearisationErrorPx) return;
+  const Distortion& d = camera.effects.distortion;
+  std::string coefficients;
+  for (const auto& [name, value] : {std::pair{"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"p1", d.p1}, {"p2", d.p2}, {"alpha", d.alpha},
+                                    {"beta", d.beta}, {"gamma", d.gamma}})
+    if (value != 0.0) coefficients += cat(coefficients.empty() ? "" : ", ", name, " = ", value);
+  // The error shrinks in proportion to the pixel pitch (a second-order term over one pixel).
+  const double widthFor = std::ceil(size.widthPx * errorPx / kMaxForwardLinearisationErrorPx);
+  throw InputError(cat(camera.source, ": distortion (", coefficients, ") bends ", size.widthPx, "x", size.heightPx,
+                       " px so sharply that the raster, which carries each rendered pixel's samples by the lens's linear map "
+                       "over that pixel, would land them up to ", errorPx, " px from where the lens puts them (the limit is ",
+                       kMaxForwardLinearisationErrorPx, " px at any resolution: further, they fall in the wrong pixel); render at "
+                       "about --width ", widthFor, " or more, use weaker coefficients, or lenslab raycast (exact per ray)"));
+}
+
 Overscan overscanFor(const Camera& camera, ImageSize size) {
   Overscan o{camera, size, {0, 0}};
   if (!camera.effects.needsRemap()) return o;

@@ -146,6 +146,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     plan.fieldCurvature = !effects.fieldCurvature.isZero();
   }
   plan.remap = effects.needsRemap();
+  if (plan.remap) validateForwardLinearisation(camera, size);
   plan.overscan = overscanFor(camera, size);
   const ImageSize rendered = plan.overscan.size;
   const std::string where = plan.remap ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,

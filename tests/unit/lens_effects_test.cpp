@@ -325,6 +325,39 @@ TEST(FramePlanEffects, ZeroStrengthCostsNothing) {
   EXPECT_EQ(b.overscan.size.widthPx, size.widthPx);
 }
 
+// The raster carries each rendered pixel's samples by the lens's linear map over that pixel; a
+// distortion whose second-order term over a pixel exceeds half a pixel would put them in the wrong
+// pixel (k1 = 1e6 at 63 px: the image a patchwork of a few samples), so the plan refuses it, naming
+// the coefficient, the error, the limit and a width that meets it.
+TEST(FramePlanEffects, ADistortionTooSharpForTheResolutionIsRefused) {
+  const Scene scene = oneQuad();
+  const auto camera = [](double k1) {
+    return parseCameraJson(cat(R"({"eye": [0,1,3], "target": [0,0.55,-2], "focal_length_mm": 35, "focus_distance": 4,
+                                   "distortion": {"k1": )", k1, "}}"), "k.json").camera;
+  };
+  const ImageSize small{63, 42}, large{252, 168};
+  // A calibrated lens is far inside the limit; the error halves as the pitch does.
+  EXPECT_LT(forwardLinearisationErrorPx(camera(-0.22), small), 0.05);
+  const double at63 = forwardLinearisationErrorPx(camera(10.0), small), at252 = forwardLinearisationErrorPx(camera(10.0), large);
+  EXPECT_GT(at63 / at252, 3.0);
+  EXPECT_LT(at63 / at252, 5.0);
+  EXPECT_NO_THROW(makeFramePlan(scene, camera(10.0), small));
+  for (const double k1 : {1e3, 1e6}) {
+    std::string message;
+    try {
+      makeFramePlan(scene, camera(k1), small);
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    EXPECT_TRUE(message.starts_with(cat("k.json: distortion (k1 = ", k1, ") bends 63x42 px so sharply"))) << message;
+    EXPECT_NE(message.find("(the limit is 0.5 px"), std::string::npos) << message;
+    EXPECT_NE(message.find("render at about --width "), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  // k1 = 1000 is within the limit at four times the width.
+  EXPECT_NO_THROW(makeFramePlan(scene, camera(1e3), {4 * 63, 4 * 42}));
+}
+
 TEST(FramePlanEffects, EachEffectAddsOnlyItsOwnPassOrVariant) {
   const Scene scene = oneQuad();
   const ImageSize size{120, 80};

@@ -1,0 +1,108 @@
+// Automatic framing, rendered: a glTF without cameras, written here at sizes from a micrometre to
+// a thousand kilometres, comes out in frame, upright and filling it, through both renderers —
+// the thin lens (with depth of field) where it can focus on the subject, a pinhole beyond life
+// size. The subject is a square, its top half red and its bottom half blue (unlit), facing the
+// camera: upside down, cropped or empty images all fail.
+#include "../common/animated_gltf.h"
+#include "../common/temp_dir_test.h"
+#include "camera/Camera.h"
+#include "camera/DepthRange.h"
+#include "core/Text.h"
+#include "gl_test_context.h"
+#include "io/CameraSelection.h"
+#include "plan/FramePlan.h"
+#include "raycast/RayCaster.h"
+#include "render/Renderer.h"
+#include "scene/GltfLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace lenslab {
+namespace {
+
+// A square of side `side` in the XY plane about the origin, red above y = 0 and blue below, under
+// a root node scaled by `rootScale` (as a model exported at the wrong unit is).
+std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, double side, double rootScale) {
+  test::AnimatedGltf g;
+  const float h = static_cast<float>(0.5 * side);
+  const auto half = [&](float y0, float y1) {
+    const int positions = g.floats({-h, y0, 0, h, y0, 0, h, y1, 0, -h, y0, 0, h, y1, 0, -h, y1, 0}, "VEC3", 6);
+    g.gltf["accessors"][static_cast<std::size_t>(positions)]["min"] = {-h, y0, 0};
+    g.gltf["accessors"][static_cast<std::size_t>(positions)]["max"] = {h, y1, 0};
+    return positions;
+  };
+  const int top = half(0.0f, h), bottom = half(-h, 0.0f);
+  g.gltf["extensionsUsed"] = {"KHR_materials_unlit"};
+  for (const auto& colour : {std::vector<double>{1, 0, 0, 1}, std::vector<double>{0, 0, 1, 1}})
+    g.gltf["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", colour}}}, {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
+  g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", top}}}, {"material", 0}}}}});
+  g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", bottom}}}, {"material", 1}}}}});
+  const int root = g.node({{"scale", {rootScale, rootScale, rootScale}}});
+  g.node({{"mesh", 0}}, root);
+  g.node({{"mesh", 1}}, root);
+  return g.write(file);
+}
+
+struct Coverage {
+  int red = 0, blue = 0;
+  double redRow = 0.0, blueRow = 0.0;  // mean row (0 at the top)
+  int top = 1 << 30, bottom = -1, left = 1 << 30, right = -1;  // the subject's pixel rows and columns
+};
+
+Coverage coverage(const Image& image) {
+  Coverage c;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const glm::vec4 p = image.at(x, y);
+      const bool red = p.r > 0.5f && p.b < 0.2f, blue = p.b > 0.5f && p.r < 0.2f;
+      if (!red && !blue) continue;
+      (red ? c.red : c.blue) += 1;
+      (red ? c.redRow : c.blueRow) += y;
+      c.top = std::min(c.top, y), c.bottom = std::max(c.bottom, y);
+      c.left = std::min(c.left, x), c.right = std::max(c.right, x);
+    }
+  if (c.red) c.redRow /= c.red;
+  if (c.blue) c.blueRow /= c.blue;
+  return c;
+}
+
+class AutomaticFramingGl : public test::TempDirTest {};
+
+TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
+  LENSLAB_REQUIRE_GL();
+  // {side, root scale}: 1 µm to 1000 km, the 1 and 2–3 cm that used to come out upside down or
+  // cropped, and a 4 cm model under a root scaled by 0.15 (Avocado's case).
+  for (const auto& [side, rootScale] : std::vector<std::pair<double, double>>{
+           {1e-6, 1.0}, {1e-3, 1.0}, {0.01, 1.0}, {0.02, 1.0}, {0.03, 1.0}, {1.0, 1.0}, {1e6, 1.0}, {0.04, 0.15}}) {
+    const Scene scene = loadGltf(writeTwoToneSquare(dir_ / "square.gltf", side, rootScale));
+    // As `render` frames it, and with depth of field where the lens can focus on the subject
+    // (`render --f-number 2`; a pinhole's framing refuses an f-number).
+    for (const char* fNumber : {"", "2"}) {
+      if (*fNumber && !chooseCamera(scene, std::nullopt, {}, 0.0).physical) continue;
+      const Camera camera = withDepthRangeFitted(chooseCamera(scene, std::nullopt, {.fNumber = fNumber}, 0.0).camera, scene.bounds);
+      const ImageSize size{72, 48};
+      Renderer renderer(scene);
+      const Image raster = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
+      const Image cast = RayCaster(scene).render(camera, size, RaycastOptions{8, 1});
+      for (const auto& [name, image] : {std::pair<const char*, const Image&>{"raster", raster}, {"ray cast", cast}}) {
+        const Coverage c = coverage(image);
+        const std::string what = cat(name, ", side ", side, " x root scale ", rootScale, ": ", camera.source);
+        // Half the square each, and together most of the frame's height (the square's diagonal
+        // spans the bounding sphere's diameter: its side about 0.69 of the frame's height).
+        EXPECT_GT(c.red, size.widthPx * size.heightPx / 10) << what;
+        EXPECT_GT(c.blue, size.widthPx * size.heightPx / 10) << what;
+        EXPECT_LT(c.redRow, c.blueRow) << "upright: red above blue; " << what;
+        EXPECT_GT(c.bottom - c.top + 1, size.heightPx / 2) << what;
+        EXPECT_GE(c.top, 1) << "in frame, not cropped; " << what;
+        EXPECT_LE(c.bottom, size.heightPx - 2) << what;
+        EXPECT_GE(c.left, 1) << what;
+        EXPECT_LE(c.right, size.widthPx - 2) << what;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -301,15 +301,17 @@ def define_cases():
     # ---- 1. faults -------------------------------------------------------------------------
     F = "faults"
     case("F01", F, RENDER[:1] + ["--width", "320", "-q", "--out", "{D}/small/x.png"], "refuse", "No space left on device",
-         needs="tmpfs", quick=True, watched="small")
+         needs="tmpfs", quick=True, watched="small", short="render --width 320 --out D/small/x.png (a 16 KiB tmpfs)")
     case("F02", F, ["raycast", "--spp", "1", "--width", "200", "-q", "--out", "{D}/small/x.exr"], "refuse",
-         "No space left on device", needs="tmpfs", watched="small")
+         "No space left on device", needs="tmpfs", watched="small",
+         short="raycast --spp 1 --width 200 --out D/small/x.exr (a 16 KiB tmpfs)")
     case("F03", F, ["capture", "--path", os.path.join(ROWS, "rack-focus.json"), "--frames", "0:3", "--width", "200", "-q",
                     "--out", "{D}/small/f_%04d.exr"], "refuse", "No space left on device", needs="tmpfs",
          short="capture --path rack-focus.json --frames 0:3 --width 200 --out D/small/f_%04d.exr (16 KiB tmpfs)",
          partial=True)
     case("F04", F, RENDER + ["--out", "{D}/x.png", "--stats", "{D}/small/full/s.json"], "refuse", "--stats", needs="tmpfs",
-         setup=lambda d: os.makedirs(os.path.join(d, "small", "full")))
+         setup=lambda d: os.makedirs(os.path.join(d, "small", "full")),
+         short="render --out D/x.png --stats D/small/full/s.json (a full 16 KiB tmpfs)")
     case("F05", F, ["capture", "--path", os.path.join(ROWS, "rack-focus.json"), "--frames", "0:3", "--width", "160", "-q",
                     "--out", "{D}/frames/f_%04d.exr"], "refuse", "File too large", fsize_kb=16, quick=True,
          short="capture --frames 0:3 --width 160 --out D/frames/f_%04d.exr (ulimit -f 16)",
@@ -455,6 +457,10 @@ def define_cases():
          short="capture --path path.json (key times 0 and 1e-320)")
     case("N49", N, CAPTURE + ["--shard", "0/0"], "refuse", "--shard", short="capture ... --shard 0/0")
     case("N50", N, CAPTURE[:3] + ["--frames", "5:2"] + CAPTURE[5:], "refuse", "--frames", short="capture ... --frames 5:2")
+    case("N54", N, ["raycast", "--width", "16384", "--height", "16384", "--spp", "1", "-q", "--out", "{D}/x.exr"], "refuse",
+         ("memory", "--width"), short="raycast --width 16384 --height 16384 (2^28 pixels, the limit; 3 GiB address space)")
+    case("N55", N, ["render", "--width", "65536", "--height", "65536", "-q", "--out", "{D}/x.png"], "refuse", "--width",
+         short="render --width 65536 --height 65536 (2^32 pixels)")
     opencv = {"intrinsics": {"fx": 600, "fy": 600, "cx": 319.5, "cy": 239.5, "width": 640, "height": 480},
               "eye": [0, 1, 3], "target": [0, 0.55, -2]}
     case("N51", N, RENDER + ["--camera", "{D}/cam.json", "--out", "{D}/x.exr"], "refuse", ("width", "cam.json"),
@@ -709,10 +715,10 @@ def run_case(c, lenslab, env, root):
     if c.needs == "tmpfs":
         reason = env.mount_tmpfs(os.path.join(d, "small"), c.tmpfs_options)
         if reason:
-            return "skipped", "cannot mount a tmpfs: " + reason, None
+            return "skipped", "not run", "cannot mount a tmpfs (%s)" % reason.replace(d, "D").rstrip(".")
         mounted = os.path.join(d, "small")
     if c.needs == "nobody" and env.nobody_reason:
-        return "skipped", env.nobody_reason, None
+        return "skipped", "not run", env.nobody_reason
     try:
         if c.setup:
             c.setup(d)
@@ -750,16 +756,22 @@ def make_runner(c, lenslab, d):
             start = time.monotonic()
             sent = None
             timed_out = False
-            while p.poll() is None:
-                if time.monotonic() - start > TIMEOUT_SECONDS:
+            try:
+                while p.poll() is None:
+                    if time.monotonic() - start > TIMEOUT_SECONDS:
+                        os.killpg(p.pid, signal.SIGKILL)
+                        p.wait()
+                        timed_out = True
+                        break
+                    if send and sent is None and send[1](d):
+                        os.kill(p.pid, send[0])
+                        sent = send[0]
+                    time.sleep(0.0005 if send and sent is None else 0.002)
+            except BaseException:  # the probe itself interrupted: take its lenslab along
+                if p.poll() is None:
                     os.killpg(p.pid, signal.SIGKILL)
                     p.wait()
-                    timed_out = True
-                    break
-                if send and sent is None and send[1](d):
-                    os.kill(p.pid, send[0])
-                    sent = send[0]
-                time.sleep(0.0005 if send and sent is None else 0.002)
+                raise
             err.seek(0)
             stderr = err.read().decode("utf-8", "replace")
         os.remove(err_path)
@@ -915,6 +927,12 @@ def main():
     lenslab = os.path.abspath(args.lenslab)
     if not os.access(lenslab, os.X_OK):
         sys.exit("robustness-probe: %s is not an executable: build lenslab first (cmake --build build)" % lenslab)
+
+    def stop(signum, _):
+        raise SystemExit(128 + signum)  # unwinds: the running case's lenslab is killed, the folder removed
+    signal.signal(signal.SIGTERM, stop)
+    signal.signal(signal.SIGINT, stop)
+    signal.signal(signal.SIGHUP, stop)
 
     define_cases()
     cases = CASES

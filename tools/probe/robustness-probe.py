@@ -163,7 +163,7 @@ COLMAP_IMAGES = "1 1 0 0 0 0 -0.5 5 1 a.png\n\n"
 class Case:
     def __init__(self, cid, category, argv, expect, fragment=None, setup=None, quick=False, short=None,
                  user=None, fsize_kb=None, ignore_xfsz=True, send=None, after=None, needs=None,
-                 watched=None, nonconstant=False, visible=False, partial=False, tmpfs_options="size=16k"):
+                 watched=None, nonconstant=False, visible=False, partial=False, tmpfs_options="size=16k", unset=()):
         self.id, self.category, self.argv, self.expect = cid, category, argv, expect
         self.fragment = fragment  # str or tuple of str: the refusal must hold one of them
         self.setup, self.quick, self.short = setup, quick, short
@@ -175,6 +175,7 @@ class Case:
         self.watched = watched  # folder (relative to D) that must be unchanged by a refusal
         self.nonconstant = nonconstant  # the image must show something (not one colour)
         self.tmpfs_options = tmpfs_options  # the mount options of its tmpfs (needs="tmpfs")
+        self.unset = unset  # environment variables the run goes without
         self.partial = partial  # a refused capture may keep the frames it finished (whole), nothing else
         self.visible = visible  # some surface must be in view (alpha above 0 somewhere): not the background alone
 
@@ -354,9 +355,11 @@ def define_cases():
     case("F21", F, CAPTURE + ["--colmap-out", "{D}/ro/model"], "refuse", ("--colmap-out", "ro"), user="nobody", needs="nobody",
          setup=lambda d: (os.mkdir(os.path.join(d, "ro")), os.chmod(os.path.join(d, "ro"), 0o555)),
          short="capture ... --colmap-out D/ro/model (read-only folder, as nobody)")
-    case("F22", F, ["info", "{D}/box.gltf", "--camera", "{D}/noread.json"], "refuse", "noread.json", user="nobody", needs="nobody",
+    case("F22", F, ["info", "{D}/box.gltf", "--camera", "{D}/noread.json"], "refuse", "Permission denied", user="nobody", needs="nobody",
          setup=lambda d: (box_scene(d), write_json(d, "noread.json", physical_camera()), os.chmod(os.path.join(d, "noread.json"), 0)),
          short="info box.gltf --camera D/noread.json (mode 000, as nobody)")
+    case("F23", F, ["view", "--frames", "1", "--screenshot", "{D}/x.png"], "refuse", "DISPLAY",
+         unset=("DISPLAY", "WAYLAND_DISPLAY"), short="view --frames 1 --screenshot D/x.png (no DISPLAY)")
 
     # ---- 2. signals ------------------------------------------------------------------------
     S = "signals"
@@ -750,7 +753,8 @@ def make_runner(c, lenslab, d):
                     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
         err_path = os.path.join(os.path.dirname(d), "." + os.path.basename(d) + ".stderr")
         with open(err_path, "w+b") as err:
-            env = dict(os.environ, LENSLAB_PROGRESS_SECONDS="1000")
+            env = {k: v for k, v in os.environ.items() if k not in c.unset}
+            env["LENSLAB_PROGRESS_SECONDS"] = "1000"
             p = subprocess.Popen(prefix + [lenslab] + argv, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
                                  preexec_fn=limits, start_new_session=True, env=env)
             start = time.monotonic()

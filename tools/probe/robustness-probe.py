@@ -939,7 +939,8 @@ def main():
     signal.signal(signal.SIGHUP, stop)
 
     define_cases()
-    cases = CASES
+    order = ["faults", "signals", "numeric", "malformed", "scale"]
+    cases = sorted(CASES, key=lambda c: (order.index(c.category), c.id))
     if args.quick:
         cases = [c for c in cases if c.quick]
     if args.only:

@@ -24,8 +24,13 @@ double framingDistance(double radius, double focalLength, double sensorSide) {
 
 SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focalLengthMm, glm::dvec2 sensorMm,
                            const glm::dvec3& towardCamera) {
-  // A single point (radius 0) is framed as a tiny sphere about it.
-  const double r = kFramingMargin * std::max(radius, 1e-9 * std::max(1.0, glm::length(center)));
+  // A sphere smaller than what double precision resolves at its distance from the origin (a
+  // point, radius 0, included) is framed as the smallest one it does: 1e-14 of that distance
+  // (45 times double's epsilon) leaves about two digits across the frame. Only a point at the origin itself needs an absolute
+  // size. (A floor relative to the origin's distance that is larger than that shrinks a small
+  // object far from the origin to a speck in an empty frame.)
+  const double resolvable = 1e-14 * glm::length(center);
+  const double r = kFramingMargin * std::max(radius, resolvable > 0.0 ? resolvable : (radius > 0.0 ? radius : 1.0));
   const double f = focalLengthMm * kMetresPerMillimetre;
   const double side = std::min(sensorMm.x, sensorMm.y) * kMetresPerMillimetre;
   const char* across = sensorMm.y <= sensorMm.x ? "height" : "width";

@@ -56,7 +56,7 @@ struct RayCaster::Impl {
   RTCScene rtcScene = nullptr;
   struct Geometry {
     int instance;
-    const float* relativePositions;  // Embree's vertex buffer: 3 floats per vertex, world − origin
+    const float* relativePositions;  // Embree's vertex buffer: 3 floats per vertex, (world − origin) / scale
     glm::mat3 normalFromModel;
     bool mirrored;
   };
@@ -68,6 +68,11 @@ struct RayCaster::Impl {
   // camera, keeps the precision it has at the origin, float's relative error applying to sizes
   // within the scene and not to its distance from (0,0,0) or from the camera.
   glm::dvec3 origin{std::numeric_limits<double>::quiet_NaN()};
+  // ... and in units of `scale` world units, a power of two near the scene's size, so that a scene
+  // of 1e-12 or 1e-30 metres reaches Embree at the size of a metre: Embree runs with denormals
+  // flushed to zero, and its triangle test multiplies edge by edge by edge (a 1e-13 scene already
+  // underflows there). Scaling by a power of two rounds nothing; t values scale by it as well.
+  double scale = 1.0;
   std::mutex rebaseMutex;
 
   ~Impl() {
@@ -87,6 +92,8 @@ struct RayCaster::Impl {
     release();
     geometries.clear();
     origin = newOrigin;
+    const double size = scene->bounds.empty() ? 0.0 : glm::length(scene->bounds.max - scene->bounds.min);
+    scale = std::isfinite(size) && size > 0.0 ? std::exp2(std::round(std::log2(size))) : 1.0;
     rtcScene = rtcNewScene(device);
     rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
     for (std::size_t k = 0; k < scene->instances.size(); ++k) {
@@ -96,7 +103,7 @@ struct RayCaster::Impl {
       auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                    3 * sizeof(float), mesh.vertices.size()));
       for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const glm::dvec3 p = glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin;
+        const glm::dvec3 p = (glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin) / scale;
         positions[i * 3] = static_cast<float>(p.x);
         positions[i * 3 + 1] = static_cast<float>(p.y);
         positions[i * 3 + 2] = static_cast<float>(p.z);
@@ -188,7 +195,7 @@ struct RayCaster::Impl {
     const double tEnd = std::min(ray.tFar, exit);
     if (!(enter <= exit) || !(std::max(ray.tNear, enter) <= tEnd)) return miss;
     const double tStart = std::max(ray.tNear, enter);
-    const glm::dvec3 start = ray.origin + tStart * ray.direction;
+    const glm::dvec3 start = (ray.origin + tStart * ray.direction) / scale;  // in Embree's units
     double tNear = ray.tNear;
     for (int layer = 0; layer < 64; ++layer) {
       RTCIntersectContext context;
@@ -200,8 +207,8 @@ struct RayCaster::Impl {
       rh.ray.dir_x = static_cast<float>(ray.direction.x);
       rh.ray.dir_y = static_cast<float>(ray.direction.y);
       rh.ray.dir_z = static_cast<float>(ray.direction.z);
-      rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart));
-      rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>(tEnd - tStart);
+      rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart) / scale);
+      rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>((tEnd - tStart) / scale);
       if (!(rh.ray.tnear <= rh.ray.tfar)) return miss;
       // Embree asserts (aborts) on a ray it cannot take: every float finite and below 1.8e18.
       if (!embreeTakes(rh.ray)) throw unfiniteRay(camera, pixel);
@@ -218,17 +225,18 @@ struct RayCaster::Impl {
       const std::uint32_t i0 = mesh.indices[rh.hit.primID * 3], i1 = mesh.indices[rh.hit.primID * 3 + 1],
                           i2 = mesh.indices[rh.hit.primID * 3 + 2];
       auto world = [&](std::uint32_t i) {  // relative to `origin`, as the ray is
-        return glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
+        return scale * glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
       };
       const glm::dvec3 p0 = world(i0), p1 = world(i1), p2 = world(i2);
       // Front-facing as GL decides it: counter-clockwise on screen, i.e. the model's winding seen
       // from the normal's side; a mirroring transform turns it around (glFrontFace(GL_CW)).
       bool front = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) < 0.0;
       if (g.mirrored) front = !front;
-      const double tHit = tStart + rh.ray.tfar;
+      const double hitAfterStart = scale * static_cast<double>(rh.ray.tfar);
+      const double tHit = tStart + hitAfterStart;
       // Past this surface, measured from Embree's start (a skip relative to the camera's distance
       // would jump a telephoto's whole subject).
-      const double skipTo = tStart + rh.ray.tfar * (1.0 + 1e-6) + 1e-9;
+      const double skipTo = tStart + hitAfterStart * (1.0 + 1e-6) + 1e-9 * scale;
       if (!front && !material.doubleSided) {
         tNear = skipTo;
         continue;

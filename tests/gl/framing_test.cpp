@@ -23,8 +23,9 @@ namespace lenslab {
 namespace {
 
 // A square of side `side` in the XY plane about the origin, red above y = 0 and blue below, under
-// a root node scaled by `rootScale` (as a model exported at the wrong unit is).
-std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, double side, double rootScale) {
+// a root node scaled by `rootScale` (as a model exported at the wrong unit is) and moved by
+// `rootOffset` (as a model in geographic coordinates is).
+std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, double side, double rootScale, double rootOffset = 0.0) {
   test::AnimatedGltf g;
   const float h = static_cast<float>(0.5 * side);
   const auto half = [&](float y0, float y1) {
@@ -39,7 +40,7 @@ std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, doub
     g.gltf["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", colour}}}, {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
   g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", top}}}, {"material", 0}}}}});
   g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", bottom}}}, {"material", 1}}}}});
-  const int root = g.node({{"scale", {rootScale, rootScale, rootScale}}});
+  const int root = g.node({{"scale", {rootScale, rootScale, rootScale}}, {"translation", {rootOffset, 0.5 * rootOffset, 0.0}}});
   g.node({{"mesh", 0}}, root);
   g.node({{"mesh", 1}}, root);
   return g.write(file);
@@ -72,11 +73,18 @@ class AutomaticFramingGl : public test::TempDirTest {};
 
 TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
   LENSLAB_REQUIRE_GL();
-  // {side, root scale}: 1 µm to 1000 km, the 1 and 2–3 cm that used to come out upside down or
-  // cropped, and a 4 cm model under a root scaled by 0.15 (Avocado's case).
-  for (const auto& [side, rootScale] : std::vector<std::pair<double, double>>{
-           {1e-6, 1.0}, {1e-3, 1.0}, {0.01, 1.0}, {0.02, 1.0}, {0.03, 1.0}, {1.0, 1.0}, {1e6, 1.0}, {0.04, 0.15}}) {
-    const Scene scene = loadGltf(writeTwoToneSquare(dir_ / "square.gltf", side, rootScale));
+  // {side, root scale, root offset}: 1e-30 m to 1000 km (below about 1e-13 m Embree's float
+  // triangle test underflows unless the ray caster rescales), the 1 and 2–3 cm that used to come
+  // out upside down or cropped, a 4 cm model under a root scaled by 0.15 (Avocado's case), and a
+  // 1 m square 1e11 and 1e13 from the origin (framed to a speck when its framing took 1e-9 of
+  // the distance from the origin as the smallest radius).
+  struct Case {
+    double side, rootScale, rootOffset;
+  };
+  for (const auto& [side, rootScale, rootOffset] :
+       std::vector<Case>{{1e-30, 1.0, 0.0}, {1e-12, 1.0, 0.0}, {1e-6, 1.0, 0.0}, {1e-3, 1.0, 0.0}, {0.01, 1.0, 0.0}, {0.02, 1.0, 0.0},
+                         {0.03, 1.0, 0.0}, {1.0, 1.0, 0.0}, {1e6, 1.0, 0.0}, {0.04, 0.15, 0.0}, {1.0, 1.0, 1e11}, {1.0, 1.0, 1e13}}) {
+    const Scene scene = loadGltf(writeTwoToneSquare(dir_ / "square.gltf", side, rootScale, rootOffset));
     // As `render` frames it, and with depth of field where the lens can focus on the subject
     // (`render --f-number 2`; a pinhole's framing refuses an f-number).
     for (const char* fNumber : {"", "2"}) {
@@ -88,7 +96,7 @@ TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
       const Image cast = RayCaster(scene).render(camera, size, RaycastOptions{8, 1});
       for (const auto& [name, image] : {std::pair<const char*, const Image&>{"raster", raster}, {"ray cast", cast}}) {
         const Coverage c = coverage(image);
-        const std::string what = cat(name, ", side ", side, " x root scale ", rootScale, ": ", camera.source);
+        const std::string what = cat(name, ", side ", side, " x root scale ", rootScale, " at ", rootOffset, ": ", camera.source);
         // Half the square each, and together most of the frame's height (the square's diagonal
         // spans the bounding sphere's diameter: its side about 0.69 of the frame's height).
         EXPECT_GT(c.red, size.widthPx * size.heightPx / 10) << what;

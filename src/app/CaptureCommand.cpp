@@ -24,6 +24,7 @@
 #include "io/ColmapModel.h"
 #include "io/FrameSequence.h"
 #include "io/ImageFile.h"
+#include "io/Interrupt.h"
 #include "io/JsonLines.h"
 #include "io/OutputPath.h"
 #include "io/Progress.h"
@@ -296,25 +297,22 @@ int runCapture(const CaptureOptions& o) {
   const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
 
   // Every output checked before any work (the frames' folders made first: a cluster's shards
-  // start on an empty volume).
+  // start on an empty volume). The folders this run makes are removed again, when still empty, if
+  // it is refused or interrupted.
+  OutputSet madeFolders;
   std::set<fs::path> folders;
   for (const int f : frames) folders.insert(fs::path(formatFramePath(o.out, f)).parent_path());
   folders.insert(manifest.parent_path());
-  for (const fs::path& folder : folders) {
-    if (folder.empty()) continue;
-    std::error_code error;
-    fs::create_directories(folder, error);
-    if (error) throw InputError(cat(folder.string(), ": cannot make the output folder: ", error.message()));
-  }
+  for (const fs::path& folder : folders)
+    if (!folder.empty()) madeFolders.createFolders(folder);
   const fs::path firstImage = formatFramePath(o.out, frames.empty() ? range.first : frames.front());
   checkOutputPath(firstImage, OutputKind::Image, "--out");
+  checkOutputPath(frameCameraPath(firstImage), OutputKind::Any, "--out");  // its name is longer than the image's
   if (depthAov && firstImage.extension() != ".exr")
     throw InputError(cat("--aov depth: ", o.out, ": depth goes in an EXR's Z channel; give an --out ending in .exr"));
   checkOutputPath(manifest, OutputKind::Any, "--manifest");
   if (!o.colmapOut.empty()) {
-    std::error_code error;
-    fs::create_directories(o.colmapOut, error);
-    if (error) throw InputError(cat("--colmap-out ", o.colmapOut, ": cannot make the folder: ", error.message()));
+    madeFolders.createFolders(o.colmapOut);
     checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
   }
   // Every frame's camera checked for what COLMAP can hold before any work; written before the
@@ -382,7 +380,6 @@ int runCapture(const CaptureOptions& o) {
     outputs.commit();
     const double seconds = secondsSince(frameStart);
     ++rendered;
-
     nlohmann::json line;
     line["frame"] = frame;
     line["time"] = time;
@@ -407,6 +404,7 @@ int runCapture(const CaptureOptions& o) {
                         std::round(seconds * 100.0) / 100.0, " s"));
   }
   progress.finish();
+  madeFolders.commit();
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
               << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first

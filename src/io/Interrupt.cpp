@@ -1,7 +1,6 @@
 #include "io/Interrupt.h"
 
 #include <csignal>
-#include <cstdio>
 #include <map>
 #include <string>
 #include <thread>
@@ -58,7 +57,6 @@ std::string plural(int n, const char* one, const char* many) { return std::to_st
     if (folders > 0) line += plural(folders, "empty folder it made", "empty folders it made");
   }
   line += "\n";
-  std::fflush(stderr);
   [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, line.data(), line.size());
   ::_exit(128 + sig);
 }

@@ -103,11 +103,10 @@ void checkAppendable(const std::filesystem::path& file, std::string_view option)
 }
 
 std::vector<std::string> readCompleteLines(const std::filesystem::path& file) {
+  std::error_code error;
+  if (!std::filesystem::exists(file, error) && !error) return {};
   std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    if (errno == ENOENT) return {};
-    throw InputError(cat(file.string(), ": cannot read it: ", std::strerror(errno)));
-  }
+  if (!in) throw InputError(cat(file.string(), ": cannot read it: ", error ? error.message() : std::strerror(errno)));
   std::stringstream text;
   text << in.rdbuf();
   const std::string all = text.str();

@@ -24,6 +24,7 @@
 #include "io/ColmapModel.h"
 #include "io/FrameSequence.h"
 #include "io/ImageFile.h"
+#include "io/Interrupt.h"
 #include "io/JsonLines.h"
 #include "io/OutputPath.h"
 #include "io/Progress.h"
@@ -276,6 +277,40 @@ void writeColmapModel(const fs::path& dir, const ColmapFiles& files) {
   outputs.commit();
 }
 
+// The images named in the manifest's lines ("file", as relativeTo writes it). A line that is not
+// a JSON object with a "file" names no frame: its frame is rendered again.
+std::set<std::string> manifestFiles(const fs::path& manifest) {
+  std::set<std::string> files;
+  for (const std::string& text : readCompleteLines(manifest)) {
+    const nlohmann::json line = nlohmann::json::parse(text, nullptr, false);
+    if (line.is_object() && line.contains("file") && line["file"].is_string()) files.insert(line["file"].get<std::string>());
+  }
+  return files;
+}
+
+// A frame's files and its manifest line, together or not at all: the files are renamed into
+// place, then the line appended. An interruption between the two removes the files (they are in
+// io/Interrupt.h's list until the line is written); a failed line removes them here; a kill
+// leaves files without a line, which --skip-existing renders again.
+void commitFrame(OutputSet& outputs, const std::vector<fs::path>& files, const fs::path& manifest, const std::string& line) {
+  std::vector<std::uint64_t> handles;
+  {
+    const InterruptDeferral deferral;
+    outputs.commit();
+    for (const fs::path& f : files) handles.push_back(removeOnInterrupt(f, RemovalKind::File));
+  }
+  const InterruptDeferral deferral;
+  try {
+    appendLine(manifest, line);
+  } catch (...) {
+    std::error_code ignored;
+    for (const fs::path& f : files) fs::remove(f, ignored);
+    for (const std::uint64_t h : handles) forgetRemoveOnInterrupt(h);
+    throw;
+  }
+  for (const std::uint64_t h : handles) forgetRemoveOnInterrupt(h);
+}
+
 int runCapture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   // Without --path the scene's animation gives the frame count: the scene is read first.
@@ -296,27 +331,27 @@ int runCapture(const CaptureOptions& o) {
   const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
 
   // Every output checked before any work (the frames' folders made first: a cluster's shards
-  // start on an empty volume).
+  // start on an empty volume). The folders this run makes are removed again, when still empty, if
+  // it is refused or interrupted.
+  OutputSet madeFolders;
   std::set<fs::path> folders;
   for (const int f : frames) folders.insert(fs::path(formatFramePath(o.out, f)).parent_path());
   folders.insert(manifest.parent_path());
-  for (const fs::path& folder : folders) {
-    if (folder.empty()) continue;
-    std::error_code error;
-    fs::create_directories(folder, error);
-    if (error) throw InputError(cat(folder.string(), ": cannot make the output folder: ", error.message()));
-  }
+  for (const fs::path& folder : folders)
+    if (!folder.empty()) madeFolders.createFolders(folder);
   const fs::path firstImage = formatFramePath(o.out, frames.empty() ? range.first : frames.front());
   checkOutputPath(firstImage, OutputKind::Image, "--out");
+  checkOutputPath(frameCameraPath(firstImage), OutputKind::Any, "--out");  // its name is longer than the image's
   if (depthAov && firstImage.extension() != ".exr")
     throw InputError(cat("--aov depth: ", o.out, ": depth goes in an EXR's Z channel; give an --out ending in .exr"));
   checkOutputPath(manifest, OutputKind::Any, "--manifest");
+  checkAppendable(manifest, "--manifest");
   if (!o.colmapOut.empty()) {
-    std::error_code error;
-    fs::create_directories(o.colmapOut, error);
-    if (error) throw InputError(cat("--colmap-out ", o.colmapOut, ": cannot make the folder: ", error.message()));
+    madeFolders.createFolders(o.colmapOut);
     checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
   }
+  // The frames already done, for --skip-existing: those with a line in the manifest.
+  const std::set<std::string> framesInManifest = o.skipExisting ? manifestFiles(manifest) : std::set<std::string>{};
   // Every frame's camera checked for what COLMAP can hold before any work; written before the
   // first frame.
   const std::optional<ColmapFiles> colmapFiles =
@@ -340,8 +375,9 @@ int runCapture(const CaptureOptions& o) {
     const int frame = frames[i];
     const fs::path imageFile = formatFramePath(o.out, frame);
     const fs::path cameraFile = frameCameraPath(imageFile);
-    // Outputs appear whole (io/AtomicFile.h), the image last: an image that exists is a whole frame.
-    if (o.skipExisting && fs::exists(imageFile)) {
+    // A frame is done when its image (whole: io/AtomicFile.h) and its manifest line both exist;
+    // an image without a line (a kill between the two) is rendered again.
+    if (o.skipExisting && fs::exists(imageFile) && framesInManifest.count(relativeTo(imageFile, manifest))) {
       ++skipped;
       continue;
     }
@@ -376,13 +412,11 @@ int runCapture(const CaptureOptions& o) {
       depth = caster->depthImage(camera, size);
     }
 
-    OutputSet outputs;
+    OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
     outputs.add(cameraFile, cameraText);
     writeImage(outputs, imageFile, image, depthAov ? &depth : nullptr);
-    outputs.commit();
     const double seconds = secondsSince(frameStart);
     ++rendered;
-
     nlohmann::json line;
     line["frame"] = frame;
     line["time"] = time;
@@ -400,13 +434,14 @@ int runCapture(const CaptureOptions& o) {
     if (depthAov) line["aov"] = {"depth"};
     line["opencv"] = openCvJson(camera, size);
     line["shard"] = cat(shard.index, "/", shard.count);
-    appendLine(manifest, line.dump());
+    commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
 
     progress.update(static_cast<std::int64_t>(i) + 1, static_cast<std::int64_t>(frames.size()),
                     cat("frame ", frame, ": ", std::round(line["samples"].get<double>() * 10.0) / 10.0, " samples, ",
                         std::round(seconds * 100.0) / 100.0, " s"));
   }
   progress.finish();
+  madeFolders.commit();
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
               << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first
@@ -443,7 +478,8 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                   "(Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT; Kubernetes: $JOB_COMPLETION_INDEX/N)")
       ->capture_default_str();
   cmd->add_flag("--skip-existing", o->skipExisting,
-                "leave frames whose image exists alone (files are written atomically: one that exists is complete)");
+                "leave frames alone whose image exists and whose line the manifest holds (a frame with an image but no "
+                "line is rendered again)");
   cmd->add_option("--aov", o->aovs,
                   "extra outputs: depth = a Z channel in the EXR, the distance from the lens centre along the optical axis "
                   "(world units, +inf where nothing is hit)")

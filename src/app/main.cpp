@@ -2,6 +2,7 @@
 #include "app/Commands.h"
 #include "core/Error.h"
 #include "core/NearestName.h"
+#include "io/Interrupt.h"
 
 #include <algorithm>
 #include <iostream>
@@ -76,6 +77,8 @@ std::string unknownOptionMessage(const CLI::App& app) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before any thread starts: Ctrl-C and SIGTERM remove the run's unfinished files.
+  lenslab::installInterruptHandling();
   CLI::App app{"lenslab — a renderer of the lecture's camera models: pinhole, thin lens, lens effects", "lenslab"};
   app.set_version_flag("--version", LENSLAB_VERSION);
   app.require_subcommand(1);

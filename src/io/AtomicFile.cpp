@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/Text.h"
+#include "io/Interrupt.h"
 
 #include <algorithm>
 #include <atomic>
@@ -21,14 +22,17 @@ std::atomic<unsigned> counter{0};
 
 fs::path folderOf(const fs::path& file) { return file.has_parent_path() ? file.parent_path() : fs::path("."); }
 
-// The temporary file's name: ".NAME.tmp-PID-TOKEN-N.EXT". The process id alone is not unique
-// where processes on several machines write into one shared folder (shards of a cluster job, each
-// container's process often with the same small pid) and may write the same target (capture
-// --colmap-out): a random token drawn once per process keeps their temporary files apart.
+// The temporary file's name: ".lenslab-PID-TOKEN-N.EXT", short whatever the target's name, so
+// that a target named with all of NAME_MAX (255 bytes) still has a temporary file beside it; the
+// extension is kept because OpenImageIO picks the format from it. The process id alone is not
+// unique where processes on several machines write into one shared folder (shards of a cluster
+// job, each container's process often with the same small pid) and may write the same target
+// (capture --colmap-out): a random token drawn once per process keeps their temporary files apart.
 fs::path temporaryFor(const fs::path& target) {
   static const unsigned token = std::random_device{}();
-  return folderOf(target) / cat(".", target.stem().string(), ".tmp-", ::getpid(), "-", std::hex, token, std::dec, "-",
-                                counter++, target.extension().string());
+  std::string extension = target.extension().string();
+  if (extension.size() > 16) extension.clear();  // not an image's: the name stays short
+  return folderOf(target) / cat(".lenslab-", ::getpid(), "-", std::hex, token, std::dec, "-", counter++, ".tmp", extension);
 }
 
 InputError cannotWrite(const fs::path& target, int error) {
@@ -65,10 +69,13 @@ int syncFolder(const fs::path& folder) {
 OutputSet::~OutputSet() {
   if (committed_) return;
   std::error_code ignored;
-  for (const Entry& e : entries_)
+  for (const Entry& e : entries_) {
     if (!e.temporary.empty()) fs::remove(e.temporary, ignored);
+    forgetRemoveOnInterrupt(e.interruptHandle);
+  }
   for (auto folder = createdFolders_.rbegin(); folder != createdFolders_.rend(); ++folder)
     fs::remove(*folder, ignored);  // only if empty: never what someone else put there
+  for (const std::uint64_t handle : folderHandles_) forgetRemoveOnInterrupt(handle);
 }
 
 void OutputSet::createFolders(const fs::path& folder) {
@@ -83,16 +90,22 @@ void OutputSet::createFolders(const fs::path& folder) {
   for (auto p = missing.rbegin(); p != missing.rend(); ++p) {
     const bool made = fs::create_directory(*p, error);
     if (error) throw InputError(cat(p->string(), ": cannot create the folder: ", error.message()));
-    if (made) createdFolders_.push_back(*p);
+    if (made) {
+      createdFolders_.push_back(*p);
+      folderHandles_.push_back(removeOnInterrupt(*p, RemovalKind::Folder));
+    }
   }
 }
 
 void OutputSet::add(const fs::path& target, std::string_view bytes) {
-  entries_.push_back({target, temporaryFor(target)});
+  // In the interruption's list before it exists: no moment when it is there and not listed.
+  const fs::path temp = temporaryFor(target);
+  entries_.push_back({target, temp, false, removeOnInterrupt(temp, RemovalKind::File)});
   const fs::path& temporary = entries_.back().temporary;
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) {
     const int error = errno;
+    forgetRemoveOnInterrupt(entries_.back().interruptHandle);
     entries_.pop_back();  // not ours to remove: O_EXCL found it there, or nothing was made
     if (error == ENOENT)
       throw InputError(cat(target.string(), ": the folder ", folderOf(target).string(), " does not exist"));
@@ -105,13 +118,15 @@ void OutputSet::add(const fs::path& target, std::string_view bytes) {
   if (error != 0) {
     std::error_code ignored;
     fs::remove(temporary, ignored);  // at once: on a full disk its pages are what the next file needs
+    forgetRemoveOnInterrupt(entries_.back().interruptHandle);
     entries_.pop_back();
     throw cannotWrite(target, error);
   }
 }
 
 fs::path OutputSet::addStreamed(const fs::path& target) {
-  entries_.push_back({target, temporaryFor(target), true});
+  const fs::path temp = temporaryFor(target);
+  entries_.push_back({target, temp, true, removeOnInterrupt(temp, RemovalKind::File)});
   return entries_.back().temporary;
 }
 
@@ -126,6 +141,8 @@ void OutputSet::commit() {
     if (fd >= 0 && ::close(fd) != 0 && error == 0) error = errno;
     if (error != 0) throw cannotWrite(e.target, error);
   }
+  // An interruption waits until the renames are done (or undone): the set appears whole.
+  const InterruptDeferral deferral;
   std::vector<fs::path> created;  // targets that did not exist before this call
   auto undo = [&] {
     std::error_code ignored;
@@ -154,6 +171,8 @@ void OutputSet::commit() {
                            std::system_category().message(error)));
     }
   committed_ = true;
+  for (const Entry& e : entries_) forgetRemoveOnInterrupt(e.interruptHandle);
+  for (const std::uint64_t handle : folderHandles_) forgetRemoveOnInterrupt(handle);
 }
 
 void writeFileAtomically(const fs::path& target, std::string_view bytes) {

@@ -2,14 +2,17 @@
 // Output files appear whole or not at all, and the files of one run appear together or not at all.
 //
 // Each file is first written to a temporary file beside its target (same folder, so that rename is
-// atomic; a dot name, so that it does not look like a result). Every write(2), the fsync(2) of the
+// atomic; a short dot name, ".lenslab-PID-TOKEN-N.EXT", so that it does not look like a result and
+// fits wherever the target's name fits, up to NAME_MAX). Every write(2), the fsync(2) of the
 // data and the close(2) are checked: a full disk shows as an error here, not as a short file later.
 // commit() then renames every temporary file onto its target and fsyncs the folders, so that after
 // a crash a name points either at the old file or at the whole new one.
 //
 // Until commit() no target is touched. If the set is destroyed uncommitted — a write failed, the
 // disk filled up, any exception on the way — the temporary files are removed, and so are the
-// folders createFolders() made (when empty): nothing new is left.
+// folders createFolders() made (when empty): nothing new is left. An interruption (Ctrl-C, SIGTERM;
+// io/Interrupt.h) removes the same, and waits for a commit() under way to finish.
+#include <cstdint>
 #include <filesystem>
 #include <string_view>
 #include <vector>
@@ -47,9 +50,11 @@ class OutputSet {
     std::filesystem::path target;
     std::filesystem::path temporary;
     bool streamed = false;  // written by someone else: fsync'ed at commit()
+    std::uint64_t interruptHandle = 0;  // the temporary file in io/Interrupt.h's list
   };
   std::vector<Entry> entries_;
   std::vector<std::filesystem::path> createdFolders_;  // outermost first
+  std::vector<std::uint64_t> folderHandles_;           // the same in io/Interrupt.h's list
   bool committed_ = false;
 };
 

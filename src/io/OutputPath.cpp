@@ -61,6 +61,11 @@ void checkOutputPath(const fs::path& path, OutputKind kind, std::string_view opt
     throw InputError(cat(name, ": cannot reach the folder ", folder.string(), ": ", error.message()));
   if (!fs::exists(folderStatus)) throw InputError(cat(name, ": the folder ", folder.string(), " does not exist"));
   if (!fs::is_directory(folderStatus)) throw InputError(cat(name, ": ", folder.string(), " is not a folder"));
+  // The probe's name is short; the target's may not fit (NAME_MAX, 255 bytes on most).
+  const std::size_t nameBytes = path.filename().string().size();
+  if (const long nameMax = ::pathconf(folder.c_str(), _PC_NAME_MAX); nameMax > 0 && nameBytes > static_cast<std::size_t>(nameMax))
+    throw InputError(cat(name, ": the file name is ", nameBytes, " bytes; the file system in ", folder.string(), " allows ",
+                         nameMax, ": give a shorter name"));
   if (const int e = probeFolder(folder); e != 0)
     throw InputError(cat(name, ": cannot write in the folder ", folder.string(), ": ", std::system_category().message(e)));
 }

@@ -15,7 +15,7 @@ enum class OutputKind {
 };
 
 // Throws InputError, one line naming the option and the file, unless: the extension suits `kind`;
-// the path is not a folder; its folder exists, is a folder, and takes a new file (a probe file is
+// the path is not a folder; its name fits the file system (NAME_MAX); its folder exists, is a folder, and takes a new file (a probe file is
 // created, written, and removed there — this also finds a read-only file system, a full disk and
 // missing permissions, whoever runs it). `option` is the flag the path came from ("--stats").
 void checkOutputPath(const std::filesystem::path& path, OutputKind kind, std::string_view option);

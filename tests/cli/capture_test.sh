@@ -122,6 +122,75 @@ if [ "$(stat -c %Y.%s "$work/one/frame_0012.exr")" = "$before" ]; then pass; els
 if [ -f "$work/one/frame_0013.exr" ]; then pass; else fail "--skip-existing did not make the missing frame 13"; fi
 if [ "$(wc -l <"$work/one/manifest.jsonl")" -eq $((lines_before + 1)) ]; then pass; else fail "--skip-existing: manifest lines $lines_before -> $(wc -l <"$work/one/manifest.jsonl"), expected one more"; fi
 
+# --- the manifest: a frame and its line together or not at all ---
+# manifest_holds FILE FRAMES...: every line valid JSON, each of FRAMES on exactly one line, no other.
+manifest_holds() {
+  $python - "$@" <<'EOF'
+import json, sys
+frames = []
+with open(sys.argv[1], "rb") as f:
+    data = f.read()
+if data and not data.endswith(b"\n"):
+    sys.exit("the last line has no newline: %r" % data[-80:])
+for n, line in enumerate(data.decode().splitlines(), 1):
+    try:
+        frames.append(json.loads(line)["frame"])
+    except Exception as e:
+        sys.exit("line %d is not a frame's JSON (%s): %.120s" % (n, e, line))
+want = sorted(int(a) for a in sys.argv[2:])
+if sorted(frames) != want:
+    sys.exit("frames %s, expected each of %s once" % (sorted(frames), want))
+EOF
+}
+small=(--path "$path" --width 32 --aperture-samples 2 -q)
+m=$work/manifest
+"$lenslab" capture "${small[@]}" --frames 0:3 --out "$m/f_%04d.png" || fail "manifest: first run"
+# A kill between a frame's image and its line (simulated: the line taken away): --skip-existing
+# renders the frame again and writes its line, rather than skipping it forever.
+sed -i '$d' "$m/manifest.jsonl"
+"$lenslab" capture "${small[@]}" --frames 0:3 --out "$m/f_%04d.png" --skip-existing || fail "manifest: resume after a lost line"
+if out=$(manifest_holds "$m/manifest.jsonl" 0 1 2 3 2>&1); then pass; else fail "an image without its line is skipped by --skip-existing: $out"; fi
+# A last line cut short (a kill mid-write, an older lenslab on a full disk): the resume cuts it off
+# before appending, instead of gluing the next frame's line to it; that frame (3) is made again,
+# and a new one (4) after it.
+truncate -s -100 "$m/manifest.jsonl"
+"$lenslab" capture "${small[@]}" --frames 0:4 --out "$m/f_%04d.png" --skip-existing || fail "manifest: resume after a partial line"
+if out=$(manifest_holds "$m/manifest.jsonl" 0 1 2 3 4 2>&1); then pass; else fail "a partial last line is not repaired: $out"; fi
+
+# A line that does not fit (each file limited to 2 KiB: the fourth ~600-byte line is cut short by
+# EFBIG, as by a full disk): one error line, no part of the line left, and no frame 3 without its
+# line; the resume then makes frames 3 to 5, each with one line.
+d=$work/full
+mkdir -p "$d"
+( trap '' XFSZ; ulimit -f 2; exec "$lenslab" capture "${small[@]}" --frames 0:5 --out "$d/f_%04d.png" ) 2>"$work/stderr"
+rc=$?
+if [ "$rc" -ne 0 ] && grep -qF "$d/manifest.jsonl: cannot append to it: File too large" "$work/stderr" \
+   && out=$(manifest_holds "$d/manifest.jsonl" 0 1 2 2>&1) && [ ! -e "$d/f_0003.png" ] && [ ! -e "$d/f_0003.camera.json" ] \
+   && [ -z "$(find "$d" -name '.*')" ]; then pass
+else fail "a manifest line that does not fit: exit $rc, ${out:-} $(ls -A "$d" | tr '\n' ' ') $(cat "$work/stderr")"; fi
+"$lenslab" capture "${small[@]}" --frames 0:5 --out "$d/f_%04d.png" --skip-existing || fail "manifest: resume after a full disk"
+if out=$(manifest_holds "$d/manifest.jsonl" 0 1 2 3 4 5 2>&1); then pass; else fail "resume after a line that did not fit: $out"; fi
+
+# A manifest that cannot be appended to is refused before rendering: no frame without its line.
+# (Root appends to a read-only file regardless: as root the run is made as 'nobody'.)
+r=$work/ro-manifest
+mkdir -p "$r"
+: >"$r/manifest.jsonl"
+chmod 444 "$r/manifest.jsonl"
+as=()
+if [ "$(id -u)" -eq 0 ]; then
+  chmod 755 "$work" && chmod 777 "$r"
+  as=(setpriv --reuid=nobody --regid=nogroup --clear-groups)
+fi
+if ! "${as[@]}" "$lenslab" --help >/dev/null 2>&1; then
+  echo "SKIPPED: read-only manifest: cannot run lenslab as nobody here (no setpriv)"
+elif "${as[@]}" "$lenslab" capture "${small[@]}" --frames 0:1 --out "$r/f_%04d.png" >"$work/stdout" 2>"$work/stderr"; then
+  fail "a read-only manifest: exit 0"
+elif grep -qF -- "--manifest $r/manifest.jsonl: cannot append to it: Permission denied" "$work/stderr" \
+     && [ "$(ls -A "$r")" = manifest.jsonl ]; then pass
+else fail "a read-only manifest: $(ls -A "$r" | tr '\n' ' ') $(cat "$work/stderr")"; fi
+chmod 700 "$work"
+
 # --- a glTF node animation plays: frames move, and `render --time` reproduces a frame ---
 # A unit quad sliding from x = -1 to x = +1 over one second (LINEAR translation), written here.
 make_gltf=$(cat <<'EOF'

@@ -24,6 +24,10 @@ expect_fault "--stats under a file" "$out/file is not a folder" "$out" - -- rend
 expect_fault "--stats names a folder" "is a folder; give a file name" "$out" - -- render --width 16 --out "$out/x.png" --stats "$out/folder.json"
 expect_fault "--out into a missing folder" "the folder $out/missing does not exist" "$out" - -- raycast --width 16 --spp 1 --out "$out/missing/x.exr"
 expect_fault "sweep report under a file" "$out/file" "$out" - -- sweep --out "$out/file/sweep" --width 16
+# Refused after it made its folders (the frames' and the manifest's, made first so that each file's
+# place can be checked): capture removes them again, as sweep does.
+expect_fault "capture refused after making its folders" "--aov depth" "$out" - \
+  -- capture --path "$src/assets/rows/rack-focus.json" --width 16 --aov depth --out "$out/new/deeper/f_%04d.png"
 
 # A read-only folder. Root writes into a chmod 555 folder regardless, so as root the run is made
 # as 'nobody' (setpriv); as any other user the chmod alone does it. (tmpfs_test.sh also tries a

@@ -92,6 +92,18 @@ TEST_F(OutputFileTest, AFailedWriteLeavesNothingOfTheWholeSet) {
   EXPECT_EQ(fileCount(), 0u) << "neither file, no temporary file, and not the folders made for them";
 }
 
+// The temporary file's name is short whatever the target's: a target of NAME_MAX bytes is written
+// (a temporary name made longer than its target's used to fail with "File name too long").
+TEST_F(OutputFileTest, ATargetNamedWithAllOfNameMaxIsWritten) {
+  const fs::path target = dir_ / (std::string(251, 'n') + ".png");
+  ASSERT_EQ(target.filename().string().size(), 255u);
+  EXPECT_NO_THROW(writeImage(target, noise(4, 4)));
+  EXPECT_TRUE(fs::exists(target));
+  EXPECT_EQ(fileCount(), 1u);
+  const std::string message = messageOf([&] { checkOutputPath(dir_ / ("n" + target.filename().string()), OutputKind::Image, "--out"); });
+  EXPECT_NE(message.find("the file name is 256 bytes"), std::string::npos) << message;
+}
+
 TEST_F(OutputFileTest, FoldersThatWereThereStay) {
   fs::create_directories(dir_ / "kept");
   { OutputSet outputs; outputs.createFolders(dir_ / "kept" / "made"); }

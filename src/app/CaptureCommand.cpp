@@ -344,7 +344,14 @@ int runCapture(const CaptureOptions& o) {
   checkOutputPath(frameCameraPath(firstImage), OutputKind::Any, "--out");  // its name is longer than the image's
   if (depthAov && firstImage.extension() != ".exr")
     throw InputError(cat("--aov depth: ", o.out, ": depth goes in an EXR's Z channel; give an --out ending in .exr"));
-  checkOutputPath(manifest, OutputKind::Any, "--manifest");
+  checkOutputPath(manifest, OutputKind::JsonLines, "--manifest");
+  checkNotInput(manifest, "--manifest", o.pathFile, "--path");
+  // Nor one of this run's frame camera files (f_0002.camera.json), which the manifest's lines would be
+  // appended to.
+  if (manifest.extension() == ".json")
+    for (const int f : frames)
+      if (frameCameraPath(formatFramePath(o.out, f)).lexically_normal() == manifest.lexically_normal())
+        throw InputError(cat("--manifest ", manifest.string(), ": is frame ", f, "'s camera file; give another name"));
   checkAppendable(manifest, "--manifest");
   if (!o.colmapOut.empty()) {
     madeFolders.createFolders(o.colmapOut);

@@ -166,6 +166,7 @@ int runRender(const RenderOptions& o) {
   const auto [scenePath, cameraPath] =
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
 
+  checkNotInput(o.statsFile, "--stats", cameraPath.value_or(fs::path()), "--camera");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";

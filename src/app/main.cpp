@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,11 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const lenslab::InputError& e) {
     std::cerr << "lenslab: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // Nothing was written: every output is committed only when whole (io/AtomicFile.h).
+    std::cerr << "lenslab: error: out of memory: this run needs more than the process may use (the machine's memory, "
+                 "ulimit -v); give a smaller --width, or render in tiles (render --tile-size)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "lenslab: error: " << e.what() << "\n";

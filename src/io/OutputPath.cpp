@@ -48,9 +48,12 @@ std::string lowerExtension(const fs::path& path) {
 }  // namespace
 
 void checkOutputPath(const fs::path& path, OutputKind kind, std::string_view option) {
+  if (path.empty()) throw InputError(cat(option, ": the file name is empty; give one"));
   const std::string name = cat(option, " ", path.string());
   if (kind == OutputKind::Image) checkImageExtension(path);
   if (kind == OutputKind::Json && lowerExtension(path) != ".json") throw InputError(cat(name, ": give a .json file name"));
+  if (kind == OutputKind::JsonLines && lowerExtension(path) != ".jsonl" && lowerExtension(path) != ".json")
+    throw InputError(cat(name, ": give a .jsonl (or .json) file name for its JSON lines"));
 
   std::error_code error;
   if (!path.has_filename() || fs::is_directory(fs::status(path, error)))
@@ -68,6 +71,14 @@ void checkOutputPath(const fs::path& path, OutputKind kind, std::string_view opt
                          nameMax, ": give a shorter name"));
   if (const int e = probeFolder(folder); e != 0)
     throw InputError(cat(name, ": cannot write in the folder ", folder.string(), ": ", std::system_category().message(e)));
+}
+
+void checkNotInput(const fs::path& output, std::string_view option, const fs::path& input, std::string_view inputOption) {
+  if (output.empty() || input.empty()) return;
+  std::error_code error;
+  const bool same = fs::equivalent(output, input, error);
+  if (!error && same)
+    throw InputError(cat(option, " ", output.string(), ": is the ", inputOption, " file this run reads; give another name"));
 }
 
 }  // namespace lenslab

@@ -11,6 +11,7 @@ namespace lenslab {
 enum class OutputKind {
   Image,  // .png or .exr (io/ImageFile.h)
   Json,   // .json
+  JsonLines,  // .jsonl or .json (capture's manifest, appended line by line)
   Any,    // any name (the sweep's fixed report names)
 };
 
@@ -19,5 +20,11 @@ enum class OutputKind {
 // created, written, and removed there — this also finds a read-only file system, a full disk and
 // missing permissions, whoever runs it). `option` is the flag the path came from ("--stats").
 void checkOutputPath(const std::filesystem::path& path, OutputKind kind, std::string_view option);
+
+// Throws InputError unless `output` (from `option`) is a file other than `input` (read as
+// `inputOption`): writing a report over the camera file it came from loses the user's camera.
+// Compared as the files they are (links and ./ spellings included) when both exist.
+void checkNotInput(const std::filesystem::path& output, std::string_view option, const std::filesystem::path& input,
+                   std::string_view inputOption);
 
 }  // namespace lenslab

@@ -24,6 +24,36 @@ expect_fault "--stats under a file" "$out/file is not a folder" "$out" - -- rend
 expect_fault "--stats names a folder" "is a folder; give a file name" "$out" - -- render --width 16 --out "$out/x.png" --stats "$out/folder.json"
 expect_fault "--out into a missing folder" "the folder $out/missing does not exist" "$out" - -- raycast --width 16 --spp 1 --out "$out/missing/x.exr"
 expect_fault "sweep report under a file" "$out/file" "$out" - -- sweep --out "$out/file/sweep" --width 16
+# Memory: under an address-space limit (ulimit -v) an image too big for it is refused in one line
+# that says what to do, not "std::bad_alloc", and leaves nothing. (Not under AddressSanitizer,
+# whose shadow memory alone is past any such limit.)
+if grep -q __asan_init "$lenslab"; then
+  echo "SKIP: out-of-memory check: this lenslab is built with AddressSanitizer"
+else
+  (
+    ulimit -v 3000000
+    "$lenslab" raycast -q --spp 1 --width 16384 --height 10923 --out "$out/huge.exr"
+  ) >"$work/stdout" 2>"$work/stderr"
+  rc=$?
+  if [ "$rc" -eq 0 ] || [ "$(wc -l <"$work/stderr")" -ne 1 ] || ! grep -qF "out of memory:" "$work/stderr" ||
+    [ -n "$(ls -A "$out" | grep -E 'huge|^\.lenslab-' || true)" ]; then
+    fail "out of memory: exit $rc: $(cat "$work/stderr")"
+  else
+    pass
+  fi
+  : >"$work/stdout"
+  : >"$work/stderr"
+fi
+
+# An output that would overwrite an input of the same run, or that cannot be what it is named for.
+cp "$src/assets/rows/camera.json" "$out/cam.json"
+expect_fault "--stats over the --camera file" "is the --camera file this run reads" "$out" - \
+  -- render --width 16 --camera "$out/cam.json" --out "$out/x.png" --stats "$out/cam.json"
+expect_fault "--out empty" "--out: the file name is empty" "$out" - -- render --width 16 --out ""
+expect_fault "--manifest into an image" "give a .jsonl (or .json) file name" "$out" - \
+  -- capture --width 16 --path "$src/assets/rows/rack-focus.json" --frames 0:2 --out "$out/fr/f_%04d.png" --manifest "$out/fr/f_0002.png"
+expect_fault "--manifest over a frame's camera file" "is frame 2's camera file" "$out" - \
+  -- capture --width 16 --path "$src/assets/rows/rack-focus.json" --frames 0:2 --out "$out/fr/f_%04d.png" --manifest "$out/fr/f_0002.camera.json"
 # Refused after it made its folders (the frames' and the manifest's, made first so that each file's
 # place can be checked): capture removes them again, as sweep does.
 expect_fault "capture refused after making its folders" "--aov depth" "$out" - \

@@ -52,6 +52,8 @@ void validate(const ViewSpec& spec, std::string_view where) {
   if (spec.projection == Projection::Perspective) {
     if (prpN == 0.0) fail(where, "prp lies on the view plane (prp.n = 0); a perspective projection needs the PRP at n > 0, on the viewer's side");
     if (prpN < 0.0) fail(where, cat("prp.n is ", prpN, "; the PRP must be on the viewer's side of the view plane (n > 0)"));
+    if (prpN < kMinPrpDistance)
+      fail(where, cat("prp.n is ", prpN, "; the PRP must be at least ", kMinPrpDistance, " from the view plane"));
     if (!(spec.nearDistance > 0.0) || !std::isfinite(spec.nearDistance))
       fail(where, cat("near is ", spec.nearDistance, "; a perspective camera needs 0 < near < far"));
     // Window corners (from the PRP's foot) up to kMaxWindowSlope × PRP.n: a half-angle of 89.9994°.

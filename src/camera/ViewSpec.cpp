@@ -65,6 +65,10 @@ void validate(const ViewSpec& spec, std::string_view where) {
       fail(where, cat("the window reaches ", reach, " from the PRP's foot at PRP distance ", prpN,
                       ", a field of view of nearly 180 degrees; keep it within ", kMaxWindowSlope,
                       " times prp.n (move the PRP away from the view plane or shrink the window)"));
+    const double side = std::min(w.width(), w.height());
+    if (side < kMinWindowSlope * prpN)
+      fail(where, cat("the field of view is ", side / prpN, " rad (a window side of ", side, " at PRP distance ", prpN,
+                      "); the narrowest lenslab draws is ", kMinWindowSlope, " rad (a shorter focal length, larger sensor or wider yfov)"));
   } else {
     if (!(prpN > 0.0)) fail(where, cat("prp.n is ", prpN, "; a parallel projection needs n > 0 so that DOP = CW - PRP points into the scene"));
     if (!std::isfinite(spec.nearDistance))

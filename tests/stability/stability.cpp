@@ -523,6 +523,11 @@ void scaleExtremes(const Scene& rowsScene) {
     agree(cat("a patch of one colour at field of view ", sig(fov), " rad by sensor_mm (35 mm lens)"),
           physical(cat(R"(, "focus_distance": "infinity", "sensor_mm": [)", 1.5 * 35.0 * fov, ", ", 35.0 * fov, "]")), 50.0);
   }
+  {
+    const std::string m = refusal([&] { physical(R"(, "focus_distance": "infinity", "focal_length_mm": 2.4e14)"); });
+    record(g, "field of view 1e-13 rad by focal_length_mm 2.4e+14 (below the narrowest drawn, 1e-12 rad)", "refused in one line",
+           shortened(m), oneLine(m));
+  }
   // A box's corner at the centre (its top and right edges and the floor beyond): under a narrow
   // field the projection is all but affine, so the picture does not depend on the field of view.
   // The ray caster finds edges in Embree's float (about 1e-7 of the distance), so its image at

@@ -127,6 +127,16 @@ TEST(ViewSpec, TakesThePrpDownToTheSmallestDistanceAndRefusesItBelow) {
   }
 }
 
+TEST(ViewSpec, TakesAFieldOfViewDownTo1e12RadAndRefusesItBelow) {
+  ViewSpec s = validSpec();
+  s.window = {-0.5e-12 * s.prp.z, -0.5e-12 * s.prp.z, 0.5e-12 * s.prp.z, 0.5e-12 * s.prp.z};
+  s.window.umax *= 1.01;
+  s.window.vmax *= 1.01;
+  EXPECT_NO_THROW(validate(s, "cam.json"));
+  s.window.vmax = s.window.vmin + 0.5e-12 * s.prp.z;
+  expectRefused(s, "field of view");
+}
+
 TEST(ViewSpec, DirectionOfProjectionIsWindowCentreMinusPrp) {
   ViewSpec s = validSpec();
   s.window = {0.0, 1.0, 4.0, 3.0};

@@ -11,12 +11,17 @@ glm::dvec3 viewPlanePoint(const ViewSpec& spec, glm::dvec2 uv) {
 
 Ray primaryRay(const ViewSpec& spec, glm::dvec2 uv) {
   const ViewBasis b = viewBasis(spec);
-  const glm::dvec3 target = viewPlanePoint(spec, uv);
   Ray ray;
   if (spec.projection == Projection::Perspective) {
     ray.origin = prpWorld(spec);
-    ray.direction = glm::normalize(target - ray.origin);
+    // From the PRP toward the view-plane point, built from the window point's offset over the PRP's
+    // distance, (uv − PRP.uv) / PRP.n, and never as target − origin: with the view plane 1e-15 from
+    // the PRP those two world points agree in all but their last digits, and their difference would
+    // keep none of the window's.
+    const glm::dvec2 slope = normalisedFromWindow(spec, uv);
+    ray.direction = glm::normalize(slope.x * b.u + slope.y * b.v - b.n);
   } else {
+    const glm::dvec3 target = viewPlanePoint(spec, uv);
     const glm::dvec3 dop = directionOfProjection(spec);
     const glm::dvec3 dopWorld = dop.x * b.u + dop.y * b.v + dop.z * b.n;
     // Step back along DOP from the view plane to the PRP's plane: dop.z = −PRP.n, so one DOP.

@@ -52,6 +52,8 @@ void validate(const ViewSpec& spec, std::string_view where) {
   if (spec.projection == Projection::Perspective) {
     if (prpN == 0.0) fail(where, "prp lies on the view plane (prp.n = 0); a perspective projection needs the PRP at n > 0, on the viewer's side");
     if (prpN < 0.0) fail(where, cat("prp.n is ", prpN, "; the PRP must be on the viewer's side of the view plane (n > 0)"));
+    if (prpN < kMinPrpDistance)
+      fail(where, cat("prp.n is ", prpN, "; the PRP must be at least ", kMinPrpDistance, " from the view plane"));
     if (!(spec.nearDistance > 0.0) || !std::isfinite(spec.nearDistance))
       fail(where, cat("near is ", spec.nearDistance, "; a perspective camera needs 0 < near < far"));
     // Window corners (from the PRP's foot) up to kMaxWindowSlope × PRP.n: a half-angle of 89.9994°.
@@ -63,6 +65,10 @@ void validate(const ViewSpec& spec, std::string_view where) {
       fail(where, cat("the window reaches ", reach, " from the PRP's foot at PRP distance ", prpN,
                       ", a field of view of nearly 180 degrees; keep it within ", kMaxWindowSlope,
                       " times prp.n (move the PRP away from the view plane or shrink the window)"));
+    const double side = std::min(w.width(), w.height());
+    if (side < kMinWindowSlope * prpN)
+      fail(where, cat("the field of view is ", side / prpN, " rad (a window side of ", side, " at PRP distance ", prpN,
+                      "); the narrowest lenslab draws is ", kMinWindowSlope, " rad (a shorter focal length, larger sensor or wider yfov)"));
   } else {
     if (!(prpN > 0.0)) fail(where, cat("prp.n is ", prpN, "; a parallel projection needs n > 0 so that DOP = CW - PRP points into the scene"));
     if (!std::isfinite(spec.nearDistance))

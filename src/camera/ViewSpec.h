@@ -61,6 +61,16 @@ ViewBasis viewBasis(const ViewSpec& spec);
 // PRP's foot (a half-angle of 89.9994 degrees).
 constexpr double kMaxWindowSlope = 1e5;
 
+// The narrowest perspective lenslab draws: the window's smaller side at least this many times
+// PRP.n (a field of view of 1e-12 rad). The raster places triangles in double down to about
+// 1e-14 rad; below that double's 16 digits of a position no longer resolve a pixel.
+constexpr double kMinWindowSlope = 1e-12;
+
+// The nearest a perspective PRP may be to the view plane (world units). Both renderers are
+// scale-free down to here; below, the default near distance (PRP.n / 1000) and the window's
+// pixel steps fall into double's subnormal range and lose their digits.
+constexpr double kMinPrpDistance = 1e-300;
+
 // Throws InputError naming `where` (a file or option) and the field when the description is
 // degenerate: non-finite values, zero VPN, VUP parallel to VPN, empty or inverted window, PRP on or
 // behind the view plane, near >= far, near <= 0 (perspective), infinite far (parallel).

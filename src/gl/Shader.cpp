@@ -142,22 +142,37 @@ Shader compile(GLenum stage, const fs::path& path, const std::vector<std::string
 
 }  // namespace
 
+namespace {
+
+Program link(const std::vector<const Shader*>& shaders, const std::string& name) {
+  Program program = Program::create();
+  for (const Shader* s : shaders) glAttachShader(program.id(), s->id());
+  glLinkProgram(program.id());
+  for (const Shader* s : shaders) glDetachShader(program.id(), s->id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok)
+    throw std::runtime_error("shader program " + name + " failed to link: " +
+                             annotateInfoLog(infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog), {}));
+  return program;
+}
+
+}  // namespace
+
 Program buildProgram(const fs::path& vertexPath, const fs::path& fragmentPath,
                      const std::vector<std::string>& defines) {
   const Shader vs = compile(GL_VERTEX_SHADER, vertexPath, defines);
   const Shader fsh = compile(GL_FRAGMENT_SHADER, fragmentPath, defines);
-  Program program = Program::create();
-  glAttachShader(program.id(), vs.id());
-  glAttachShader(program.id(), fsh.id());
-  glLinkProgram(program.id());
-  glDetachShader(program.id(), vs.id());
-  glDetachShader(program.id(), fsh.id());
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (!ok)
-    throw std::runtime_error("shader program " + vertexPath.generic_string() + " + " + fragmentPath.generic_string() +
-                             " failed to link: " + annotateInfoLog(infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog), {}));
-  return program;
+  return link({&vs, &fsh}, vertexPath.generic_string() + " + " + fragmentPath.generic_string());
+}
+
+Program buildProgramWithGeometry(const fs::path& vertexPath, const fs::path& geometryPath, const fs::path& fragmentPath,
+                     const std::vector<std::string>& defines) {
+  const Shader vs = compile(GL_VERTEX_SHADER, vertexPath, defines);
+  const Shader gs = compile(GL_GEOMETRY_SHADER, geometryPath, defines);
+  const Shader fsh = compile(GL_FRAGMENT_SHADER, fragmentPath, defines);
+  return link({&vs, &gs, &fsh},
+              vertexPath.generic_string() + " + " + geometryPath.generic_string() + " + " + fragmentPath.generic_string());
 }
 
 }  // namespace lenslab::gl

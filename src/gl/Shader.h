@@ -33,5 +33,8 @@ std::string annotateInfoLog(const std::string& log, const std::vector<std::strin
 Program buildProgram(const std::filesystem::path& vertexPath,
                      const std::filesystem::path& fragmentPath,
                      const std::vector<std::string>& defines = {});
+// With a geometry shader between the two.
+Program buildProgramWithGeometry(const std::filesystem::path& vertexPath, const std::filesystem::path& geometryPath,
+                                 const std::filesystem::path& fragmentPath, const std::vector<std::string>& defines = {});
 
 }  // namespace lenslab::gl

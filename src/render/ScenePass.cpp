@@ -4,6 +4,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace lenslab {
 namespace {
 
@@ -21,11 +24,30 @@ enum Location : GLint {
   kAmbient = 9,
   kDiffuse = 10,
   kLodBias = 11,
+  kClipFromModelDouble = 12,  // narrow_field.vert
 };
+
+// The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
+// the image is unchanged, but a PRP 1e-100 from the view plane (entries of 1e100) no longer
+// overflows float, nor one 1e100 away underflows it.
+glm::dmat4 wellScaled(const glm::dmat4& m) {
+  double largest = 0.0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) largest = std::max(largest, std::abs(m[c][r]));
+  return largest > 0.0 && std::isfinite(largest) ? m * (1.0 / largest) : m;
+}
 
 const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaque, single-sided
 
 }  // namespace
+
+bool isNarrowField(const glm::dmat4& clipFromWorld) {
+  // Rows x, y of a perspective projection grow as 1/(window size) and row w as 1/(PRP distance);
+  // a parallel projection has no w row to compare with (its w is constant).
+  const auto rowLength = [&](int r) { return glm::length(glm::dvec3(clipFromWorld[0][r], clipFromWorld[1][r], clipFromWorld[2][r])); };
+  const double w = rowLength(3);
+  return w > 0.0 && std::max(rowLength(0), rowLength(1)) > kNarrowFieldSlope * w;
+}
 
 ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
 
@@ -39,7 +61,10 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 
-  const GLuint program = program_.id();
+  const bool narrow = isNarrowField(clipFromWorld);
+  if (narrow && !narrowProgram_)
+    narrowProgram_ = gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag");
+  const GLuint program = narrow ? narrowProgram_->id() : program_.id();
   glUseProgram(program);
   glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
   glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
@@ -62,25 +87,29 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     const float clearDepth = 0.0f;  // reverse-Z: far is 0
     glClearBufferfv(GL_COLOR, 0, clearColor);
     glClearBufferfv(GL_DEPTH, 0, &clearDepth);
-    drawInstances(gpuScene, clipFromWorld);
+    drawInstances(program, narrow, gpuScene, clipFromWorld);
   }
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
 }
 
-void ScenePass::drawInstances(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld) const {
+void ScenePass::drawInstances(GLuint program, bool narrow, const GpuScene& gpuScene, const glm::dmat4& clipFromWorld) const {
   const Scene& scene = gpuScene.scene();
-  const GLuint program = program_.id();
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const Material& material =
         mesh.material >= 0 ? scene.materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
 
     // Composed in double, rounded once (see scene.vert).
-    const glm::mat4 clipFromModel(clipFromWorld * instance.worldFromModel);
+    const glm::dmat4 clipFromModel = wellScaled(clipFromWorld * instance.worldFromModel);
     const glm::dmat3 linear(instance.worldFromModel);
     const glm::mat3 normalFromModel(glm::transpose(glm::inverse(linear)));
-    glProgramUniformMatrix4fv(program, kClipFromModel, 1, GL_FALSE, glm::value_ptr(clipFromModel));
+    if (narrow) {
+      glProgramUniformMatrix4dv(program, kClipFromModelDouble, 1, GL_FALSE, glm::value_ptr(clipFromModel));
+    } else {
+      const glm::mat4 rounded(clipFromModel);
+      glProgramUniformMatrix4fv(program, kClipFromModel, 1, GL_FALSE, glm::value_ptr(rounded));
+    }
     glProgramUniformMatrix3fv(program, kWorldNormalFromModel, 1, GL_FALSE, glm::value_ptr(normalFromModel));
     glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
     const bool textured = material.baseColorTexture >= 0;

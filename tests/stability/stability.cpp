@@ -502,6 +502,67 @@ void lensExtremes(const Scene& rowsScene) {
          cat(dB(p), " (samples ", sig(forwardLinearisationErrorPx(c, size)), " px from the linear map)"), finite(a) && finite(b) && p >= 30.0);
 }
 
+// ---- ends of the scales (fx-scales2): a field of view down to 1e-9 rad, the view plane down to
+// the smallest PRP distance the camera takes ----
+void scaleExtremes(const Scene& rowsScene) {
+  const std::string g = "ends of the scales";
+  const ImageSize size{96, 64};
+  const auto agree = [&](const std::string& input, const Camera& c, double minimumDb, int samples = 4) {
+    const Image a = raster(rowsScene, c, size, samples), b = raycast(rowsScene, c, size, samples);
+    const double p = psnr(a, b);
+    record(g, input, cat("raster (", samples, " views) vs ray cast (", samples, " spp) ≥ ", sig(minimumDb), " dB"),
+           cat(finite(a) && finite(b) ? "" : "NOT FINITE, ", dB(p)), finite(a) && finite(b) && p >= minimumDb);
+  };
+  // A patch of one colour 5 units away: the raster placed the floor's triangles, 1e8 window
+  // widths off-axis, with float's 7 digits and drew a band of sky across the patch. Both images
+  // are one colour, so the bound is tight.
+  for (const double fov : {1e-7, 1e-9}) {
+    // 24 mm of sensor height over the focal length: the vertical field of view in radians.
+    agree(cat("a patch of one colour at field of view ", sig(fov), " rad by focal_length_mm ", sig(24.0 / fov)),
+          physical(cat(R"(, "focus_distance": "infinity", "focal_length_mm": )", 24.0 / fov)), 50.0);
+    agree(cat("a patch of one colour at field of view ", sig(fov), " rad by sensor_mm (35 mm lens)"),
+          physical(cat(R"(, "focus_distance": "infinity", "sensor_mm": [)", 1.5 * 35.0 * fov, ", ", 35.0 * fov, "]")), 50.0);
+  }
+  {
+    const std::string m = refusal([&] { physical(R"(, "focus_distance": "infinity", "focal_length_mm": 2.4e14)"); });
+    record(g, "field of view 1e-13 rad by focal_length_mm 2.4e+14 (below the narrowest drawn, 1e-12 rad)", "refused in one line",
+           shortened(m), oneLine(m));
+  }
+  // A box's corner at the centre (its top and right edges and the floor beyond): under a narrow
+  // field the projection is all but affine, so the picture does not depend on the field of view.
+  // The ray caster finds edges in Embree's float (about 1e-7 of the distance), so its image at
+  // 1e-5 rad is the reference for the raster's at 1e-7 and 1e-9 rad.
+  const auto corner = [&](double fov) {
+    return physical(cat(R"(, "target": [1, 0.5, -0.75], "focus_distance": "infinity", "focal_length_mm": )", 24.0 / fov));
+  };
+  const Image reference = raycast(rowsScene, corner(1e-5), size, 4);
+  agree("a box corner at field of view 1e-5 rad", corner(1e-5), 30.0);
+  for (const double fov : {1e-7, 1e-9}) {
+    const Image a = raster(rowsScene, corner(fov), size, 4);
+    const double p = psnr(a, reference);
+    record(g, cat("a box corner at field of view ", sig(fov), " rad (raster)"), "vs the ray cast at 1e-5 rad ≥ 30 dB",
+           cat(finite(a) ? "" : "NOT FINITE, ", dB(p)), finite(a) && !blank(a) && p >= 30.0);
+  }
+  // The view plane (and the window with it) brought to n of the PRP, the PRP in the middle of the
+  // rows: the ray caster built its rays from two world points equal in all but their last digits.
+  // Both must render here: a refusal counts as a failure down to the smallest accepted distance.
+  for (const double n : {1e-15, kMinPrpDistance}) {
+    const std::string input =
+        cat("PRP n = ", sig(n), n == kMinPrpDistance ? " (the smallest accepted)" : "", ", window 6n × 4n");
+    const std::string m = refusal([&] {
+      agree(input, lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", n, R"(], "window": [)", -3 * n, ", ", -2 * n,
+                               ", ", 3 * n, ", ", 2 * n, "]")), 30.0, 16);
+    });
+    if (!m.empty()) record(g, input, "raster (16 views) vs ray cast (16 spp) ≥ 30 dB", cat("refused: ", shortened(m)), false);
+  }
+  const double below = 0.1 * kMinPrpDistance;
+  const std::string m = refusal([&] {
+    lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", below, R"(], "window": [)", -3 * below, ", ", -2 * below,
+                ", ", 3 * below, ", ", 2 * below, "]"));
+  });
+  record(g, cat("PRP n = ", sig(below)), "refused in one line", shortened(m), oneLine(m));
+}
+
 // The measured cell as the table writes it: a failed bound says so.
 std::string measuredCell(const Row& r) { return r.measured + (r.ok ? "" : " **(fails)**"); }
 
@@ -597,6 +658,7 @@ int run(int argc, char** argv) {
   imageSizes(rowsScene, longRun);
   vertexValues();
   lensExtremes(rowsScene);
+  scaleExtremes(rowsScene);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int failed = 0;
   for (const Row& r : rows) failed += !r.ok;

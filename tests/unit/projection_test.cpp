@@ -136,6 +136,26 @@ TEST(PrimaryRay, PerspectiveRaysStartAtThePrpAndPassThroughTheViewPlanePoint) {
   EXPECT_NEAR(-glm::dot(ray.tNear * ray.direction, b.n), s.nearDistance, 1e-12);
 }
 
+// The same view with the view plane (and the window with it) brought to 1e-15 … 1e-300 of the
+// PRP, the PRP kept where it is in the world: every ray keeps its direction, however close the
+// view plane is to the PRP and however far the scene is from the origin.
+TEST(PrimaryRay, DirectionsDoNotDependOnTheViewPlanesDistance) {
+  const ViewSpec s = obliqueSpec();
+  const ViewBasis b = viewBasis(s);
+  for (const double scale : {1e-15, 1e-30, 1e-300}) {
+    ViewSpec near = s;
+    near.prp = s.prp * scale;
+    near.window = {s.window.umin * scale, s.window.vmin * scale, s.window.umax * scale, s.window.vmax * scale};
+    near.vrp = prpWorld(s) - near.prp.x * b.u - near.prp.y * b.v - near.prp.z * b.n;
+    near.nearDistance = s.nearDistance * scale;
+    validate(near, "test");
+    for (const glm::dvec2 uv : {glm::dvec2(0.3, -0.2), glm::dvec2(-1.1, 0.85), glm::dvec2(0.75, -0.6)}) {
+      const Ray far = primaryRay(s, uv), close = primaryRay(near, uv * scale);
+      EXPECT_NEAR(glm::length(close.direction - far.direction), 0.0, 1e-12) << "view plane at " << scale << " of the original";
+    }
+  }
+}
+
 TEST(ParallelProjection, ProjectsAlongDopOntoTheViewPlane) {
   ViewSpec s = obliqueSpec();
   s.projection = Projection::Parallel;

@@ -106,6 +106,37 @@ TEST(ViewSpec, RefusesDegenerateCameras) {
   expectRefused(s, "far must be finite");
 }
 
+// The view plane scaled toward the PRP (window and near with it): taken down to kMinPrpDistance,
+// refused in one line below, with the smallest valid value in the message.
+TEST(ViewSpec, TakesThePrpDownToTheSmallestDistanceAndRefusesItBelow) {
+  const auto scaled = [](double n) {
+    ViewSpec s = validSpec();
+    s.prp = {0, 0, n};
+    s.window = {-n, -n, n, n};
+    s.nearDistance = n / 1000;
+    return s;
+  };
+  EXPECT_NO_THROW(validate(scaled(kMinPrpDistance), "cam.json"));
+  expectRefused(scaled(0.5 * kMinPrpDistance), "prp.n");
+  try {
+    validate(scaled(0.5 * kMinPrpDistance), "cam.json");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    EXPECT_NE(m.find("1e-300"), std::string::npos) << m;
+  }
+}
+
+TEST(ViewSpec, TakesAFieldOfViewDownTo1e12RadAndRefusesItBelow) {
+  ViewSpec s = validSpec();
+  s.window = {-0.5e-12 * s.prp.z, -0.5e-12 * s.prp.z, 0.5e-12 * s.prp.z, 0.5e-12 * s.prp.z};
+  s.window.umax *= 1.01;
+  s.window.vmax *= 1.01;
+  EXPECT_NO_THROW(validate(s, "cam.json"));
+  s.window.vmax = s.window.vmin + 0.5e-12 * s.prp.z;
+  expectRefused(s, "field of view");
+}
+
 TEST(ViewSpec, DirectionOfProjectionIsWindowCentreMinusPrp) {
   ViewSpec s = validSpec();
   s.window = {0.0, 1.0, 4.0, 3.0};

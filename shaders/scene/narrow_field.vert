@@ -1,0 +1,27 @@
+#version 450 core
+// scene.vert for a narrow field of view (ScenePass says when): the clip position in double, for
+// narrow_field.geom to clip. At a field of view of 1e-7 rad a vertex 10 units off the view axis
+// lands 1e8 window widths away, and float's 7 digits of that position (or of the products that
+// make it) leave no digit for where its edges and its interior cross the image.
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inColor;
+
+layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
+layout(location = 12) uniform dmat4 clipFromModelDouble;
+
+out ToClip {
+  dvec4 clipPosition;
+  vec3 worldNormal;
+  vec2 uv;
+  vec4 vertexColor;
+} vertex;
+
+void main() {
+  vertex.clipPosition = clipFromModelDouble * dvec4(inPosition, 1.0);
+  vertex.worldNormal = worldNormalFromModel * inNormal;
+  vertex.uv = inUv;
+  vertex.vertexColor = inColor;
+}

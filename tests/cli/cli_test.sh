@@ -134,6 +134,29 @@ expect_refusal "bad extension" "use .png" -- render --out "$work/out.jpg"
 expect_refusal "bad width" "--width" -- render --width 0 --out "$work/out.png"
 expect_refusal "missing output folder" "does not exist" -- render --width 32 --out "$work/nowhere/out.png"
 
+# Input files: only a regular file is read, and only up to a limit (docs/camera-files.md). Each of
+# these used to be read until memory ran out (std::bad_alloc) or to block on the FIFO; the runs are
+# bounded here so that a regression fails rather than fills the machine.
+mkfifo "$work/fifo.json" "$work/fifo.gltf"
+truncate -s 67108865 "$work/huge.json"  # 64 MiB + 1, sparse
+ln -s /dev/zero "$work/zero.glb"
+ln -s /dev/zero "$work/zero.bin"
+echo '{"asset": {"version": "2.0"}, "buffers": [{"uri": "zero.bin", "byteLength": 4}]}' >"$work/zero-buffer.gltf"
+mkdir "$work/colmap-fifo" && mkfifo "$work/colmap-fifo/cameras.txt" && touch "$work/colmap-fifo/images.txt"
+real_lenslab=$lenslab
+lenslab=$work/bounded-lenslab
+printf '#!/usr/bin/env bash\nulimit -v 8000000\nexec timeout 30 "%s" "$@"\n' "$real_lenslab" >"$lenslab" && chmod +x "$lenslab"
+expect_refusal "camera /dev/zero" "/dev/zero: is not a regular file" -- render --camera /dev/zero --out "$work/out.png"
+expect_refusal "path /dev/zero" "/dev/zero: is not a regular file" -- capture --path /dev/zero --out "$work/out_%04d.png"
+expect_refusal "camera FIFO" "fifo.json: is not a regular file" -- render --camera "$work/fifo.json" --out "$work/out.png"
+expect_refusal "camera folder" "is a folder; give the camera file as a file" -- render --camera "$work" --out "$work/out.png"
+expect_refusal "camera over 64 MiB" "lenslab reads at most 64 MiB" -- render --camera "$work/huge.json" --out "$work/out.png"
+expect_refusal "glb /dev/zero" "zero.glb: is not a regular file" -- render "$work/zero.glb" --out "$work/out.png"
+expect_refusal "gltf FIFO" "fifo.gltf: is not a regular file" -- render "$work/fifo.gltf" --out "$work/out.png"
+expect_refusal "buffer /dev/zero" "zero.bin: is not a regular file" -- render "$work/zero-buffer.gltf" --out "$work/out.png"
+expect_refusal "COLMAP FIFO" "cameras.txt: is not a regular file" -- render --colmap "$work/colmap-fifo" --image a.png --out "$work/out.png"
+lenslab=$real_lenslab
+
 # Lens effects: the passes that ran are listed, a zero-strength effect adds none, the ray caster
 # takes the same camera, bad lens input is refused in one line.
 if "$lenslab" render "$src/assets/grid/grid.gltf" --camera "$src/assets/grid/camera-distortion.json" --width 160 \

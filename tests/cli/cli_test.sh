@@ -101,6 +101,27 @@ expect_refusal "target in tiles" "--target-psnr: " -- render --camera "$src/asse
 expect_refusal "bad focus distance" "--focus-distance: focus_distance is -3" -- render --focus-distance -3 --out "$work/out.png"
 expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$src/assets/rows/camera-dof.json" --width 96 --focus-at 50,2 --out "$work/out.png"
 
+# Every number option, given what is not a finite number, is refused in one line naming it (a
+# plain range check lets nan through; 1e309 overflows a double). VALUE stands for the bad number.
+number_options=(
+  "render --time VALUE" "render --focal-length VALUE" "render --focus-distance VALUE" "render --focus-at VALUE,1"
+  "render --target-psnr VALUE" "render --eye VALUE,0,0" "render --target 0,VALUE,0" "render --background 0,0,VALUE"
+  "render --f-number VALUE" "render --sensor VALUEx24" "raycast --time VALUE" "raycast --focus-at 1,VALUE"
+  "capture --fps VALUE" "sweep --target-psnr 30,VALUE" "sweep --focus-distance VALUE"
+  "view --frame-budget-ms VALUE" "view --click VALUE,VALUE" "view --window-size VALUE,100" "view --time VALUE"
+)
+for template in "${number_options[@]}"; do
+  read -r cmd option _ <<<"$template"
+  for bad in nan inf -inf 1e309; do
+    read -r -a args <<<"${template//VALUE/$bad}"
+    out="$work/out.png"
+    [ "$cmd" = sweep ] && out="$work/out.sweep"
+    [ "$cmd" = capture ] && out="$work/out_%04d.png"
+    if [ "$cmd" = view ]; then extra=(--frames 1 --screenshot "$work/out.png"); else extra=(--out "$out"); fi
+    expect_refusal "$template with $bad" "$option" -- "${args[@]}" "${extra[@]}"
+  done
+done
+
 # The ray-cast reference: same options, --spp, same outputs.
 if "$lenslab" raycast --camera "$src/assets/occluder/camera-dof.json" --width 48 --spp 4 --out "$work/rc.exr" --stats "$work/rc.json" -q &&
    [ -s "$work/rc.exr" ] && grep -qF '"command": "raycast"' "$work/rc.json" && grep -qF '"aperture_samples": 4' "$work/rc.json"; then pass; else fail "raycast"; fi

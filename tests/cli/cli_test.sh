@@ -122,6 +122,15 @@ for template in "${number_options[@]}"; do
   done
 done
 
+# A camera path whose keys are valid but whose interpolation is not is refused before frame 0,
+# naming the frame; no frame is written.
+echo '{"fps": 4, "interpolation": "linear", "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 1, 0]}, {"time": 1, "eye": [0, 1, -5], "target": [0, 1, 0]}]}' >"$work/through.json"
+echo '{"fps": 4, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 1, 0]}, {"time": 1, "eye": [0, 1, 5], "target": [0, 1, 0], "up": [0, -1, 0]}]}' >"$work/flip.json"
+expect_refusal "path through its target" "through.json: frame 2 (t = 0.5 s): eye meets target" -- capture --path "$work/through.json" --width 32 --out "$work/out_%04d.png"
+if ls "$work"/out_0000.png >/dev/null 2>&1; then fail "path through its target: wrote frame 0"; rm -f "$work"/out_*.png; else pass; fi
+expect_refusal "path whose up flips" "flip.json: frame 2 (t = 0.5 s): up is parallel" -- capture --path "$work/flip.json" --width 32 --out "$work/out_%04d.png"
+if ls "$work"/out_0000.png >/dev/null 2>&1; then fail "path whose up flips: wrote frame 0"; rm -f "$work"/out_*.png; else pass; fi
+
 # The ray-cast reference: same options, --spp, same outputs.
 if "$lenslab" raycast --camera "$src/assets/occluder/camera-dof.json" --width 48 --spp 4 --out "$work/rc.exr" --stats "$work/rc.json" -q &&
    [ -s "$work/rc.exr" ] && grep -qF '"command": "raycast"' "$work/rc.json" && grep -qF '"aperture_samples": 4' "$work/rc.json"; then pass; else fail "raycast"; fi

@@ -1,5 +1,6 @@
 #include "scene/gltf/SceneBuilder.h"
 
+#include "core/NumberInput.h"
 #include "scene/gltf/Animations.h"
 #include "scene/gltf/Images.h"
 #include "scene/gltf/Limits.h"
@@ -122,6 +123,7 @@ class SceneBuilder {
         }
     }
     if (node.camera >= 0) {
+      refuseSingularCameraNode(node, placed.gltfNode, worldFromNode);
       placed.cameras.push_back(static_cast<int>(scene_.cameras.size()));
       addCamera(node.camera, worldFromNode);
       scene_.cameras.back().nodeName = node.name;
@@ -185,6 +187,17 @@ class SceneBuilder {
     if (const auto found = images_.find(gltfIndex); found != images_.end()) return found->second;
     scene_.images.push_back(decodeImage(model_, gltfIndex));
     return images_[gltfIndex] = static_cast<int>(scene_.images.size()) - 1;
+  }
+
+  // A camera looks along its node's −Z with +Y up: a node (or parent) scaled to 0 on an axis leaves it
+  // no view direction, which would surface later as NaNs in the view; refused naming the node.
+  static void refuseSingularCameraNode(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& worldFromNode) {
+    const glm::dmat3 basis(worldFromNode);
+    const double det = glm::determinant(basis);
+    if (std::isfinite(det) && det != 0.0 && glm::length(basis[1]) > 0.0 && glm::length(basis[2]) > 0.0) return;
+    refuse("node ", nodeIndex, node.name.empty() ? std::string() : cat(" \"", excerpt(node.name), "\""), " (camera ", node.camera,
+           "): its world transform is singular (a scale of 0, with its parents'), so the camera has no view direction; "
+           "give the node and its parents a non-zero scale");
   }
 
   void addCamera(int index, const glm::dmat4& worldFromCamera) {

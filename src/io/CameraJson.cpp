@@ -63,8 +63,9 @@ class Reader {
   }
 
   // A number's problem (core/NumberInput's words): "<where>: \"key\": 1e+300 is out of range; ...".
-  [[noreturn]] void failNumber(const std::string& key, const std::string& problem) const {
-    throw InputError(cat(where_, ": \"", prefix_, key, "\": ", problem));
+  // `what`, when given, says what the key holds: "\"K\" (the focal length in pixels): -500 is ...".
+  [[noreturn]] void failNumber(const std::string& key, const std::string& problem, const std::string& what = "") const {
+    throw InputError(cat(where_, ": \"", prefix_, key, "\"", what.empty() ? "" : cat(" (", what, ")"), ": ", problem));
   }
 
   bool has(const std::string& key) const { return object_.contains(key); }
@@ -228,8 +229,8 @@ constexpr NumberRange kFocalLengthPx{.min = 1e-3, .max = 1e9, .unit = "pixels"};
 // them in messages.
 void checkIntrinsics(const OpenCvIntrinsics& k, const Reader& reader, const std::string& fxKey, const std::string& fyKey,
                      const std::string& widthKey, const std::string& heightKey) {
-  if (const auto problem = numberProblem(k.fx, kFocalLengthPx)) reader.failNumber(fxKey, *problem);
-  if (const auto problem = numberProblem(k.fy, kFocalLengthPx)) reader.failNumber(fyKey, *problem);
+  if (const auto problem = numberProblem(k.fx, kFocalLengthPx)) reader.failNumber(fxKey, *problem, "the focal length in pixels");
+  if (const auto problem = numberProblem(k.fy, kFocalLengthPx)) reader.failNumber(fyKey, *problem, "the focal length in pixels");
   if (k.widthPx < 1 || k.widthPx > kMaxImageSidePx)
     reader.fail(widthKey, cat("is ", k.widthPx, "; use 1 to ", kMaxImageSidePx, " pixels"));
   if (k.heightPx < 1 || k.heightPx > kMaxImageSidePx)

@@ -90,10 +90,10 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
 TEST(CameraJson, FocalLengthInPixelsBeyondItsRangeIsRefused) {
   expectRefused(R"({"intrinsics": {"fx": 1e300, "fy": 1e300, "cx": 480, "cy": 320, "width": 960, "height": 640},
                     "eye": [0, 1, 5], "target": [0, 1, 0], "dist": [0.1, 0, 0, 0]})",
-                "\"intrinsics.fx\": 1e+300 is out of range; give a finite value from 0.001 to 1e+09");
+                "\"intrinsics.fx\" (the focal length in pixels): 1e+300 is out of range; give a finite value from 0.001 to 1e+09");
   expectRefused(R"({"intrinsics": {"fx": 500, "fy": 0, "cx": 480, "cy": 320, "width": 960, "height": 640},
                     "eye": [0, 1, 5], "target": [0, 1, 0]})",
-                "\"intrinsics.fy\": 0 is out of range");
+                "\"intrinsics.fy\" (the focal length in pixels): 0 is out of range");
 }
 
 // What a user wrote is quoted in a message, at most 60 characters of it.

@@ -621,7 +621,7 @@ TEST(GltfFiles, MissingFileIsOneLineNamingItAndTheReason) {
     loadGltf("/no/such/x.gltf");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "/no/such/x.gltf: cannot read file: No such file or directory");
+    EXPECT_EQ(std::string(e.what()), "/no/such/x.gltf: cannot read the glTF file (does it exist?)");
   }
 }
 
@@ -630,7 +630,7 @@ TEST_F(GltfWritten, DirectoryIsRefused) {
     loadGltf(dir_);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_TRUE(contains(e.what(), "cannot read file: Is a directory")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "is a folder; give the glTF file as a file")) << e.what();
   }
 }
 

@@ -471,7 +471,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                   "(see docs/capture.md); without it, the scene's glTF camera (--camera-node; else automatic framing) over "
                   "its animation at --fps");
   cmd->add_option("--fps", o->fps, "without --path: frames per second over the playing animation (default 24)")
-      ->check(CLI::Range(1e-3, 1e4))
+      ->check(numberIn({.min = 1e-3, .max = 1e4, .unit = "frames per second"}))
       ->type_name("F");
   cmd->add_option("--out,-o", o->out,
                   "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "

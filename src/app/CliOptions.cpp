@@ -7,6 +7,21 @@
 
 namespace lenslab {
 
+CLI::Validator numberIn(const NumberRange& range) {
+  return CLI::Validator([range](std::string& text) { return numberTextProblem(text, range).value_or(std::string()); },
+                        std::string());
+}
+
+CLI::Validator numberOrInfinity(const NumberRange& range) {
+  return CLI::Validator(
+      [range](std::string& text) {
+        if (text == "infinity") return std::string();
+        const std::optional<std::string> problem = numberTextProblem(text, range);
+        return problem ? *problem + ", or infinity" : std::string();
+      },
+      std::string());
+}
+
 void addSamplingOptions(CLI::App& cmd, LensOptions& o) {
   cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: concentric; sobol with --target-psnr)")
       ->check(CLI::IsMember(patternNameList()));
@@ -32,10 +47,11 @@ void addSeedOption(CLI::App& cmd, LensOptions& o) {
 
 void addFocusOptions(CLI::App& cmd, LensOptions& o) {
   CLI::Option* distance = cmd.add_option("--focus-distance", o.focusDistance,
-                                         "put the plane of focus this far from the PRP (world units, or infinity)");
+                                         "put the plane of focus this far from the PRP (world units, or infinity)")
+                                  ->check(numberOrInfinity({.unit = "world units"}));
   // --focus-at sets the focus after --focus-distance would: one of the two.
   addPairOption(cmd, "--focus-at", [&o](double x, double y) { o.focusAt = glm::dvec2(x, y); },
-                "focus on the depth under pixel X,Y of the image")
+                "focus on the depth under pixel X,Y of the image", {.unit = "pixels"})
       ->excludes(distance);
 }
 
@@ -43,12 +59,9 @@ namespace {
 
 // An option that takes a point as X,Y,Z (three finite numbers).
 void addPointOption(CLI::App& cmd, const std::string& name, std::optional<glm::dvec3>& point, const std::string& description) {
-  cmd.add_option_function<std::vector<double>>(name, [&point, name](const std::vector<double>& xyz) {
-       for (const double v : xyz)
-         if (!std::isfinite(v)) throw CLI::ValidationError(name, "give three finite numbers X,Y,Z (world units)");
-       point = glm::dvec3(xyz[0], xyz[1], xyz[2]);
-     },
-     description)
+  cmd.add_option_function<std::vector<double>>(name, [&point](const std::vector<double>& xyz) { point = glm::dvec3(xyz[0], xyz[1], xyz[2]); },
+                                               description)
+      ->check(numberIn({.unit = "world units"}))
       ->delimiter(',')
       ->expected(3)
       ->type_name("X,Y,Z");
@@ -66,7 +79,7 @@ void addCameraNodeOption(CLI::App& cmd, CameraOptions& o) {
 void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose, bool withAnimation) {
   cmd.add_option("--focal-length", o.focalLengthMm,
                  "lens focal length in mm, overriding the camera's (a new focal length changes the field of view)")
-      ->check(CLI::Range(0.01, 1e6))
+      ->check(numberIn({.min = 0.01, .max = 1e6, .unit = "millimetres"}))
       ->type_name("MM");
   cmd.add_option("--f-number", o.fNumber, "aperture as an f-number N (radius f/2N), e.g. 2.8, for depth of field; infinity: a pinhole")
       ->type_name("N");
@@ -89,18 +102,19 @@ void addTargetOption(CLI::App& cmd, LensOptions& o) {
                  "render to an error instead of a count: each 32-px tile gets its own number of samples, in a "
                  "progressive order, until the estimated PSNR of the image against its own converged limit reaches DB "
                  "(--max-samples still caps each tile)")
-      ->check(CLI::Range(10.0, 100.0))
+      ->check(numberIn({.min = 10.0, .max = 100.0, .unit = "dB"}))
       ->type_name("DB");
 }
 
 void addTimeOption(CLI::App& cmd, std::optional<double>& seconds, const std::string& description) {
-  cmd.add_option("--time", seconds, description)->check(CLI::Range(-1e9, 1e9))->type_name("SECONDS");
+  cmd.add_option("--time", seconds, description)->check(numberIn({.min = -1e9, .max = 1e9, .unit = "seconds"}))->type_name("SECONDS");
 }
 
 CLI::Option* addPairOption(CLI::App& cmd, const std::string& name, std::function<void(double, double)> set,
-                           const std::string& description) {
+                           const std::string& description, const NumberRange& range) {
   return cmd.add_option_function<std::vector<double>>(name, [set](const std::vector<double>& xy) { set(xy[0], xy[1]); },
                                                       description)
+      ->check(numberIn(range))
       ->delimiter(',')
       ->expected(2)
       ->type_name("X,Y");
@@ -108,12 +122,10 @@ CLI::Option* addPairOption(CLI::App& cmd, const std::string& name, std::function
 
 void addBackgroundOption(CLI::App& cmd, std::optional<glm::vec3>& background) {
   cmd.add_option_function<std::vector<double>>("--background", [&background](const std::vector<double>& rgb) {
-       for (const double v : rgb)
-         if (!std::isfinite(v) || v < 0.0 || v > 65504.0)
-           throw CLI::ValidationError("--background", "give three linear values, each from 0 to 65504 (e.g. 0.5,0.6,0.8)");
        background = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]));
      },
      "colour where no surface is seen, linear R,G,B (e.g. 0,0,0); default: the scene's (a dark blue grey, 0.05,0.06,0.08)")
+      ->check(numberIn({.min = 0.0, .max = 65504.0, .unit = "linear values"}))
       ->delimiter(',')
       ->expected(3);
 }

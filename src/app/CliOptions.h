@@ -3,6 +3,7 @@
 // aperture pattern, sample count, seed, focus (plan/UserOptions.h holds what they mean), the
 // camera's lens, pose, glTF camera and animation clip (plan/CameraOptions.h), the animations'
 // time, the background colour, and X,Y pairs.
+#include "core/NumberInput.h"
 #include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
 
@@ -42,8 +43,16 @@ void addTimeOption(CLI::App& command, std::optional<double>& seconds, const std:
 // --background R,G,B: the colour (linear RGB, each finite, 0 to 65504) where no surface is seen.
 void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);
 
-// An option that takes two numbers as X,Y (CLI11 splits and converts them), e.g. --focus-at.
+// Every number option's check (each value of a list option's): core/NumberInput's rules, so nan,
+// inf and 1e309 are refused as not finite and the message names the option, the unit and the range.
+// CLI11's Range is not used for floating-point options: nan passes it.
+CLI::Validator numberIn(const NumberRange& range);
+// As numberIn, also taking the word "infinity" (--focus-distance).
+CLI::Validator numberOrInfinity(const NumberRange& range);
+
+// An option that takes two numbers as X,Y (CLI11 splits and converts them), each in `range`
+// (numberIn), e.g. --focus-at.
 CLI::Option* addPairOption(CLI::App& command, const std::string& name, std::function<void(double, double)> set,
-                           const std::string& description);
+                           const std::string& description, const NumberRange& range);
 
 }  // namespace lenslab

@@ -169,7 +169,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("--seed", o->lens.seed, "seed for every sampler")->capture_default_str();
   cmd->add_option("--target-psnr", o->sweep.targetsDb, "the adaptive method's targets (dB), e.g. 30,40")
       ->delimiter(',')
-      ->check(CLI::Range(10.0, 100.0))
+      ->check(numberIn({.min = 10.0, .max = 100.0, .unit = "dB"}))
       ->type_name("DB[,DB...]")
       ->capture_default_str();
   cmd->add_option("--methods", o->sweep.series, "the series to run: " + [] {
@@ -182,7 +182,8 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
   addCameraOptions(*cmd, o->camera, /*withPose=*/true, /*withAnimation=*/false);
-  cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)");
+  cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)")
+      ->check(numberOrInfinity({.unit = "world units"}));
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
   return [cmd, o]() {
     if (!cmd->parsed()) return -1;

@@ -1,6 +1,7 @@
 // lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "core/ParseNumber.h"
 #include "io/OutputPath.h"
 #include "view/ViewApp.h"
 
@@ -34,16 +35,15 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_flag("!--no-outside-view", o->outsideView, "start without the outside view");
   cmd->add_flag("--baseline", o->showBaseline, "start showing the post-process gather depth of field (for comparison)");
   addPairOption(*cmd, "--click", [o](double x, double y) { o->click = glm::dvec2(x, y); },
-                "scripted: click image pixel X,Y on the first frame (focus there)");
+                "scripted: click image pixel X,Y on the first frame (focus there)", {.unit = "pixels"});
   addPairOption(*cmd, "--window-size", [o](double w, double h) { o->windowSize = glm::ivec2(static_cast<int>(w), static_cast<int>(h)); },
-                "window size W,H in screen coordinates")
+                "window size W,H in screen coordinates", {.min = 1.0, .max = 16384.0, .unit = "screen coordinates"})
       ->check([](const std::string& text) {
-        double v = 0.0;
-        return CLI::detail::lexical_cast(text, v) && v >= 1.0 && v <= 16384.0 && v == std::floor(v)
-                   ? std::string() : std::string("give the window size as two whole numbers from 1 to 16384");
+        const std::optional<double> v = parseDouble(text);
+        return v && *v == std::floor(*v) ? std::string() : std::string("give the window size as two whole numbers from 1 to 16384");
       });
   cmd->add_option("--frame-budget-ms", o->frameBudgetMs, "accumulation work per frame, at least one sample")
-      ->check(CLI::Range(1.0, 1000.0))
+      ->check(numberIn({.min = 1.0, .max = 1000.0, .unit = "milliseconds"}))
       ->capture_default_str();
   addColmapOptions(*cmd, o->camera);
   cmd->add_option("--save-camera", o->saveCamera, "scripted: write the final camera as JSON (lecture form), as the panel's Save camera does");

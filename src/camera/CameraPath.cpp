@@ -63,9 +63,35 @@ glm::dvec3 splineAt(const std::vector<glm::dvec3>& p, std::size_t k, double u) {
 
 // Up made orthogonal to the view direction and unit length: the view it gives is the same (the
 // view basis is built that way), and an interpolated up is comparable with a key's.
+// Where eye meets target, or up lies along the view direction, there is no such up: `up` is
+// returned as it is, for validate to name what is wrong (not NaNs from normalising zero).
 glm::dvec3 orthonormalUp(const PhysicalCamera& c, const glm::dvec3& up) {
-  const glm::dvec3 view = glm::normalize(c.target - c.eye);
-  return glm::normalize(up - glm::dot(up, view) * view);
+  const glm::dvec3 forward = c.target - c.eye;
+  if (!(glm::length(forward) > 0.0)) return up;
+  const glm::dvec3 view = glm::normalize(forward);
+  const glm::dvec3 across = up - glm::dot(up, view) * view;
+  if (!(glm::length(across) > 1e-9 * glm::length(up))) return up;
+  return glm::normalize(across);
+}
+
+// Every frame's camera, as capture will build it, checked before the first frame is drawn: the
+// keys can each be valid while the interpolation between them is not (an eye that passes through
+// its target, ups that turn by 180° and cancel half way).
+void validateFrames(const CameraPath& path, std::string_view where) {
+  const int frames = path.frameCount();
+  for (int frame = 0; frame < frames; ++frame) {
+    const double t = path.frameTimeSeconds(frame);
+    const std::string at = cat(where, ": frame ", frame, " (t = ", t, " s)");
+    const PhysicalCamera c = cameraAt(path, t).camera;
+    const double distance = glm::length(c.target - c.eye);
+    const double scale = std::max({glm::length(c.eye), glm::length(c.target), 1.0});
+    if (!(distance > 1e-9 * scale))
+      throw InputError(cat(at, ": eye meets target (the path's eye passes through its target there); move the keys' eye or target apart"));
+    if (!(glm::length(c.up) > 0.0) || glm::length(glm::cross(glm::normalize(c.up), (c.target - c.eye) / distance)) < 1e-9)
+      throw InputError(cat(at, ": up is parallel to the view direction (or the keys' ups turn by 180° and cancel); add a key "
+                               "between them or give an up across the view"));
+    validate(c, at);
+  }
 }
 
 }  // namespace
@@ -98,6 +124,7 @@ void validate(const CameraPath& path, std::string_view where) {
   }
   if (path.frames && *path.frames < 1) throw InputError(cat(where, ": frames ", *path.frames, " must be 1 or more"));
   if (!path.frames) frameCountFor(path.keys.back().timeSeconds, path.fps, where);
+  validateFrames(path, where);
 }
 
 glm::dvec3 centripetalCatmullRom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3,

@@ -4,6 +4,7 @@
 #include "camera/LensMap.h"
 #include "camera/Rotation.h"
 #include "core/Error.h"
+#include "core/NumberInput.h"
 #include "core/Text.h"
 #include "io/TextFile.h"
 
@@ -61,31 +62,37 @@ class Reader {
     throw InputError(cat(where_, ": \"", prefix_, key, "\" ", message));
   }
 
+  // A number's problem (core/NumberInput's words): "<where>: \"key\": 1e+300 is out of range; ...".
+  // `what`, when given, says what the key holds: "\"K\" (the focal length in pixels): -500 is ...".
+  [[noreturn]] void failNumber(const std::string& key, const std::string& problem, const std::string& what = "") const {
+    throw InputError(cat(where_, ": \"", prefix_, key, "\"", what.empty() ? "" : cat(" (", what, ")"), ": ", problem));
+  }
+
   bool has(const std::string& key) const { return object_.contains(key); }
 
   double number(const std::string& key) const {
     const json& v = object_.at(key);
-    if (!v.is_number()) fail(key, cat("must be a number, not ", v.dump()));
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(key, "must be finite");
-    return d;
+    if (!v.is_number()) fail(key, cat("must be a number, not ", excerpt(v.dump())));
+    // core/NumberInput's finiteness rule (JSON has no nan, but 1e309 reads as infinity).
+    if (const auto problem = numberProblem(v.get<double>(), NumberRange{})) failNumber(key, *problem);
+    return v.get<double>();
   }
 
   // A number, or the string "infinity".
   double distance(const std::string& key) const {
     const json& v = object_.at(key);
     if (v.is_string() && v.get<std::string>() == "infinity") return kInfinity;
-    if (!v.is_number()) fail(key, cat("must be a number or \"infinity\", not ", v.dump()));
+    if (!v.is_number()) fail(key, cat("must be a number or \"infinity\", not ", excerpt(v.dump())));
     return number(key);
   }
 
   template <int N>
   glm::vec<N, double> vector(const std::string& key) const {
     const json& v = object_.at(key);
-    if (!v.is_array() || v.size() != N) fail(key, cat("must be an array of ", N, " numbers, not ", v.dump()));
+    if (!v.is_array() || v.size() != N) fail(key, cat("must be an array of ", N, " numbers, not ", excerpt(v.dump())));
     glm::vec<N, double> out;
     for (int i = 0; i < N; ++i) {
-      if (!v[static_cast<std::size_t>(i)].is_number()) fail(key, cat("must be an array of ", N, " numbers, not ", v.dump()));
+      if (!v[static_cast<std::size_t>(i)].is_number()) fail(key, cat("must be an array of ", N, " numbers, not ", excerpt(v.dump())));
       out[i] = v[static_cast<std::size_t>(i)].get<double>();
       if (!std::isfinite(out[i])) fail(key, "must hold finite numbers");
     }
@@ -95,7 +102,7 @@ class Reader {
   // A 3×3 matrix given row by row, [[a, b, c], [d, e, f], [g, h, i]], of finite numbers.
   RotationRows matrix3(const std::string& key, const std::string& shape) const {
     const json& v = object_.at(key);
-    const auto bad = [&] { fail(key, cat("must be a 3×3 matrix given row by row, ", shape, ", of finite numbers, not ", v.dump())); };
+    const auto bad = [&] { fail(key, cat("must be a 3×3 matrix given row by row, ", shape, ", of finite numbers, not ", excerpt(v.dump()))); };
     if (!v.is_array() || v.size() != 3) bad();
     RotationRows m;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -111,27 +118,27 @@ class Reader {
 
   std::string string(const std::string& key) const {
     const json& v = object_.at(key);
-    if (!v.is_string()) fail(key, cat("must be a string, not ", v.dump()));
+    if (!v.is_string()) fail(key, cat("must be a string, not ", excerpt(v.dump())));
     return v.get<std::string>();
   }
 
   int integer(const std::string& key) const {
     const json& v = object_.at(key);
-    if (!v.is_number_integer()) fail(key, cat("must be a whole number, not ", v.dump()));
+    if (!v.is_number_integer()) fail(key, cat("must be a whole number, not ", excerpt(v.dump())));
     // get<int>() wraps what int cannot hold (4294967297 would be read as 1): refused instead.
     const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= INT_MAX
                                              : v.get<std::int64_t>() >= INT_MIN && v.get<std::int64_t>() <= INT_MAX;
-    if (!fits) fail(key, cat("is ", v.dump(), "; give a whole number from ", INT_MIN, " to ", INT_MAX));
+    if (!fits) fail(key, cat("is ", excerpt(v.dump()), "; give a whole number from ", INT_MIN, " to ", INT_MAX));
     return v.get<int>();
   }
 
   // The object under `key`, read with keys named "key.sub" in messages; unknown keys are errors.
   Reader object(const std::string& key, const std::set<std::string>& allowed) const {
     const json& v = object_.at(key);
-    if (!v.is_object()) fail(key, cat("must be an object with keys among ", joined(allowed), ", not ", v.dump()));
+    if (!v.is_object()) fail(key, cat("must be an object with keys among ", joined(allowed), ", not ", excerpt(v.dump())));
     for (const auto& item : v.items())
       if (allowed.count(item.key()) == 0)
-        throw InputError(cat(where_, ": unknown key \"", key, ".", item.key(), "\"; \"", key, "\" takes ", joined(allowed)));
+        throw InputError(cat(where_, ": unknown key \"", key, ".", excerpt(item.key()), "\"; \"", key, "\" takes ", joined(allowed)));
     return Reader(v, where_, key + ".");
   }
 
@@ -213,11 +220,17 @@ CameraFile parsePhysical(const Reader& r) {
   return file;
 }
 
-// fx, fy > 0 and a size of 1 to kMaxImageSidePx a side; `reader` and the keys name them in messages.
+// Focal lengths in pixels that lenslab draws: beyond 1e9 a field of view across the largest image
+// is below a microradian, and the window's size (width / fx) underflows what later arithmetic holds
+// (fx = 1e300 overflowed an integer in the fold-over check's message).
+constexpr NumberRange kFocalLengthPx{.min = 1e-3, .max = 1e9, .unit = "pixels"};
+
+// fx, fy in kFocalLengthPx and a size of 1 to kMaxImageSidePx a side; `reader` and the keys name
+// them in messages.
 void checkIntrinsics(const OpenCvIntrinsics& k, const Reader& reader, const std::string& fxKey, const std::string& fyKey,
                      const std::string& widthKey, const std::string& heightKey) {
-  if (!(k.fx > 0.0)) reader.fail(fxKey, cat("is ", k.fx, "; give the focal length in pixels (> 0)"));
-  if (!(k.fy > 0.0)) reader.fail(fyKey, cat("is ", k.fy, "; give the focal length in pixels (> 0)"));
+  if (const auto problem = numberProblem(k.fx, kFocalLengthPx)) reader.failNumber(fxKey, *problem, "the focal length in pixels");
+  if (const auto problem = numberProblem(k.fy, kFocalLengthPx)) reader.failNumber(fyKey, *problem, "the focal length in pixels");
   if (k.widthPx < 1 || k.widthPx > kMaxImageSidePx)
     reader.fail(widthKey, cat("is ", k.widthPx, "; use 1 to ", kMaxImageSidePx, " pixels"));
   if (k.heightPx < 1 || k.heightPx > kMaxImageSidePx)
@@ -376,7 +389,7 @@ Distortion distCoeffsOf(const Reader& r, const std::string& key) {
   const std::size_t n = raw.size();
   if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
     r.fail(key, cat("as an array is OpenCV's distCoeffs [k1, k2, p1, p2] or [k1, k2, p1, p2, k3] (or the 8, 12 or 14 "
-                    "of the fuller models), not ", raw.dump()));
+                    "of the fuller models), not ", excerpt(raw.dump())));
   std::vector<double> c(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!raw[i].is_number() || !std::isfinite(raw[i].get<double>())) r.fail(key, "must hold finite numbers");
@@ -508,7 +521,7 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
   if (openCv) {
     for (const auto& item : root.items())
       if (kOpenCvFormKeys.count(item.key()) == 0 && kCommonKeys.count(item.key()) == 0)
-        throw InputError(cat(where, ": unknown key \"", item.key(), "\" in an OpenCV camera; it takes ",
+        throw InputError(cat(where, ": unknown key \"", excerpt(item.key()), "\" in an OpenCV camera; it takes ",
                              joined(kOpenCvFormKeys), " and ", joined(kCommonKeys)));
     CameraFile file = parseOpenCv(reader);
     parseCommon(reader, file);
@@ -521,7 +534,7 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
     const bool inLecture = kLectureKeys.count(key) > 0;
     const bool inPhysical = kPhysicalKeys.count(key) > 0;
     if (!inLecture && !inPhysical)
-      throw InputError(cat(where, ": unknown key \"", key, "\"; the lecture form takes ", joined(kLectureKeys),
+      throw InputError(cat(where, ": unknown key \"", excerpt(key), "\"; the lecture form takes ", joined(kLectureKeys),
                            "; the physical form takes ", joined(kPhysicalKeys), "; the OpenCV form (chosen by ",
                            joined(kOpenCvOnlyKeys), ") takes ", joined(kOpenCvFormKeys), "; any form takes ",
                            joined(kCommonKeys)));

@@ -1,6 +1,7 @@
 #include "io/CameraPathJson.h"
 
 #include "core/Error.h"
+#include "core/NumberInput.h"
 #include "core/Text.h"
 #include "io/CameraJson.h"
 #include "io/TextFile.h"
@@ -25,7 +26,7 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
   if (!root.is_object()) throw InputError(cat(where, ": a camera path must hold a JSON object, not ", root.type_name()));
   for (const auto& item : root.items())
     if (item.key() != "fps" && item.key() != "keys" && item.key() != "frames" && item.key() != "interpolation")
-      throw InputError(cat(where, ": unknown key \"", item.key(), "\"; a camera path takes fps, keys, frames, interpolation"));
+      throw InputError(cat(where, ": unknown key \"", excerpt(item.key()), "\"; a camera path takes fps, keys, frames, interpolation"));
 
   CameraPath path;
   if (!root.contains("fps")) throw InputError(cat(where, ": fps: required (frames per second, e.g. 24)"));
@@ -41,7 +42,7 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
     const json& mode = root["interpolation"];
     if (mode == "smooth") path.interpolation = PathInterpolation::Smooth;
     else if (mode == "linear") path.interpolation = PathInterpolation::Linear;
-    else throw InputError(cat(where, ": interpolation ", mode.dump(), ": use \"smooth\" or \"linear\""));
+    else throw InputError(cat(where, ": interpolation ", excerpt(mode.dump()), ": use \"smooth\" or \"linear\""));
   }
   if (!root.contains("keys") || !root["keys"].is_array())
     throw InputError(cat(where, ": keys: give an array of keys, each {\"time\": seconds, <a camera in the physical form>}"));

@@ -2,6 +2,7 @@
 
 #include "camera/ImageSize.h"
 #include "core/Error.h"
+#include "core/NumberInput.h"
 #include "core/ParseNumber.h"
 #include "core/Text.h"
 #include "io/TextFile.h"
@@ -99,20 +100,18 @@ std::size_t fieldCount(std::string_view line) {
   return n;
 }
 
+// core/NumberInput's rule (a leading '+' allowed, as COLMAP's stold allows it); the message quotes
+// at most 60 characters of the field.
 double number(std::string_view field, const Where& where, const std::string& what) {
-  std::string_view s = field;
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);  // COLMAP reads with stold, which allows it
-  const std::optional<double> value = parseDouble(s);
-  if (!value) where.fail(cat(what, " is \"", field, "\"; give a number"));
-  if (!std::isfinite(*value)) where.fail(cat(what, " is ", field, "; give a finite number"));
-  return *value;
+  if (const auto problem = numberTextProblem(field, NumberRange{})) where.fail(cat(what, ": ", *problem));
+  return *parseDouble(!field.empty() && field.front() == '+' ? field.substr(1) : field);
 }
 
 std::uint64_t whole(std::string_view field, const Where& where, const std::string& what, std::uint64_t max) {
   std::uint64_t value = 0;
   const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
   if (error != std::errc() || end != field.data() + field.size() || value > max)
-    where.fail(cat(what, " is \"", field, "\"; give a whole number from 0 to ", max));
+    where.fail(cat(what, " is \"", excerpt(field), "\"; give a whole number from 0 to ", max));
   return value;
 }
 

@@ -101,6 +101,36 @@ expect_refusal "target in tiles" "--target-psnr: " -- render --camera "$src/asse
 expect_refusal "bad focus distance" "--focus-distance: focus_distance is -3" -- render --focus-distance -3 --out "$work/out.png"
 expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$src/assets/rows/camera-dof.json" --width 96 --focus-at 50,2 --out "$work/out.png"
 
+# Every number option, given what is not a finite number, is refused in one line naming it (a
+# plain range check lets nan through; 1e309 overflows a double). VALUE stands for the bad number.
+number_options=(
+  "render --time VALUE" "render --focal-length VALUE" "render --focus-distance VALUE" "render --focus-at VALUE,1"
+  "render --target-psnr VALUE" "render --eye VALUE,0,0" "render --target 0,VALUE,0" "render --background 0,0,VALUE"
+  "render --f-number VALUE" "render --sensor VALUEx24" "raycast --time VALUE" "raycast --focus-at 1,VALUE"
+  "capture --fps VALUE" "sweep --target-psnr 30,VALUE" "sweep --focus-distance VALUE"
+  "view --frame-budget-ms VALUE" "view --click VALUE,VALUE" "view --window-size VALUE,100" "view --time VALUE"
+)
+for template in "${number_options[@]}"; do
+  read -r cmd option _ <<<"$template"
+  for bad in nan inf -inf 1e309; do
+    read -r -a args <<<"${template//VALUE/$bad}"
+    out="$work/out.png"
+    [ "$cmd" = sweep ] && out="$work/out.sweep"
+    [ "$cmd" = capture ] && out="$work/out_%04d.png"
+    if [ "$cmd" = view ]; then extra=(--frames 1 --screenshot "$work/out.png"); else extra=(--out "$out"); fi
+    expect_refusal "$template with $bad" "$option" -- "${args[@]}" "${extra[@]}"
+  done
+done
+
+# A camera path whose keys are valid but whose interpolation is not is refused before frame 0,
+# naming the frame; no frame is written.
+echo '{"fps": 4, "interpolation": "linear", "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 1, 0]}, {"time": 1, "eye": [0, 1, -5], "target": [0, 1, 0]}]}' >"$work/through.json"
+echo '{"fps": 4, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 1, 0]}, {"time": 1, "eye": [0, 1, 5], "target": [0, 1, 0], "up": [0, -1, 0]}]}' >"$work/flip.json"
+expect_refusal "path through its target" "through.json: frame 2 (t = 0.5 s): eye meets target" -- capture --path "$work/through.json" --width 32 --out "$work/out_%04d.png"
+if ls "$work"/out_0000.png >/dev/null 2>&1; then fail "path through its target: wrote frame 0"; rm -f "$work"/out_*.png; else pass; fi
+expect_refusal "path whose up flips" "flip.json: frame 2 (t = 0.5 s): up is parallel" -- capture --path "$work/flip.json" --width 32 --out "$work/out_%04d.png"
+if ls "$work"/out_0000.png >/dev/null 2>&1; then fail "path whose up flips: wrote frame 0"; rm -f "$work"/out_*.png; else pass; fi
+
 # The ray-cast reference: same options, --spp, same outputs.
 if "$lenslab" raycast --camera "$src/assets/occluder/camera-dof.json" --width 48 --spp 4 --out "$work/rc.exr" --stats "$work/rc.json" -q &&
    [ -s "$work/rc.exr" ] && grep -qF '"command": "raycast"' "$work/rc.json" && grep -qF '"aperture_samples": 4' "$work/rc.json"; then pass; else fail "raycast"; fi
@@ -133,6 +163,29 @@ expect_refusal "unknown key" "focal_lenght_mm" -- render --camera "$work/typo.js
 expect_refusal "bad extension" "use .png" -- render --out "$work/out.jpg"
 expect_refusal "bad width" "--width" -- render --width 0 --out "$work/out.png"
 expect_refusal "missing output folder" "does not exist" -- render --width 32 --out "$work/nowhere/out.png"
+
+# Input files: only a regular file is read, and only up to a limit (docs/camera-files.md). Each of
+# these used to be read until memory ran out (std::bad_alloc) or to block on the FIFO; the runs are
+# bounded here so that a regression fails rather than fills the machine.
+mkfifo "$work/fifo.json" "$work/fifo.gltf"
+truncate -s 67108865 "$work/huge.json"  # 64 MiB + 1, sparse
+ln -s /dev/zero "$work/zero.glb"
+ln -s /dev/zero "$work/zero.bin"
+echo '{"asset": {"version": "2.0"}, "buffers": [{"uri": "zero.bin", "byteLength": 4}]}' >"$work/zero-buffer.gltf"
+mkdir "$work/colmap-fifo" && mkfifo "$work/colmap-fifo/cameras.txt" && touch "$work/colmap-fifo/images.txt"
+real_lenslab=$lenslab
+lenslab=$work/bounded-lenslab
+printf '#!/usr/bin/env bash\nulimit -v 8000000\nexec timeout 30 "%s" "$@"\n' "$real_lenslab" >"$lenslab" && chmod +x "$lenslab"
+expect_refusal "camera /dev/zero" "/dev/zero: is not a regular file" -- render --camera /dev/zero --out "$work/out.png"
+expect_refusal "path /dev/zero" "/dev/zero: is not a regular file" -- capture --path /dev/zero --out "$work/out_%04d.png"
+expect_refusal "camera FIFO" "fifo.json: is not a regular file" -- render --camera "$work/fifo.json" --out "$work/out.png"
+expect_refusal "camera folder" "is a folder; give the camera file as a file" -- render --camera "$work" --out "$work/out.png"
+expect_refusal "camera over 64 MiB" "lenslab reads at most 64 MiB" -- render --camera "$work/huge.json" --out "$work/out.png"
+expect_refusal "glb /dev/zero" "zero.glb: is not a regular file" -- render "$work/zero.glb" --out "$work/out.png"
+expect_refusal "gltf FIFO" "fifo.gltf: is not a regular file" -- render "$work/fifo.gltf" --out "$work/out.png"
+expect_refusal "buffer /dev/zero" "zero.bin: is not a regular file" -- render "$work/zero-buffer.gltf" --out "$work/out.png"
+expect_refusal "COLMAP FIFO" "cameras.txt: is not a regular file" -- render --colmap "$work/colmap-fifo" --image a.png --out "$work/out.png"
+lenslab=$real_lenslab
 
 # Lens effects: the passes that ran are listed, a zero-strength effect adds none, the ray caster
 # takes the same camera, bad lens input is refused in one line.

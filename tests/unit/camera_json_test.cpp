@@ -85,6 +85,32 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
 
 // Found by fuzzing (tools/fuzz.sh, camera_json_fuzz): a number beyond double's range made
 // nlohmann throw out_of_range, not parse_error, which escaped the reader as a non-InputError.
+// A focal length in pixels too large to draw is refused as such, not later as a garbled fold-over
+// (fx = 1e300 printed an overflowed integer, -9223372036854775808 %).
+TEST(CameraJson, FocalLengthInPixelsBeyondItsRangeIsRefused) {
+  expectRefused(R"({"intrinsics": {"fx": 1e300, "fy": 1e300, "cx": 480, "cy": 320, "width": 960, "height": 640},
+                    "eye": [0, 1, 5], "target": [0, 1, 0], "dist": [0.1, 0, 0, 0]})",
+                "\"intrinsics.fx\" (the focal length in pixels): 1e+300 is out of range; give a finite value from 0.001 to 1e+09");
+  expectRefused(R"({"intrinsics": {"fx": 500, "fy": 0, "cx": 480, "cy": 320, "width": 960, "height": 640},
+                    "eye": [0, 1, 5], "target": [0, 1, 0]})",
+                "\"intrinsics.fy\" (the focal length in pixels): 0 is out of range");
+}
+
+// What a user wrote is quoted in a message, at most 60 characters of it.
+TEST(CameraJson, LongUserTextIsQuotedShort) {
+  const std::string key(1 << 20, 'x');
+  for (const std::string& text : {R"({"eye": [0, 1, 5], "target": [0, 1, 0], ")" + key + R"(": 1})",
+                                  R"({"eye": [0, 1, 5], "target": [0, 1, 0], "near": ")" + key + R"("})"}) {
+    try {
+      parseCameraJson(text, "cam.json");
+      FAIL() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_LT(std::string(e.what()).size(), 1000u);
+      EXPECT_NE(std::string(e.what()).find("xxx…"), std::string::npos);
+    }
+  }
+}
+
 TEST(CameraJson, NumberBeyondDoubleIsRefusedAsInvalidJson) {
   expectRefused(R"({"eye": [0, 0, 2.5e308], "target": [0, 0, 0]})", "not valid JSON: number overflow parsing '2.5e308'");
   expectRefused("[1, -1e400]", "not valid JSON");

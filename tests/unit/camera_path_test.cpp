@@ -106,6 +106,36 @@ TEST(CameraPath, UpStaysOrthonormalToTheViewDirection) {
   }
 }
 
+// Keys that are each valid can interpolate to a camera that is not; the whole path is refused when
+// read, naming the frame, before capture draws any.
+std::string refusal(const CameraPath& path) {
+  try {
+    validate(path, "path.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "not refused";
+}
+
+TEST(CameraPath, AnEyeThroughItsTargetIsRefusedBeforeTheFirstFrame) {
+  CameraPath p;
+  p.fps = 4.0;
+  p.interpolation = PathInterpolation::Linear;
+  p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}, {1.0, lens({0, 0, -5}, {0, 0, 0}, 3.0, 2.8), {}}};
+  const std::string message = refusal(p);
+  EXPECT_NE(message.find("path.json: frame 2 (t = 0.5 s): eye meets target"), std::string::npos) << message;
+}
+
+TEST(CameraPath, UpsThatCancelAreRefusedNamingTheFrame) {
+  CameraPath p;
+  p.fps = 4.0;
+  p.interpolation = PathInterpolation::Linear;
+  p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}, {1.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}};
+  p.keys[1].camera.up = {0, -1, 0};
+  const std::string message = refusal(p);
+  EXPECT_NE(message.find("path.json: frame 2 (t = 0.5 s): up is parallel to the view direction"), std::string::npos) << message;
+}
+
 TEST(CameraPath, CentripetalCatmullRomPassesItsPointsAndKeepsALineStraight) {
   const glm::dvec3 p0(0, 0, 0), p1(1, 0, 0), p2(2, 0, 0), p3(3, 0, 0);
   for (double u : {0.0, 0.25, 0.5, 1.0}) EXPECT_NEAR(glm::length(centripetalCatmullRom(p0, p1, p2, p3, u) - glm::dvec3(1 + u, 0, 0)), 0.0, 1e-12);

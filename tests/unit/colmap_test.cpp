@@ -195,6 +195,11 @@ TEST(ColmapText, EachBadLineIsRefusedNamingFileLineAndField) {
   expectHas(cameras("# c\n1 PINHOLE 640 480 500 500 320\n"), {"m/cameras.txt:2:", "PINHOLE", "4 parameters", "fx, fy, cx, cy"});
   expectHas(cameras("1 PINHOLE 640 480 500 five 320 240\n"), {"m/cameras.txt:1:", "parameter 2", "five"});
   expectHas(cameras("1 PINHOLE 640 480 500 nan 320 240\n"), {"m/cameras.txt:1:", "finite"});
+  expectHas(cameras("1 PINHOLE 640 480 500 1e309 320 240\n"), {"m/cameras.txt:1:", "1e309 is not a finite number"});
+  // A long field is quoted short (at most 60 characters and an ellipsis).
+  const std::string longField = cameras("1 PINHOLE 640 480 500 " + std::string(100000, 'x') + " 320 240\n");
+  expectHas(longField, {"m/cameras.txt:1:", "xxx…"});
+  EXPECT_LT(longField.size(), 400u);
   expectHas(cameras("1 PINHOLE 640\n"), {"m/cameras.txt:1:", "CAMERA_ID MODEL WIDTH HEIGHT PARAMS[]"});
   expectHas(cameras("1 PINHOLE 640 -480 500 500 320 240\n"), {"m/cameras.txt:1:", "HEIGHT"});
   expectHas(cameras("1 PINHOLE 640 0 500 500 320 240\n"), {"m/cameras.txt:1:", "at least 1x1"});

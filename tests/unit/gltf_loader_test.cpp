@@ -621,7 +621,7 @@ TEST(GltfFiles, MissingFileIsOneLineNamingItAndTheReason) {
     loadGltf("/no/such/x.gltf");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "/no/such/x.gltf: cannot read file: No such file or directory");
+    EXPECT_EQ(std::string(e.what()), "/no/such/x.gltf: cannot read the glTF file (does it exist?)");
   }
 }
 
@@ -630,7 +630,7 @@ TEST_F(GltfWritten, DirectoryIsRefused) {
     loadGltf(dir_);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_TRUE(contains(e.what(), "cannot read file: Is a directory")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "is a folder; give the glTF file as a file")) << e.what();
   }
 }
 
@@ -1045,6 +1045,10 @@ TEST_F(GltfWritten, BadCameraValuesAreRefusedNamingCameraAndField) {
       {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", -1.0}}}}, "camera 0: znear is -1"},
       {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 1.0}, {"zfar", 0.5}}}}, "zfar 0.5 must be greater than znear 1"},
       {{{"type", "orthographic"}, {"orthographic", {{"xmag", -1.0}, {"ymag", 1.0}, {"znear", 0.0}, {"zfar", 10.0}}}}, "camera 0: xmag is -1"},
+      // glTF: aspectRatio and zfar, when present, are > 0 (tinygltf reads 0 as absent).
+      {{{"name", "wide"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"aspectRatio", 0.0}}}},
+       "camera 0 \"wide\": aspectRatio is 0.0; when present it must be a positive finite number"},
+      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"zfar", 0.0}}}}, "camera 0: zfar is 0.0"},
   };
   for (const auto& [camera, expected] : cases) {
     GltfBuilder b = square();
@@ -1053,6 +1057,16 @@ TEST_F(GltfWritten, BadCameraValuesAreRefusedNamingCameraAndField) {
     const std::string message = refusal(b);
     EXPECT_TRUE(contains(message, expected)) << message;
   }
+}
+
+TEST_F(GltfWritten, ACameraNodeScaledToZeroIsRefusedNamingTheNode) {
+  GltfBuilder b = square();
+  b.gltf["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}};
+  b.gltf["nodes"][0]["camera"] = 0;
+  b.gltf["nodes"][0]["name"] = "Cam";
+  b.gltf["nodes"][0]["scale"] = {1, 1, 0};
+  const std::string message = refusal(b);
+  EXPECT_TRUE(contains(message, "node 0 \"Cam\" (camera 0): its world transform is singular")) << message;
 }
 
 // -- robustness

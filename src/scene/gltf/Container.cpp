@@ -1,12 +1,9 @@
 #include "scene/gltf/Container.h"
 
+#include "io/TextFile.h"
 #include "scene/gltf/Problems.h"
 
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <memory>
 
 namespace lenslab::gltf {
 namespace fs = std::filesystem;
@@ -24,18 +21,7 @@ constexpr std::uint32_t kGlbBinChunk = 0x004E4942;   // "BIN\0"
 
 }  // namespace
 
-std::string readFile(const fs::path& file) {
-  std::error_code ec;
-  if (fs::is_directory(file, ec)) refuse("cannot read file: ", std::strerror(EISDIR));
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
-  if (!f) refuse("cannot read file: ", std::strerror(errno));
-  std::string bytes;
-  if (const auto size = fs::file_size(file, ec); !ec) bytes.reserve(static_cast<std::size_t>(size));
-  char chunk[1 << 16];
-  while (const std::size_t n = std::fread(chunk, 1, sizeof chunk, f.get())) bytes.append(chunk, n);
-  if (std::ferror(f.get())) refuse("cannot read file: ", std::strerror(errno));
-  return bytes;
-}
+std::string readFile(const fs::path& file) { return readInputFile(file, "glTF file", kMaxGltfFileBytes); }
 
 bool startsWithGlbMagic(std::string_view bytes) { return bytes.substr(0, 4) == "glTF"; }
 

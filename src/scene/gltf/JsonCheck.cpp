@@ -1,9 +1,11 @@
 #include "scene/gltf/JsonCheck.h"
 
+#include "core/NumberInput.h"
 #include "scene/gltf/Limits.h"
 #include "scene/gltf/Problems.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <string>
 
@@ -110,6 +112,20 @@ void precheckJson(const nlohmann::json& root, bool binary) {
     if (nodes[i].is_object() && nodes[i].contains("matrix") &&
         (nodes[i].contains("translation") || nodes[i].contains("rotation") || nodes[i].contains("scale")))
       refuse("node ", i, " has both a matrix and translation/rotation/scale; glTF allows one or the other");
+  // glTF: aspectRatio and zfar, when present, are > 0. tinygltf 2.7 reads a missing one as 0, so the
+  // Model cannot tell "aspectRatio": 0 from none; refused here from the JSON.
+  // tinygltf-2.7: can move to ModelChecks (cameras) when tinygltf marks absent values.
+  const nlohmann::json& cameras = arrayAt(root, "cameras");
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    if (!cameras[i].is_object() || !cameras[i].contains("perspective") || !cameras[i]["perspective"].is_object()) continue;
+    const nlohmann::json& p = cameras[i]["perspective"];
+    for (const char* key : {"aspectRatio", "zfar"})
+      if (p.contains(key) && !(p[key].is_number() && p[key].get<double>() > 0.0 && std::isfinite(p[key].get<double>())))
+        refuse("camera ", i, cameras[i].contains("name") && cameras[i]["name"].is_string()
+                                 ? cat(" \"", excerpt(cameras[i]["name"].get<std::string>()), "\"") : std::string(),
+               ": ", key, " is ", excerpt(p[key].dump()), "; when present it must be a positive finite number (leave it out ",
+               std::string_view(key) == "zfar" ? "for an infinite far plane)" : "to use the image's aspect ratio)");
+  }
 }
 
 bool escapePlusInFileUris(nlohmann::json& root) {

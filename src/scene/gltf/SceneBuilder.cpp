@@ -1,5 +1,6 @@
 #include "scene/gltf/SceneBuilder.h"
 
+#include "core/NumberInput.h"
 #include "scene/gltf/Animations.h"
 #include "scene/gltf/Images.h"
 #include "scene/gltf/Limits.h"
@@ -122,6 +123,7 @@ class SceneBuilder {
         }
     }
     if (node.camera >= 0) {
+      refuseSingularCameraNode(node, placed.gltfNode, worldFromNode);
       placed.cameras.push_back(static_cast<int>(scene_.cameras.size()));
       addCamera(node.camera, worldFromNode);
       scene_.cameras.back().nodeName = node.name;
@@ -185,6 +187,26 @@ class SceneBuilder {
     if (const auto found = images_.find(gltfIndex); found != images_.end()) return found->second;
     scene_.images.push_back(decodeImage(model_, gltfIndex));
     return images_[gltfIndex] = static_cast<int>(scene_.images.size()) - 1;
+  }
+
+  // A camera looks along its node's −Z with +Y up: a node (or parent) scaled to 0 on an axis leaves it
+  // no view direction, which would surface later as NaNs in the view; refused naming the node.
+  static void refuseSingularCameraNode(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& worldFromNode) {
+    // Each axis scaled by its largest component (a length would overflow at 1e200), then the
+    // determinant of the unit axes: a large but finite scale passes (it keeps the directions);
+    // only a collapsed axis or a non-finite one is refused.
+    glm::dmat3 axes(worldFromNode);
+    bool usable = true;
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec3 a = glm::abs(axes[i]);
+      const double largest = std::max({a.x, a.y, a.z});
+      usable = usable && std::isfinite(largest) && largest > 0.0;
+      if (usable) axes[i] = glm::normalize(axes[i] / largest);
+    }
+    if (usable && std::abs(glm::determinant(axes)) > 1e-9) return;
+    refuse("node ", nodeIndex, node.name.empty() ? std::string() : cat(" \"", excerpt(node.name), "\""), " (camera ", node.camera,
+           "): its world transform is singular (a scale of 0, with its parents'), so the camera has no view direction; "
+           "give the node and its parents a non-zero scale");
   }
 
   void addCamera(int index, const glm::dmat4& worldFromCamera) {

@@ -1,5 +1,7 @@
 #include "scene/gltf/TinygltfModel.h"
 
+#include "io/TextFile.h"
+#include "core/Error.h"
 #include "scene/gltf/Problems.h"
 
 #include <climits>
@@ -24,12 +26,26 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
   return true;
 }
 
+// External files (.bin buffers, images) read as the scene file is: a regular file, at most 4 GiB,
+// so that a uri naming /dev/zero or a FIFO is refused instead of read until memory runs out.
+bool readWholeInputFile(std::vector<unsigned char>* out, std::string* error, const std::string& file, void*) {
+  try {
+    const std::string bytes = readInputFile(file, "file a uri names", kMaxGltfFileBytes);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    if (error) *error += e.what();
+    return false;
+  }
+}
+
 }  // namespace
 
 tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& directory) {
   if (input.size() > UINT_MAX) refuse("the file is larger than the 4 GiB that glTF allows");
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(&keepEncodedImage, nullptr);
+  gltf.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeInputFile, &tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;
   bool ok = false;

@@ -28,8 +28,12 @@ void validate(const PhysicalCamera& c, std::string_view where) {
     fail(where, cat("focal_length_mm is ", c.focalLengthMm, "; give a positive number of millimetres"));
   if (!(std::isfinite(c.sensorMm.x) && std::isfinite(c.sensorMm.y) && c.sensorMm.x > 0.0 && c.sensorMm.y > 0.0))
     fail(where, "sensor_mm must be two positive numbers [width, height] in millimetres");
-  if (!(c.fNumber > 0.0) || std::isnan(c.fNumber))
-    fail(where, cat("f_number is ", c.fNumber, "; give a positive number (e.g. 2.8), or leave it out for a pinhole"));
+  // A thin lens in air cannot be faster than f/0.5 (a numerical aperture of 1: the aperture's
+  // radius reaches the focal length); below that the "lens" is an aperture of any size, and at
+  // f/1e-320 a radius past every float.
+  if (!(c.fNumber >= 0.5))
+    fail(where, cat("f_number is ", c.fNumber, "; no lens in air is faster than f/0.5: give 0.5 or more (e.g. 2.8), "
+                                               "or leave it out for a pinhole"));
   const glm::dvec3 forward = c.target - c.eye;
   const double distance = glm::length(forward);
   if (!(distance > 0.0)) fail(where, "eye and target are the same point; the view direction is undefined");

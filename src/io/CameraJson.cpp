@@ -193,6 +193,13 @@ CameraFile parseLecture(const Reader& r) {
   // The view plane is the plane of focus unless focus_distance says otherwise: then the focus goes
   // through refocused(), the same path as --focus-distance (infinity and far focus as 1/z_f).
   if (r.has("focus_distance")) file.camera = refocused(file.camera, r.distance("focus_distance"), r.where() + ": focus_distance");
+  // A lens focused at distance d has a focal length below d, and no lens is faster than f/0.5
+  // (radius ≤ focal length): its aperture radius is below d.
+  if (const double focus = r.has("focus_distance") ? r.distance("focus_distance") : spec.prp.z;
+      perspective && aperture > 0.0 && std::isfinite(focus) && !(aperture < focus))
+    r.fail("aperture_radius", cat("is ", aperture, " for a lens focused at ", focus,
+                                  "; a lens focused there has a focal length below that distance and an aperture radius no larger "
+                                  "than its focal length: give a radius below ", focus));
   return file;
 }
 

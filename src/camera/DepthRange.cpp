@@ -38,7 +38,14 @@ Camera withDepthRangeFitted(const Camera& camera, const Bounds& bounds) {
   // must stay below near, or the clipped vertex projects anywhere (PRP n = 1e-7 with the default
   // near n/1000 drew a fan of garbage over the floor).
   const double clipFloor = 1e-6 * std::max(std::abs(d.nearest), std::abs(d.farthest));
-  if (camera.nearFromScene) v.nearDistance = std::max({v.nearDistance, d.nearest - margin, clipFloor});
+  // The camera's own near (0.05 for a physical camera, PRP.n/1000 for the lecture's) is only a
+  // default: it would clip away a whole scene smaller than itself (a 1 cm model seen from 3 cm). In
+  // front of the scene the near is fitted to it; inside its bounds it is kept below 1e-3 of the
+  // scene's size, so that a scene and its camera scaled together keep their picture.
+  if (camera.nearFromScene) {
+    const double inside = std::min(v.nearDistance, 1e-3 * glm::length(bounds.size()));
+    v.nearDistance = std::max(d.nearest - margin > 0.0 ? d.nearest - margin : inside, clipFloor);
+  }
   if (camera.farFromScene && d.farthest + margin > v.nearDistance) v.farDistance = std::min(v.farDistance, d.farthest + margin);
   return c;
 }

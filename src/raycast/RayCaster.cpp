@@ -116,7 +116,7 @@ struct RayCaster::Impl {
       rtcReleaseGeometry(geometry);
       const glm::dmat3 linear(instance.worldFromModel);
       if (id != geometries.size()) throw std::logic_error("Embree geometry IDs are not sequential");
-      geometries.push_back({static_cast<int>(k), positions, glm::mat3(glm::transpose(glm::inverse(linear))),
+      geometries.push_back({static_cast<int>(k), positions, glm::mat3(worldNormalFromModel(instance.worldFromModel)),
                             glm::determinant(linear) < 0.0});
     }
     rtcCommitScene(rtcScene);

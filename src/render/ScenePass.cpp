@@ -103,7 +103,7 @@ void ScenePass::drawInstances(GLuint program, bool narrow, const GpuScene& gpuSc
     // Composed in double, rounded once (see scene.vert).
     const glm::dmat4 clipFromModel = wellScaled(clipFromWorld * instance.worldFromModel);
     const glm::dmat3 linear(instance.worldFromModel);
-    const glm::mat3 normalFromModel(glm::transpose(glm::inverse(linear)));
+    const glm::mat3 normalFromModel(worldNormalFromModel(instance.worldFromModel));
     if (narrow) {
       glProgramUniformMatrix4dv(program, kClipFromModelDouble, 1, GL_FALSE, glm::value_ptr(clipFromModel));
     } else {

@@ -1,6 +1,8 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace lenslab {
 
@@ -24,6 +26,14 @@ Bounds computeBounds(const Scene& scene) {
       bounds.extend(glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(v.position), 1.0)));
   }
   return bounds;
+}
+
+glm::dmat3 worldNormalFromModel(const glm::dmat4& worldFromModel) {
+  const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(worldFromModel)));
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(normal[c][r]));
+  return std::isfinite(largest) && largest > 0.0 ? normal / largest : normal;
 }
 
 }  // namespace lenslab

@@ -140,4 +140,10 @@ struct Scene {
 // World-space bounds of every instance's vertices.
 Bounds computeBounds(const Scene& scene);
 
+// The matrix that carries a model's normals into world directions: the inverse transpose of
+// worldFromModel's linear part, divided by its largest entry. Only the directions it gives are
+// used (normalised after), and a model scaled by 1e-12 would otherwise hand float normals of
+// length 1e12, whose squared length (1e24 per component, summed) overflows float in normalize.
+glm::dmat3 worldNormalFromModel(const glm::dmat4& worldFromModel);
+
 }  // namespace lenslab

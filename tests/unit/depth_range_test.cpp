@@ -37,7 +37,7 @@ TEST(DepthRange, ATelephotoGetsNearAndFarAroundItsSubject) {
   EXPECT_GT(std::abs(a.z / a.w - b.z / b.w), 1e-4);
 }
 
-TEST(DepthRange, GivenValuesAreKeptAndOpenNearIsNeverNearerThanItsDefault) {
+TEST(DepthRange, GivenValuesAreKeptAndAnOpenNearInsideTheSceneIsItsDefaultOrAThousandthOfIt) {
   const Bounds scene = box({-1, -1, -10}, {1, 1, 5.5});  // reaches behind the camera at z = 5
   const Camera given = parseCameraJson(
       R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": 0.01, "far": 100})", "given.json").camera;
@@ -47,8 +47,22 @@ TEST(DepthRange, GivenValuesAreKeptAndOpenNearIsNeverNearerThanItsDefault) {
   EXPECT_EQ(kept.view.farDistance, 100.0);
   const Camera open = parseCameraJson(R"({"eye": [0, 0, 5], "target": [0, 0, 0]})", "open.json").camera;
   const Camera fitted = withDepthRangeFitted(open, scene);
-  EXPECT_EQ(fitted.view.nearDistance, 0.05);  // the scene reaches nearer than the default near
+  // The scene reaches behind the camera: near is the default (0.05) or 1e-3 of the scene's size
+  // (15.76), the smaller.
+  EXPECT_NEAR(fitted.view.nearDistance, 1e-3 * glm::length(glm::dvec3(2, 2, 15.5)), 1e-12);
   EXPECT_NEAR(fitted.view.farDistance, 15.0 + 0.01 * 15.5, 1e-9);
+  const Bounds large = box({-100, -100, -100}, {100, 100, 100});
+  EXPECT_EQ(withDepthRangeFitted(open, large).view.nearDistance, 0.05);
+}
+
+// A 1 cm scene seen from 3 cm lies nearer than the default near (0.05): fitted, not clipped away.
+TEST(DepthRange, ASceneNearerThanTheDefaultNearIsFittedNotClipped) {
+  const Bounds scene = box({-0.005, -0.005, -0.005}, {0.005, 0.005, 0.005});
+  const Camera open = parseCameraJson(R"({"eye": [0, 0, 0.03], "target": [0, 0, 0], "focus_distance": "infinity"})", "open.json").camera;
+  const Camera fitted = withDepthRangeFitted(open, scene);
+  EXPECT_GT(fitted.view.nearDistance, 0.02);
+  EXPECT_LT(fitted.view.nearDistance, 0.025);
+  EXPECT_GT(fitted.view.farDistance, 0.035);
 }
 
 TEST(DepthRange, ParallelAndEmptyScenesAreLeftAlone) {

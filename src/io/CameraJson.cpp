@@ -1,5 +1,7 @@
 #include "io/CameraJson.h"
 
+#include "io/JsonDocument.h"
+
 #include "camera/Intrinsics.h"
 #include "camera/LensMap.h"
 #include "camera/Rotation.h"
@@ -27,7 +29,6 @@ using nlohmann::json;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Camera files nest two levels ("distortion": {...}); far deeper is refused, not recursed into.
-constexpr int kMaxJsonDepth = 64;
 
 const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
                                             "aperture_radius", "focus_distance"};
@@ -506,20 +507,7 @@ void writeEffects(const Camera& camera, json& j) {
 }  // namespace
 
 CameraFile parseCameraJson(const std::string& text, const std::string& where) {
-  json root;
-  try {
-    // Nesting is bounded while parsing: the messages below quote values with dump(), which
-    // recurses once per level (a value nested a million deep overflowed the stack).
-    root = json::parse(text, [&](int depth, json::parse_event_t, json&) {
-      if (depth > kMaxJsonDepth) throw InputError(cat(where, ": the JSON nests deeper than ", kMaxJsonDepth, " levels"));
-      return true;
-    });
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond double's range
-    std::string what = e.what();
-    if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
-    else if (const auto end = what.find("] "); what.starts_with("[json.exception") && end != std::string::npos) what.erase(0, end + 2);
-    throw InputError(cat(where, ": not valid JSON: ", what));
-  }
+  const json root = parseJsonDocument(text, where);
   if (!root.is_object()) throw InputError(cat(where, ": a camera file must hold a JSON object, not ", root.type_name()));
 
   const Reader reader(root, where);

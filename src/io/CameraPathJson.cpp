@@ -1,5 +1,7 @@
 #include "io/CameraPathJson.h"
 
+#include "io/JsonDocument.h"
+
 #include "core/Error.h"
 #include "core/NumberInput.h"
 #include "core/Text.h"
@@ -14,15 +16,7 @@ namespace lenslab {
 using json = nlohmann::json;
 
 CameraPath parseCameraPath(const std::string& text, const std::string& where) {
-  json root;
-  try {
-    root = json::parse(text, [&](int depth, json::parse_event_t, json&) {
-      if (depth > 64) throw InputError(cat(where, ": the JSON nests deeper than 64 levels"));
-      return true;
-    });
-  } catch (const json::exception& e) {
-    throw InputError(cat(where, ": not valid JSON: ", e.what()));
-  }
+  const json root = parseJsonDocument(text, where);
   if (!root.is_object()) throw InputError(cat(where, ": a camera path must hold a JSON object, not ", root.type_name()));
   for (const auto& item : root.items())
     if (item.key() != "fps" && item.key() != "keys" && item.key() != "frames" && item.key() != "interpolation")

@@ -66,6 +66,9 @@ TEST(CameraJson, RoundTripsTheLectureForm) {
 
 TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
   expectRefused("{ not json", "not valid JSON");
+  // A key given twice (nlohmann would keep the second silently), at the top and nested.
+  expectRefused(R"({"eye": [0, 1, 3], "eye": [0, 2, 3], "target": [0, 0, 0]})", "the key \"eye\" is given twice");
+  expectRefused(R"({"eye": [0, 1, 3], "target": [0, 0, 0], "distortion": {"k1": 0.1, "k1": 0.2}})", "the key \"k1\" is given twice");
   expectRefused("[1, 2]", "JSON object");
   expectRefused("{}", "no camera");
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "focal_lenght_mm": 50})", "focal_lenght_mm");

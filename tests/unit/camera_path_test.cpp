@@ -237,5 +237,24 @@ TEST(CameraPathAssets, TheDollyZoomKeepsFocalLengthOverDistance) {
   EXPECT_NEAR(cameraAt(p, 4.0).camera.focalLengthMm, 70.0, 1e-12);
 }
 
+// A path file's JSON is read as a camera file's is: the parser's own text ("[json.exception...]")
+// cut to what it says, and a key given twice refused.
+TEST(CameraPath, BadJsonIsOneLineInTheInputsWords) {
+  const auto message = [](const std::string& text) {
+    try {
+      parseCameraPath(text, "path.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string overflow = message(R"({"fps": 1e309, "keys": []})");
+  EXPECT_NE(overflow.find("path.json: not valid JSON: number overflow"), std::string::npos) << overflow;
+  EXPECT_EQ(overflow.find("json.exception"), std::string::npos) << overflow;
+  const std::string truncated = message(R"({"fps": )");
+  EXPECT_EQ(truncated.find("json.exception"), std::string::npos) << truncated;
+  EXPECT_NE(message(R"({"fps": 24, "fps": 25, "keys": []})").find("the key \"fps\" is given twice"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace lenslab

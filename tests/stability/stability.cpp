@@ -39,6 +39,7 @@
 #include "TableCheck.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -146,9 +147,10 @@ std::string shortened(const std::string& message) {
 }
 
 Camera physical(const std::string& extra) {
-  return parseCameraJson(cat(R"({"eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 35)", extra, "}"),
-                         "stability camera")
-      .camera;
+  // `extra` (", key: value, ...") overrides the defaults; a camera file itself refuses a key given twice.
+  nlohmann::json camera = nlohmann::json::parse(R"({"eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 35})");
+  if (!extra.empty()) camera.update(nlohmann::json::parse(cat("{", extra.substr(extra.find(',') + 1), "}")));
+  return parseCameraJson(camera.dump(), "stability camera").camera;
 }
 
 Scene moved(const Scene& scene, const glm::dvec3& offset) {

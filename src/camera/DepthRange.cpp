@@ -1,6 +1,8 @@
 #include "camera/DepthRange.h"
 
 #include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,9 +27,15 @@ DepthInterval depthIntervalOf(const ViewSpec& view, const Bounds& bounds) {
 Camera withDepthRangeFitted(const Camera& camera, const Bounds& bounds) {
   Camera c = camera;
   ViewSpec& v = c.view;
-  if (v.projection != Projection::Perspective || bounds.empty() || !(camera.nearFromScene || camera.farFromScene)) return c;
+  if (v.projection != Projection::Perspective || bounds.empty()) return c;
   const DepthInterval d = depthIntervalOf(v, bounds);
   if (!std::isfinite(d.nearest) || !std::isfinite(d.farthest)) return c;
+  // Reverse-Z stores near / depth: below about 1e-38 float has no normal number for it, and the
+  // scene is drawn nowhere (a given near of 1e-100 before a scene 5 away rendered only the sky).
+  if (!camera.nearFromScene && d.farthest > 0.0 && v.nearDistance < 1e-30 * d.farthest)
+    throw InputError(cat(camera.source, ": near is ", v.nearDistance, " with the scene reaching ", d.farthest,
+                         " away; depth keeps 1e-30 of that at most: give near >= ", 1e-30 * d.farthest, " or leave it out"));
+  if (!(camera.nearFromScene || camera.farFromScene)) return c;
   // A margin of 1 % of the depth range, and at least 1e-6 of the distance and of the scene's size:
   // a scene with no depth (a plane facing the camera) still gets a range wider than the float
   // rounding (~6e-8 of the coordinates) of the depths its vertices are drawn at.

@@ -1,6 +1,8 @@
 // Depth precision chosen from the scene: open near/far fitted to the scene's bounds in view.
 #include "camera/DepthRange.h"
 #include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
 #include "io/CameraJson.h"
 
 #include <gtest/gtest.h>
@@ -74,6 +76,23 @@ TEST(DepthRange, ParallelAndEmptyScenesAreLeftAlone) {
   EXPECT_EQ(fitted.view.farDistance, parallel.view.farDistance);
   const Camera open = parseCameraJson(R"({"eye": [0, 0, 5], "target": [0, 0, 0]})", "open.json").camera;
   EXPECT_TRUE(std::isinf(withDepthRangeFitted(open, Bounds{}).view.farDistance));
+}
+
+// A given near so small that near / depth has no normal float (reverse-Z) drew nothing at all: it
+// is refused in one line with the smallest near that works for this scene.
+TEST(DepthRange, AGivenNearBelowWhatDepthCanHoldIsRefused) {
+  const Bounds scene = box({-1, -1, -10}, {1, 1, 0});
+  for (const char* near : {"1e-100", "1e-320"}) {
+    const Camera c = parseCameraJson(cat(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": )", near, "}"), "n.json").camera;
+    try {
+      withDepthRangeFitted(c, scene);
+      ADD_FAILURE() << near << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("n.json: near is"), std::string::npos) << e.what();
+    }
+  }
+  const Camera fine = parseCameraJson(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": 1e-20})", "n.json").camera;
+  EXPECT_EQ(withDepthRangeFitted(fine, scene).view.nearDistance, 1e-20);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Camera paths (camera/CameraPath.h, io/CameraPathJson.h): keys hit exactly, a rack focus moves
 // one way in 1/z, f-numbers in stops, up stays orthonormal, frame counts, and bad paths refused in
 // one line naming the key.
+#include "../common/refusal.h"
 #include "camera/CameraPath.h"
 #include "core/Error.h"
 #include "io/CameraPathJson.h"
@@ -240,14 +241,7 @@ TEST(CameraPathAssets, TheDollyZoomKeepsFocalLengthOverDistance) {
 // A path file's JSON is read as a camera file's is: the parser's own text ("[json.exception...]")
 // cut to what it says, and a key given twice refused.
 TEST(CameraPath, BadJsonIsOneLineInTheInputsWords) {
-  const auto message = [](const std::string& text) {
-    try {
-      parseCameraPath(text, "path.json");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
+  const auto message = [](const std::string& text) { return test::refusalOf([&] { parseCameraPath(text, "path.json"); }); };
   const std::string overflow = message(R"({"fps": 1e309, "keys": []})");
   EXPECT_NE(overflow.find("path.json: not valid JSON: number overflow"), std::string::npos) << overflow;
   EXPECT_EQ(overflow.find("json.exception"), std::string::npos) << overflow;

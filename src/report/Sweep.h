@@ -6,9 +6,10 @@
 //   postprocess a single-pass gather depth of field from the pinhole colour and depth (baseline)
 //   adaptive    per-tile budgets to each target PSNR (plan/TileBudget.h), pre-pass included in
 //               its time; its rows also give the estimate beside the truth
-// The series can be chosen (SweepOptions::series); the equal-error table gives each series' time
-// to reach 30/35/40/45 dB, interpolated between its rows, and the speed-up over uniform
-// concentric accumulation.
+// The series can be chosen (SweepOptions::series); the equal-error tables give each series' time
+// to reach 30/35/40/45 dB, interpolated between its rows, and side by side the fastest uniform
+// pattern, the default pattern, per-tile budgets and the ray caster, with the per-tile budgets'
+// speed-up over the fastest uniform pattern.
 // Every image is compared with the reference: RMSE, PSNR, max error, and the RMSE over occlusion
 // edges (pixels within their circle of confusion of a depth discontinuity).
 // Timing: GPU work finished (glFinish) and read back, the median of three runs for raster and

@@ -73,7 +73,8 @@ std::string toJson(const RunStats& s) {
     const FrameEstimate& e = *s.estimate;
     j["estimate"] = {{"psnr", e.psnrDb}, {"rmse", e.rmse}, {"target_met", e.targetMet},
                      {"against", "the image's own converged limit (two independent sample streams)"}};
-    j["samples"] = {{"min", e.minSamples}, {"mean", e.meanSamples}, {"max", e.maxSamples}, {"tiles", e.tiles}, {"rounds", e.rounds}};
+    j["samples"] = {{"min", e.minSamples}, {"mean", e.meanSamples}, {"max", e.maxSamples}, {"tiles", e.tiles}, {"rounds", e.rounds},
+                    {"allocation", e.wholeFrame ? "uniform" : "per tile"}};
   }
   return j.dump(2) + "\n";
 }

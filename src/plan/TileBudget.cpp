@@ -134,6 +134,35 @@ std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileSta
   return go;
 }
 
+int wholeFrameMoreSamples(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples) {
+  const double mse = frameMse(grid, tiles);
+  int most = 0;
+  for (const TileState& tile : tiles) most = std::max(most, tile.samples);
+  if (mse <= targetMse || most >= maxSamples || tiles.empty()) return 0;
+  // Frame error after n samples everywhere: Σ pixels · c_t / (pixels · n), c_t = mse_t · n_t.
+  double sum = 0.0, pixels = 0.0;
+  for (int t = 0; t < grid.count(); ++t) {
+    const TileState& tile = tiles[static_cast<std::size_t>(t)];
+    sum += grid.pixels(t) * tile.mse * tile.samples;
+    pixels += grid.pixels(t);
+  }
+  const double wanted = sum / (pixels * targetMse);
+  const double capped = std::min(wanted, static_cast<double>(maxSamples));
+  return std::max(0, static_cast<int>(std::ceil(capped)) - most);
+}
+
+bool perTilePays(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples,
+                 double tileCostFactor) {
+  const std::vector<int> more = tilesToContinue(grid, tiles, targetMse, maxSamples);
+  double tilePixels = 0.0, framePixels = 0.0;
+  for (int t = 0; t < grid.count(); ++t) {
+    tilePixels += grid.pixels(t) * more[static_cast<std::size_t>(t)];
+    framePixels += grid.pixels(t);
+  }
+  const double wholePixels = framePixels * wholeFrameMoreSamples(grid, tiles, targetMse, maxSamples);
+  return tileCostFactor * tilePixels < wholePixels;
+}
+
 FrameEstimate estimateFrame(const TileGrid& grid, const std::vector<TileState>& tiles, double targetPsnrDb) {
   FrameEstimate e;
   if (tiles.empty()) return e;

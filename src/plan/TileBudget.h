@@ -56,6 +56,21 @@ struct TileState {
 // all 0 when the target is met (or every tile is at the cap).
 std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples);
 
+// Whether drawing the rest of the frame tile by tile is predicted to cost less than drawing whole
+// views until the frame meets the target. Both predictions use the same c/n model as
+// tilesToContinue: per tile, the pixels it still draws (Σ pixels · more samples, times
+// `tileCostFactor`, what a pixel drawn in scissored tiles costs against one drawn in a whole
+// view); whole views, the frame's pixels times the count n at which the frame's error
+// Σ pixels·c_t / (pixels · n) meets the target, from the most any tile has now. When the tiles'
+// errors are alike (a scene in focus, or blurred alike everywhere) the two allocations are nearly
+// the same and the per-tile cost factor decides: whole views.
+bool perTilePays(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples,
+                 double tileCostFactor);
+
+// Whole views: how many more samples every tile needs for the frame to meet the target (0 when
+// it does), counted from the most any tile has now, and capped at `maxSamples`.
+int wholeFrameMoreSamples(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples);
+
 // The frame's pixel-weighted mean squared error.
 double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles);
 
@@ -65,6 +80,7 @@ struct FrameEstimate {
   int minSamples = 0, maxSamples = 0;          // over tiles
   double meanSamples = 0.0;                    // pixel-weighted: samples per pixel
   int tiles = 0, tilesActive = 0, rounds = 0;
+  bool wholeFrame = false;                     // after the first round, every tile went on together (Renderer::step)
   bool targetMet = false;
 };
 FrameEstimate estimateFrame(const TileGrid& grid, const std::vector<TileState>& tiles, double targetPsnrDb);

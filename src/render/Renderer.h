@@ -101,6 +101,7 @@ class Renderer {
   void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
   glm::dmat4 sampleClip(const LensSample& s, double inverseFocusShift) const;
   int regionOf(int tile) const;
+  int mostSamples() const;  // the most samples any tile has
   // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
   std::optional<Accumulator::Curvature> curvatureWarp() const;
   void beginAdaptive();
@@ -130,6 +131,7 @@ class Renderer {
   bool adaptive_ = false;
   bool finished_ = false;
   bool scissorViews_ = false;
+  bool wholeFrame_ = false;  // the rest of the frame in whole views (step())
   std::unique_ptr<Accumulator> streamB_;  // odd samples; accumulator_ holds the even ones
   TileGrid grid_;
   std::vector<TileState> tiles_;

@@ -80,6 +80,33 @@ TEST(TileBudget, TheAllocationFollowsTheSquareRootRule) {
   EXPECT_TRUE(later[1]);
 }
 
+TEST(TileBudget, WholeViewsGoOnUntilTheFrameMeetsTheTarget) {
+  const TileGrid g = makeTileGrid({64, 32}, 32);
+  // c = 1e-2 and 3e-2 over equal areas: the frame meets 1e-4 at n = (1e-2 + 3e-2) / 2 / 1e-4 = 200,
+  // counted from the most any tile has (16).
+  EXPECT_EQ(wholeFrameMoreSamples(g, {{16, 8, 1e-2 / 16}, {8, 8, 3e-2 / 8}}, 1e-4, 1000), 200 - 16);
+  EXPECT_EQ(wholeFrameMoreSamples(g, {{16, 8, 1e-2 / 16}, {8, 8, 3e-2 / 8}}, 1e-4, 100), 100 - 16) << "capped";
+  EXPECT_EQ(wholeFrameMoreSamples(g, {{16, 8, 1e-6}, {16, 8, 1e-6}}, 1e-4, 1000), 0) << "met";
+}
+
+TEST(TileBudget, TilesPayOnlyWhereTheirErrorsDiffer) {
+  const TileGrid g = makeTileGrid({320, 320}, 32);  // 100 tiles
+  // Every tile alike: the allocations are the same, and a tile's pixel costs more: whole views.
+  std::vector<TileState> alike(100, TileState{16, 8, 1e-3});
+  EXPECT_FALSE(perTilePays(g, alike, 1e-4, 256, 1.3));
+  EXPECT_TRUE(perTilePays(g, alike, 1e-4, 256, 0.9)) << "were a tile's pixel cheaper, tiles would pay";
+  // One blurred tile in a frame in focus: tiles pay even at twice the cost a pixel.
+  std::vector<TileState> one(100, TileState{16, 8, 1e-7});
+  one[42].mse = 1e-2;
+  EXPECT_TRUE(perTilePays(g, one, 1e-4, 256, 2.0));
+  // Half the frame a hundred times noisier than the other half: the √c rule saves 1 − (1 + √100)² / (2·(1 + 100))
+  // = 40 % of the views; at 1.5 times the cost a pixel that does not pay, at 1.3 it does.
+  std::vector<TileState> half(100, TileState{16, 8, 1e-4});
+  for (int t = 0; t < 50; ++t) half[static_cast<std::size_t>(t)].mse = 1e-2;
+  EXPECT_FALSE(perTilePays(g, half, 1e-4, 100000, 1.8));
+  EXPECT_TRUE(perTilePays(g, half, 1e-4, 100000, 1.5));
+}
+
 TEST(TileBudget, PsnrAndMseAreInverse) {
   EXPECT_NEAR(psnrFromMse(mseFromPsnr(37.5)), 37.5, 1e-12);
   EXPECT_NEAR(psnrFromMse(1e-4), 40.0, 1e-12);

@@ -110,12 +110,7 @@ TEST(CameraPath, UpStaysOrthonormalToTheViewDirection) {
 // Keys that are each valid can interpolate to a camera that is not; the whole path is refused when
 // read, naming the frame, before capture draws any.
 std::string refusal(const CameraPath& path) {
-  try {
-    validate(path, "path.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "not refused";
+  return test::refusalOf([&] { validate(path, "path.json"); });
 }
 
 TEST(CameraPath, AnEyeThroughItsTargetIsRefusedBeforeTheFirstFrame) {
@@ -167,12 +162,7 @@ const char* kKey0 = R"({"time": 0, "eye": [0, 1, 5], "target": [0, 0.5, 0], "f_n
 const char* kKey1 = R"({"time": 1, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "focus_distance": 6})";
 
 std::string refusal(const std::string& text) {
-  try {
-    parseCameraPath(text, "path.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::refusalOf([&] { parseCameraPath(text, "path.json"); });
 }
 
 TEST(CameraPathJson, ReadsAPathWithEffects) {

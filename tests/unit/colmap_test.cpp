@@ -8,6 +8,7 @@
 #include "io/ColmapModel.h"
 
 #include "../common/lenslab_pixel.h"
+#include "../common/refusal.h"
 #include "../common/temp_dir_test.h"
 
 #include <gtest/gtest.h>
@@ -173,16 +174,12 @@ TEST(ColmapText, QuaternionsNearUnitLengthAreNormalisedAndOthersRefused) {
   EXPECT_THROW(parseColmapImages("1 0 0 0 0 0 0 0 1 P.JPG\n", "i.txt"), InputError);
 }
 
-// The message of the InputError that `f` throws ("" and a failure when it throws none).
+// The message of the InputError that `f` throws (and a failure when it throws none).
 template <class F>
 std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
+  const std::string message = test::refusalOf(f);
+  EXPECT_NE(message, "accepted") << "no InputError";
+  return message;
 }
 
 void expectHas(const std::string& message, std::initializer_list<const char*> parts) {

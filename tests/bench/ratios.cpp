@@ -48,7 +48,10 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+std::string gOnly;  // --only NAME: that ratio alone (a prefix of its name)
+
 void ratio(const char* name, int pairs, const std::function<void()>& a, const std::function<void()>& b, const char* goal) {
+  if (!gOnly.empty() && std::string(name).rfind(gOnly, 0) != 0) return;
   a();
   b();  // warm: shaders compiled, memory touched
   std::vector<double> ta, tb, r;
@@ -77,6 +80,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--backend=egl") == 0) backend = Backend::Egl;
     if (std::strcmp(argv[i], "--pairs") == 0 && i + 1 < argc) pairs = std::max(1, std::atoi(argv[++i]));
+    if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) gOnly = argv[++i];
   }
   const auto context = createHeadlessContext(backend);
   const Scene scene = loadGltf(assetDir() + "/rows/rows.gltf");

@@ -64,7 +64,7 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     if (glCheckNamedFramebufferStatus(gatherFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("accumulator: the lens gather's framebuffer is incomplete");
   }
-  adding_ = !curvature_ && !lens_;
+  adding_ = !curvature_ && !lens_ && !forceLayers_;
   if (adding_) {
     if (!background_) background_ = gl::buildProgram("common/fullscreen.vert", "accumulate/background.frag");
     int width = 0, height = 0;
@@ -173,15 +173,18 @@ void Accumulator::flushBackground() {
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glProgramUniform4fv(background_.id(), 0, 1, &colour.x);
+  // No texture is bound: a caller may have bound another sum already (Renderer::bindStreams).
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
   if (regionSet_) {
     glEnable(GL_SCISSOR_TEST);
     for (const PixelBox& b : region_) {
       glScissor(b.x, b.y, b.width, b.height);
-      drawFullScreen(fullScreen_, background_.id(), 0);
+      fullScreen_.draw(background_);
     }
     glDisable(GL_SCISSOR_TEST);
   } else {
-    drawFullScreen(fullScreen_, background_.id(), 0);
+    fullScreen_.draw(background_);
   }
   glDisable(GL_BLEND);
 }
@@ -257,6 +260,13 @@ GLuint Accumulator::sumTexture() {
 GLuint Accumulator::weightTexture() {
   flush();
   return weight_ && lens_ ? weight_->colorTexture() : 0;
+}
+
+Accumulator::ViewCost Accumulator::viewCost() const {
+  if (adding_) return {2.0, 1.0 / kAddedBatch, 8.0 + 32.0 / kAddedBatch};
+  const double batch = std::max(1, batchSize());
+  // The layer's clears (colour, depth), its read by the batch sum, and the sum's read and write.
+  return {1.0, 1.0 / batch, 16.0 + 4.0 + 16.0 + 32.0 / batch};
 }
 
 void Accumulator::resolve(const gl::RenderTarget& out) {

@@ -52,6 +52,9 @@ class Accumulator {
     glm::vec2 lateralScale{1.0f};    // 1 + lateral, red and blue
   };
 
+  // Views go into layers even where they could be added straight into the sum (tests and
+  // benchmarks compare the two ways). Takes effect at the next start.
+  void setLayered(bool layered) { forceLayers_ = layered; }
   // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
   void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr);
   // Where and how to draw the next view: into `target`, replacing it (a layer), or, when
@@ -81,6 +84,17 @@ class Accumulator {
   int batchSize() const { return adding_ ? kAddedBatch : static_cast<int>(framebuffers_.size()); }
   // Whether views are added straight into the sum (no field-curvature warp, no lens gather).
   bool addsViews() const { return adding_; }
+  // A model of what a view costs as the accumulator draws it now, for benchmarks to print: scene
+  // passes per view (an added view draws the scene twice: depth, then colour), full-screen passes
+  // per view, and the bytes per pixel its own work moves per view apart from the scene's fragments
+  // (clears, layer reads, the sum's read-modify-write; llvmpipe keeps depth-stencil in 8 bytes).
+  // A bare scene pass clears 20 bytes per pixel (RGBA32F and depth).
+  struct ViewCost {
+    double scenePasses = 0.0;
+    double fullScreenPasses = 0.0;
+    double bytesPerPixel = 0.0;
+  };
+  ViewCost viewCost() const;
   // The mean so far, into `out` (the sum's size).
   void resolve(const gl::RenderTarget& out);
 
@@ -109,6 +123,7 @@ class Accumulator {
   // Added views: the sum's colour with a depth-stencil of its own (depth far and stencil 0 where the
   // next view may add, stencil 1 outside the region).
   bool adding_ = false;
+  bool forceLayers_ = false;
   gl::Texture depthStencil_;
   gl::Framebuffer addFramebuffer_;
   glm::vec3 pendingBackground_{0.0f};   // the background of the pending added views

@@ -16,6 +16,9 @@ in ToClip {
   vec4 vertexColor;
 } vertex[];
 
+// Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
+invariant gl_Position;
+
 out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;

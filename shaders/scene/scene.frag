@@ -1,5 +1,12 @@
 #version 450 core
+// Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
+// a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
 #include "../common/shading.glsl"
+
+#ifdef ADD_TO_SUM
+// Depth and stencil decide which fragment adds before it is shaded (the pass has no discard).
+layout(early_fragment_tests) in;
+#endif
 
 in vec3 worldNormal;
 in vec2 uv;
@@ -19,17 +26,43 @@ layout(location = 10) uniform float diffuse;
 // views then converges to the pixel integral of the unfiltered texture, not to a pixel-blurred one.
 layout(location = 11) uniform float lodBias;
 
+#ifdef ADD_TO_SUM
+// The sum holds weight · (colour − background) per view; the accumulator adds weight · background
+// for all views at once, so a pixel that shows only the background costs a view nothing.
+layout(location = 13) uniform vec3 background;
+layout(location = 14) uniform vec4 addWeight;
+#endif
+
 layout(binding = 0) uniform sampler2D baseColorTexture;
 
+#ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
+#endif
 
 void main() {
   vec4 base = baseColorFactor * vertexColor;
+#ifdef DEPTH_ONLY
+  // Alpha-masked materials only: the cut-out must not hide what is behind it.
+#ifdef ALPHA_MASK
   if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
   if (alphaMask && base.a < alphaCutoff) discard;
+#endif
+  return;
+#else
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
+#ifndef ADD_TO_SUM
+  // (Added views need no discard: the depth pass left no depth where a cut-out is.)
+  if (alphaMask && base.a < alphaCutoff) discard;
+#endif
 
   vec3 n = normalize(worldNormal);
   // A double-sided surface seen from behind is lit as its back: the normal faces the viewer.
   if (doubleSided && !gl_FrontFacing) n = -n;
-  outColor = vec4(shade(base.rgb, n, unlit, Lighting(toLight, ambient, diffuse)), 1.0);
+  vec3 colour = shade(base.rgb, n, unlit, Lighting(toLight, ambient, diffuse));
+#ifdef ADD_TO_SUM
+  outColor = addWeight * vec4(colour - background, 1.0);
+#else
+  outColor = vec4(colour, 1.0);
+#endif
+#endif
 }

@@ -11,6 +11,9 @@ layout(location = 3) in vec4 inColor;
 layout(location = 0) uniform mat4 clipFromModel;
 layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
 
+// Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
+invariant gl_Position;
+
 out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;

@@ -64,25 +64,25 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     if (glCheckNamedFramebufferStatus(gatherFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("accumulator: the lens gather's framebuffer is incomplete");
   }
-  if (viewWidth_ != widthPx || viewHeight_ != heightPx) {
-    viewWidth_ = widthPx;
-    viewHeight_ = heightPx;
-    const double bytesPerLayer = 16.0 * widthPx * heightPx;
-    const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
-    views_ = gl::TextureArray::create();
-    glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
-    nearestClamp(views_.id());
-    depth_ = gl::Texture::create();
-    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, widthPx, heightPx);
-    framebuffers_.clear();
-    for (int layer = 0; layer < layers; ++layer) {
-      gl::Framebuffer fb = gl::Framebuffer::create();
-      glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, views_.id(), 0, layer);
-      glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-      if (glCheckNamedFramebufferStatus(fb.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("accumulator: view layer " + std::to_string(layer) + " is incomplete");
-      framebuffers_.push_back(std::move(fb));
+  adding_ = !curvature_ && !lens_ && !forceLayers_;
+  if (adding_) {
+    if (!background_) background_ = gl::buildProgram("common/fullscreen.vert", "accumulate/background.frag");
+    int width = 0, height = 0;
+    if (depthStencil_) {
+      glGetTextureLevelParameteriv(depthStencil_.id(), 0, GL_TEXTURE_WIDTH, &width);
+      glGetTextureLevelParameteriv(depthStencil_.id(), 0, GL_TEXTURE_HEIGHT, &height);
     }
+    if (width != sumWidth || height != sumHeight) {
+      depthStencil_ = gl::Texture::create();
+      glTextureStorage2D(depthStencil_.id(), 1, GL_DEPTH32F_STENCIL8, sumWidth, sumHeight);
+      addFramebuffer_ = gl::Framebuffer::create();
+      glNamedFramebufferTexture(addFramebuffer_.id(), GL_COLOR_ATTACHMENT0, sum_->colorTexture(), 0);
+      glNamedFramebufferTexture(addFramebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
+      if (glCheckNamedFramebufferStatus(addFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("accumulator: the framebuffer that views are added into is incomplete");
+    }
+  } else {
+    allocateLayers(widthPx, heightPx);
   }
   const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
   sum_->bind();
@@ -95,27 +95,107 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   count_ = 0;
   regionSet_ = false;
   weightSum_ = glm::vec4(0.0f);
+  pendingBackgroundWeight_ = glm::vec4(0.0f);
   pendingWeights_.assign(static_cast<std::size_t>(batchSize()), glm::vec4(0.0f));
   pendingShifts_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
   pendingJitters_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
 }
 
-gl::DrawTarget Accumulator::nextView(glm::vec3 channels, glm::vec2 curvatureShiftPx, glm::vec2 jitterPx) {
+void Accumulator::allocateLayers(int widthPx, int heightPx) {
+  if (viewWidth_ == widthPx && viewHeight_ == heightPx && !framebuffers_.empty()) return;
+  viewWidth_ = widthPx;
+  viewHeight_ = heightPx;
+  const double bytesPerLayer = 16.0 * widthPx * heightPx;
+  const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
+  views_ = gl::TextureArray::create();
+  glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
+  nearestClamp(views_.id());
+  depth_ = gl::Texture::create();
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, widthPx, heightPx);
+  framebuffers_.clear();
+  for (int layer = 0; layer < layers; ++layer) {
+    gl::Framebuffer fb = gl::Framebuffer::create();
+    glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, views_.id(), 0, layer);
+    glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    if (glCheckNamedFramebufferStatus(fb.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("accumulator: view layer " + std::to_string(layer) + " is incomplete");
+    framebuffers_.push_back(std::move(fb));
+  }
+}
+
+void Accumulator::resetDepthStencil(float depth, int stencil, bool inRegionOnly) {
+  const gl::DrawTarget target{addFramebuffer_.id(), sum_->width(), sum_->height()};
+  target.bind();
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xff);
+  if (inRegionOnly && regionSet_) {
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelBox& b : region_) {
+      glScissor(b.x, b.y, b.width, b.height);
+      glClearBufferfi(GL_DEPTH_STENCIL, 0, depth, stencil);
+    }
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, depth, stencil);
+  }
+}
+
+Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels, glm::vec2 curvatureShiftPx,
+                                        glm::vec2 jitterPx) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
-  if (pending_ == batchSize()) flush();
+  if (pending_ == batchSize() || (adding_ && pending_ > 0 && background != pendingBackground_)) flush();
   ++count_;
   // Alpha is shared out so that a full set of channel views adds 1, as one full view does.
   const float channelCount = channels.r + channels.g + channels.b;
   const glm::vec4 weight(channels, channelCount / 3.0f);
+  weightSum_ += weight;
+  if (adding_) {
+    ++pending_;
+    pendingBackground_ = background;
+    pendingBackgroundWeight_ += weight;
+    resetDepthStencil(0.0f, 0, true);  // reverse-Z: far is 0; stencil 0: the view may add here
+    return {{addFramebuffer_.id(), sum_->width(), sum_->height()}, weight};
+  }
   pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
   pendingShifts_[static_cast<std::size_t>(pending_)] = curvatureShiftPx;
   pendingJitters_[static_cast<std::size_t>(pending_)] = jitterPx;
-  weightSum_ += weight;
-  return {framebuffers_[static_cast<std::size_t>(pending_++)].id(), viewWidth_, viewHeight_};
+  return {{framebuffers_[static_cast<std::size_t>(pending_++)].id(), viewWidth_, viewHeight_}, std::nullopt};
+}
+
+void Accumulator::flushBackground() {
+  // The views added weight · (colour − background) where a surface was; weight · background for
+  // every pixel of the region completes them. Alpha: the background has no coverage.
+  const glm::vec4 colour(pendingBackground_ * glm::vec3(pendingBackgroundWeight_), 0.0f);
+  pendingBackgroundWeight_ = glm::vec4(0.0f);
+  sum_->bind();
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glProgramUniform4fv(background_.id(), 0, 1, &colour.x);
+  // No texture is bound: a caller may have bound another sum already (Renderer::bindStreams).
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  if (regionSet_) {
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelBox& b : region_) {
+      glScissor(b.x, b.y, b.width, b.height);
+      fullScreen_.draw(background_);
+    }
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    fullScreen_.draw(background_);
+  }
+  glDisable(GL_BLEND);
 }
 
 void Accumulator::flush() {
   if (pending_ == 0) return;
+  if (adding_) {
+    flushBackground();
+    pending_ = 0;
+    return;
+  }
   if (lens_) {
     const gl::DrawTarget both{gatherFramebuffer_.id(), sum_->width(), sum_->height()};
     both.bind();
@@ -167,6 +247,8 @@ void Accumulator::setRegion(const std::vector<PixelBox>* boxes) {
   if (boxes && boxes->size() == 1 && (*boxes)[0] == PixelBox{0, 0, sum_->width(), sum_->height()}) boxes = nullptr;
   regionSet_ = boxes != nullptr;
   if (boxes) region_ = *boxes;
+  // Outside the region no view may add: depth at near (nothing is GREATER) and stencil 1.
+  if (adding_) resetDepthStencil(1.0f, 1, false);
 }
 
 GLuint Accumulator::sumTexture() {
@@ -178,6 +260,13 @@ GLuint Accumulator::sumTexture() {
 GLuint Accumulator::weightTexture() {
   flush();
   return weight_ && lens_ ? weight_->colorTexture() : 0;
+}
+
+Accumulator::ViewCost Accumulator::viewCost() const {
+  if (adding_) return {2.0, 1.0 / kAddedBatch, 8.0 + 32.0 / kAddedBatch};
+  const double batch = std::max(1, batchSize());
+  // The layer's clears (colour, depth), its read by the batch sum, and the sum's read and write.
+  return {1.0, 1.0 / batch, 16.0 + 4.0 + 16.0 + 32.0 / batch};
 }
 
 void Accumulator::resolve(const gl::RenderTarget& out) {

@@ -1,12 +1,16 @@
 #pragma once
 // Thin-lens depth of field by accumulation: the image is the mean of the aperture views.
 //
-// Views are drawn into the layers of an array texture (one framebuffer per layer, one shared depth
-// buffer), and a batch of them is added into the float sum by one full-screen pass. Compared with
-// adding each view as it is drawn, the sum is read and written once per batch instead of once per
-// view, and on a GPU the views of a batch do not wait on each other (no pass reads what the next
-// one overwrites). start / nextView / resolve let the samples spread over frames (the interactive
-// demo converges progressively).
+// Plain views are added straight into the float sum by the scene pass itself (ScenePass's added
+// views: a depth pass, then a colour pass that blends where depth is EQUAL): a view costs one
+// scene pass and no layer of its own. The sum holds weight · (colour − background) per view, and
+// weight · background is added for a batch of views at once by one full-screen pass, so that a
+// pixel no surface covers costs a view nothing.
+//
+// Views that are read whole when summed (the field-curvature warp, the lens gather) are drawn
+// into the layers of an array texture (one framebuffer per layer, one shared depth buffer), and a
+// batch of them is added into the sum by one full-screen pass. start / nextView / resolve let the
+// samples spread over frames (the interactive demo converges progressively).
 #include "gl/Framebuffer.h"
 #include "gl/FullScreenPass.h"
 #include "gl/Object.h"
@@ -48,16 +52,26 @@ class Accumulator {
     glm::vec2 lateralScale{1.0f};    // 1 + lateral, red and blue
   };
 
+  // Views go into layers even where they could be added straight into the sum (tests and
+  // benchmarks compare the two ways). Takes effect at the next start.
+  void setLayered(bool layered) { forceLayers_ = layered; }
   // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
   void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr);
-  // Where to draw the next view; it counts as added once drawn. Adds the previous batch to the
-  // sum first when the batch is full. `channels` says which colour channels the view contributes
-  // (axial chromatic aberration draws one view per channel); resolve divides each channel by the
-  // number of views that contributed to it.
+  // Where and how to draw the next view: into `target`, replacing it (a layer), or, when
+  // `addWeight` is set, added into the sum with that weight (ScenePass::draw's addWeight). It
+  // counts as added once drawn.
+  struct View {
+    gl::DrawTarget target;
+    std::optional<glm::vec4> addWeight;
+  };
+  // The next view. Adds the previous batch to the sum first when the batch is full. `background`
+  // is the scene's (what a view shows where no surface is). `channels` says which colour channels
+  // the view contributes (axial chromatic aberration draws one view per channel); resolve divides
+  // each channel by the number of views that contributed to it.
   // `curvatureShiftPx`: δ·d·κ of this view in pixels (GL orientation), used with start's Curvature.
   // `jitterPx`: the view's sub-pixel offset (GL orientation), used with start's LensGather.
-  gl::DrawTarget nextView(glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f),
-                          glm::vec2 jitterPx = glm::vec2(0.0f));
+  View nextView(glm::vec3 background, glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f),
+                glm::vec2 jitterPx = glm::vec2(0.0f));
   // Views added from now on reach only these rectangles of the sum (nullptr: all of it); the views
   // pending so far are added first, with the region they were drawn for. Per-tile budgets.
   void setRegion(const std::vector<PixelBox>* boxes);
@@ -66,18 +80,38 @@ class Accumulator {
   GLuint sumTexture();
   GLuint weightTexture();
   int count() const { return count_; }
-  int batchSize() const { return static_cast<int>(framebuffers_.size()); }
+  // Views per batch: layers, or views whose background is added by one pass.
+  int batchSize() const { return adding_ ? kAddedBatch : static_cast<int>(framebuffers_.size()); }
+  // Whether views are added straight into the sum (no field-curvature warp, no lens gather).
+  bool addsViews() const { return adding_; }
+  // A model of what a view costs as the accumulator draws it now, for benchmarks to print: scene
+  // passes per view (an added view draws the scene twice: depth, then colour), full-screen passes
+  // per view, and the bytes per pixel its own work moves per view apart from the scene's fragments
+  // (clears, layer reads, the sum's read-modify-write; llvmpipe keeps depth-stencil in 8 bytes).
+  // A bare scene pass clears 20 bytes per pixel (RGBA32F and depth).
+  struct ViewCost {
+    double scenePasses = 0.0;
+    double fullScreenPasses = 0.0;
+    double bytesPerPixel = 0.0;
+  };
+  ViewCost viewCost() const;
   // The mean so far, into `out` (the sum's size).
   void resolve(const gl::RenderTarget& out);
 
  private:
   void flush();  // adds the pending views to the sum
+  void flushBackground();  // added views: weight · background of the pending views, into the sum
+  void resetDepthStencil(float depth, int stencil, bool inRegionOnly);
+  void allocateLayers(int widthPx, int heightPx);
+
+  static constexpr int kAddedBatch = 64;  // added views between background passes (any number would do)
 
   gl::Program accumulate_;
   gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
   gl::Program gatherLens_[4];     // the lens gather: [field curvature · 2 + lateral colour], built on first use
   gl::Program resolve_;
   gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
+  gl::Program background_;        // added views: adds a constant colour (background.frag)
   gl::FullScreenPass fullScreen_;
   std::unique_ptr<gl::RenderTarget> sum_;
   std::unique_ptr<gl::RenderTarget> weight_;  // the lens gather's per-pixel weights
@@ -86,6 +120,14 @@ class Accumulator {
   gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
   gl::Texture depth_;                 // shared by the views (each clears it)
   std::vector<gl::Framebuffer> framebuffers_;
+  // Added views: the sum's colour with a depth-stencil of its own (depth far and stencil 0 where the
+  // next view may add, stencil 1 outside the region).
+  bool adding_ = false;
+  bool forceLayers_ = false;
+  gl::Texture depthStencil_;
+  gl::Framebuffer addFramebuffer_;
+  glm::vec3 pendingBackground_{0.0f};   // the background of the pending added views
+  glm::vec4 pendingBackgroundWeight_{0.0f};
   int pending_ = 0;
   int count_ = 0;
   std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share

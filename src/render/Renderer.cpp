@@ -103,8 +103,10 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
       mask[c] = 1.0f;
       shift = channelFocusShifts_[static_cast<std::size_t>(c)];
     }
-    const gl::DrawTarget view = sum.nextView(mask, curvatureShift, jitter);
-    for (const SamplePart& part : parts) scenePass_.draw(gpuScene_, sampleClip(part.sample, shift), view, lodBias, part.boxes);
+    const Accumulator::View view = sum.nextView(gpuScene_.scene().lighting.background, mask, curvatureShift, jitter);
+    for (const SamplePart& part : parts)
+      scenePass_.draw(gpuScene_, sampleClip(part.sample, shift), view.target, lodBias, part.boxes,
+                      view.addWeight ? &*view.addWeight : nullptr);
   }
 }
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace lenslab {
 namespace {
@@ -25,6 +27,8 @@ enum Location : GLint {
   kDiffuse = 10,
   kLodBias = 11,
   kClipFromModelDouble = 12,  // narrow_field.vert
+  kBackground = 13,           // ADD_TO_SUM
+  kAddWeight = 14,            // ADD_TO_SUM
 };
 
 // The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
@@ -51,8 +55,28 @@ bool isNarrowField(const glm::dmat4& clipFromWorld) {
 
 ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
 
+void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) const {
+  glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
+  glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
+  glProgramUniform1f(program, kDiffuse, scene.lighting.diffuse);
+  glProgramUniform1f(program, kLodBias, lodBias);
+}
+
+ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
+  const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
+    if (!slot)
+      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag", defines)
+                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", defines);
+    return slot.id();
+  };
+  gl::Program* slots = addPrograms_[narrow ? 1 : 0];
+  if (std::string(define) == "DEPTH_ONLY") return {build(slots[0], {"DEPTH_ONLY"}), build(slots[1], {"DEPTH_ONLY", "ALPHA_MASK"})};
+  const GLuint addProgram = build(slots[2], {define});
+  return {addProgram, addProgram};
+}
+
 void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
-                     float lodBias, const std::vector<PixelBox>* boxes) const {
+                     float lodBias, const std::vector<PixelBox>* boxes, const glm::vec4* addWeight) const {
   const Scene& scene = gpuScene.scene();
   target.bind();
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -65,11 +89,13 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   if (narrow && !narrowProgram_)
     narrowProgram_ = gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag");
   const GLuint program = narrow ? narrowProgram_->id() : program_.id();
-  glUseProgram(program);
-  glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
-  glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
-  glProgramUniform1f(program, kDiffuse, scene.lighting.diffuse);
-  glProgramUniform1f(program, kLodBias, lodBias);
+  if (!addWeight) setLighting(program, scene, lodBias);
+  if (addWeight) {
+    for (const char* define : {"DEPTH_ONLY", "ADD_TO_SUM"}) {
+      const Programs p = variant(define, narrow);
+      for (const GLuint id : {p.opaque, p.masked}) setLighting(id, scene, lodBias);
+    }
+  }
 
   // One box over the whole target is no box: llvmpipe clears whole bins fastest without a scissor.
   if (boxes && boxes->size() == 1 && (*boxes)[0] == PixelBox{0, 0, target.width, target.height}) boxes = nullptr;
@@ -80,6 +106,10 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
       glEnable(GL_SCISSOR_TEST);
       glScissor(b.x, b.y, b.width, b.height);
     }
+    if (addWeight) {
+      drawAdded(gpuScene, clipFromWorld, narrow, *addWeight);
+      continue;
+    }
     const glm::vec3& bg = scene.lighting.background;
     // Alpha is coverage: 0 where no surface is drawn (the background shows), 1 where one is; the
     // mean of the views is then the fraction of the pixel (× aperture) that sees a surface.
@@ -87,18 +117,48 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     const float clearDepth = 0.0f;  // reverse-Z: far is 0
     glClearBufferfv(GL_COLOR, 0, clearColor);
     glClearBufferfv(GL_DEPTH, 0, &clearDepth);
-    drawInstances(program, narrow, gpuScene, clipFromWorld);
+    drawInstances({program, program}, narrow, gpuScene, clipFromWorld);
   }
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
 }
 
-void ScenePass::drawInstances(GLuint program, bool narrow, const GpuScene& gpuScene, const glm::dmat4& clipFromWorld) const {
+void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight) const {
+  // Depth only: no colour written, so llvmpipe shades nothing (opaque materials have no discard).
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_TRUE);
+  drawInstances(variant("DEPTH_ONLY", narrow), narrow, gpuScene, clipFromWorld);
+
+  // Colour where the depth is the visible surface's, once per pixel.
+  const Programs add = variant("ADD_TO_SUM", narrow);
+  const glm::vec3& bg = gpuScene.scene().lighting.background;
+  glProgramUniform3fv(add.opaque, kBackground, 1, glm::value_ptr(bg));
+  glProgramUniform4fv(add.opaque, kAddWeight, 1, glm::value_ptr(weight));
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  drawInstances(add, narrow, gpuScene, clipFromWorld);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_GREATER);
+}
+
+void ScenePass::drawInstances(Programs programs, bool narrow, const GpuScene& gpuScene, const glm::dmat4& clipFromWorld) const {
   const Scene& scene = gpuScene.scene();
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const Material& material =
         mesh.material >= 0 ? scene.materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
+    const GLuint program = material.alphaMode == AlphaMode::Mask ? programs.masked : programs.opaque;
+    glUseProgram(program);
 
     // Composed in double, rounded once (see scene.vert).
     const glm::dmat4 clipFromModel = wellScaled(clipFromWorld * instance.worldFromModel);

@@ -31,14 +31,34 @@ class ScenePass {
   // sub-pixel-jittered views of a pixel (scene.frag says why).
   // `boxes`: when given, only those rectangles of the target are cleared and drawn (per-tile
   // budgets: later views only where tiles still need them), one scissored pass each.
+  // `addWeight`: when given, the view is added into the target's colour (a running sum,
+  // render/Accumulator) with this weight per channel and alpha, instead of replacing it; see drawAdded.
   void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
-            float lodBias = 0.0f, const std::vector<PixelBox>* boxes = nullptr) const;
+            float lodBias = 0.0f, const std::vector<PixelBox>* boxes = nullptr,
+            const glm::vec4* addWeight = nullptr) const;
 
  private:
-  void drawInstances(GLuint program, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld) const;
+  // The programs of one way of drawing: opaque materials and alpha-masked ones (whose discard
+  // stops llvmpipe testing depth before shading, so opaque ones are kept apart where it matters).
+  struct Programs {
+    GLuint opaque = 0;
+    GLuint masked = 0;
+  };
+  // Adds the view into the target's colour without a layer of its own: a depth-only pass finds
+  // each pixel's visible surface, then a colour pass adds (weight · (colour − background), weight.a)
+  // where depth is EQUAL, and the stencil lets only the first such fragment add (two surfaces at
+  // the same depth add once, as GREATER keeps the first in a plain pass). The caller has set depth
+  // to far and stencil to 0 where the view may add, and adds weight · background itself.
+  void drawAdded(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight) const;
+  void drawInstances(Programs programs, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld) const;
+  // The variant with `define` (DEPTH_ONLY, ADD_TO_SUM), built on first use.
+  Programs variant(const char* define, bool narrow) const;
+  void setLighting(GLuint program, const Scene& scene, float lodBias) const;
 
   gl::Program program_;
   mutable std::optional<gl::Program> narrowProgram_;  // built on first use: needs fp64 shaders
+  // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
+  mutable gl::Program addPrograms_[2][3];
 };
 
 }  // namespace lenslab

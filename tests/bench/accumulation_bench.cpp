@@ -1,24 +1,33 @@
-// Cost of thin-lens accumulation at 1280×720 on the bundled rows scene:
+// Cost of thin-lens accumulation (default: 1280×720, the bundled rows scene, 64 views):
 //   BM_ScenePass        one bare scene pass (draw + glFinish), the unit of work
-//   BM_Accumulate/N     N aperture samples: N scene passes + N accumulate passes (+ glFinish)
-// The accumulation overhead is BM_Accumulate/N ÷ (N × BM_ScenePass).
+//   BM_Accumulate/N     N aperture views added into the sum (+ glFinish); N = 16 and --views.
+//                       Counters: views and triangles per second, and what a view costs the
+//                       accumulator (Accumulator::viewCost: scene passes, full-screen passes and
+//                       bytes per view)
+// The accumulation overhead is BM_Accumulate/N ÷ (N × BM_ScenePass); lenslab_ratios measures it
+// interleaved, which a busy machine needs.
 //   BM_LensFrame/E      a whole 16-sample frame (begin, samples, resolve with read-back) with lens
 //                       effect set E: 0 none, 1 all zero (must cost what 0 costs), 2 distortion +
 //                       lateral colour (the lens pass), 3 axial colour (three views per sample),
 //                       4 field curvature (the warped sum), 5 all of them (from camera-lens.json)
 //   BM_LensTables       building the lens pass's lookup tables (CPU, Newton), 3 channels
-// Run:  build/tests/lenslab_bench [--backend=egl]   (OSMesa by default)
+// Run:  build/tests/lenslab_bench [--scene F --camera F --size WxH --views N] [--backend=egl]
+//       (bench_options.h; OSMesa by default), plus Google Benchmark's flags (--benchmark_filter=…)
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "gl/GlContext.h"
 #include "io/CameraJson.h"
 #include "plan/FramePlan.h"
+#include "render/Accumulator.h"
 #include "render/Renderer.h"
 #include "render/ScenePass.h"
 #include "scene/GltfLoader.h"
 
+#include "bench_options.h"
+
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -26,7 +35,8 @@
 namespace lenslab {
 namespace {
 
-constexpr ImageSize kSize{1280, 720};
+bench::Options gOptions;
+ImageSize kSize{1280, 720};
 
 struct Fixture {
   std::unique_ptr<GlContext> context;
@@ -35,20 +45,14 @@ struct Fixture {
   std::unique_ptr<Renderer> renderer;
 };
 
-Backend gBackend = Backend::OSMesa;
-
-// LENSLAB_ASSET_DIR overrides the source tree's assets/ (for a binary copied elsewhere).
-std::string assetDir() {
-  const char* env = std::getenv("LENSLAB_ASSET_DIR");
-  return env && *env ? env : LENSLAB_BENCH_ASSET_DIR;
-}
+using bench::assetDir;
 
 Fixture& fixture() {
   static Fixture f = [] {
     Fixture x;
-    x.context = createHeadlessContext(gBackend);
-    x.scene = loadGltf(assetDir() + "/rows/rows.gltf");
-    x.camera = loadCameraJson(assetDir() + "/rows/camera-dof.json").camera;
+    x.context = createHeadlessContext(gOptions.backend);
+    x.scene = loadGltf(gOptions.scenePath);
+    x.camera = loadCameraJson(gOptions.cameraPath).camera;
     x.renderer = std::make_unique<Renderer>(x.scene);
     return x;
   }();
@@ -80,6 +84,15 @@ void BM_Accumulate(benchmark::State& state) {
   }
   state.counters["ms_per_sample"] = benchmark::Counter(
       static_cast<double>(n) * 1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["views_per_s"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["triangles_per_s"] =
+      benchmark::Counter(static_cast<double>(n) * bench::trianglesOf(f.scene), benchmark::Counter::kIsIterationInvariantRate);
+  Accumulator probe;  // as the renderer's for this camera
+  probe.start(kSize.widthPx, kSize.heightPx);
+  const Accumulator::ViewCost cost = probe.viewCost();
+  state.counters["scene_passes_per_view"] = cost.scenePasses;
+  state.counters["fullscreen_passes_per_view"] = cost.fullScreenPasses;
+  state.counters["accumulator_MB_per_view"] = cost.bytesPerPixel * kSize.widthPx * kSize.heightPx / 1e6;
 }
 
 Camera withEffects(const Camera& base, int set) {
@@ -124,14 +137,27 @@ void BM_LensTables(benchmark::State& state) {
 BENCHMARK(BM_LensFrame)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 BENCHMARK(BM_LensTables)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 BENCHMARK(BM_ScenePass)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
-BENCHMARK(BM_Accumulate)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 
 }  // namespace
 }  // namespace lenslab
 
 int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "--backend=egl") == 0) lenslab::gBackend = lenslab::Backend::Egl;
+  using namespace lenslab;
+  try {
+    gOptions = bench::parseOptions(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lenslab_bench: %s\n", e.what());
+    return 2;
+  }
+  kSize = {gOptions.widthPx, gOptions.heightPx};
+  benchmark::RegisterBenchmark("BM_Accumulate", BM_Accumulate)
+      ->Arg(16)
+      ->Arg(gOptions.views)
+      ->Unit(benchmark::kMillisecond)
+      ->MinTime(3.0)
+      ->UseRealTime();
+  std::printf("scene %s (%.0f triangles), camera %s, %dx%d\n", gOptions.scenePath.c_str(),
+              bench::trianglesOf(loadGltf(gOptions.scenePath)), gOptions.cameraPath.c_str(), kSize.widthPx, kSize.heightPx);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   return 0;

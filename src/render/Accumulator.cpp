@@ -104,12 +104,16 @@ void Accumulator::allocateAddTarget() {
   if (regionSet_) resetDepthStencil(1.0f, 1, false);
 }
 
+int Accumulator::layersFor(int widthPx, int heightPx) {
+  const double bytesPerLayer = 16.0 * widthPx * heightPx;
+  return std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
+}
+
 void Accumulator::allocateLayers(int widthPx, int heightPx) {
   if (viewWidth_ == widthPx && viewHeight_ == heightPx && !framebuffers_.empty()) return;
   viewWidth_ = widthPx;
   viewHeight_ = heightPx;
-  const double bytesPerLayer = 16.0 * widthPx * heightPx;
-  const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
+  const int layers = layersFor(widthPx, heightPx);
   views_ = gl::TextureArray::create();
   glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
   nearestClamp(views_.id());
@@ -272,7 +276,7 @@ GLuint Accumulator::weightTexture() {
 
 Accumulator::ViewCost Accumulator::viewCost() const {
   if (addsViews()) return {2.0, 1.0 / kAddedBatch, 8.0 + 32.0 / kAddedBatch};
-  const double batch = std::max(1, batchSize());
+  const double batch = layersFor(requestedWidth_, requestedHeight_);
   // The layer's clears (colour, depth), its read by the batch sum, and the sum's read and write.
   return {1.0, 1.0 / batch, 16.0 + 4.0 + 16.0 + 32.0 / batch};
 }

@@ -220,7 +220,8 @@ int main(int argc, char** argv) {
   }
   const double frameSeconds = ratio("accumulation", pairs, [&] { bare(views); }, [&] { frame(camera, frame64); }, "<= 1.05");
   if (frameSeconds > 0.0) {
-    Accumulator probe;  // as the renderer's for this camera (no field curvature or lens gather: added views)
+    Accumulator probe;  // as the renderer's for this scene and camera (render/Renderer.cpp drawSample)
+    probe.setLayered(Accumulator::layersAreCheaper(triangles, static_cast<double>(size.widthPx) * size.heightPx));
     probe.start(size.widthPx, size.heightPx);
     const Accumulator::ViewCost cost = probe.viewCost();
     std::printf("  thin-lens frame %.1f ms: %.1f views/s, %.3g triangles/s; a view: %.3g scene passes, %.3g full-screen "

@@ -9,7 +9,6 @@
 namespace lenslab {
 namespace {
 
-constexpr int kMaxBatch = 8;
 constexpr double kBatchMemoryBytes = 256.0 * 1024 * 1024;  // at most this much for the view layers
 
 void drawFullScreen(const gl::FullScreenPass& pass, GLuint program, GLuint texture) {
@@ -64,26 +63,10 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     if (glCheckNamedFramebufferStatus(gatherFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("accumulator: the lens gather's framebuffer is incomplete");
   }
-  adding_ = !curvature_ && !lens_ && !forceLayers_;
-  if (adding_) {
-    if (!background_) background_ = gl::buildProgram("common/fullscreen.vert", "accumulate/background.frag");
-    int width = 0, height = 0;
-    if (depthStencil_) {
-      glGetTextureLevelParameteriv(depthStencil_.id(), 0, GL_TEXTURE_WIDTH, &width);
-      glGetTextureLevelParameteriv(depthStencil_.id(), 0, GL_TEXTURE_HEIGHT, &height);
-    }
-    if (width != sumWidth || height != sumHeight) {
-      depthStencil_ = gl::Texture::create();
-      glTextureStorage2D(depthStencil_.id(), 1, GL_DEPTH32F_STENCIL8, sumWidth, sumHeight);
-      addFramebuffer_ = gl::Framebuffer::create();
-      glNamedFramebufferTexture(addFramebuffer_.id(), GL_COLOR_ATTACHMENT0, sum_->colorTexture(), 0);
-      glNamedFramebufferTexture(addFramebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
-      if (glCheckNamedFramebufferStatus(addFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("accumulator: the framebuffer that views are added into is incomplete");
-    }
-  } else {
-    allocateLayers(widthPx, heightPx);
-  }
+  mayAdd_ = !curvature_ && !lens_;
+  requestedWidth_ = widthPx;
+  requestedHeight_ = heightPx;
+  if (mayAdd_ && !background_) background_ = gl::buildProgram("common/fullscreen.vert", "accumulate/background.frag");
   const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
   sum_->bind();
   glClearBufferfv(GL_COLOR, 0, zero);
@@ -92,21 +75,45 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     glClearBufferfv(GL_COLOR, 0, zero);
   }
   pending_ = 0;
+  pendingAdded_ = 0;
   count_ = 0;
   regionSet_ = false;
   weightSum_ = glm::vec4(0.0f);
   pendingBackgroundWeight_ = glm::vec4(0.0f);
-  pendingWeights_.assign(static_cast<std::size_t>(batchSize()), glm::vec4(0.0f));
-  pendingShifts_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
-  pendingJitters_.assign(static_cast<std::size_t>(batchSize()), glm::vec2(0.0f));
+  pendingWeights_.assign(kMaxBatch, glm::vec4(0.0f));
+  pendingShifts_.assign(kMaxBatch, glm::vec2(0.0f));
+  pendingJitters_.assign(kMaxBatch, glm::vec2(0.0f));
+}
+
+void Accumulator::allocateAddTarget() {
+  int width = 0, height = 0;
+  if (depthStencil_) {
+    glGetTextureLevelParameteriv(depthStencil_.id(), 0, GL_TEXTURE_WIDTH, &width);
+    glGetTextureLevelParameteriv(depthStencil_.id(), 0, GL_TEXTURE_HEIGHT, &height);
+  }
+  if (width == sum_->width() && height == sum_->height() && addSum_ == sum_->colorTexture()) return;
+  addSum_ = sum_->colorTexture();
+  depthStencil_ = gl::Texture::create();
+  glTextureStorage2D(depthStencil_.id(), 1, GL_DEPTH32F_STENCIL8, sum_->width(), sum_->height());
+  addFramebuffer_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(addFramebuffer_.id(), GL_COLOR_ATTACHMENT0, sum_->colorTexture(), 0);
+  glNamedFramebufferTexture(addFramebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
+  if (glCheckNamedFramebufferStatus(addFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("accumulator: the framebuffer that views are added into is incomplete");
+  // Outside a region no view may add (setRegion); a new target has had none.
+  if (regionSet_) resetDepthStencil(1.0f, 1, false);
+}
+
+int Accumulator::layersFor(int widthPx, int heightPx) {
+  const double bytesPerLayer = 16.0 * widthPx * heightPx;
+  return std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
 }
 
 void Accumulator::allocateLayers(int widthPx, int heightPx) {
   if (viewWidth_ == widthPx && viewHeight_ == heightPx && !framebuffers_.empty()) return;
   viewWidth_ = widthPx;
   viewHeight_ = heightPx;
-  const double bytesPerLayer = 16.0 * widthPx * heightPx;
-  const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
+  const int layers = layersFor(widthPx, heightPx);
   views_ = gl::TextureArray::create();
   glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
   nearestClamp(views_.id());
@@ -144,19 +151,22 @@ void Accumulator::resetDepthStencil(float depth, int stencil, bool inRegionOnly)
 Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels, glm::vec2 curvatureShiftPx,
                                         glm::vec2 jitterPx) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
-  if (pending_ == batchSize() || (adding_ && pending_ > 0 && background != pendingBackground_)) flush();
   ++count_;
   // Alpha is shared out so that a full set of channel views adds 1, as one full view does.
   const float channelCount = channels.r + channels.g + channels.b;
   const glm::vec4 weight(channels, channelCount / 3.0f);
   weightSum_ += weight;
-  if (adding_) {
-    ++pending_;
+  if (addsViews()) {
+    if (pendingAdded_ == kAddedBatch || (pendingAdded_ > 0 && background != pendingBackground_)) flushBackground();
+    allocateAddTarget();
+    ++pendingAdded_;
     pendingBackground_ = background;
     pendingBackgroundWeight_ += weight;
     resetDepthStencil(0.0f, 0, true);  // reverse-Z: far is 0; stencil 0: the view may add here
     return {{addFramebuffer_.id(), sum_->width(), sum_->height()}, weight};
   }
+  allocateLayers(requestedWidth_, requestedHeight_);
+  if (pending_ == static_cast<int>(framebuffers_.size())) flushLayers();
   pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
   pendingShifts_[static_cast<std::size_t>(pending_)] = curvatureShiftPx;
   pendingJitters_[static_cast<std::size_t>(pending_)] = jitterPx;
@@ -164,6 +174,8 @@ Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels
 }
 
 void Accumulator::flushBackground() {
+  if (pendingAdded_ == 0) return;
+  pendingAdded_ = 0;
   // The views added weight · (colour − background) where a surface was; weight · background for
   // every pixel of the region completes them. Alpha: the background has no coverage.
   const glm::vec4 colour(pendingBackground_ * glm::vec3(pendingBackgroundWeight_), 0.0f);
@@ -190,12 +202,12 @@ void Accumulator::flushBackground() {
 }
 
 void Accumulator::flush() {
+  flushLayers();
+  flushBackground();
+}
+
+void Accumulator::flushLayers() {
   if (pending_ == 0) return;
-  if (adding_) {
-    flushBackground();
-    pending_ = 0;
-    return;
-  }
   if (lens_) {
     const gl::DrawTarget both{gatherFramebuffer_.id(), sum_->width(), sum_->height()};
     both.bind();
@@ -248,7 +260,7 @@ void Accumulator::setRegion(const std::vector<PixelBox>* boxes) {
   regionSet_ = boxes != nullptr;
   if (boxes) region_ = *boxes;
   // Outside the region no view may add: depth at near (nothing is GREATER) and stencil 1.
-  if (adding_) resetDepthStencil(1.0f, 1, false);
+  if (addSum_ != 0) resetDepthStencil(1.0f, 1, false);
 }
 
 GLuint Accumulator::sumTexture() {
@@ -263,8 +275,8 @@ GLuint Accumulator::weightTexture() {
 }
 
 Accumulator::ViewCost Accumulator::viewCost() const {
-  if (adding_) return {2.0, 1.0 / kAddedBatch, 8.0 + 32.0 / kAddedBatch};
-  const double batch = std::max(1, batchSize());
+  if (addsViews()) return {2.0, 1.0 / kAddedBatch, 8.0 + 32.0 / kAddedBatch};
+  const double batch = layersFor(requestedWidth_, requestedHeight_);
   // The layer's clears (colour, depth), its read by the batch sum, and the sum's read and write.
   return {1.0, 1.0 / batch, 16.0 + 4.0 + 16.0 + 32.0 / batch};
 }

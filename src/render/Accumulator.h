@@ -52,9 +52,16 @@ class Accumulator {
     glm::vec2 lateralScale{1.0f};    // 1 + lateral, red and blue
   };
 
-  // Views go into layers even where they could be added straight into the sum (tests and
-  // benchmarks compare the two ways). Takes effect at the next start.
+  // Views from the next one on go into layers even where they could be added straight into the
+  // sum: an added view draws the scene twice (depth, then colour), so where vertices cost more
+  // than pixels (a big scene at a small size) layers are cheaper. Tests and benchmarks compare too.
   void setLayered(bool layered) { forceLayers_ = layered; }
+  // Whether layers cost less than added views for a scene pass of `triangles` into `pixels`: an
+  // added view pays a second pass over the geometry, a layered one a write and a read of the
+  // layer. On llvmpipe (lenslab_ratios --breakdown, layered ÷ added frames at 1280×720: 74
+  // triangles 1.44 ÷ 0.87, 107 k 1.43 ÷ 1.47, 305 k 1.06 ÷ 1.43) they cross near 0.1 triangles a pixel.
+  static bool layersAreCheaper(double triangles, double pixels) { return triangles > kTrianglesPerPixelForLayers * pixels; }
+  static constexpr double kTrianglesPerPixelForLayers = 0.1;
   // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
   void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr);
   // Where and how to draw the next view: into `target`, replacing it (a layer), or, when
@@ -80,10 +87,11 @@ class Accumulator {
   GLuint sumTexture();
   GLuint weightTexture();
   int count() const { return count_; }
-  // Views per batch: layers, or views whose background is added by one pass.
-  int batchSize() const { return adding_ ? kAddedBatch : static_cast<int>(framebuffers_.size()); }
-  // Whether views are added straight into the sum (no field-curvature warp, no lens gather).
-  bool addsViews() const { return adding_; }
+  // Views per batch: layers (kMaxBatch before any), or views whose background is added by one pass.
+  int batchSize() const { return addsViews() ? kAddedBatch : framebuffers_.empty() ? kMaxBatch : static_cast<int>(framebuffers_.size()); }
+  // Whether the next view is added straight into the sum (no field-curvature warp, no lens
+  // gather, not setLayered).
+  bool addsViews() const { return mayAdd_ && !forceLayers_; }
   // A model of what a view costs as the accumulator draws it now, for benchmarks to print: scene
   // passes per view (an added view draws the scene twice: depth, then colour), full-screen passes
   // per view, and the bytes per pixel its own work moves per view apart from the scene's fragments
@@ -100,11 +108,15 @@ class Accumulator {
 
  private:
   void flush();  // adds the pending views to the sum
+  void flushLayers();      // the pending layers, summed into the sum
   void flushBackground();  // added views: weight · background of the pending views, into the sum
+  void allocateAddTarget();
   void resetDepthStencil(float depth, int stencil, bool inRegionOnly);
   void allocateLayers(int widthPx, int heightPx);
+  static int layersFor(int widthPx, int heightPx);  // as many as kBatchMemoryBytes holds, 1 to kMaxBatch
 
   static constexpr int kAddedBatch = 64;  // added views between background passes (any number would do)
+  static constexpr int kMaxBatch = 8;     // layers at most (the accumulate shaders' arrays)
 
   gl::Program accumulate_;
   gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
@@ -122,8 +134,12 @@ class Accumulator {
   std::vector<gl::Framebuffer> framebuffers_;
   // Added views: the sum's colour with a depth-stencil of its own (depth far and stencil 0 where the
   // next view may add, stencil 1 outside the region).
-  bool adding_ = false;
+  bool mayAdd_ = false;      // no field curvature, no lens gather
   bool forceLayers_ = false;
+  int pendingAdded_ = 0;
+  GLuint addSum_ = 0;       // the sum texture addFramebuffer_ was made for
+  int requestedWidth_ = 0;  // start's view size (the layers are made on first use)
+  int requestedHeight_ = 0;
   gl::Texture depthStencil_;
   gl::Framebuffer addFramebuffer_;
   glm::vec3 pendingBackground_{0.0f};   // the background of the pending added views

@@ -95,6 +95,11 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   const glm::vec2 curvatureShift(first.lens * camera_.apertureRadius * camera_.view.prp.z *
                                  camera_.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
   const glm::vec2 jitter(static_cast<float>(first.pixel.x), static_cast<float>(-first.pixel.y));
+  // Views are added straight into the sum unless the scene's geometry costs more than a layer.
+  double triangles = 0.0;
+  for (const Instance& instance : gpuScene_.scene().instances)
+    triangles += static_cast<double>(gpuScene_.scene().meshes[static_cast<std::size_t>(instance.mesh)].indices.size() / 3);
+  sum.setLayered(Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
   for (int c = 0; c < plan_.viewsPerSample; ++c) {
     glm::vec3 mask(1.0f);
     double shift = 0.0;

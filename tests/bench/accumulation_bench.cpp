@@ -87,7 +87,8 @@ void BM_Accumulate(benchmark::State& state) {
   state.counters["views_per_s"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["triangles_per_s"] =
       benchmark::Counter(static_cast<double>(n) * bench::trianglesOf(f.scene), benchmark::Counter::kIsIterationInvariantRate);
-  Accumulator probe;  // as the renderer's for this camera
+  Accumulator probe;  // as the renderer's for this scene and camera (render/Renderer.cpp drawSample)
+  probe.setLayered(Accumulator::layersAreCheaper(bench::trianglesOf(f.scene), static_cast<double>(kSize.widthPx) * kSize.heightPx));
   probe.start(kSize.widthPx, kSize.heightPx);
   const Accumulator::ViewCost cost = probe.viewCost();
   state.counters["scene_passes_per_view"] = cost.scenePasses;

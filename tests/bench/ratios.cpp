@@ -53,11 +53,22 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-std::string gOnly;  // --only NAME: that ratio alone (a prefix of its name)
+std::string gOnly;  // --only NAME[,NAME…]: those ratios alone (prefixes of their names)
+
+bool selected(const std::string& name) {
+  if (gOnly.empty()) return true;
+  std::size_t from = 0;
+  while (from <= gOnly.size()) {
+    const std::size_t comma = std::min(gOnly.find(',', from), gOnly.size());
+    if (name.rfind(gOnly.substr(from, comma - from), 0) == 0) return true;
+    from = comma + 1;
+  }
+  return false;
+}
 
 // Returns side B's median time in seconds (0 when skipped by --only).
 double ratio(const char* name, int pairs, const std::function<void()>& a, const std::function<void()>& b, const char* goal) {
-  if (!gOnly.empty() && std::string(name).rfind(gOnly, 0) != 0) return 0.0;
+  if (!selected(name)) return 0.0;
   a();
   b();  // warm: shaders compiled, memory touched
   std::vector<double> ta, tb, r;
@@ -209,7 +220,8 @@ int main(int argc, char** argv) {
   }
   const double frameSeconds = ratio("accumulation", pairs, [&] { bare(views); }, [&] { frame(camera, frame64); }, "<= 1.05");
   if (frameSeconds > 0.0) {
-    Accumulator probe;  // as the renderer's for this camera (no field curvature or lens gather: added views)
+    Accumulator probe;  // as the renderer's for this scene and camera (render/Renderer.cpp drawSample)
+    probe.setLayered(Accumulator::layersAreCheaper(triangles, static_cast<double>(size.widthPx) * size.heightPx));
     probe.start(size.widthPx, size.heightPx);
     const Accumulator::ViewCost cost = probe.viewCost();
     std::printf("  thin-lens frame %.1f ms: %.1f views/s, %.3g triangles/s; a view: %.3g scene passes, %.3g full-screen "

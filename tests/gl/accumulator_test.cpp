@@ -140,5 +140,40 @@ TEST(AddedViews, MatchTheLayeredViewsWithChannelMasksAndRegions) {
   EXPECT_LT(worst, 1e-4f);
 }
 
+// A narrow field (ScenePass's double-precision path, with its geometry shader): the checker quad
+// seen through a window 2e-3 wide from 4 away, added and layered alike.
+TEST(AddedViews, MatchTheLayeredViewsInANarrowField) {
+  LENSLAB_REQUIRE_GL();
+  const Scene scene = quadsAt({{4.0, glm::vec3(0.7f, 0.3f, 0.2f)}, {4.5, glm::vec3(0.2f, 0.3f, 0.9f)}}, 0.0006, glm::vec3(0.5f));
+  Camera camera = lensCamera(4.0, 1e-4);
+  camera.view.window = {-1e-3, -1e-3, 1e-3, 1e-3};
+  ASSERT_TRUE(isNarrowField(clipFromWorld(camera.view)));
+  const ImageSize size{64, 64};
+  GpuScene gpuScene(scene);
+  ScenePass pass;
+  const auto sums = [&](bool layered) {
+    Accumulator sum;
+    sum.setLayered(layered);
+    sum.start(size.widthPx, size.heightPx);
+    for (int i = 0; i < 8; ++i) {
+      ViewSpec v = camera.view;
+      v.prp.x += 2e-4 * (i - 3.5);  // the front quad hides a different part of the back one
+      const Accumulator::View view = sum.nextView(scene.lighting.background);
+      pass.draw(gpuScene, clipFromWorld(v), view.target, 0.0f, nullptr, view.addWeight ? &*view.addWeight : nullptr);
+    }
+    std::vector<float> image(static_cast<std::size_t>(size.widthPx) * size.heightPx * 4);
+    glGetTextureImage(sum.sumTexture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(image.size() * sizeof(float)), image.data());
+    return image;
+  };
+  const std::vector<float> added = sums(false), layered = sums(true);
+  float worst = 0.0f, total = 0.0f;
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    worst = std::max(worst, std::abs(added[i] - layered[i]));
+    total += layered[i];
+  }
+  EXPECT_GT(total, 0.0f);
+  EXPECT_LT(worst, 1e-4f);
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -66,7 +66,7 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   mayAdd_ = !curvature_ && !lens_;
   requestedWidth_ = widthPx;
   requestedHeight_ = heightPx;
-  if (mayAdd_ && !background_) background_ = gl::buildProgram("common/fullscreen.vert", "accumulate/background.frag");
+  if (mayAdd_ && !addBatch_) addBatch_ = gl::buildProgram("common/fullscreen.vert", "accumulate/add_batch.frag");
   const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
   sum_->bind();
   glClearBufferfv(GL_COLOR, 0, zero);
@@ -74,6 +74,8 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     weight_->bind();
     glClearBufferfv(GL_COLOR, 0, zero);
   }
+  // A frame restarted before its views were added leaves them in the partial sum.
+  if (partial_) glClearNamedFramebufferfv(addFramebuffer_.id(), GL_COLOR, 0, zero);
   pending_ = 0;
   pendingAdded_ = 0;
   count_ = 0;
@@ -95,11 +97,16 @@ void Accumulator::allocateAddTarget() {
   addSum_ = sum_->colorTexture();
   depthStencil_ = gl::Texture::create();
   glTextureStorage2D(depthStencil_.id(), 1, GL_DEPTH32F_STENCIL8, sum_->width(), sum_->height());
+  partial_ = gl::Texture::create();
+  glTextureStorage2D(partial_.id(), 1, GL_RGBA32F, sum_->width(), sum_->height());
+  nearestClamp(partial_.id());
   addFramebuffer_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(addFramebuffer_.id(), GL_COLOR_ATTACHMENT0, sum_->colorTexture(), 0);
+  glNamedFramebufferTexture(addFramebuffer_.id(), GL_COLOR_ATTACHMENT0, partial_.id(), 0);
   glNamedFramebufferTexture(addFramebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
   if (glCheckNamedFramebufferStatus(addFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("accumulator: the framebuffer that views are added into is incomplete");
+  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(addFramebuffer_.id(), GL_COLOR, 0, zero);
   // Outside a region no view may add (setRegion); a new target has had none.
   if (regionSet_) resetDepthStencil(1.0f, 1, false);
 }
@@ -184,21 +191,26 @@ void Accumulator::flushBackground() {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  glProgramUniform4fv(background_.id(), 0, 1, &colour.x);
-  // No texture is bound: a caller may have bound another sum already (Renderer::bindStreams).
+  glProgramUniform4fv(addBatch_.id(), 0, 1, &colour.x);
+  // Unit 7 only: a caller may have bound sums on units 0 to 3 already (Renderer::bindStreams).
+  glBindTextureUnit(7, partial_.id());
+  glBindSampler(7, 0);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   if (regionSet_) {
     glEnable(GL_SCISSOR_TEST);
     for (const PixelBox& b : region_) {
       glScissor(b.x, b.y, b.width, b.height);
-      fullScreen_.draw(background_);
+      fullScreen_.draw(addBatch_);
     }
     glDisable(GL_SCISSOR_TEST);
   } else {
-    fullScreen_.draw(background_);
+    fullScreen_.draw(addBatch_);
   }
   glDisable(GL_BLEND);
+  // The partial sum starts again from zero (nothing was added outside the region).
+  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(addFramebuffer_.id(), GL_COLOR, 0, zero);
 }
 
 void Accumulator::flush() {
@@ -275,7 +287,8 @@ GLuint Accumulator::weightTexture() {
 }
 
 Accumulator::ViewCost Accumulator::viewCost() const {
-  if (addsViews()) return {2.0, 1.0 / kAddedBatch, 8.0 + 32.0 / kAddedBatch};
+  // Depth-stencil clear; per batch the partial sum read and cleared, the sum read and written.
+  if (addsViews()) return {2.0, 1.0 / kAddedBatch, 8.0 + (16.0 + 16.0 + 32.0) / kAddedBatch};
   const double batch = layersFor(requestedWidth_, requestedHeight_);
   // The layer's clears (colour, depth), its read by the batch sum, and the sum's read and write.
   return {1.0, 1.0 / batch, 16.0 + 4.0 + 16.0 + 32.0 / batch};

@@ -1,11 +1,11 @@
 #pragma once
 // Thin-lens depth of field by accumulation: the image is the mean of the aperture views.
 //
-// Plain views are added straight into the float sum by the scene pass itself (ScenePass's added
-// views: a depth pass, then a colour pass that blends where depth is EQUAL): a view costs one
-// scene pass and no layer of its own. The sum holds weight · (colour − background) per view, and
-// weight · background is added for a batch of views at once by one full-screen pass, so that a
-// pixel no surface covers costs a view nothing.
+// Plain views are added by the scene pass itself (ScenePass's added views: a depth pass, then a
+// colour pass that blends where depth is EQUAL) into a float partial sum: no layer of its own.
+// The partial sum holds weight · (colour − background) per view, so that a pixel no surface
+// covers costs a view nothing; every 64 views one full-screen pass adds it and their
+// weight · background to the sum (two levels: a sum of 65536 views stays within 1e-4).
 //
 // Views that are read whole when summed (the field-curvature warp, the lens gather) are drawn
 // into the layers of an array texture (one framebuffer per layer, one shared depth buffer), and a
@@ -109,7 +109,7 @@ class Accumulator {
  private:
   void flush();  // adds the pending views to the sum
   void flushLayers();      // the pending layers, summed into the sum
-  void flushBackground();  // added views: weight · background of the pending views, into the sum
+  void flushBackground();  // added views: their partial sum and weight · background, into the sum
   void allocateAddTarget();
   void resetDepthStencil(float depth, int stencil, bool inRegionOnly);
   void allocateLayers(int widthPx, int heightPx);
@@ -123,7 +123,7 @@ class Accumulator {
   gl::Program gatherLens_[4];     // the lens gather: [field curvature · 2 + lateral colour], built on first use
   gl::Program resolve_;
   gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
-  gl::Program background_;        // added views: adds a constant colour (background.frag)
+  gl::Program addBatch_;          // added views: a batch's partial sum and background into the sum
   gl::FullScreenPass fullScreen_;
   std::unique_ptr<gl::RenderTarget> sum_;
   std::unique_ptr<gl::RenderTarget> weight_;  // the lens gather's per-pixel weights
@@ -132,7 +132,7 @@ class Accumulator {
   gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
   gl::Texture depth_;                 // shared by the views (each clears it)
   std::vector<gl::Framebuffer> framebuffers_;
-  // Added views: the sum's colour with a depth-stencil of its own (depth far and stencil 0 where the
+  // Added views: a partial sum with a depth-stencil of its own (depth far and stencil 0 where the
   // next view may add, stencil 1 outside the region).
   bool mayAdd_ = false;      // no field curvature, no lens gather
   bool forceLayers_ = false;
@@ -141,6 +141,7 @@ class Accumulator {
   int requestedWidth_ = 0;  // start's view size (the layers are made on first use)
   int requestedHeight_ = 0;
   gl::Texture depthStencil_;
+  gl::Texture partial_;  // RGBA32F at the sum's size: the batch's added views (add_batch.frag)
   gl::Framebuffer addFramebuffer_;
   glm::vec3 pendingBackground_{0.0f};   // the background of the pending added views
   glm::vec4 pendingBackgroundWeight_{0.0f};

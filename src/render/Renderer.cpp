@@ -17,9 +17,10 @@ namespace {
 
 constexpr int kErrorBlockPx = 8;  // the error pass sums blocks of 8 × 8 pixels; tiles are whole blocks
 int blocksFor(int pixels) { return (pixels + kErrorBlockPx - 1) / kErrorBlockPx; }
-// A scissored scene pass costs llvmpipe about as much as drawing 10^4 more pixels (lenslab_ratios,
-// "16 boxes": 8 passes in 16 strips over half of a 1280×720 frame cost 1.5× the same half in one
-// box, about 0.14 ms a strip).
+// A scissored scene pass costs llvmpipe about as much as drawing 10^4 more pixels on rows
+// (lenslab_ratios --breakdown, "16 boxes added" and "10 aligned": 0.2-0.25 ms a box, 0.6-1.4·10^4
+// pixels, as much on whole 64-px bins as across them: the pass's draws, not its pixels). Each box
+// draws every instance again, so with many triangles a box costs a pass over the geometry.
 constexpr double kPixelsPerDrawBox = 1e4;
 // What a pixel drawn into scissored tiles costs llvmpipe against one drawn with every tile going
 // on: covering boxes larger than their tiles, more passes, and the samples going to the costly

@@ -51,8 +51,12 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   }
   const int sumWidth = lens_ ? lens_->outWidthPx : widthPx, sumHeight = lens_ ? lens_->outHeightPx : heightPx;
   if (!sum_ || sum_->width() != sumWidth || sum_->height() != sumHeight) {
-    sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+    // The old targets go first (the framebuffer holds their storage until it goes): a tiled
+    // render's tiles differ in size, and both at once would double the peak.
+    gatherFramebuffer_ = {};
     weight_.reset();
+    sum_.reset();
+    sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
   }
   if (lens_ && !weight_) {
     weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
@@ -69,12 +73,14 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     viewHeight_ = heightPx;
     const double bytesPerLayer = 16.0 * widthPx * heightPx;
     const int layers = std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
+    framebuffers_.clear();  // as above: the old layers are freed before the new are made
+    views_ = {};
+    depth_ = {};
     views_ = gl::TextureArray::create();
     glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
     nearestClamp(views_.id());
     depth_ = gl::Texture::create();
     glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, widthPx, heightPx);
-    framebuffers_.clear();
     for (int layer = 0; layer < layers; ++layer) {
       gl::Framebuffer fb = gl::Framebuffer::create();
       glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, views_.id(), 0, layer);

@@ -24,6 +24,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/SceneAnimation.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdint>
@@ -85,7 +86,13 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
 
-  const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), o.tileSizePx);
+  // Memory bounded by the tile, not the frame: a frame whose render would hold more than a tile's
+  // budget is tiled, and a tile row is no taller than the writer's strip budget allows.
+  TileMemory memory;
+  std::string extension = out.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  memory.fileBytesPerPixel = extension == ".png" ? 3 : 16;  // StripImageWriter: 8-bit RGB, or float RGBA
+  const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), o.tileSizePx, &memory);
   if (tiles.tiled && plan.adaptive)
     throw InputError(cat("--target-psnr: ", tiles.why, "; per-tile budgets are not combined with that yet: give a smaller "
                          "--width, or --aperture-samples"));

@@ -32,6 +32,10 @@
 #include <memory>
 #include <optional>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace lenslab {
 namespace fs = std::filesystem;
 
@@ -97,6 +101,14 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     throw InputError(cat("--target-psnr: ", tiles.why, "; per-tile budgets are not combined with that yet: give a smaller "
                          "--width, or --aperture-samples"));
   if (tiles.tiled) {
+#ifdef __GLIBC__
+    // The tiles' buffers (tables, targets, read-backs) are 5 to 30 MB each and differ a little in
+    // size from tile to tile; glibc's dynamic mmap threshold would put them on the heap after the
+    // first is freed, where they fragment and the resident size grows tile by tile (8000 px,
+    // camera-lens.json: 670 MB after one tile, 1080 MB after 16). Kept at 1 MiB, each is mapped
+    // and given back whole.
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
     stats.plan.passes.push_back({"tiles", tiles.why, {}});
     progress.setUnit(cat("samples over ", tiles.tiles.size(), " tiles"));
     t = std::chrono::steady_clock::now();

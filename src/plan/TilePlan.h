@@ -37,7 +37,10 @@ struct RenderTargetLimits {
 // bounded by its tiles whatever its size: a frame whose render needs more than `tileBytes`
 // (tileMemoryBytes) is tiled although one render target could hold it.
 struct TileMemory {
-  std::int64_t tileBytes = std::int64_t{512} << 20;   // one tile's render targets, lens tables and read-back
+  // One tile's render targets, lens tables and read-back as tileMemoryBytes models them; the process
+  // peaks at about 1.6 times that (llvmpipe's staging and transient copies as targets are resolved
+  // and read back), plus the strip and about 220 MB for the context, the scene and the programs.
+  std::int64_t tileBytes = std::int64_t{320} << 20;
   std::int64_t stripBytes = std::int64_t{256} << 20;  // the writer's strip: image width × a tile row's height
   int fileBytesPerPixel = 16;                          // the strip's pixels: 16 (EXR, float RGBA), 3 (PNG)
 };

@@ -20,33 +20,20 @@ namespace {
 
 constexpr Channel kChannels[] = {Channel::Red, Channel::Green, Channel::Blue};
 
-// The channels whose mapping differs: all three with lateral colour, else green alone.
-std::vector<Channel> remappedChannels(const LensEffects& effects) {
-  if (effects.chromatic.hasLateral()) return {Channel::Red, Channel::Green, Channel::Blue};
-  return {Channel::Green};
+// Runs `rows(first, last)` over bands of [0, height) on every core (TBB; an exception in a band
+// reaches the caller).
+void forEachRowBand(int height, const std::function<void(int, int)>& rows) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 8),
+                    [&](const tbb::blocked_range<int>& band) { rows(band.begin(), band.end()); });
 }
 
-// Runs `rows(first, last)` over bands of [0, height) on every core (TBB; an exception in a band
-// reaches the caller). With `progress`, in about 20 slices one after the other, each on every
-// core, reporting `progress(offset + rows done, total)` from the calling thread after each: a
-// table for a large tile takes tens of seconds.
-void forEachRowBand(int height, const std::function<void(int, int)>& rows, const RowProgress& progress = {},
-                    int offset = 0, int total = 0) {
-  const auto parallel = [&](int first, int last) {
-    tbb::parallel_for(tbb::blocked_range<int>(first, last, 8),
-                      [&](const tbb::blocked_range<int>& band) { rows(band.begin(), band.end()); });
-  };
-  if (!progress) {
-    parallel(0, height);
-    return;
-  }
-  // Slices of at least 8 rows per core, so that every core has work in each.
-  const int slice = std::max(height / 20, 8 * tbb::this_task_arena::max_concurrency());
-  for (int first = 0; first < height; first += slice) {
-    const int last = std::min(height, first + slice);
-    parallel(first, last);
-    progress(offset + last, total);
-  }
+// Calls `slice(first, last)` over consecutive slices of [0, height), one after the other: about 20
+// (a table for a large tile takes tens of seconds, and the caller reports after each), each of at
+// least 8 rows per core so that every core has work in each; `rowsPerSlice` > 0 fixes the size
+// instead (height: one slice).
+void forEachSlice(int height, const std::function<void(int, int)>& slice, int rowsPerSlice = 0) {
+  const int rows = rowsPerSlice > 0 ? rowsPerSlice : std::max(height / 20, 8 * tbb::this_task_arena::max_concurrency());
+  for (int first = 0; first < height; first += rows) slice(first, std::min(height, first + rows));
 }
 
 glm::dvec2 undistortOrThrow(const Camera& camera, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
@@ -63,6 +50,12 @@ glm::dvec2 undistortOrThrow(const Camera& camera, Channel c, glm::dvec2 distorte
 }
 
 }  // namespace
+
+// The channels whose mapping differs: all three with lateral colour, else green alone.
+std::vector<Channel> remappedChannels(const LensEffects& effects) {
+  if (effects.chromatic.hasLateral()) return {Channel::Red, Channel::Green, Channel::Blue};
+  return {Channel::Green};
+}
 
 double NormalisedRect::cornerRadius() const {
   return std::max({glm::length(min), glm::length(max), glm::length(glm::dvec2(min.x, max.y)),
@@ -230,43 +223,50 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
   return o;
 }
 
-RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
-  RemapTable table{size, {}};
+void fillRemapRows(const Camera& camera, ImageSize size, const Overscan& overscan, Channel c, int firstRow, int lastRow,
+                   glm::vec2* out) {
   const Window& w = camera.view.window;
   const int width = size.widthPx, height = size.heightPx;
   const glm::dvec2 inner(overscan.size.widthPx, overscan.size.heightPx);
   const glm::dvec2 pad(overscan.padPx);
+  // Rows are independent: bands on every core (a 4K table is 8 million Newton solves).
+  forEachRowBand(lastRow - firstRow, [&](int first, int last) {
+    for (int band = first; band < last; ++band) {
+      const int row = firstRow + band;
+      const int y = height - 1 - row;  // GL rows run up, image rows down
+      glm::dvec2 guess(0.0);
+      for (int x = 0; x < width; ++x) {
+        const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
+        // Neighbouring pixels' solutions are close: start from the previous one.
+        const glm::dvec2 truth = undistortOrThrow(camera, c, distorted, x == 0 ? distorted : guess);
+        guess = truth;
+        const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
+        out[static_cast<std::size_t>(band) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+            glm::vec2(p.x / inner.x, 1.0 - p.y / inner.y);
+      }
+    }
+  });
+}
+
+RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
+  RemapTable table{size, {}};
+  const int width = size.widthPx, height = size.heightPx;
   const std::vector<Channel> channels = remappedChannels(camera.effects);
+  const int rows = static_cast<int>(channels.size()) * height;
   for (const Channel c : channels) {
     std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-    const auto rows = [&](int first, int last) {
-      for (int row = first; row < last; ++row) {
-        const int y = height - 1 - row;  // GL rows run up, image rows down
-        glm::dvec2 guess(0.0);
-        for (int x = 0; x < width; ++x) {
-          const glm::dvec2 distorted =
-              normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
-          // Neighbouring pixels' solutions are close: start from the previous one.
-          const glm::dvec2 truth = undistortOrThrow(camera, c, distorted, x == 0 ? distorted : guess);
-          guess = truth;
-          const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
-          map[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
-              glm::vec2(p.x / inner.x, 1.0 - p.y / inner.y);
-        }
-      }
-    };
-    // Rows are independent: bands on every core (the table is rebuilt only when the lens changes,
-    // but a 4K table is 8 million Newton solves).
-    forEachRowBand(height, rows, progress, static_cast<int>(table.channels.size()) * height,
-                   static_cast<int>(channels.size()) * height);
+    const int done = static_cast<int>(table.channels.size()) * height;
+    forEachSlice(height, [&](int first, int last) {
+      fillRemapRows(camera, size, overscan, c, first, last, &map[static_cast<std::size_t>(first) * static_cast<std::size_t>(width)]);
+      if (progress) progress(done + last, rows);
+    }, progress ? 0 : height);
     table.channels.push_back(std::move(map));
   }
   return table;
 }
 
-ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
-  ForwardTable table;
-  table.size = overscan.size;
+double fillForwardRows(const Camera& camera, ImageSize size, const Overscan& overscan, int firstRow, int lastRow,
+                       glm::vec4* position, glm::vec4* jacobian) {
   const int width = size.widthPx, height = size.heightPx;
   const int viewWidth = overscan.size.widthPx, viewHeight = overscan.size.heightPx;
   const Window& w = camera.view.window;
@@ -277,12 +277,10 @@ ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Oversc
     const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, camera.effects.distortChannel(Channel::Green, n)), width, height);
     return glm::dvec2(p.x, height - p.y);
   };
-  const std::size_t texels = static_cast<std::size_t>(viewWidth) * static_cast<std::size_t>(viewHeight);
-  table.position.resize(texels);
-  table.jacobian.resize(texels);
-  std::vector<double> halfExtent(static_cast<std::size_t>(viewHeight), 0.0);  // per row, then the largest
-  forEachRowBand(viewHeight, [&](int first, int last) {
-    for (int y = first; y < last; ++y)
+  std::vector<double> halfExtent(static_cast<std::size_t>(lastRow - firstRow), 0.0);  // per row, then the largest
+  forEachRowBand(lastRow - firstRow, [&](int first, int last) {
+    for (int band = first; band < last; ++band) {
+      const int y = firstRow + band;
       for (int x = 0; x < viewWidth; ++x) {
         const glm::dvec2 q(x + 0.5, y + 0.5);
         const glm::dvec2 p = forward(q);
@@ -290,23 +288,49 @@ ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Oversc
         const glm::dvec2 dx = forward(q + glm::dvec2(0.5, 0.0)) - forward(q - glm::dvec2(0.5, 0.0));
         const glm::dvec2 dy = forward(q + glm::dvec2(0.0, 0.5)) - forward(q - glm::dvec2(0.0, 0.5));
         const double det = dx.x * dy.y - dy.x * dx.y;
-        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(viewWidth) + static_cast<std::size_t>(x);
-        table.position[i] = glm::vec4(p.x, p.y, std::abs(det), 0.0);
-        table.jacobian[i] = glm::vec4(dx.x, dx.y, dy.x, dy.y);
+        const std::size_t i = static_cast<std::size_t>(band) * static_cast<std::size_t>(viewWidth) + static_cast<std::size_t>(x);
+        position[i] = glm::vec4(p.x, p.y, std::abs(det), 0.0);
+        jacobian[i] = glm::vec4(dx.x, dx.y, dy.x, dy.y);
         // The pre-image of an output pixel ([-½, ½]² about p) is J⁻¹ of it: its half-extent per axis.
         if (p.x > -1.0 && p.x < width + 1.0 && p.y > -1.0 && p.y < height + 1.0 && det > 0.0) {
           const double hx = 0.5 * (std::abs(dy.y) + std::abs(dy.x)) / det;
           const double hy = 0.5 * (std::abs(dx.y) + std::abs(dx.x)) / det;
-          halfExtent[static_cast<std::size_t>(y)] = std::max({halfExtent[static_cast<std::size_t>(y)], hx, hy});
+          double& h = halfExtent[static_cast<std::size_t>(band)];
+          h = std::max({h, hx, hy});
         }
       }
-  }, progress, 0, viewHeight);
+    }
+  });
+  return halfExtent.empty() ? 0.0 : *std::max_element(halfExtent.begin(), halfExtent.end());
+}
+
+double forwardReachPx(const Camera& camera, double largestHalfExtentPx) {
   // Red and blue are green's image magnified by (1 + lateral): their pre-images are smaller or
   // larger by that factor.
   const double smallestScale = std::min({1.0, 1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue});
-  table.reachPx = *std::max_element(halfExtent.begin(), halfExtent.end()) * 1.01 / smallestScale + 1.0;
-  const glm::dvec2 principal = pixelFromWindow(w, windowFromNormalised(camera.view, {0.0, 0.0}), width, height);
-  table.principalPointPx = {principal.x, height - principal.y};
+  return largestHalfExtentPx * 1.01 / smallestScale + 1.0;
+}
+
+glm::dvec2 forwardPrincipalPointPx(const Camera& camera, ImageSize size) {
+  const glm::dvec2 principal = pixelFromWindow(camera.view.window, windowFromNormalised(camera.view, {0.0, 0.0}), size.widthPx, size.heightPx);
+  return {principal.x, size.heightPx - principal.y};
+}
+
+ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
+  ForwardTable table;
+  table.size = overscan.size;
+  const int viewWidth = overscan.size.widthPx, viewHeight = overscan.size.heightPx;
+  const std::size_t texels = static_cast<std::size_t>(viewWidth) * static_cast<std::size_t>(viewHeight);
+  table.position.resize(texels);
+  table.jacobian.resize(texels);
+  double halfExtent = 0.0;
+  forEachSlice(viewHeight, [&](int first, int last) {
+    const std::size_t at = static_cast<std::size_t>(first) * static_cast<std::size_t>(viewWidth);
+    halfExtent = std::max(halfExtent, fillForwardRows(camera, size, overscan, first, last, &table.position[at], &table.jacobian[at]));
+    if (progress) progress(last, viewHeight);
+  }, progress ? 0 : viewHeight);
+  table.reachPx = forwardReachPx(camera, halfExtent);
+  table.principalPointPx = forwardPrincipalPointPx(camera, size);
   return table;
 }
 

@@ -78,6 +78,13 @@ struct RemapTable {
 // How far a table is: rows done of all it has to fill (called from the calling thread).
 using RowProgress = std::function<void(int rowsDone, int rows)>;
 RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress = {});
+// The channels with a table of their own: red, green and blue with lateral colour, else green.
+std::vector<Channel> remappedChannels(const LensEffects& effects);
+// Rows [firstRow, lastRow) (GL order) of channel `c`'s table into `out` (size.widthPx per row),
+// on every core: for a caller that uploads a table a band at a time instead of holding it whole
+// (a table for a 4096-pixel tile is hundreds of MB). The same values as makeRemapTable's rows.
+void fillRemapRows(const Camera& camera, ImageSize size, const Overscan& overscan, Channel c, int firstRow, int lastRow,
+                   glm::vec2* out);
 
 // Forward, for the raster's per-view gather (render/LensPass.h): the overscan render's texel
 // centres carried through green's distortion into the output image. A view's texel t shows the
@@ -96,6 +103,14 @@ struct ForwardTable {
   glm::dvec2 principalPointPx{0.0};  // the principal point in the output image, for lateral colour
 };
 ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress = {});
+// The forward table a band at a time (as fillRemapRows): rows [firstRow, lastRow) of the overscan
+// render into `position` and `jacobian` (overscan.size.widthPx per row). Returns the band's largest
+// half-extent of an output pixel's pre-image (view pixels), for forwardReachPx over all bands.
+double fillForwardRows(const Camera& camera, ImageSize size, const Overscan& overscan, int firstRow, int lastRow,
+                       glm::vec4* position, glm::vec4* jacobian);
+// ForwardTable::reachPx from the largest half-extent over all rows, and its principal point.
+double forwardReachPx(const Camera& camera, double largestHalfExtentPx);
+glm::dvec2 forwardPrincipalPointPx(const Camera& camera, ImageSize size);
 
 // Exact, for the ray caster: channel `c` of output pixel position `pixel` (continuous, origin top
 // left) shows the true perspective pixel position returned (same image grid, may lie outside it),

@@ -17,6 +17,12 @@ bool fits(const PixelRect& r, const RenderTargetLimits& limits) {
          std::int64_t{r.width()} * r.height() <= limits.maxPixels;
 }
 
+bool fits(const Camera& camera, const FramePlan& plan, const Tile& tile, const RenderTargetLimits& limits, const TileMemory* memory) {
+  return fits(tile.rendered, limits) && (!memory || tileMemoryBytes(camera, plan, tile) <= memory->tileBytes);
+}
+
+std::int64_t area(const PixelRect& r) { return std::int64_t{r.width()} * r.height(); }
+
 // What the full frame renders, in its pixels: the image, plus the lens pass's overscan.
 PixelRect fullRender(ImageSize size, const FramePlan& plan) {
   const glm::ivec2 pad = plan.remap ? plan.overscan.padPx : glm::ivec2(0);
@@ -67,9 +73,16 @@ PixelRect preImage(const Camera& camera, ImageSize size, const PixelRect& rect) 
 }
 
 // Tiles of nearly equal size, at most `side` a side, with their margins; empty when one does not fit.
+// With `memory`, also within its tile budget, and no taller than its strip allows.
 std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& plan, const RenderTargetLimits& limits,
-                         int side, int& tileWidth, int& tileHeight) {
-  const int columns = ceilDiv(size.widthPx, side), rows = ceilDiv(size.heightPx, side);
+                         const TileMemory* memory, int side, int& tileWidth, int& tileHeight) {
+  const int columns = ceilDiv(size.widthPx, side);
+  int rows = ceilDiv(size.heightPx, side);
+  if (memory) {
+    const std::int64_t stripRow = std::int64_t{size.widthPx} * std::max(memory->fileBytesPerPixel, 1);
+    const int stripRows = static_cast<int>(std::max<std::int64_t>(memory->stripBytes / stripRow, 16));
+    rows = std::max(rows, ceilDiv(size.heightPx, stripRows));
+  }
   tileWidth = ceilDiv(size.widthPx, columns);
   tileHeight = ceilDiv(size.heightPx, rows);
   const PixelRect frame = fullRender(size, plan);
@@ -82,7 +95,7 @@ std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& 
       // With the lens pass: the tile's pre-image (where its pixels' samples come from), else the tile.
       const PixelRect source = plan.remap ? preImage(camera, size, rect) : rect;
       const Tile tile{rect, quadAligned(intersect(grown(source, curvature, curvature), frame), frame)};
-      if (!fits(tile.rendered, limits)) return {};
+      if (!fits(camera, plan, tile, limits, memory)) return {};
       tiles.push_back(tile);
     }
   return tiles;
@@ -108,11 +121,35 @@ void requireOneTarget(ImageSize size, const RenderTargetLimits& limits, const st
                        " a side; give a smaller size (render draws larger images in tiles)"));
 }
 
+std::int64_t tileMemoryBytes(const Camera& camera, const FramePlan& plan, const Tile& tile) {
+  constexpr std::int64_t kRgba32f = 16, kDepth32f = 4, kRg32f = 8;
+  constexpr std::int64_t kViewLayers = 8, kViewLayerBytes = std::int64_t{256} << 20;  // Accumulator.cpp's batch
+  const std::int64_t rendered = area(tile.rendered);
+  // The image the renderer returns: with the lens pass the tile itself, else its whole render.
+  const std::int64_t out = plan.remap ? area(tile.rect) : rendered;
+  const bool views = plan.apertureSamples > 1;
+  const bool gather = plan.remap && views;
+  std::int64_t bytes = 0;
+  if (views) {
+    bytes += std::min(kViewLayers * kRgba32f * rendered, kViewLayerBytes) + kDepth32f * rendered;
+    bytes += kRgba32f * out * (gather ? 2 : 1);  // the sum (and the gather's weights)
+  } else if (plan.remap) {
+    bytes += (kRgba32f + kDepth32f) * rendered;  // the one view the lens pass remaps
+  }
+  if (gather) bytes += 2 * kRgba32f * rendered;  // forward position and Jacobian
+  if (plan.remap) bytes += kRg32f * (camera.effects.chromatic.hasLateral() ? 3 : 1) * out;
+  bytes += (kRgba32f + kDepth32f) * out + kRgba32f * out;  // the output target and its read-back
+  if (!plan.remap && tile.rendered != tile.rect) bytes += kRgba32f * area(tile.rect);  // the crop
+  return bytes;
+}
+
 TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, const RenderTargetLimits& limits,
-                   int forcedTileSidePx) {
+                   int forcedTileSidePx, const TileMemory* memory) {
   TilePlan out;
   const PixelRect frame = fullRender(size, plan);
-  if (forcedTileSidePx <= 0 && fits(frame, limits)) {
+  const Tile whole{{0, 0, size.widthPx, size.heightPx}, frame};
+  const std::int64_t wholeBytes = tileMemoryBytes(camera, plan, whole);
+  if (forcedTileSidePx <= 0 && fits(camera, plan, whole, limits, memory)) {
     out.tileWidthPx = size.widthPx;
     out.tileHeightPx = size.heightPx;
     out.tiles = {Tile{{0, 0, size.widthPx, size.heightPx}, frame}};
@@ -121,19 +158,29 @@ TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, 
   }
   out.tiled = true;
   const int budgetSide = static_cast<int>(std::sqrt(static_cast<double>(limits.maxPixels)));
-  int side = std::min(limits.maxSidePx, budgetSide);
-  if (forcedTileSidePx > 0) side = std::min(side, forcedTileSidePx);
+  const int largestSide = forcedTileSidePx > 0 ? std::min({limits.maxSidePx, budgetSide, forcedTileSidePx})
+                                               : std::min(limits.maxSidePx, budgetSide);
+  int side = largestSide;
+  const TileMemory* active = memory;
   constexpr int kSmallestTilePx = 16;
-  for (;; side = side * 3 / 4) {
+  for (;; side = side * 7 / 8) {  // steps of 1/8: tiles within a budget as large as it allows
+    if (side < kSmallestTilePx && active) {
+      // Only tiles too small to be worth their margins would meet the budget: the render-target
+      // limits alone decide.
+      side = largestSide;
+      active = nullptr;
+    }
     if (side < kSmallestTilePx)
       throw InputError(cat(camera.source, ": the lens moves pixels so far that even ", kSmallestTilePx, "-pixel tiles need a "
                            "render larger than ", limits.maxSidePx, " px a side or ", limits.maxPixels,
                            " pixels; render a smaller image or use weaker lens effects"));
-    out.tiles = layout(camera, size, plan, limits, side, out.tileWidthPx, out.tileHeightPx);
+    out.tiles = layout(camera, size, plan, limits, active, side, out.tileWidthPx, out.tileHeightPx);
     if (!out.tiles.empty()) break;
   }
-  const std::string reason = forcedTileSidePx > 0
-      ? cat("--tile-size ", forcedTileSidePx)
+  const std::string reason = forcedTileSidePx > 0 ? cat("--tile-size ", forcedTileSidePx)
+      : fits(frame, limits)
+      ? cat("the ", frame.width(), "x", frame.height(), " render needs about ", (wholeBytes + (1 << 19)) >> 20,
+            " MiB, over the ", (memory ? memory->tileBytes : 0) >> 20, " MiB a tile may hold")
       : cat("the ", frame.width(), "x", frame.height(), " render exceeds one render target (", limits.maxSidePx,
             " px a side, ", limits.maxPixels, " pixels)");
   out.why = cat(out.tiles.size(), " tiles of up to ", out.tileWidthPx, "x", out.tileHeightPx, " (", reason,

@@ -33,6 +33,18 @@ struct RenderTargetLimits {
   static constexpr std::int64_t kTargetBudgetBytes = std::int64_t{256} << 20;  // 256 MiB: 4096² RGBA32F
 };
 
+// What `render` lets one tile and the output's strip hold (bytes), so that a frame's peak memory is
+// bounded by its tiles whatever its size: a frame whose render needs more than `tileBytes`
+// (tileMemoryBytes) is tiled although one render target could hold it.
+struct TileMemory {
+  // One tile's render targets, lens tables and read-back as tileMemoryBytes models them; the process
+  // peaks at about 1.6 times that (llvmpipe's staging and transient copies as targets are resolved
+  // and read back), plus the strip and about 220 MB for the context, the scene and the programs.
+  std::int64_t tileBytes = std::int64_t{320} << 20;
+  std::int64_t stripBytes = std::int64_t{256} << 20;  // the writer's strip: image width × a tile row's height
+  int fileBytesPerPixel = 16;                          // the strip's pixels: 16 (EXR, float RGBA), 3 (PNG)
+};
+
 struct Tile {
   PixelRect rect;      // the image's pixels it gives
   PixelRect rendered;  // the pixels its scene passes render: rect plus margins, within the full frame's render
@@ -46,12 +58,21 @@ struct TilePlan {
   std::string why;          // one line, for --stats and the progress message
 };
 
-// Tiles when the frame's render (with the lens pass's overscan) exceeds `limits`, or when
-// `forcedTileSidePx` > 0 (at most that many pixels a side). Tiles are as large as the limits allow
-// with their margins, and of nearly equal size. Throws InputError when even small tiles cannot
-// hold their margins (a lens that moves pixels farther than a render target is wide).
+// Tiles when the frame's render (with the lens pass's overscan) exceeds `limits` or, given
+// `memory`, its budget, or when `forcedTileSidePx` > 0 (at most that many pixels a side). Tiles are
+// as large as the limits and the budget allow with their margins, and of nearly equal size. Throws
+// InputError when even small tiles cannot hold their margins (a lens that moves pixels farther than
+// a render target is wide); a budget that only tiny tiles would meet is given up instead.
 TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, const RenderTargetLimits& limits,
-                   int forcedTileSidePx = 0);
+                   int forcedTileSidePx = 0, const TileMemory* memory = nullptr);
+
+// The memory the renderer holds while it renders `tile` with `plan` (GL memory is process memory
+// on llvmpipe), modelled per pixel: the accumulator's view layers (at most 8, at most 256 MiB,
+// render/Accumulator.cpp) and their depth at the rendered size; the sums, the output target and its
+// read-back at the tile's; with the lens gather the forward tables (2 × RGBA32F) at the rendered
+// size and the inverse tables (RG32F per remapped channel) at the tile's. What it leaves out (the
+// scene, the programs, a table band) does not grow with the tile.
+std::int64_t tileMemoryBytes(const Camera& camera, const FramePlan& plan, const Tile& tile);
 
 // For the commands that render the whole image into one target (sweep, view): refuses, in one
 // line naming `command`, an image that only tiles could hold (render tiles; they do not).

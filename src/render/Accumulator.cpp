@@ -50,8 +50,12 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   }
   const int sumWidth = lens_ ? lens_->outWidthPx : widthPx, sumHeight = lens_ ? lens_->outHeightPx : heightPx;
   if (!sum_ || sum_->width() != sumWidth || sum_->height() != sumHeight) {
-    sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+    // The old targets go first (the framebuffer holds their storage until it goes): a tiled
+    // render's tiles differ in size, and both at once would double the peak.
+    gatherFramebuffer_ = {};
     weight_.reset();
+    sum_.reset();
+    sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
   }
   if (lens_ && !weight_) {
     weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
@@ -95,6 +99,9 @@ void Accumulator::allocateAddTarget() {
   }
   if (width == sum_->width() && height == sum_->height() && addSum_ == sum_->colorTexture()) return;
   addSum_ = sum_->colorTexture();
+  addFramebuffer_ = {};  // as allocateLayers: the old storage goes first
+  depthStencil_ = {};
+  partial_ = {};
   depthStencil_ = gl::Texture::create();
   glTextureStorage2D(depthStencil_.id(), 1, GL_DEPTH32F_STENCIL8, sum_->width(), sum_->height());
   partial_ = gl::Texture::create();
@@ -121,12 +128,16 @@ void Accumulator::allocateLayers(int widthPx, int heightPx) {
   viewWidth_ = widthPx;
   viewHeight_ = heightPx;
   const int layers = layersFor(widthPx, heightPx);
+  // The old layers are freed before the new are made (a framebuffer keeps a deleted texture's
+  // storage alive): tiles of different sizes would otherwise briefly hold both.
+  framebuffers_.clear();
+  views_ = {};
+  depth_ = {};
   views_ = gl::TextureArray::create();
   glTextureStorage3D(views_.id(), 1, GL_RGBA32F, widthPx, heightPx, layers);
   nearestClamp(views_.id());
   depth_ = gl::Texture::create();
   glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, widthPx, heightPx);
-  framebuffers_.clear();
   for (int layer = 0; layer < layers; ++layer) {
     gl::Framebuffer fb = gl::Framebuffer::create();
     glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, views_.id(), 0, layer);

@@ -2,6 +2,11 @@
 
 #include "gl/Shader.h"
 
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cstdint>
+
 #include <stdexcept>
 
 namespace lenslab {
@@ -27,46 +32,68 @@ LensPass::LensPass()
 
 void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather,
                        const TableProgress& progress) {
-  const auto rowsOf = [&progress](const char* table) -> RowProgress {
-    if (!progress) return {};
-    return [&progress, table](int done, int rows) { progress(table, done, rows); };
-  };
   std::vector<double> key = keyOf(camera, size, overscan);
-  const auto texture = [](GLenum format, ImageSize at, GLenum layout, const void* data) {
+  const auto texture = [](GLenum format, ImageSize at) {
     gl::Texture t = gl::Texture::create();
     glTextureStorage2D(t.id(), 1, format, at.widthPx, at.heightPx);
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureSubImage2D(t.id(), 0, 0, 0, at.widthPx, at.heightPx, layout, GL_FLOAT, data);
     return t;
   };
+  // Rows per band: each band is filled on every core (8 rows a core keeps them all busy), uploaded,
+  // and its buffer reused, so that a table is never whole on the CPU beside its texture (for a
+  // 4096-pixel tile that was 1 GB); the caller hears of each band.
+  const int band = std::max(kTableBandRows, 8 * tbb::this_task_arena::max_concurrency());
   if (key != key_ || tables_.empty()) {
-    const RemapTable table = makeRemapTable(camera, size, overscan, rowsOf("inverse"));
+    // The previous tables go first: a tiled render's tiles each build their own.
     tables_.clear();
-    for (const std::vector<glm::vec2>& map : table.channels) tables_.push_back(texture(GL_RG32F, size, GL_RG, map.data()));
+    forwardPosition_ = {};
+    forwardJacobian_ = {};
+    const std::vector<Channel> channels = remappedChannels(camera.effects);
+    std::vector<glm::vec2> rows(static_cast<std::size_t>(size.widthPx) * static_cast<std::size_t>(std::min(band, size.heightPx)));
+    const int total = static_cast<int>(channels.size()) * size.heightPx;
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+      gl::Texture t = texture(GL_RG32F, size);
+      for (int first = 0; first < size.heightPx; first += band) {
+        const int last = std::min(size.heightPx, first + band);
+        fillRemapRows(camera, size, overscan, channels[c], first, last, rows.data());
+        glTextureSubImage2D(t.id(), 0, 0, first, size.widthPx, last - first, GL_RG, GL_FLOAT, rows.data());
+        if (progress) progress("inverse", static_cast<int>(c) * size.heightPx + last, total);
+      }
+      tables_.push_back(std::move(t));
+    }
+    const bool perChannel = tables_.size() == 3;
     gather_ = {};
-    for (int c = 0; c < 3; ++c) gather_.inverse[c] = tables_[table.perChannel() ? static_cast<std::size_t>(c) : 0].id();
-    gather_.lateral = table.perChannel();
+    for (int c = 0; c < 3; ++c) gather_.inverse[c] = tables_[perChannel ? static_cast<std::size_t>(c) : 0].id();
+    gather_.lateral = perChannel;
     gather_.outWidthPx = size.widthPx;
     gather_.outHeightPx = size.heightPx;
     gather_.lateralScale = glm::vec2(1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue);
-    if (table.perChannel() && !perChannelProgram_)
+    if (perChannel && !perChannelProgram_)
       perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
-    forwardPosition_ = {};
-    forwardJacobian_ = {};
     key_ = std::move(key);
     ++tablesBuilt_;
   }
   // The forward tables serve only the per-view gather: a single view (apply) never reads them,
   // and at 20000 px they cost more than the render.
   if (forGather && !forwardPosition_) {
-    const ForwardTable forward = makeForwardTable(camera, size, overscan, rowsOf("forward"));
-    forwardPosition_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.position.data());
-    forwardJacobian_ = texture(GL_RGBA32F, forward.size, GL_RGBA, forward.jacobian.data());
+    const ImageSize at = overscan.size;
+    forwardPosition_ = texture(GL_RGBA32F, at);
+    forwardJacobian_ = texture(GL_RGBA32F, at);
+    const std::size_t bandTexels = static_cast<std::size_t>(at.widthPx) * static_cast<std::size_t>(std::min(band, at.heightPx));
+    std::vector<glm::vec4> position(bandTexels), jacobian(bandTexels);
+    double halfExtent = 0.0;
+    for (int first = 0; first < at.heightPx; first += band) {
+      const int last = std::min(at.heightPx, first + band);
+      halfExtent = std::max(halfExtent, fillForwardRows(camera, size, overscan, first, last, position.data(), jacobian.data()));
+      glTextureSubImage2D(forwardPosition_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT, position.data());
+      glTextureSubImage2D(forwardJacobian_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT, jacobian.data());
+      if (progress) progress("forward", last, at.heightPx);
+    }
     gather_.forwardPosition = forwardPosition_.id();
     gather_.forwardJacobian = forwardJacobian_.id();
-    gather_.reachPx = static_cast<float>(forward.reachPx);
-    gather_.principalPointPx = glm::vec2(forward.principalPointPx);
+    gather_.reachPx = static_cast<float>(forwardReachPx(camera, halfExtent));
+    gather_.principalPointPx = glm::vec2(forwardPrincipalPointPx(camera, size));
   }
 }
 

@@ -1,9 +1,12 @@
 #pragma once
 // The lens pass: distortion and lateral chromatic aberration. The tables of the inverse and the
 // forward lens model (camera/LensMap.h) are built here and rebuilt only when the lens, the window
-// or the sizes change, not per frame. With many aperture views the accumulator uses them to carry
-// each view's samples to where the lens puts them (Accumulator::LensGather, exact in the limit);
-// a single view is remapped here, bilinearly, through the inverse table.
+// or the sizes change, not per frame (a tiled render's tiles each have their own window: each tile
+// builds the tables for its pixels and its overscan alone). They are filled and uploaded a band of
+// rows at a time, so that the CPU holds one band (kTableBandRows), never a whole table. With many
+// aperture views the accumulator uses them to carry each view's samples to where the lens puts
+// them (Accumulator::LensGather, exact in the limit); a single view is remapped here, bilinearly,
+// through the inverse table.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "camera/LensMap.h"
@@ -26,6 +29,7 @@ class LensPass {
   // `progress(table, rowsDone, rows)` as each table ("inverse" or "forward") fills: for a large
   // image they take tens of seconds on the CPU.
   using TableProgress = std::function<void(const char* table, int rowsDone, int rows)>;
+  static constexpr int kTableBandRows = 32;  // at least, per band of a table (more with more cores)
   void prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather = true,
                const TableProgress& progress = {});
   // Remaps `undistorted` (one overscanned view) into `out` (the image size), bilinearly.

@@ -33,8 +33,10 @@ constexpr double kTilePixelCost = 1.5;
 Renderer::Renderer(const Scene& scene) : gpuScene_(scene) {}
 
 const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot, ImageSize size) {
-  if (!slot || slot->width() != size.widthPx || slot->height() != size.heightPx)
+  if (!slot || slot->width() != size.widthPx || slot->height() != size.heightPx) {
+    slot.reset();  // freed before the new one is made: a tiled render's tiles differ in size
     slot = std::make_unique<gl::RenderTarget>(size.widthPx, size.heightPx);
+  }
   return *slot;
 }
 

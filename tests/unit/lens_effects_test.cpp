@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -184,6 +185,41 @@ TEST(Overscan, ZeroDistortionIsTheIdentityOnPixelCentres) {
       EXPECT_NEAR(t.x * o.size.widthPx, x + 0.5 + o.padPx.x, 1e-3);
       EXPECT_NEAR(t.y * o.size.heightPx, row + 0.5 + o.padPx.y, 1e-3);
     }
+}
+
+// The lens pass fills its tables a band of rows at a time (render/LensPass.cpp): any split into
+// bands gives the whole table's values, and the forward table's reach is the largest over the bands.
+TEST(LensTables, BandsGiveTheWholeTable) {
+  Camera camera = narrowCamera(-0.2);
+  camera.effects.distortion.p1 = 0.002;
+  camera.effects.chromatic.lateralRed = 0.004;
+  camera.effects.chromatic.lateralBlue = -0.004;
+  const ImageSize size{97, 61};
+  const Overscan o = overscanFor(camera, size);
+  const RemapTable table = makeRemapTable(camera, size, o);
+  const std::vector<Channel> channels = remappedChannels(camera.effects);
+  ASSERT_EQ(channels.size(), table.channels.size());
+  const ForwardTable forward = makeForwardTable(camera, size, o);
+  for (const int band : {1, 7, 64}) {
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+      std::vector<glm::vec2> banded(table.channels[c].size());
+      for (int first = 0; first < size.heightPx; first += band)
+        fillRemapRows(camera, size, o, channels[c], first, std::min(size.heightPx, first + band),
+                      &banded[static_cast<std::size_t>(first * size.widthPx)]);
+      EXPECT_EQ(banded, table.channels[c]) << "band " << band << ", channel " << c;
+    }
+    std::vector<glm::vec4> position(forward.position.size()), jacobian(forward.jacobian.size());
+    double halfExtent = 0.0;
+    for (int first = 0; first < o.size.heightPx; first += band) {
+      const std::size_t at = static_cast<std::size_t>(first * o.size.widthPx);
+      halfExtent = std::max(halfExtent, fillForwardRows(camera, size, o, first, std::min(o.size.heightPx, first + band),
+                                                        &position[at], &jacobian[at]));
+    }
+    EXPECT_EQ(position, forward.position) << "band " << band;
+    EXPECT_EQ(jacobian, forward.jacobian) << "band " << band;
+    EXPECT_EQ(forwardReachPx(camera, halfExtent), forward.reachPx) << "band " << band;
+  }
+  EXPECT_GT(forward.reachPx, 1.0);
 }
 
 TEST(Chromatic, AbbeNumberFocusesRedFartherAndBlueNearer) {

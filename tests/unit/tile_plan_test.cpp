@@ -162,5 +162,55 @@ TEST(TilePlan, LensTilesRenderTheirPreImageWithinTheFramesOverscan) {
   EXPECT_LT(tiles.tiles.front().rendered.x1 - tiles.tiles.front().rect.x1, pad.x / 2);
 }
 
+// Memory bounded by the tile, not the frame: a lens render that one render target could hold but
+// whose render would hold more than a tile's budget is tiled, every tile within the budget and every
+// strip of tile rows within the strip's; without a budget the same frame is one render.
+TEST(TilePlan, ALensFrameOverTheMemoryBudgetIsTiledWithinIt) {
+  const Camera camera = parseCameraJson(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "near": 0.1, "far": 100, "f_number": 2.8,
+      "focal_length_mm": 35, "sensor_mm": [36, 24], "focus_distance": 3, "distortion": {"k1": -0.15, "k2": 0.03},
+      "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})", "test.json").camera;
+  const ImageSize size{1200, 800};
+  const FramePlan plan = makeFramePlan(Scene{}, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1});
+  ASSERT_TRUE(plan.remap);
+  EXPECT_FALSE(planTiles(camera, size, plan, RenderTargetLimits{}).tiled);
+  TileMemory memory;
+  memory.tileBytes = std::int64_t{48} << 20;
+  memory.stripBytes = std::int64_t{4} << 20;
+  memory.fileBytesPerPixel = 16;
+  const Tile whole{{0, 0, size.widthPx, size.heightPx}, {0, 0, plan.overscan.size.widthPx, plan.overscan.size.heightPx}};
+  // The whole frame: ~1.1 Mpx rendered, each pixel with its view layers (8 × 16 bytes), the forward
+  // tables (32), the inverse tables (24), sums and read-back: over 200 bytes a pixel.
+  EXPECT_GT(tileMemoryBytes(camera, plan, whole), std::int64_t{200} * size.pixelCount());
+  const TilePlan tiles = planTiles(camera, size, plan, RenderTargetLimits{}, 0, &memory);
+  EXPECT_TRUE(tiles.tiled);
+  EXPECT_NE(tiles.why.find("a tile may hold"), std::string::npos) << tiles.why;
+  expectCovers(tiles, size, RenderTargetLimits{});
+  for (const Tile& t : tiles.tiles) {
+    EXPECT_LE(tileMemoryBytes(camera, plan, t), memory.tileBytes);
+    EXPECT_LE(std::int64_t{size.widthPx} * t.rect.height() * memory.fileBytesPerPixel, memory.stripBytes);
+  }
+  // A PNG's strip is 3 bytes a pixel: the same strip budget allows taller tile rows.
+  TileMemory png = memory;
+  png.fileBytesPerPixel = 3;
+  EXPECT_GT(planTiles(camera, size, plan, RenderTargetLimits{}, 0, &png).tileHeightPx, tiles.tileHeightPx);
+  // A larger budget, fewer tiles (each tile's margins cost render time).
+  TileMemory larger = memory;
+  larger.tileBytes *= 4;
+  larger.stripBytes *= 4;
+  EXPECT_LT(planTiles(camera, size, plan, RenderTargetLimits{}, 0, &larger).tiles.size(), tiles.tiles.size());
+}
+
+// A budget that only tiny tiles could meet is given up for the render-target limits, not refused.
+TEST(TilePlan, AnUnmeetableMemoryBudgetFallsBackToTheTargetLimits) {
+  const Camera camera = obliqueCamera(Projection::Perspective);
+  const ImageSize size{960, 654};
+  const FramePlan plan = makeFramePlan(Scene{}, camera, size);
+  TileMemory memory;
+  memory.tileBytes = 1;
+  const TilePlan tiles = planTiles(camera, size, plan, RenderTargetLimits{}, 0, &memory);
+  EXPECT_TRUE(tiles.tiled);
+  expectCovers(tiles, size, RenderTargetLimits{});
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -1,6 +1,7 @@
 // The progressive order of lens/SobolSequence.h: every power-of-two prefix is a net on the lens
 // square, on the pixel and in all four dimensions together; the two streams are independent
 // scrambles; and a smooth defocused integrand converges faster than with independent samples.
+// The per-tile budgets' padded order (sobolSample) keeps its own 2-D strata and independent streams.
 #include "lens/SobolSequence.h"
 
 #include <gtest/gtest.h>
@@ -77,12 +78,12 @@ glm::dvec2 squareFromDisk(glm::dvec2 p) {
 
 glm::dvec4 squareOf(const LensSample& s) { return glm::dvec4(squareFromDisk(s.lens), s.pixel + 0.5); }
 
-// Points first..first+count−1 of the single stream (stream < 0) or of one of the two streams.
+// The first `count` points of the single stream (stream < 0) or of one of the two 4-D streams.
 std::vector<glm::dvec4> prefix(std::uint32_t seed, int stream, int count) {
   std::vector<glm::dvec4> points;
   for (int i = 0; i < count; ++i) {
     const auto index = static_cast<std::uint32_t>(i);
-    points.push_back(squareOf(stream < 0 ? sobolPoint(index, seed) : sobolSample(2 * index + static_cast<std::uint32_t>(stream), seed)));
+    points.push_back(squareOf(stream < 0 ? sobolPoint(index, seed) : sobolTwoStreamSample(2 * index + static_cast<std::uint32_t>(stream), seed)));
   }
   return points;
 }
@@ -164,15 +165,15 @@ TEST(Sobol, EveryPowerOfTwoPrefixIsANetOnThePixelAndInFourDimensions) {
   }
 }
 
-TEST(Sobol, TheTwoStreamsAreIndependentScrambles) {
-  // The same point of the two streams over many seeds: different points, and uncorrelated in
-  // every coordinate (one scramble shared, or derived from the other, would correlate them).
+// The same point of the two streams over many seeds: different points, and uncorrelated in every
+// coordinate (one scramble shared, or derived from the other, would correlate them).
+void expectIndependentStreams(LensSample (*sample)(std::uint32_t, std::uint32_t)) {
   constexpr int kSeeds = 4000;
   for (std::uint32_t point : {0u, 1u, 5u}) {
     double sum[4][3] = {};  // per coordinate: Σa, Σb, Σab
     int same = 0;
     for (std::uint32_t seed = 0; seed < kSeeds; ++seed) {
-      const glm::dvec4 a = squareOf(sobolSample(2 * point, seed)), b = squareOf(sobolSample(2 * point + 1, seed));
+      const glm::dvec4 a = squareOf(sample(2 * point, seed)), b = squareOf(sample(2 * point + 1, seed));
       same += a == b;
       for (int j = 0; j < 4; ++j) {
         sum[j][0] += a[j];
@@ -187,10 +188,27 @@ TEST(Sobol, TheTwoStreamsAreIndependentScrambles) {
       EXPECT_LT(std::abs(covariance * 12.0), 4.0 / std::sqrt(kSeeds)) << "point " << point << ", coordinate " << j;
     }
   }
+}
+
+TEST(Sobol, TheTwoStreamsAreIndependentScrambles) {
+  expectIndependentStreams(sobolTwoStreamSample);
+  expectIndependentStreams(sobolSample);
   EXPECT_EQ(sobolStream(6), 0);
   EXPECT_EQ(sobolStream(7), 1);
-  EXPECT_EQ(sobolSample(7, 2).pixel, sobolPoint(3, sobolStreamSeed(2, 1)).pixel);
-  EXPECT_EQ(sobolSample(6, 2).lens, sobolPoint(3, sobolStreamSeed(2, 0)).lens);
+  EXPECT_EQ(sobolTwoStreamSample(7, 2).pixel, sobolPoint(3, sobolStreamSeed(2, 1)).pixel);
+  EXPECT_EQ(sobolTwoStreamSample(6, 2).lens, sobolPoint(3, sobolStreamSeed(2, 0)).lens);
+}
+
+// The per-tile budgets' order: each stream's lens and pixel pairs are one point per elementary box
+// at every power of two, each on its own.
+TEST(Sobol, ThePaddedOrdersStreamsStratifyLensAndPixelEachPowerOfTwo) {
+  for (int stream : {0, 1})
+    for (int k = 0; k <= 8; ++k) {
+      std::vector<glm::dvec4> points;
+      for (int i = 0; i < (1 << k); ++i) points.push_back(squareOf(sobolSample(static_cast<std::uint32_t>(2 * i + stream), 3)));
+      EXPECT_TRUE(oneInEachBox(pair(points, 0), k)) << "lens, stream " << stream << ", 2^" << k;
+      EXPECT_TRUE(oneInEachBox(pair(points, 2), k)) << "pixel, stream " << stream << ", 2^" << k;
+    }
 }
 
 // A defocused pixel: cos(ω·(pixel.x + c·lens.x) + φ) over the pixel box and the unit disk. Its

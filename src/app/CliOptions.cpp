@@ -23,7 +23,7 @@ CLI::Validator numberOrInfinity(const NumberRange& range) {
 }
 
 void addSamplingOptions(CLI::App& cmd, LensOptions& o) {
-  cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: concentric; sobol with --target-psnr)")
+  cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: sobol; see docs/sampling.md)")
       ->check(CLI::IsMember(patternNameList()));
   CLI::Option* samples =
       cmd.add_option("--aperture-samples", o.apertureSamples,

@@ -150,8 +150,10 @@ std::vector<LensSample> makeApertureSamples(AperturePattern pattern, int count, 
     case AperturePattern::R2: return r2(count, seed);
     case AperturePattern::Random: return random(count, seed);
     case AperturePattern::Sobol: {
+      // One stream: the N points are one 4-D net (per-tile budgets use sobolSample's two streams).
       std::vector<LensSample> samples;
-      for (int i = 0; i < count; ++i) samples.push_back(sobolSample(static_cast<std::uint32_t>(i), seed));
+      const std::uint32_t scramble = sobolStreamSeed(seed, 0);
+      for (int i = 0; i < count; ++i) samples.push_back(sobolPoint(static_cast<std::uint32_t>(i), scramble));
       return samples;
     }
   }

@@ -27,7 +27,7 @@ struct PlanOptions {
   PlanOptions(AperturePattern pattern_, int apertureSamples_, int maxSamples_, std::uint32_t seed_)
       : pattern(pattern_), apertureSamples(apertureSamples_), maxSamples(maxSamples_), seed(seed_) {}
 
-  AperturePattern pattern = AperturePattern::Concentric;
+  AperturePattern pattern = AperturePattern::Sobol;
   int apertureSamples = 0;  // 0 = auto: from the largest circle of confusion in view
   int maxSamples = 256;     // the cap on auto, and on each tile's count with a target
   std::uint32_t seed = 1;
@@ -68,7 +68,7 @@ struct FramePlan {
   std::vector<PlannedPass> passes;
   int apertureSamples = 1;      // scene passes, one per point of the aperture
   std::string samplesWhy;       // why that many
-  AperturePattern pattern = AperturePattern::Concentric;
+  AperturePattern pattern = AperturePattern::Sobol;
   std::uint32_t seed = 1;
   double cocMinPx = 0.0;        // circle of confusion over the part of the scene in view, pixels
   double cocMaxPx = 0.0;

@@ -13,7 +13,7 @@ namespace lenslab {
 
 PlanOptions toPlanOptions(const LensOptions& o) {
   PlanOptions p;
-  const std::string name = !o.pattern.empty() ? o.pattern : o.targetPsnrDb ? "sobol" : "concentric";
+  const std::string name = !o.pattern.empty() ? o.pattern : "sobol";
   const auto pattern = patternFromName(name);
   if (!pattern) throw InputError(cat("--pattern ", o.pattern, ": use one of ", patternNames()));
   p.pattern = *pattern;

@@ -16,7 +16,7 @@
 namespace lenslab {
 
 struct LensOptions {
-  std::string pattern;                    // empty: concentric, or sobol with a target
+  std::string pattern;                    // empty: sobol (docs/sampling.md)
   std::optional<double> targetPsnrDb;     // per-tile budgets to this estimated PSNR
   std::string apertureSamples = "auto";
   int maxSamples = 256;

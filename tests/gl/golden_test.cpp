@@ -53,7 +53,7 @@ TEST_P(Golden, MatchesTheStoredImage) {
   const Camera& camera = cameraFile.camera;
   const ImageSize size = resolveImageSize(camera, kGoldenWidth, std::nullopt);
   Renderer renderer(scene);
-  const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 0, c.maxSamples, 1}), size);
+  const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{PlanOptions{}.pattern, 0, c.maxSamples, 1}), size);
 
   const fs::path golden = fs::path(LENSLAB_GOLDEN_DIR) / (std::string(c.name) + ".png");
   if (const char* update = std::getenv("LENSLAB_UPDATE_GOLDENS"); update && std::string(update) == "1") {

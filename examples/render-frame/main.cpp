@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
     const auto context = lenslab::createHeadlessContext(lenslab::Backend::OSMesa);
     lenslab::Renderer renderer(scene);
     // 32 points of the aperture, a pinhole view from each, averaged: everything off the plane of
-    // focus blurs over its circle of confusion.
-    const lenslab::PlanOptions options(lenslab::AperturePattern::Concentric, 32, 256, /*seed=*/1);
+    // focus blurs over its circle of confusion. Sobol' points, as `lenslab render` by default.
+    const lenslab::PlanOptions options(lenslab::AperturePattern::Sobol, 32, 256, /*seed=*/1);
     const lenslab::FramePlan plan = lenslab::makeFramePlan(scene, camera, size, options);
     const lenslab::Image image = renderer.render(camera, plan, size);
 

@@ -178,13 +178,18 @@ mkdir -p "$r"
 : >"$r/manifest.jsonl"
 chmod 444 "$r/manifest.jsonl"
 as=()
+ro=("${small[@]}")
 if [ "$(id -u)" -eq 0 ]; then
   chmod 755 "$work" && chmod 777 "$r"
-  as=(setpriv --reuid=nobody --regid=nogroup --clear-groups)
+  # The source tree may lie under a folder only root can enter (a CI clone in a mktemp -d): the
+  # scene and the path go with the run, into a folder 'nobody' can read.
+  mkdir -p "$work/ro-assets" && cp -r "$src/assets/rows" "$work/ro-assets/" && chmod -R a+rX "$work/ro-assets"
+  as=(env LENSLAB_ASSET_DIR="$work/ro-assets" setpriv --reuid=nobody --regid=nogroup --clear-groups)
+  ro=(--path "$work/ro-assets/rows/rack-focus.json" --width 32 --aperture-samples 2 -q)
 fi
 if ! "${as[@]}" "$lenslab" --help >/dev/null 2>&1; then
-  echo "SKIPPED: read-only manifest: cannot run lenslab as nobody here (no setpriv)"
-elif "${as[@]}" "$lenslab" capture "${small[@]}" --frames 0:1 --out "$r/f_%04d.png" >"$work/stdout" 2>"$work/stderr"; then
+  echo "SKIPPED: read-only manifest: cannot run lenslab as nobody here (no setpriv, or its binary is out of nobody's reach)"
+elif "${as[@]}" "$lenslab" capture "${ro[@]}" --frames 0:1 --out "$r/f_%04d.png" >"$work/stdout" 2>"$work/stderr"; then
   fail "a read-only manifest: exit 0"
 elif grep -qF -- "--manifest $r/manifest.jsonl: cannot append to it: Permission denied" "$work/stderr" \
      && [ "$(ls -A "$r")" = manifest.jsonl ]; then pass

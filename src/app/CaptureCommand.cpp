@@ -92,7 +92,11 @@ class FrameCameras {
     // A still camera is chosen at the animation's start, whichever frames this process renders.
     if (!scene.animation.empty()) poseScene(scene, 0.0);
     base_ = baseCamera(scene, std::nullopt, o.camera);
-    if (base_.form != CameraForm::GltfPerspective) still_ = physicalOf(composeCamera(base_, o.camera, imageAspect_));
+    if (base_.form != CameraForm::GltfPerspective) {
+      const SelectedCamera still = composeCamera(base_, o.camera, imageAspect_);
+      still_ = physicalOf(still);
+      stillAperture_ = still.camera.aperture;
+    }
   }
 
   int frameCount(const Scene& scene) const {
@@ -115,7 +119,7 @@ class FrameCameras {
       if (o_.camera.changesLens()) key.camera = withCameraOptions(key.camera, o_.camera, where);  // the command line wins
       return key;
     }
-    if (still_) return {time, *still_, {}};
+    if (still_) return {time, *still_, {}, stillAperture_};
     // A glTF camera where its node is at this time, its focus on the scene's centre then.
     const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
     return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}};
@@ -133,6 +137,7 @@ class FrameCameras {
   const CaptureOptions& o_;
   double imageAspect_ = 0.0;
   std::optional<CameraPath> path_;
+  ApertureShape stillAperture_;
   double fps_ = 24.0;
   BaseCamera base_;
   std::optional<PhysicalCamera> still_;
@@ -194,6 +199,7 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.key = cameras.at(scene, k.timeSeconds, k.where);
   k.camera = toCamera(k.key.camera, k.where);
   k.camera.effects = k.key.effects;
+  k.camera.aperture = k.key.aperture;
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
 }
@@ -399,7 +405,7 @@ int runCapture(const CaptureOptions& o) {
         !shape.empty() && !o.quiet && warned.insert(shape).second)
       progress.note("lenslab: warning: " + shape);
     const std::string cameraText =
-        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven());
+        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture);
     // The frame's camera as `render --camera` will read it, from the very text written.
     const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
 

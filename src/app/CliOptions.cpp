@@ -55,6 +55,17 @@ void addFocusOptions(CLI::App& cmd, LensOptions& o) {
       ->excludes(distance);
 }
 
+void addApertureShapeOptions(CLI::App& cmd, LensOptions& o) {
+  cmd.add_option("--blades", o.blades,
+                 "aperture blades: 0 for a round aperture, 3 to 64 for a polygon of the same area (out-of-focus highlights "
+                 "take its shape); over the camera file's \"aperture\"")
+      ->type_name("N");
+  cmd.add_option("--squeeze", o.squeeze,
+                 "anamorphic squeeze: the aperture taller than wide by this ratio, e.g. 1.33 or 2 (1: none); over the "
+                 "camera file's \"aperture\"")
+      ->type_name("RATIO");
+}
+
 namespace {
 
 // An option that takes a point as X,Y,Z (three finite numbers).

@@ -287,6 +287,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   if (method == Method::Raster) addSamplingOptions(*cmd, options->lens);
   addSeedOption(*cmd, options->lens);
   addFocusOptions(*cmd, options->lens);
+  addApertureShapeOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);

@@ -10,6 +10,7 @@ void RunStats::setCamera(const SelectedCamera& selected) {
   camera = selected.camera.source;
   focusDistance = selected.camera.focusDistance();
   apertureRadius = selected.camera.apertureRadius;
+  aperture = selected.camera.aperture;
   physical = selected.physical;
 }
 
@@ -24,7 +25,10 @@ std::string toJson(const RunStats& s) {
   j["command"] = s.command;
   j["scene"] = s.scene;
   j["camera"] = s.camera;
-  j["lens"] = {{"focus_distance", distanceJson(s.focusDistance)}, {"aperture_radius", s.apertureRadius}};
+  j["lens"] = {{"focus_distance", distanceJson(s.focusDistance)}, {"aperture_radius", s.apertureRadius},
+               {"aperture", {{"shape", describeAperture(s.aperture)}, {"blades", s.aperture.blades},
+                             {"rotation_deg", s.aperture.rotationDeg}, {"roundness", s.aperture.roundness},
+                             {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
   if (s.physical) {
     const PhysicalCamera& p = *s.physical;
     j["lens"]["focal_length_mm"] = p.focalLengthMm;

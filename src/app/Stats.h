@@ -31,6 +31,7 @@ struct RunStats {
   // The lens as rendered (after --focus-distance / --focus-at): "lens" in the JSON.
   double focusDistance = 0.0;             // from the PRP along the view direction; +infinity allowed
   double apertureRadius = 0.0;            // world units; 0 = a pinhole
+  ApertureShape aperture;                 // its shape (lens/ApertureShape.h)
   std::optional<PhysicalCamera> physical; // focal length, f-number, sensor, eye, target when there is one
 
   // The camera's source, focus, aperture and physical description.

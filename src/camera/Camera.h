@@ -8,6 +8,7 @@
 // pixel from every aperture point, and any other point spreads over its circle of confusion.
 #include "camera/ImageSize.h"
 #include "camera/ViewSpec.h"
+#include "lens/ApertureShape.h"
 #include "lens/LensEffects.h"
 
 #include <glm/glm.hpp>
@@ -21,6 +22,7 @@ namespace lenslab {
 struct Camera {
   ViewSpec view;
   double apertureRadius = 0.0;  // world units; 0 = pinhole
+  ApertureShape aperture;       // round unless the camera has blades or a squeeze (lens/ApertureShape.h)
   // The plane of focus is the view plane, except where no well-conditioned view plane can hold
   // it: at infinity focus, and at a finite focus far beyond the view plane (a view plane at 1e300
   // has a window of 1e300 and no precision left). There the focus is carried as an inverse
@@ -38,6 +40,11 @@ struct Camera {
   std::optional<ImageSize> calibratedSize;
 
   bool isPinhole() const { return !(apertureRadius > 0.0); }
+  // The lens offset (u, v; world units) of an aperture sample's point on the unit disk: the
+  // aperture's shape applied, scaled by the radius. Both renderers place the PRP through this.
+  glm::dvec2 lensOffset(glm::dvec2 unitDisk) const {
+    return apertureRadius * (aperture.isRound() ? unitDisk : apertureFromDisk(unitDisk, aperture));
+  }
   // 1/z_f, from the PRP along −n: 1/PRP.n on the view plane, 0 at infinity focus.
   double inverseFocusDistance() const { return inverseFocusOffPlane ? *inverseFocusOffPlane : 1.0 / view.prp.z; }
   bool focusAtInfinity() const { return inverseFocusDistance() == 0.0; }
@@ -71,7 +78,8 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
 // (world units from the PRP along −n): every aperture point sees it through a different window
 // point. Perspective: 2R·d·|1/z_f − 1/z| with d = PRP.n (2R·|z − z_f|/z when the view plane is the
 // plane of focus). Parallel: the DOP tilts by the lens offset over PRP.n, so 2R·|z − PRP.n|/PRP.n.
-// `inverseFocusShift` as for viewThroughLens.
+// `inverseFocusShift` as for viewThroughLens. A shaped aperture (blades, squeeze): the diameter of
+// the circle about the blur that holds it, from the shape's farthest point (apertureReach).
 double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift = 0.0);
 
 // How far beyond the current view plane refocused() still moves the view plane; beyond this the

@@ -28,6 +28,7 @@ struct PathKey {
   double timeSeconds = 0.0;
   PhysicalCamera camera;
   LensEffects effects;
+  ApertureShape aperture;  // one for the whole path: the keys must agree (io/CameraPathJson)
 };
 
 enum class PathInterpolation { Smooth, Linear };

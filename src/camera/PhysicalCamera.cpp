@@ -90,6 +90,7 @@ Camera toCamera(const PhysicalCamera& c, std::string source) {
 SelectedCamera toSelectedCamera(const PhysicalCamera& camera, const Camera& like, std::string source) {
   SelectedCamera out{toCamera(camera, std::move(source)), camera};
   out.camera.effects = like.effects;
+  out.camera.aperture = like.aperture;
   out.camera.calibratedSize = like.calibratedSize;
   out.camera.nearFromScene = like.nearFromScene;
   out.camera.farFromScene = like.farFromScene;

@@ -41,7 +41,8 @@ const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", 
 // Keys that only the OpenCV form takes: any of them selects it.
 const std::set<std::string> kOpenCvOnlyKeys = {"intrinsics", "K", "R", "t", "dist"};
 // Lens effects and the image size, in any form.
-const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size"};
+const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture"};
+const std::set<std::string> kApertureKeys = {"blades", "rotation_deg", "roundness", "anamorphic_squeeze"};
 const std::set<std::string> kDistortionKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
 const std::set<std::string> kChromaticKeys = {"lateral_red", "lateral_blue", "focus_distance_red",
                                               "focus_distance_blue", "abbe_number"};
@@ -463,11 +464,29 @@ void parseCommon(const Reader& r, CameraFile& file) {
     const double corner = normalisedWindow(camera.view).cornerRadius();
     e.fieldCurvature.inverseFocusPerRadius2 = (inverseOf(o, "corner_focus_distance") - focus) / (corner * corner);
   }
+  if (r.has("aperture")) {
+    const Reader o = r.object("aperture", kApertureKeys);
+    ApertureShape& a = camera.aperture;
+    if (o.has("blades")) a.blades = o.integer("blades");
+    if (o.has("rotation_deg")) a.rotationDeg = o.number("rotation_deg");
+    if (o.has("roundness")) a.roundness = o.number("roundness");
+    if (o.has("anamorphic_squeeze")) a.anamorphicSqueeze = o.number("anamorphic_squeeze");
+    if (const std::optional<ApertureProblem> problem = apertureShapeProblem(a)) o.fail(problem->field, problem->message);
+  }
   validateLensEffects(camera, r.where(), file.physical ? std::optional(file.physical->focalLengthMm * kMetresPerMillimetre) : std::nullopt);
 }
 
-// distortion, chromatic and field_curvature of `camera` into `j`, as parseCommon reads them.
+// distortion, chromatic, field_curvature and aperture of `camera` into `j`, as parseCommon reads them.
 void writeEffects(const Camera& camera, json& j) {
+  const ApertureShape& a = camera.aperture;
+  if (a != ApertureShape{}) {
+    json o = json::object();
+    if (a.blades != 0) o["blades"] = a.blades;
+    if (a.rotationDeg != 0.0) o["rotation_deg"] = a.rotationDeg;
+    if (a.roundness != 0.0) o["roundness"] = a.roundness;
+    if (a.anamorphicSqueeze != 1.0) o["anamorphic_squeeze"] = a.anamorphicSqueeze;
+    j["aperture"] = o;
+  }
   const LensEffects& e = camera.effects;
   // Focus distances for the inverse distances that the effects hold; beyond infinity has no name.
   const auto distanceOf = [&](double inverse, const char* key) -> json {
@@ -572,9 +591,10 @@ std::string toCameraJson(const Camera& camera) {
 }
 
 std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar) {
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture) {
   Camera camera = toCamera(physical, "the frame's camera");
   camera.effects = effects;
+  camera.aperture = aperture;
   const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
   json j;
   j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};

@@ -56,8 +56,9 @@ std::string toCameraJson(const Camera& camera);
 // A physical camera with lens effects, as seen on an image of `size`, in the OpenCV-intrinsics form
 // (K, distCoeffs as an array when the lens is all OpenCV's, plus focus_distance and aperture_radius):
 // one file both `lenslab render --camera` and vision tools read. `capture` writes one per frame.
-// near / far are written only when asked; left out, the renderer fits them to the scene.
+// near / far are written only when asked; left out, the renderer fits them to the scene. A shaped
+// aperture is written as "aperture".
 std::string toIntrinsicsCameraJson(const PhysicalCamera& camera, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar);
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture = {});
 
 }  // namespace lenslab

@@ -57,6 +57,11 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
     if (camera.contains("near")) path.nearFromScene = false;
     if (camera.contains("far")) path.farFromScene = false;
     key.effects = file.camera.effects;
+    key.aperture = file.camera.aperture;
+    // The iris and the lens's squeeze do not change along a shot: one shape for every key.
+    if (!path.keys.empty() && key.aperture != path.keys.front().aperture)
+      throw InputError(cat(name, ": \"aperture\" is ", describeAperture(key.aperture), " where the first key's is ",
+                           describeAperture(path.keys.front().aperture), "; every key of a path takes the same aperture shape"));
     path.keys.push_back(key);
   }
   validate(path, where);

@@ -428,6 +428,10 @@ std::vector<std::string> focusWarnings(const Camera& camera, const LensOptions& 
                           "aperture_radius in the camera file) for depth of field";
   if (!lens.focusDistance.empty()) warnings.push_back(cat("--focus-distance ", lens.focusDistance, ": ", why));
   if (lens.focusAt) warnings.push_back(cat("--focus-at ", lens.focusAt->x, ",", lens.focusAt->y, ": ", why));
+  const std::string shapeWhy = "the camera has no aperture (a pinhole), so nothing is blurred into the aperture's shape; give "
+                               "--f-number N (or f_number / aperture_radius in the camera file) for depth of field";
+  if (lens.blades) warnings.push_back(cat("--blades ", *lens.blades, ": ", shapeWhy));
+  if (lens.squeeze) warnings.push_back(cat("--squeeze ", *lens.squeeze, ": ", shapeWhy));
   return warnings;
 }
 

@@ -128,8 +128,8 @@ PhysicalCamera gltfPhysicalCamera(const BaseCamera& base, const CameraOptions& o
 // names it in errors. What capture does to each frame's camera.
 PhysicalCamera withCameraOptions(PhysicalCamera camera, const CameraOptions& options, const std::string& where);
 
-// What --focus-distance and --focus-at cannot do on `camera`: without an aperture (a pinhole)
-// focus changes nothing. One warning per option given, each naming it and what to do.
+// What --focus-distance, --focus-at, --blades and --squeeze cannot do on `camera`: without an
+// aperture (a pinhole) focus and the aperture's shape change nothing. One warning per option given, each naming it and what to do.
 std::vector<std::string> focusWarnings(const Camera& camera, const LensOptions& lens);
 
 }  // namespace lenslab

@@ -43,8 +43,24 @@ PlanOptions toPlanOptions(const LensOptions& o) {
   return p;
 }
 
+namespace {
+
+SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
+  ApertureShape& a = c.camera.aperture;
+  if (o.blades) a.blades = *o.blades;
+  if (o.squeeze) a.anamorphicSqueeze = *o.squeeze;
+  if (const std::optional<ApertureProblem> problem = apertureShapeProblem(a)) {
+    const bool blades = problem->field == "blades";
+    if (blades && o.blades) throw InputError(cat("--blades ", problem->message));
+    if (problem->field == "anamorphic_squeeze" && o.squeeze) throw InputError(cat("--squeeze ", problem->message));
+  }
+  return c;
+}
+
+}  // namespace
+
 SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& o) {
-  if (o.focusDistance.empty()) return camera;
+  if (o.focusDistance.empty()) return withApertureOptions(camera, o);
   double d = 0.0;
   if (o.focusDistance == "infinity") {
     d = std::numeric_limits<double>::infinity();
@@ -59,7 +75,7 @@ SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions&
   }
   SelectedCamera c = refocused(camera, d, "--focus-distance");
   c.camera.source += cat(", refocused to ", o.focusDistance);
-  return c;
+  return withApertureOptions(c, o);
 }
 
 void applyBackground(Scene& scene, const std::optional<glm::vec3>& background) {

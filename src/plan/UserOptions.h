@@ -23,13 +23,16 @@ struct LensOptions {
   std::uint32_t seed = 1;
   std::string focusDistance;              // a number or "infinity"; empty = the camera's
   std::optional<glm::dvec2> focusAt;      // pixel (x, y), from "X,Y"
+  std::optional<int> blades;              // the aperture's blades (0: round), over the camera's
+  std::optional<double> squeeze;          // the aperture's anamorphic squeeze, over the camera's
 };
 
 // Throws InputError for a bad pattern or sample count.
 PlanOptions toPlanOptions(const LensOptions& options);
 
 // The focus distance applied to the camera, along the same validation path as a camera file's
-// focus_distance (see refocused(SelectedCamera)).
+// focus_distance (see refocused(SelectedCamera)); then --blades and --squeeze over the camera's
+// aperture shape (lens/ApertureShape.h), refused in one line naming the option when out of range.
 SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& options);
 
 // The background colour (linear RGB) where no surface is seen, replacing the scene's.

@@ -369,7 +369,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
               for (int c = 0; c < channels; ++c) {
                 const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
                 const Impl::Hit hit =
-                    m.shadeAlong(focused, s.lens * camera.apertureRadius, cs.pixel, size, footprintPx, cs.inverseFocusShift);
+                    m.shadeAlong(focused, camera.lensOffset(s.lens), cs.pixel, size, footprintPx, cs.inverseFocusShift);
                 if (channels == 3) sum[c] += hit.color[c];
                 else sum += glm::dvec3(hit.color);
                 covered += hit.surface ? 1.0 / channels : 0.0;
@@ -378,7 +378,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
           } else {
             for (const LensSample& s : samples) {
               const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-              const Impl::Hit hit = m.shadeAlong(camera, s.lens * camera.apertureRadius, pixel, size, footprintPx);
+              const Impl::Hit hit = m.shadeAlong(camera, camera.lensOffset(s.lens), pixel, size, footprintPx);
               sum += glm::dvec3(hit.color);
               covered += hit.surface ? 1.0 : 0.0;
             }

@@ -85,7 +85,7 @@ glm::dmat4 Renderer::sampleClip(const LensSample& s, double inverseFocusShift) c
   const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
   // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
   const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
-  return clipFromWorld(viewThroughLens(camera_, s.lens * camera_.apertureRadius, pixelOffset, inverseFocusShift));
+  return clipFromWorld(viewThroughLens(camera_, camera_.lensOffset(s.lens), pixelOffset, inverseFocusShift));
 }
 
 void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias) {
@@ -95,7 +95,7 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h); and the sub-pixel
   // offset in view pixels, GL orientation, for the lens gather. Both are the view's, so a view with
   // either is drawn whole from one sample (one part).
-  const glm::vec2 curvatureShift(first.lens * camera_.apertureRadius * camera_.view.prp.z *
+  const glm::vec2 curvatureShift(camera_.lensOffset(first.lens) * camera_.view.prp.z *
                                  camera_.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
   const glm::vec2 jitter(static_cast<float>(first.pixel.x), static_cast<float>(-first.pixel.y));
   // Views are added straight into the sum unless the scene's geometry costs more than a layer.

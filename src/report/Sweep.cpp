@@ -230,9 +230,10 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     if (!wanted(series) || series == "adaptive") return {};
     if (series == "lecture17") return {17};
     if (series == "raycast") return doublings(o.maxSpp);
-    // The gather baseline blurs the pinhole image and knows no lens effects: comparing it with an
-    // exact distorted reference would measure the missing distortion, not the method.
-    if (series == "postprocess") return camera.effects.isZero() ? o.gatherTaps : std::vector<int>{};
+    // The gather baseline blurs the pinhole image with round disks and knows no lens effects:
+    // comparing it with an exact distorted (or polygonal) reference would measure what it lacks,
+    // not the method.
+    if (series == "postprocess") return camera.effects.isZero() && camera.aperture.isRound() ? o.gatherTaps : std::vector<int>{};
     return doublings(o.maxViews);
   };
   std::int64_t imagesPlanned = wanted("adaptive") ? static_cast<std::int64_t>(o.targetsDb.size()) : 0;
@@ -302,7 +303,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   }
   if (wanted("raycast")) say(o, "raycast: done");
   const std::vector<int> gatherTaps = budgetsOf("postprocess");
-  if (gatherTaps.empty() && !o.gatherTaps.empty() && wanted("postprocess")) say(o, "postprocess gather: left out (it has no lens effects)");
+  if (gatherTaps.empty() && !o.gatherTaps.empty() && wanted("postprocess")) say(o, camera.effects.isZero() ? "postprocess gather: left out (it blurs with round disks only)"
+                                                                                                   : "postprocess gather: left out (it has no lens effects)");
   for (int taps : gatherTaps) {
     Image image;
     const double seconds = medianOf3([&] { return gather.apply(camera, renderer.renderPinhole(camera, size), taps); }, image);

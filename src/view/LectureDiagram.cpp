@@ -46,17 +46,19 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
 
   if (camera.isPinhole()) return lines;
 
-  // The aperture disk in the PRP's plane (parallel to the view plane).
+  // The aperture in the PRP's plane (parallel to the view plane): a disk, or the blades' shape.
   const double r = camera.apertureRadius * style.apertureScale;
-  constexpr int kSegments = 64;
-  for (int i = 0; i < kSegments; ++i) {
-    const double a0 = 2.0 * std::numbers::pi * i / kSegments, a1 = 2.0 * std::numbers::pi * (i + 1) / kSegments;
-    add(prp + r * (std::cos(a0) * b.u + std::sin(a0) * b.v), prp + r * (std::cos(a1) * b.u + std::sin(a1) * b.v),
-        colors.aperture);
+  const std::vector<glm::dvec2> outline = apertureOutline(camera.aperture, camera.aperture.blades == 0 ? 64 : 16);
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const glm::dvec2 a = outline[i], c = outline[(i + 1) % outline.size()];
+    add(prp + r * (a.x * b.u + a.y * b.v), prp + r * (c.x * b.u + c.y * b.v), colors.aperture);
   }
   // The sample points: the PRP moves to each of them for one scene pass.
   const double dot = std::min(0.06 * r, mark);
-  auto lensPoint = [&](const LensSample& sample) { return prp + r * (sample.lens.x * b.u + sample.lens.y * b.v); };
+  auto lensPoint = [&](const LensSample& sample) {
+    const glm::dvec2 p = camera.aperture.isRound() ? sample.lens : apertureFromDisk(sample.lens, camera.aperture);
+    return prp + r * (p.x * b.u + p.y * b.v);
+  };
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const glm::dvec3 p = lensPoint(samples[i]);
     const glm::vec3 color = static_cast<int>(i) < samplesDone ? colors.sampleDone : colors.samplePending;

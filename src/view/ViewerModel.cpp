@@ -126,6 +126,7 @@ void ViewerModel::editPhysical(const PhysicalCamera& physical) {
     const Camera before = cam_.camera;
     cam_ = fromPhysical(physical, before.source);
     cam_.camera.effects = before.effects;
+    cam_.camera.aperture = before.aperture;
     cam_.camera.calibratedSize = before.calibratedSize;
     dirty_ = true;
   } catch (const InputError& e) {

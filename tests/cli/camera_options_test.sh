@@ -227,5 +227,28 @@ for effect in '"chromatic": {"focus_distance_red": 1e-200}' '"field_curvature": 
     -- render --camera "$work/near-focus.json" --focal-length 50 --width 48 --out "$work/out.png"
 done
 
+# --- the aperture's shape: --blades, --squeeze and the camera file's "aperture" ---
+"$lenslab" render --camera "$src/assets/rows/camera-dof.json" --blades 6 --squeeze 1.5 --aperture-samples 8 --width 48 \
+  --out "$work/shaped.png" --stats "$work/shaped.json" 2>"$work/stderr"
+if [ -s "$work/shaped.png" ] && holds "$work/shaped.json" 'j["lens"]["aperture"]["blades"] == 6 and close(j["lens"]["aperture"]["anamorphic_squeeze"], 1.5)'; then pass
+else fail "render --blades 6 --squeeze 1.5: $(cat "$work/stderr")"; fi
+for bad in "--blades 2|--blades is 2; give 0 (a circle) or 3 to 64 blades" "--blades 65|--blades is 65" \
+           "--squeeze 0|--squeeze is 0; give a ratio from 0.1 to 10" "--squeeze 40|--squeeze is 40"; do
+  option=${bad%%|*}
+  for command in render raycast; do
+    expect_refusal "$command $option" "${bad#*|}" -- $command --camera "$src/assets/rows/camera-dof.json" $option --width 48 --out "$work/out.png"
+  done
+  expect_refusal "sweep $option" "${bad#*|}" -- sweep --camera "$src/assets/rows/camera-dof.json" $option --width 48 --out "$work/out.d"
+done
+$python -c 'import json,sys; c=json.load(open(sys.argv[1])); c["aperture"]={"blades": 1}; json.dump(c,open(sys.argv[2],"w"))' \
+  "$src/assets/rows/camera-dof.json" "$work/blades.json"
+for command in render raycast; do
+  expect_refusal "$command with aperture.blades 1" 'blades.json: "aperture.blades" is 1; give 0 (a circle) or 3 to 64 blades' \
+    -- $command --camera "$work/blades.json" --width 48 --out "$work/out.png"
+done
+if "$lenslab" render --blades 6 --width 48 --out "$work/pinhole-blades.png" 2>"$work/stderr" &&
+   grep -q "warning: --blades 6: the camera has no aperture (a pinhole), so nothing is blurred into the aperture's shape" "$work/stderr"; then pass
+else fail "--blades on a pinhole: $(cat "$work/stderr")"; fi
+
 echo "camera options: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

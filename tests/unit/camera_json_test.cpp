@@ -138,3 +138,33 @@ TEST(CameraJson, DeeplyNestedValueIsRefusedNotACrash) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+TEST(CameraJson, ReadsAndWritesTheAperturesShape) {
+  const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
+      "aperture": {"blades": 7, "rotation_deg": 12.5, "roundness": 0.25, "anamorphic_squeeze": 1.33}})", "cam.json");
+  EXPECT_EQ(f.camera.aperture, (ApertureShape{7, 12.5, 0.25, 1.33}));
+  const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
+  EXPECT_EQ(back.camera.aperture, f.camera.aperture);
+  // Absent: round; in every form (here the lecture's).
+  EXPECT_TRUE(parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0]})", "cam.json").camera.aperture.isRound());
+  const CameraFile lecture = parseCameraJson(
+      R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1], "aperture_radius": 0.1,
+          "aperture": {"blades": 5}})", "cam.json");
+  EXPECT_EQ(lecture.camera.aperture.blades, 5);
+}
+
+TEST(CameraJson, RefusesABadApertureShapeNamingTheField) {
+  const std::string head = R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2, "aperture": )";
+  expectRefused(head + R"({"blades": 2}})", "\"aperture.blades\" is 2; give 0 (a circle) or 3 to 64 blades");
+  expectRefused(head + R"({"blades": 6.5}})", "\"aperture.blades\" must be a whole number");
+  expectRefused(head + R"({"roundness": 1.5}})", "\"aperture.roundness\" is 1.5");
+  expectRefused(head + R"({"anamorphic_squeeze": 0}})", "\"aperture.anamorphic_squeeze\" is 0");
+  expectRefused(head + R"({"rotation": 10}})", "unknown key \"aperture.rotation\"");
+  expectRefused(head + R"(6})", "\"aperture\" must be an object");
+}
+
+}  // namespace
+}  // namespace lenslab

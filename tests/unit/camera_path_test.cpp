@@ -242,3 +242,19 @@ TEST(CameraPath, BadJsonIsOneLineInTheInputsWords) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+TEST(CameraPathJson, APathHoldsOneApertureShape) {
+  const std::string shaped0 = R"({"time": 0, "eye": [0, 1, 5], "target": [0, 0.5, 0], "f_number": 2, "aperture": {"blades": 6}})";
+  const std::string shaped1 = R"({"time": 1, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "aperture": {"blades": 6}})";
+  const CameraPath p = parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + shaped1 + "]}", "path.json");
+  EXPECT_EQ(cameraAt(p, 0.5).aperture.blades, 6);
+  EXPECT_EQ(cameraAt(p, 1.0).aperture.blades, 6);
+  const std::string message = test::refusalOf([&] { parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + kKey1 + "]}", "path.json"); });
+  EXPECT_NE(message.find("keys[1]: \"aperture\" is circle where the first key's is 6 blades"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -96,6 +96,7 @@ class FrameCameras {
       const SelectedCamera still = composeCamera(base_, o.camera, imageAspect_);
       still_ = physicalOf(still);
       stillAperture_ = still.camera.aperture;
+      stillBarrel_ = still.camera.barrel;
     }
   }
 
@@ -119,7 +120,7 @@ class FrameCameras {
       if (o_.camera.changesLens()) key.camera = withCameraOptions(key.camera, o_.camera, where);  // the command line wins
       return key;
     }
-    if (still_) return {time, *still_, {}, stillAperture_};
+    if (still_) return {time, *still_, {}, stillAperture_, stillBarrel_};
     // A glTF camera where its node is at this time, its focus on the scene's centre then.
     const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
     return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}};
@@ -138,6 +139,7 @@ class FrameCameras {
   double imageAspect_ = 0.0;
   std::optional<CameraPath> path_;
   ApertureShape stillAperture_;
+  LensBarrel stillBarrel_;
   double fps_ = 24.0;
   BaseCamera base_;
   std::optional<PhysicalCamera> still_;
@@ -200,6 +202,7 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.camera = toCamera(k.key.camera, k.where);
   k.camera.effects = k.key.effects;
   k.camera.aperture = k.key.aperture;
+  k.camera.barrel = k.key.barrel;
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
 }
@@ -405,7 +408,7 @@ int runCapture(const CaptureOptions& o) {
         !shape.empty() && !o.quiet && warned.insert(shape).second)
       progress.note("lenslab: warning: " + shape);
     const std::string cameraText =
-        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture);
+        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture, key.barrel);
     // The frame's camera as `render --camera` will read it, from the very text written.
     const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
 

@@ -11,6 +11,7 @@ void RunStats::setCamera(const SelectedCamera& selected) {
   focusDistance = selected.camera.focusDistance();
   apertureRadius = selected.camera.apertureRadius;
   aperture = selected.camera.aperture;
+  barrel = selected.camera.barrel;
   physical = selected.physical;
 }
 
@@ -29,6 +30,8 @@ std::string toJson(const RunStats& s) {
                {"aperture", {{"shape", describeAperture(s.aperture)}, {"blades", s.aperture.blades},
                              {"rotation_deg", s.aperture.rotationDeg}, {"roundness", s.aperture.roundness},
                              {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
+  if (s.barrel.present())
+    j["lens"]["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
   if (s.physical) {
     const PhysicalCamera& p = *s.physical;
     j["lens"]["focal_length_mm"] = p.focalLengthMm;

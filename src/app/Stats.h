@@ -32,6 +32,7 @@ struct RunStats {
   double focusDistance = 0.0;             // from the PRP along the view direction; +infinity allowed
   double apertureRadius = 0.0;            // world units; 0 = a pinhole
   ApertureShape aperture;                 // its shape (lens/ApertureShape.h)
+  LensBarrel barrel;                      // the barrel in front of it (lens/LensBarrel.h)
   std::optional<PhysicalCamera> physical; // focal length, f-number, sensor, eye, target when there is one
 
   // The camera's source, focus, aperture and physical description.

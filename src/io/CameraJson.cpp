@@ -41,7 +41,8 @@ const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", 
 // Keys that only the OpenCV form takes: any of them selects it.
 const std::set<std::string> kOpenCvOnlyKeys = {"intrinsics", "K", "R", "t", "dist"};
 // Lens effects and the image size, in any form.
-const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture"};
+const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture", "barrel"};
+const std::set<std::string> kBarrelKeys = {"distance_mm", "diameter_mm"};
 const std::set<std::string> kApertureKeys = {"blades", "rotation_deg", "roundness", "anamorphic_squeeze"};
 const std::set<std::string> kDistortionKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
 const std::set<std::string> kChromaticKeys = {"lateral_red", "lateral_blue", "focus_distance_red",
@@ -473,11 +474,25 @@ void parseCommon(const Reader& r, CameraFile& file) {
     if (o.has("anamorphic_squeeze")) a.anamorphicSqueeze = o.number("anamorphic_squeeze");
     if (const std::optional<ApertureProblem> problem = apertureShapeProblem(a)) o.fail(problem->field, problem->message);
   }
+  if (r.has("barrel")) {
+    const Reader o = r.object("barrel", kBarrelKeys);
+    o.require("distance_mm", "barrel");
+    o.require("diameter_mm", "barrel");
+    const double distance = o.number("distance_mm"), diameter = o.number("diameter_mm");
+    if (const std::optional<BarrelProblem> problem = barrelProblem(distance, diameter)) o.fail(problem->field, problem->message);
+    if (camera.view.projection != Projection::Perspective) r.fail("barrel", "needs a perspective projection");
+    if (e.needsRemap())
+      r.fail("barrel", "with distortion or lateral colour is not drawn yet; give one or the other");
+    camera.barrel = barrelFromMillimetres(distance, diameter);
+  }
   validateLensEffects(camera, r.where(), file.physical ? std::optional(file.physical->focalLengthMm * kMetresPerMillimetre) : std::nullopt);
 }
 
 // distortion, chromatic, field_curvature and aperture of `camera` into `j`, as parseCommon reads them.
 void writeEffects(const Camera& camera, json& j) {
+  if (camera.barrel.present())
+    j["barrel"] = {{"distance_mm", camera.barrel.distance / kMetresPerMillimetre},
+                   {"diameter_mm", 2.0 * camera.barrel.radius / kMetresPerMillimetre}};
   const ApertureShape& a = camera.aperture;
   if (a != ApertureShape{}) {
     json o = json::object();
@@ -591,10 +606,11 @@ std::string toCameraJson(const Camera& camera) {
 }
 
 std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar, const ApertureShape& aperture) {
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture, const LensBarrel& barrel) {
   Camera camera = toCamera(physical, "the frame's camera");
   camera.effects = effects;
   camera.aperture = aperture;
+  camera.barrel = barrel;
   const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
   json j;
   j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};

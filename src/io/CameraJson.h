@@ -57,8 +57,9 @@ std::string toCameraJson(const Camera& camera);
 // (K, distCoeffs as an array when the lens is all OpenCV's, plus focus_distance and aperture_radius):
 // one file both `lenslab render --camera` and vision tools read. `capture` writes one per frame.
 // near / far are written only when asked; left out, the renderer fits them to the scene. A shaped
-// aperture is written as "aperture".
+// aperture is written as "aperture", a barrel as "barrel".
 std::string toIntrinsicsCameraJson(const PhysicalCamera& camera, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar, const ApertureShape& aperture = {});
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture = {},
+                                   const LensBarrel& barrel = {});
 
 }  // namespace lenslab

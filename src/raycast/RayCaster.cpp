@@ -2,6 +2,7 @@
 
 #include "camera/LensMap.h"
 
+#include "camera/Projection.h"
 #include "camera/Ray.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -182,6 +183,13 @@ struct RayCaster::Impl {
                  double inverseFocusShift = 0.0) const {
     Ray ray = lensRay(camera, lensOffset, pixel, size, inverseFocusShift);
     ray.origin -= origin;
+    // The barrel's opening (cat's-eye vignetting): a ray it stops brings no light, background included.
+    if (camera.hasBarrel()) {
+      const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
+      const glm::dvec2 normalised = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
+      if (!throughBarrel(camera.barrel, lensOffset, normalised, camera.inverseFocusDistance() + inverseFocusShift))
+        return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
+    }
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
     // Checked here, not left to Embree's assertions: no input may reach an abort.
     // A direction that normalised to zero (its length overflowed) counts as not finite.

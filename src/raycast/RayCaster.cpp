@@ -274,7 +274,25 @@ struct RayCaster::Impl {
       }
       glm::vec3 normal = glm::normalize(g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal));
       if (material.doubleSided && !front) normal = -normal;
-      return {shade(glm::vec3(base), normal, material.unlit, scene->lighting), true, tHit, ray};
+      glm::vec3 colour = shade(glm::vec3(base), normal, material.unlit, scene->lighting);
+      if (material.emits()) {
+        glm::vec3 emitted = material.emissive;
+        if (material.emissiveTexture >= 0) {
+          const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
+          auto uvAt = [&](glm::dvec2 offset) {
+            Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
+            r.origin -= origin;
+            const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
+            return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
+          };
+          const glm::vec2 uvHere = uvAt({0.0, 0.0});
+          const Texture& texture = scene->textures[static_cast<std::size_t>(material.emissiveTexture)];
+          emitted *= glm::vec3(samplers[static_cast<std::size_t>(material.emissiveTexture)].sample(
+              texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere));
+        }
+        colour += emitted;
+      }
+      return {colour, true, tHit, ray};
     }
     return miss;
   }

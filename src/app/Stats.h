@@ -1,8 +1,10 @@
 #pragma once
 // --stats: what a run did, as JSON, for scripts and reports.
+#include "camera/Exposure.h"
 #include "camera/ImageSize.h"
 #include "camera/PhysicalCamera.h"
 #include "io/AtomicFile.h"
+#include "io/ToneMap.h"
 #include "plan/FramePlan.h"
 #include "plan/TileBudget.h"
 
@@ -33,6 +35,9 @@ struct RunStats {
   double apertureRadius = 0.0;            // world units; 0 = a pinhole
   ApertureShape aperture;                 // its shape (lens/ApertureShape.h)
   std::optional<PhysicalCamera> physical; // focal length, f-number, sensor, eye, target when there is one
+  // How PNG output shows the radiance (app/ExposureOptions.h): "display" in the JSON.
+  Exposure exposure;
+  ViewTransform viewTransform = ViewTransform::None;
 
   // The camera's source, focus, aperture and physical description.
   void setCamera(const SelectedCamera& selected);

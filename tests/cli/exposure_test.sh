@@ -57,6 +57,13 @@ check same_pixels "$work/plain.exr" "$work/exposed.exr"
 "$lenslab" render --camera "$dof" --width 96 -q --out "$work/plus3-neutral.png" --exposure 3 --view-transform pbr-neutral 2>/dev/null
 if ! cmp -s "$work/default.png" "$work/plus3.png" && ! cmp -s "$work/plus3.png" "$work/plus3-neutral.png"; then pass; else fail "exposure or view transform changed nothing"; fi
 
+# A tiled render exposes each tile as the whole image is exposed: the same PNG, within the one
+# code value that tiling alone gives a few pixels (their sums add in another order).
+"$lenslab" render --camera "$dof" --width 96 -q --out "$work/whole.png" --exposure 1 --view-transform pbr-neutral 2>/dev/null
+"$lenslab" render --camera "$dof" --width 96 -q --out "$work/tiled.png" --exposure 1 --view-transform pbr-neutral --tile-size 32 --stats "$work/tiled.json" 2>/dev/null
+check holds "$work/tiled.json" 'any(p["name"] == "tiles" for p in j["plan"]["passes"])'
+check idiff -fail 0.004 -warn 0.004 -q "$work/whole.png" "$work/tiled.png"
+
 # --- --stats records them ---
 "$lenslab" render --camera "$dof" --width 48 -q --out "$work/s.png" --exposure -1.5 --view-transform pbr-neutral --stats "$work/s.json" 2>/dev/null
 check holds "$work/s.json" 'j["display"]["exposure_stops"] == -1.5 and abs(j["display"]["exposure_scale"] - 2**-1.5) < 1e-12 and j["display"]["view_transform"] == "pbr-neutral" and j["display"]["exposure_source"] == "--exposure"'

@@ -108,6 +108,24 @@ TEST_F(HdrOutput, TheRasterizersExrKeepsRadianceAboveOneAndThePngIsExposed) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(codeValue(shown[c]), codeValue(radiance[c] / 4.0f), 1) << "channel " << c;
 }
 
+TEST_F(HdrOutput, TheLensPassKeepsRadianceAboveOne) {
+  LENSLAB_REQUIRE_GL();
+  // Distortion and lateral colour: the remap pass between the accumulation and the image.
+  const glm::vec3 radiance(4.0f, 2.0f, 0.5f);
+  const Scene scene = brightQuad(radiance);
+  Camera camera = lensCamera(4.0, 0.05);
+  camera.effects.distortion.k1 = -0.05;
+  camera.effects.chromatic.lateralRed = 0.002;
+  camera.effects.chromatic.lateralBlue = -0.002;
+  ASSERT_TRUE(camera.effects.needsRemap());
+  const ImageSize size{32, 32};
+  Renderer renderer(scene);
+  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 8, 8, 1}), size);
+  writeImage(dir_ / "l.exr", image);
+  const glm::vec4 centre = readImage(dir_ / "l.exr").at(16, 16);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], radiance[c], 1e-4f) << "channel " << c;
+}
+
 TEST_F(HdrOutput, TheRayCastersImageKeepsRadianceAboveOne) {
   const glm::vec3 radiance(4.0f, 2.0f, 0.5f);
   const Scene scene = brightQuad(radiance);

@@ -7,6 +7,7 @@
 // `render --camera` uses, its seed is a hash of --seed and the frame number, and it is rendered by
 // the same code as `render` (app/FrameRender.h) on a renderer that starts every frame afresh.
 #include "app/CliOptions.h"
+#include "app/ExposureOptions.h"
 #include "app/Commands.h"
 #include "app/FrameRender.h"
 #include "camera/CameraPath.h"
@@ -69,6 +70,7 @@ struct CaptureOptions {
   std::optional<double> fps;  // frames per second without --path
   std::optional<glm::vec3> background;
   std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
+  ExposureOptions exposure;  // PNG frames only; physical settings take each frame's f-number
 };
 
 // Where each frame's camera comes from: the path's keys, or (no --path) the scene's own camera —
@@ -412,6 +414,8 @@ int runCapture(const CaptureOptions& o) {
     // The frame's camera as `render --camera` will read it, from the very text written.
     const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
 
+    // Each frame's own f-number for a physical exposure (a path may change it from key to key).
+    const DisplaySettings display = resolveDisplay(o.exposure, SelectedCamera{camera, key.camera});
     LensOptions lens = o.lens;
     lens.seed = frameSeed(o.lens.seed, frame);
     RunStats stats;
@@ -421,7 +425,7 @@ int runCapture(const CaptureOptions& o) {
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
-    const Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
+    Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
     std::vector<float> depth;
     if (depthAov) {
       if (!caster || animated) caster = std::make_unique<RayCaster>(scene);
@@ -430,6 +434,7 @@ int runCapture(const CaptureOptions& o) {
 
     OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
     outputs.add(cameraFile, cameraText);
+    applyDisplayForFile(imageFile, image, display.encoding);
     writeImage(outputs, imageFile, image, depthAov ? &depth : nullptr);
     const double seconds = secondsSince(frameStart);
     ++rendered;
@@ -448,6 +453,9 @@ int runCapture(const CaptureOptions& o) {
     line["f_number"] = distanceJson(key.camera.fNumber);
     line["focus_distance"] = distanceJson(key.camera.focusDistance);
     if (depthAov) line["aov"] = {"depth"};
+    if (!display.encoding.isIdentity())
+      line["display"] = {{"exposure_stops", display.exposure.stops}, {"exposure", describe(display.exposure)},
+                         {"view_transform", viewTransformName(display.encoding.transform)}};
     line["opencv"] = openCvJson(camera, size);
     line["shard"] = cat(shard.index, "/", shard.count);
     commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
@@ -520,6 +528,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                   "writes the same files (docs/capture.md)")
       ->type_name("DIR");
   addBackgroundOption(*cmd, o->background);
+  addExposureOptions(*cmd, o->exposure);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success");
   return [cmd, o]() { return cmd->parsed() ? runCapture(*o) : -1; };
 }

@@ -40,6 +40,20 @@ std::string toJson(const RunStats& s) {
     j["lens"]["eye"] = {p.eye.x, p.eye.y, p.eye.z};
     j["lens"]["target"] = {p.target.x, p.target.y, p.target.z};
   }
+  {
+    // The exposure and view transform of PNG output (and of the viewer's display); EXR output holds
+    // the radiance before them.
+    const Exposure& e = s.exposure;
+    nlohmann::json d = {{"exposure_stops", e.stops}, {"exposure_scale", e.scale}, {"exposure_source", e.source},
+                        {"exposure", describe(e)}, {"view_transform", viewTransformName(s.viewTransform)}};
+    if (e.ev100) {
+      d["ev100"] = *e.ev100;
+      d["shutter_s"] = *e.shutterSeconds;
+      d["iso"] = *e.iso;
+      d["f_number"] = *e.fNumber;
+    }
+    j["display"] = d;
+  }
   j["width"] = s.size.widthPx;
   j["height"] = s.size.heightPx;
   j["backend"] = s.backend;

@@ -2,6 +2,7 @@
 
 #include "io/JsonDocument.h"
 
+#include "camera/Exposure.h"
 #include "camera/Intrinsics.h"
 #include "camera/LensMap.h"
 #include "camera/Rotation.h"
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <fstream>
 #include <limits>
+#include <tuple>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -33,7 +35,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
                                             "aperture_radius", "focus_distance"};
 const std::set<std::string> kPhysicalKeys = {"eye", "target", "up", "focal_length_mm", "sensor_mm",
-                                             "f_number", "focus_distance", "near", "far"};
+                                             "f_number", "focus_distance", "near", "far",
+                                             "shutter_s", "iso"};
 // The OpenCV form: intrinsics as "intrinsics" or "K" (+ "width", "height"), the pose as eye/target/up
 // or R/t, OpenCV's distCoeffs as "dist" (or "distortion").
 const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", "intrinsics", "K", "width", "height",
@@ -219,6 +222,15 @@ CameraFile parsePhysical(const Reader& r) {
   c.focusDistance = r.has("focus_distance") ? r.distance("focus_distance") : glm::length(c.target - c.eye);
   if (r.has("near")) c.nearDistance = r.distance("near");
   if (r.has("far")) c.farDistance = r.distance("far");
+  // The exposure's settings (camera/Exposure.h); what they need of the rest is checked where the
+  // exposure is resolved, after the command line's options.
+  for (const auto& [key, range, field] : {std::tuple{"shutter_s", kShutterSecondsRange, &c.shutterSeconds},
+                                          std::tuple{"iso", kIsoRange, &c.iso}})
+    if (r.has(key)) {
+      const double value = r.number(key);
+      if (const auto problem = numberProblem(value, range)) r.failNumber(key, *problem);
+      *field = value;
+    }
   validate(c, r.where());
   CameraFile file;
   file.form = CameraFile::Form::Physical;

@@ -20,7 +20,9 @@
 //    "focal_length_mm": 35, "sensor_mm": [36, 24],  defaults
 //    "f_number": 2.8,                               default: none (a pinhole)
 //    "focus_distance": d | "infinity",              default |target − eye|
-//    "near": 0.05, "far": d | "infinity"}           defaults
+//    "near": 0.05, "far": d | "infinity",           defaults
+//    "shutter_s": 0.01, "iso": 100}                 default: none (no physical exposure; iso
+//                                                   alone is refused); camera/Exposure.h
 // OpenCV form — a calibrated pinhole (chosen by any of intrinsics, K, R, t, dist):
 //   intrinsics: {"intrinsics": {"fx", "fy", "cx", "cy", "width", "height"}}, or
 //               {"K": [[fx, 0, cx], [0, fy, cy], [0, 0, 1]], "width": W, "height": H} (or

@@ -125,7 +125,7 @@ class FrameCameras {
     if (still_) return {time, *still_, {}, stillAperture_, stillBarrel_};
     // A glTF camera where its node is at this time, its focus on the scene's centre then.
     const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
-    return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}};
+    return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}, {}, {}};
   }
 
  private:

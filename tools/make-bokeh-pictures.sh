@@ -15,7 +15,7 @@ render() {  # NAME CAMERA [OPTIONS...]
   local name=$1 camera=$2
   shift 2
   "$lenslab" render assets/bokeh/bokeh.gltf --camera "assets/bokeh/$camera" --width 720 --aperture-samples 256 \
-    --out "$work/$name.png" -q "$@"
+    --view-transform pbr-neutral --out "$work/$name.png" -q "$@"
 }
 render round camera.json
 render blades camera-blades.json

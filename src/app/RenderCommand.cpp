@@ -114,7 +114,7 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
                          "--width, or --aperture-samples"));
   if (tiles.tiled && aovs.any())
     throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why, "; the AOVs are written with an image rendered in one "
-                         "piece: give a smaller --width, or use raycast"));
+                         "piece: give a smaller --width (and no --tile-size), or use raycast"));
   if (tiles.tiled) {
 #ifdef __GLIBC__
     // The tiles' buffers (tables, targets, read-backs) are 5 to 30 MB each and differ a little in

@@ -72,6 +72,7 @@ expect_refusal "render aov in a PNG" "--aov normal: " -- render --aov normal --o
 expect_refusal "raycast aov in a PNG" "--aov depth,albedo: " -- raycast --aov depth,albedo --out "$work/out.png"
 expect_refusal "render unknown aov" "--aov" -- render --aov normals --out "$work/out.exr"
 expect_refusal "raycast unknown aov" "--aov" -- raycast --aov depth,Z --out "$work/out.exr"
+expect_refusal "render aov of a tiled image" "--aov instance: " -- render --aov instance --width 66 --tile-size 16 --out "$work/out.exr"
 expect_refusal "background with two values" "--background" -- render --background 1,2 --out "$work/out.png"
 expect_refusal "negative background" "--background" -- raycast --background -1,0,0 --out "$work/out.png"
 

@@ -1,7 +1,7 @@
 // lenslab capture: a sequence of frames along a camera path, headless, with ground truth beside
-// each image (its camera as a file `render --camera` reads, OpenCV intrinsics, optional AOVs: depth, normal,
-// albedo, instance) and
-// frame ranges that split over independent processes (Slurm job arrays, Kubernetes indexed Jobs).
+// each image (its camera as a file `render --camera` reads, OpenCV intrinsics, optional AOVs:
+// depth, normal, albedo, instance) and frame ranges that split over independent processes (Slurm
+// job arrays, Kubernetes indexed Jobs).
 //
 // A frame's pixels depend only on the scene, the path, the frame number, the options and the
 // seed: each frame's camera is written as text and read back through the camera-file parser that

@@ -68,8 +68,6 @@ struct RenderOptions {
 constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
 
-// The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
-// `out`'s temporary file in `outputs`.
 // The selected AOVs of `camera` (the camera the image was rendered with) from the ray caster, as
 // EXR channels; none when none is selected.
 std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, ImageSize size, const AovSelection& aovs) {
@@ -77,7 +75,9 @@ std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, 
   return aovChannels(caster.aovImages(camera, size, aovs));
 }
 
-// `aovChannelValues` gets the selected AOVs (`aovs`) of the camera rendered with.
+// The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
+// `out`'s temporary file in `outputs`. `aovChannelValues` gets the selected AOVs (`aovs`) of the
+// camera rendered with (refused for a tiled image).
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
                                const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
                                ProgressReporter& progress, const AovSelection& aovs,

@@ -33,6 +33,9 @@ std::string aovList(const AovSelection& selection);
 
 // The instance AOV where no surface is seen (glTF node indices are ≥ 0).
 constexpr float kNoSurfaceInstance = -1.0f;
+// The largest node index the instance AOV holds (a float holds every integer up to 2^24); a scene
+// with a larger one is refused when the instance AOV is asked for.
+constexpr int kMaxExactInstance = 1 << 24;
 
 // The AOV images of one frame, rows from the top; only the selected ones are filled.
 struct AovImages {

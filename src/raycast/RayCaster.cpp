@@ -338,7 +338,14 @@ AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSe
   if (selection.depth) out.depth.resize(pixels);
   if (selection.normal) out.normal.resize(3 * pixels);
   if (selection.albedo) out.albedo.resize(3 * pixels);
-  if (selection.instance) out.instance.resize(pixels);
+  if (selection.instance) {
+    out.instance.resize(pixels);
+    // Float holds every integer to 2^24 exactly, and skips odd ones beyond.
+    for (const Instance& instance : impl_->scene->instances)
+      if (instance.gltfNode > kMaxExactInstance)
+        throw InputError(cat(impl_->scene->source, ": node ", instance.gltfNode, " has an index beyond 2^24 = ",
+                             kMaxExactInstance, ", the largest the float instance AOV holds exactly"));
+  }
   impl_->rebase(impl_->originFor(camera, size));
   const Impl& m = *impl_;
   const ViewBasis basis = viewBasis(camera.view);

@@ -6,6 +6,7 @@
 #include "../common/animated_gltf.h"
 #include "../common/temp_dir_test.h"
 #include "camera/PhysicalCamera.h"
+#include "core/Error.h"
 #include "raycast/RayCaster.h"
 #include "scene/GltfLoader.h"
 #include "scene/ProceduralScenes.h"
@@ -181,6 +182,22 @@ TEST_F(InstanceAov, EachNodesPixelsHoldItsIndexExactlyAndTheAlbedoIsTheBaseColou
   EXPECT_GT(counts[0], 100);
   EXPECT_GT(counts[1], 100);
   EXPECT_GT(counts[2], 100);
+}
+
+TEST(InstanceAovRange, NodeIndicesUpTo2To24AreHeldExactlyAndALargerOneIsRefused) {
+  Scene scene = planeScene({0.0, 0.0, -5.0}, {0.0, 0.0, 1.0});
+  const PhysicalCamera c = lookingAt({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0});
+  const Camera camera = toCamera(c, "test");
+  const ImageSize size = resolveImageSize(camera, 16, std::nullopt);
+  AovSelection instance;
+  instance.instance = true;
+  scene.instances[0].gltfNode = kMaxExactInstance;
+  for (const float value : RayCaster(scene).aovImages(camera, size, instance).instance) ASSERT_EQ(value, 16777216.0f);
+  scene.instances[0].gltfNode = kMaxExactInstance + 1;  // would round to 2^24 in a float
+  EXPECT_THROW(RayCaster(scene).aovImages(camera, size, instance), InputError);
+  AovSelection depth;
+  depth.depth = true;
+  EXPECT_NO_THROW(RayCaster(scene).aovImages(camera, size, depth));  // only the instance AOV cares
 }
 
 }  // namespace

@@ -127,16 +127,24 @@ class Gltf:
         self.images.append((name + ".png", width, height, pixels))
         return len(doc["textures"]) - 1
 
-    def material(self, name, color=(1, 1, 1, 1), texture=None, unlit=False):
+    def material(self, name, color=(1, 1, 1, 1), texture=None, unlit=False, emissive=None, strength=1.0):
         pbr = {"baseColorFactor": list(color), "metallicFactor": 0.0, "roughnessFactor": 1.0}
         if texture is not None:
             pbr["baseColorTexture"] = {"index": texture}
         mat = {"name": name, "pbrMetallicRoughness": pbr}
+        extensions = {}
         if unlit:
-            mat["extensions"] = {"KHR_materials_unlit": {}}
+            extensions["KHR_materials_unlit"] = {}
+        if emissive is not None:
+            mat["emissiveFactor"] = list(emissive)
+            if strength != 1.0:
+                extensions["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
+        if extensions:
+            mat["extensions"] = extensions
             used = self.doc.setdefault("extensionsUsed", [])
-            if "KHR_materials_unlit" not in used:
-                used.append("KHR_materials_unlit")
+            for name_used in sorted(extensions):
+                if name_used not in used:
+                    used.append(name_used)
         self.doc["materials"].append(mat)
         return len(self.doc["materials"]) - 1
 
@@ -442,11 +450,42 @@ def make_depth_range():
     g.write(camera)
 
 
+def make_bokeh():
+    """An in-focus subject at 2 m and small bright lamps (emissive, radiance 8 to 40) from 5 to 30 m
+    behind it: out of focus, each lamp takes the aperture's shape."""
+    g = Gltf("bokeh")
+    floor_tex = g.texture("floor-checker", 256, 256, image(256, 256, checker(32, (120, 120, 120), (25, 25, 25))))
+    g.node("floor", g.mesh("floor", floor(80.0, 40.0), g.material("floor", texture=floor_tex)), translation=(0.0, 0.0, -30.0))
+    subject_tex = g.texture("subject-stripes", 128, 128, image(128, 128, stripes))
+    g.node("subject-2m", g.mesh("subject", box(0.12, 0.12, 0.12), g.material("subject", texture=subject_tex)),
+           translation=(-0.3, 0.12, -2.0))
+    warm = g.material("lamp-warm", color=(0, 0, 0, 1), unlit=True, emissive=(1.0, 0.62, 0.3), strength=6.0)
+    cool = g.material("lamp-cool", color=(0, 0, 0, 1), unlit=True, emissive=(0.45, 0.65, 1.0), strength=6.0)
+    warm_lamps, cool_lamps = [], []
+    # A deterministic scatter (no random module: the same bytes every run); each lamp 4 mm across
+    # per metre of distance, so that all look alike in focus.
+    for k in range(36):
+        depth = 5.0 + 25.0 * ((k * 0.61803398875) % 1.0)
+        x = 0.18 * depth * (((k * 0.7548776662) % 1.0) * 2.0 - 1.0)
+        y = 0.2 + 0.12 * depth * ((k * 0.5698402910) % 1.0)
+        (warm_lamps if k % 3 else cool_lamps).append((disc(0.004 * depth, sides=12), (x, y, -depth)))
+    g.node("lamps-warm", g.mesh("lamps-warm", merge(warm_lamps), warm))
+    g.node("lamps-cool", g.mesh("lamps-cool", merge(cool_lamps), cool))
+    camera = {"eye": [0.0, 0.45, 0.0], "target": [0.0, 0.25, -2.0], "up": [0, 1, 0], "focal_length_mm": 50,
+              "sensor_mm": [36, 24], "f_number": 1.4, "focus_distance": 2.0, "near": 0.05, "far": "infinity"}
+    g.camera_from(camera)
+    g.write(camera)
+    write_camera("bokeh", "camera-blades.json", dict(camera, aperture={"blades": 6, "rotation_deg": 15.0}))
+    write_camera("bokeh", "camera-anamorphic.json", dict(camera, aperture={"anamorphic_squeeze": 2.0}))
+    write_camera("bokeh", "camera-cats-eye.json", dict(camera, barrel={"distance_mm": 60.0, "diameter_mm": 40.0}))
+
+
 def main():
     make_rows()
     make_occluder()
     make_grid()
     make_depth_range()
+    make_bokeh()
     with open(os.path.join(ROOT, "README.md"), "w") as f:
         f.write(__doc__.split("\n\n", 1)[0] + "\n\n" + README)
 
@@ -462,6 +501,7 @@ except `report/` (outputs of `lenslab sweep` and renders shown in the top-level 
 | `occluder` | partial obscuration: eleven 1.5 cm bars, 12 cm apart, 1 m away, before a 4 × 3 m checker wall at 4 m | physical, 50 mm, focus 4 m |
 | `grid` | distortion: 21 × 15 dots (octagons of radius 4 cm, 0.25 m apart) in the plane z = 0.001, on a dark 8 × 6 m plane | lecture form, view plane on the dots, PRP 3 m in front |
 | `depth-range` | depth precision: cubes at 0.01, 0.1, 1, 10, 100, 1e3, 1e4 and 1e5 m, each 6 % of its distance wide; a red 120 m quad at 1 km in front of a green 240 m quad 1 cm farther | physical, near 0.001, far infinity |
+| `bokeh` | out-of-focus highlights: a striped box at 2 m (left of centre) over a checker floor, 36 small lamps (emissive, strength 6) from 5 to 30 m behind it | physical, 50 mm f/1.4, focus 2 m; `camera-blades.json` (6 blades), `camera-anamorphic.json` (2x squeeze), `camera-cats-eye.json` (a lens barrel) |
 
 `rows/camera-dof.json` (f/1.4, focused on the nearest box at 2 m) and `occluder/camera-dof.json` (f/2) are the same cameras with an
 aperture: the depth-of-field showcase and the partial-obscuration case. Lens effects:

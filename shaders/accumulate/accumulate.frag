@@ -13,8 +13,18 @@ layout(location = 1) uniform vec4 weights[8];
 // the curved surface is what the flat-focused view shows at x − shift·r(x)², r the normalised
 // radius of x. Sampled with Catmull–Rom.
 layout(location = 9) uniform vec2 shiftPerRadius2[8];
+#endif
+#if defined(FIELD_CURVATURE) || defined(BARREL)
+// Normalised image coordinates (the pinhole ray's x/z, y/z) of GL pixel corner (0, 0), and their step.
 layout(location = 17) uniform vec2 normalisedAtOrigin;
 layout(location = 18) uniform vec2 normalisedPerPixel;
+#endif
+#ifdef BARREL
+// Cat's-eye vignetting (src/lens/LensBarrel.h): the ray from view i's aperture point toward
+// direction n crosses the barrel's opening at barrelLens[i] + barrelReach·n, in units of the
+// opening's radius; outside it the barrel stops the ray and the view adds nothing there.
+layout(location = 30) uniform vec2 barrelLens[8];
+layout(location = 38) uniform float barrelReach;
 #endif
 layout(location = 0) out vec4 sum;
 
@@ -36,15 +46,26 @@ vec4 catmullRom(vec2 p, int layer) {
 }
 #endif
 
+// View i's weight at this pixel: its channel weights, or nothing where the barrel hides its
+// aperture point.
+vec4 weightAt(int i) {
+#ifdef BARREL
+  vec2 n = normalisedAtOrigin + gl_FragCoord.xy * normalisedPerPixel;
+  vec2 atOpening = barrelLens[i] + barrelReach * n;
+  if (dot(atOpening, atOpening) > 1.0) return vec4(0.0);
+#endif
+  return weights[i];
+}
+
 void main() {
   vec4 total = vec4(0.0);
 #ifdef FIELD_CURVATURE
   vec2 n = normalisedAtOrigin + gl_FragCoord.xy * normalisedPerPixel;
   float r2 = dot(n, n);
-  for (int i = 0; i < viewCount; ++i) total += weights[i] * catmullRom(gl_FragCoord.xy - shiftPerRadius2[i] * r2, i);
+  for (int i = 0; i < viewCount; ++i) total += weightAt(i) * catmullRom(gl_FragCoord.xy - shiftPerRadius2[i] * r2, i);
   total = max(total, vec4(0.0));
 #else
-  for (int i = 0; i < viewCount; ++i) total += weights[i] * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
+  for (int i = 0; i < viewCount; ++i) total += weightAt(i) * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
 #endif
   sum = total;
 }

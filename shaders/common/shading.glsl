@@ -1,6 +1,6 @@
 // lenslab's shading model, which the CPU ray caster reproduces exactly (src/scene/Scene.h):
-//   unlit: colour = base
-//   lit:   colour = base * (ambient + diffuse * max(0, dot(n, toLight)))
+//   unlit: colour = base + emission
+//   lit:   colour = base * (ambient + diffuse * max(0, dot(n, toLight))) + emission
 // All in linear light; sRGB textures are decoded by the sampler (GL_SRGB8_ALPHA8).
 
 struct Lighting {

@@ -25,6 +25,9 @@ layout(location = 10) uniform float diffuse;
 // filter over its own 1/√N of the pixel (λ − ½·log2 N), not over the whole pixel: the mean of the
 // views then converges to the pixel integral of the unfiltered texture, not to a pixel-blurred one.
 layout(location = 11) uniform float lodBias;
+// Emitted radiance (factor × strength, linear), times the emissive texture where there is one.
+layout(location = 15) uniform vec3 emissive;
+layout(location = 16) uniform bool hasEmissiveTexture;
 
 #ifdef ADD_TO_SUM
 // The sum holds weight · (colour − background) per view; the accumulator adds weight · background
@@ -34,6 +37,7 @@ layout(location = 14) uniform vec4 addWeight;
 #endif
 
 layout(binding = 0) uniform sampler2D baseColorTexture;
+layout(binding = 1) uniform sampler2D emissiveTexture;
 
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
@@ -59,6 +63,7 @@ void main() {
   // A double-sided surface seen from behind is lit as its back: the normal faces the viewer.
   if (doubleSided && !gl_FrontFacing) n = -n;
   vec3 colour = shade(base.rgb, n, unlit, Lighting(toLight, ambient, diffuse));
+  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, uv, lodBias).rgb : emissive;
 #ifdef ADD_TO_SUM
   outColor = addWeight * vec4(colour - background, 1.0);
 #else

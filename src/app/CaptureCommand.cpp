@@ -9,6 +9,7 @@
 // the same code as `render` (app/FrameRender.h) on a renderer that starts every frame afresh.
 #include "app/AovOption.h"
 #include "app/CliOptions.h"
+#include "app/ExposureOptions.h"
 #include "app/Commands.h"
 #include "app/FrameRender.h"
 #include "camera/CameraPath.h"
@@ -72,6 +73,7 @@ struct CaptureOptions {
   std::optional<double> fps;  // frames per second without --path
   std::optional<glm::vec3> background;
   std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
+  ExposureOptions exposure;  // PNG frames only; physical settings take each frame's f-number
 };
 
 // Where each frame's camera comes from: the path's keys, or (no --path) the scene's own camera —
@@ -99,6 +101,7 @@ class FrameCameras {
       const SelectedCamera still = composeCamera(base_, o.camera, imageAspect_);
       still_ = physicalOf(still);
       stillAperture_ = still.camera.aperture;
+      stillBarrel_ = still.camera.barrel;
     }
   }
 
@@ -122,7 +125,7 @@ class FrameCameras {
       if (o_.camera.changesLens()) key.camera = withCameraOptions(key.camera, o_.camera, where);  // the command line wins
       return key;
     }
-    if (still_) return {time, *still_, {}, stillAperture_};
+    if (still_) return {time, *still_, {}, stillAperture_, stillBarrel_};
     // A glTF camera where its node is at this time, its focus on the scene's centre then.
     const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
     return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}};
@@ -141,6 +144,7 @@ class FrameCameras {
   double imageAspect_ = 0.0;
   std::optional<CameraPath> path_;
   ApertureShape stillAperture_;
+  LensBarrel stillBarrel_;
   double fps_ = 24.0;
   BaseCamera base_;
   std::optional<PhysicalCamera> still_;
@@ -203,6 +207,7 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.camera = toCamera(k.key.camera, k.where);
   k.camera.effects = k.key.effects;
   k.camera.aperture = k.key.aperture;
+  k.camera.barrel = k.key.barrel;
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
 }
@@ -407,10 +412,12 @@ int runCapture(const CaptureOptions& o) {
         !shape.empty() && !o.quiet && warned.insert(shape).second)
       progress.note("lenslab: warning: " + shape);
     const std::string cameraText =
-        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture);
+        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture, key.barrel);
     // The frame's camera as `render --camera` will read it, from the very text written.
     const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
 
+    // Each frame's own f-number for a physical exposure (a path may change it from key to key).
+    const DisplaySettings display = resolveDisplay(o.exposure, SelectedCamera{camera, key.camera});
     LensOptions lens = o.lens;
     lens.seed = frameSeed(o.lens.seed, frame);
     RunStats stats;
@@ -420,7 +427,7 @@ int runCapture(const CaptureOptions& o) {
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
-    const Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
+    Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
     std::vector<ImageChannel> aovChannelValues;
     if (aovs.any()) {
       if (!caster || animated) caster = std::make_unique<RayCaster>(scene);
@@ -429,6 +436,7 @@ int runCapture(const CaptureOptions& o) {
 
     OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
     outputs.add(cameraFile, cameraText);
+    applyDisplayForFile(imageFile, image, display.encoding);
     writeImage(outputs, imageFile, image, aovChannelValues);
     const double seconds = secondsSince(frameStart);
     ++rendered;
@@ -453,6 +461,9 @@ int runCapture(const CaptureOptions& o) {
       for (const std::string& c : aovChannelNames(aovs)) channels.push_back(c);
       line["channels"] = channels;
     }
+    if (!display.encoding.isIdentity())
+      line["display"] = {{"exposure_stops", display.exposure.stops}, {"exposure", describe(display.exposure)},
+                         {"view_transform", viewTransformName(display.encoding.transform)}};
     line["opencv"] = openCvJson(camera, size);
     line["shard"] = cat(shard.index, "/", shard.count);
     commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
@@ -522,6 +533,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                   "writes the same files (docs/capture.md)")
       ->type_name("DIR");
   addBackgroundOption(*cmd, o->background);
+  addExposureOptions(*cmd, o->exposure);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success");
   return [cmd, o]() { return cmd->parsed() ? runCapture(*o) : -1; };
 }

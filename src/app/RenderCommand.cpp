@@ -2,6 +2,7 @@
 // lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
 #include "app/AovOption.h"
 #include "app/CliOptions.h"
+#include "app/ExposureOptions.h"
 #include "app/FrameRender.h"
 #include "app/Commands.h"
 #include "app/Stats.h"
@@ -62,6 +63,7 @@ struct RenderOptions {
   int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
   std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
+  ExposureOptions exposure;           // PNG output only
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -80,7 +82,7 @@ std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, 
 // camera rendered with (refused for a tiled image).
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
                                const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
-                               ProgressReporter& progress, const AovSelection& aovs,
+                               ProgressReporter& progress, const DisplayEncoding& display, const AovSelection& aovs,
                                std::vector<ImageChannel>& aovChannelValues) {
   Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
@@ -140,7 +142,13 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
                   // has it written now (seconds for a large PNG).
                   progress.setDetail(writing);
                   const auto w = std::chrono::steady_clock::now();
-                  writer.add(rect.x0, rect.y0, pixels);
+                  if (display.isIdentity()) {
+                    writer.add(rect.x0, rect.y0, pixels);
+                  } else {
+                    Image shown = pixels;
+                    applyDisplayForFile(out, shown, display);
+                    writer.add(rect.x0, rect.y0, shown);
+                  }
                   writeSeconds += secondsSince(w);
                 },
                 tileProgress);
@@ -222,7 +230,12 @@ int runRender(const RenderOptions& o) {
   if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
     std::cerr << "lenslab: warning: " << shape << "\n";
 
+  // Resolved before any work: a bad exposure refuses at once.
+  const DisplaySettings display = resolveDisplay(o.exposure, selected);
+
   RunStats stats;
+  stats.exposure = display.exposure;
+  stats.viewTransform = display.encoding.transform;
   stats.command = o.method == Method::Raster ? "render" : "raycast";
   stats.scene = scenePath.string();
   stats.size = size;
@@ -237,7 +250,8 @@ int runRender(const RenderOptions& o) {
   // One reporter for the whole run: its last line comes after the file is written.
   ProgressReporter progress(stats.command, o.method == Method::Raster ? "samples" : "rows", o.quiet);
   if (o.method == Method::Raster) {
-    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, aovs, aovChannelValues);
+    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display.encoding, aovs,
+                      aovChannelValues);
   } else {
     image = raycast(o, scene, selected, size, stats, progress, aovs, aovChannelValues);
   }
@@ -245,6 +259,7 @@ int runRender(const RenderOptions& o) {
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
     progress.setDetail(cat("writing ", out.string()));
+    applyDisplayForFile(out, *image, display.encoding);
     writeImage(outputs, out, *image, aovChannelValues);
     stats.writeSeconds = secondsSince(t);
   }
@@ -312,6 +327,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);
   addAovOption(*cmd, options->aovs);
+  addExposureOptions(*cmd, options->exposure);
   addTimeOption(*cmd, options->timeSeconds,
                 "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
                 "default: the rest pose");

@@ -11,6 +11,7 @@ void RunStats::setCamera(const SelectedCamera& selected) {
   focusDistance = selected.camera.focusDistance();
   apertureRadius = selected.camera.apertureRadius;
   aperture = selected.camera.aperture;
+  barrel = selected.camera.barrel;
   physical = selected.physical;
 }
 
@@ -29,6 +30,8 @@ std::string toJson(const RunStats& s) {
                {"aperture", {{"shape", describeAperture(s.aperture)}, {"blades", s.aperture.blades},
                              {"rotation_deg", s.aperture.rotationDeg}, {"roundness", s.aperture.roundness},
                              {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
+  if (s.barrel.present())
+    j["lens"]["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
   if (s.physical) {
     const PhysicalCamera& p = *s.physical;
     j["lens"]["focal_length_mm"] = p.focalLengthMm;
@@ -36,6 +39,20 @@ std::string toJson(const RunStats& s) {
     j["lens"]["sensor_mm"] = {p.sensorMm.x, p.sensorMm.y};
     j["lens"]["eye"] = {p.eye.x, p.eye.y, p.eye.z};
     j["lens"]["target"] = {p.target.x, p.target.y, p.target.z};
+  }
+  {
+    // The exposure and view transform of PNG output (and of the viewer's display); EXR output holds
+    // the radiance before them.
+    const Exposure& e = s.exposure;
+    nlohmann::json d = {{"exposure_stops", e.stops}, {"exposure_scale", e.scale}, {"exposure_source", e.source},
+                        {"exposure", describe(e)}, {"view_transform", viewTransformName(s.viewTransform)}};
+    if (e.ev100) {
+      d["ev100"] = *e.ev100;
+      d["shutter_s"] = *e.shutterSeconds;
+      d["iso"] = *e.iso;
+      d["f_number"] = *e.fNumber;
+    }
+    j["display"] = d;
   }
   j["width"] = s.size.widthPx;
   j["height"] = s.size.heightPx;

@@ -1,8 +1,10 @@
 #pragma once
 // --stats: what a run did, as JSON, for scripts and reports.
+#include "camera/Exposure.h"
 #include "camera/ImageSize.h"
 #include "camera/PhysicalCamera.h"
 #include "io/AtomicFile.h"
+#include "io/ToneMap.h"
 #include "plan/FramePlan.h"
 #include "plan/TileBudget.h"
 
@@ -32,7 +34,11 @@ struct RunStats {
   double focusDistance = 0.0;             // from the PRP along the view direction; +infinity allowed
   double apertureRadius = 0.0;            // world units; 0 = a pinhole
   ApertureShape aperture;                 // its shape (lens/ApertureShape.h)
+  LensBarrel barrel;                      // the barrel in front of it (lens/LensBarrel.h)
   std::optional<PhysicalCamera> physical; // focal length, f-number, sensor, eye, target when there is one
+  // How PNG output shows the radiance (app/ExposureOptions.h): "display" in the JSON.
+  Exposure exposure;
+  ViewTransform viewTransform = ViewTransform::None;
 
   // The camera's source, focus, aperture and physical description.
   void setCamera(const SelectedCamera& selected);

@@ -9,6 +9,7 @@
 #include "camera/ImageSize.h"
 #include "camera/ViewSpec.h"
 #include "lens/ApertureShape.h"
+#include "lens/LensBarrel.h"
 #include "lens/LensEffects.h"
 
 #include <glm/glm.hpp>
@@ -23,6 +24,7 @@ struct Camera {
   ViewSpec view;
   double apertureRadius = 0.0;  // world units; 0 = pinhole
   ApertureShape aperture;       // round unless the camera has blades or a squeeze (lens/ApertureShape.h)
+  LensBarrel barrel;            // the barrel's opening in front of the aperture: cat's-eye vignetting (lens/LensBarrel.h)
   // The plane of focus is the view plane, except where no well-conditioned view plane can hold
   // it: at infinity focus, and at a finite focus far beyond the view plane (a view plane at 1e300
   // has a window of 1e300 and no precision left). There the focus is carried as an inverse
@@ -40,6 +42,8 @@ struct Camera {
   std::optional<ImageSize> calibratedSize;
 
   bool isPinhole() const { return !(apertureRadius > 0.0); }
+  // Whether the barrel clips the aperture anywhere: a pinhole has no aperture to clip.
+  bool hasBarrel() const { return barrel.present() && !isPinhole(); }
   // The lens offset (u, v; world units) of an aperture sample's point on the unit disk: the
   // aperture's shape applied, scaled by the radius. Both renderers place the PRP through this.
   glm::dvec2 lensOffset(glm::dvec2 unitDisk) const {

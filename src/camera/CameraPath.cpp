@@ -176,7 +176,7 @@ double monotoneCubic(const std::vector<double>& x, const std::vector<double>& y,
 PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   const std::vector<PathKey>& keys = path.keys;
   const auto held = [&](const PathKey& key) {
-    PathKey out{timeSeconds, key.camera, key.effects, key.aperture};
+    PathKey out{timeSeconds, key.camera, key.effects, key.aperture, key.barrel};
     out.camera.up = orthonormalUp(key.camera, key.camera.up);
     return out;
   };
@@ -191,6 +191,7 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   out.timeSeconds = timeSeconds;
   out.effects = lerpEffects(keys[k].effects, keys[k + 1].effects, u);
   out.aperture = keys[k].aperture;
+  out.barrel = keys[k].barrel;
   PhysicalCamera& c = out.camera;
   std::vector<double> times, inverseFocus, stops;
   std::vector<glm::dvec3> eyes, targets;

@@ -29,6 +29,7 @@ struct PathKey {
   PhysicalCamera camera;
   LensEffects effects;
   ApertureShape aperture;  // one for the whole path: the keys must agree (io/CameraPathJson)
+  LensBarrel barrel;       // likewise
 };
 
 enum class PathInterpolation { Smooth, Linear };

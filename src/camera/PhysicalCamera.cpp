@@ -91,6 +91,7 @@ SelectedCamera toSelectedCamera(const PhysicalCamera& camera, const Camera& like
   SelectedCamera out{toCamera(camera, std::move(source)), camera};
   out.camera.effects = like.effects;
   out.camera.aperture = like.aperture;
+  out.camera.barrel = like.barrel;
   out.camera.calibratedSize = like.calibratedSize;
   out.camera.nearFromScene = like.nearFromScene;
   out.camera.farFromScene = like.farFromScene;

@@ -32,6 +32,10 @@ struct PhysicalCamera {
                                          // +infinity allowed
   double nearDistance = 0.05;            // world
   double farDistance = std::numeric_limits<double>::infinity();
+  // The exposure as a photographer sets it beside the f-number (camera/Exposure.h); none: the
+  // image is not exposed physically.
+  std::optional<double> shutterSeconds;  // t, seconds
+  std::optional<double> iso;             // S, ISO arithmetic speed
 };
 
 constexpr double kMetresPerMillimetre = 1e-3;

@@ -2,6 +2,7 @@
 
 #include "io/JsonDocument.h"
 
+#include "camera/Exposure.h"
 #include "camera/Intrinsics.h"
 #include "camera/LensMap.h"
 #include "camera/Rotation.h"
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <fstream>
 #include <limits>
+#include <tuple>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -33,7 +35,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 const std::set<std::string> kLectureKeys = {"projection", "vrp", "vpn", "vup", "prp", "window", "near", "far",
                                             "aperture_radius", "focus_distance"};
 const std::set<std::string> kPhysicalKeys = {"eye", "target", "up", "focal_length_mm", "sensor_mm",
-                                             "f_number", "focus_distance", "near", "far"};
+                                             "f_number", "focus_distance", "near", "far",
+                                             "shutter_s", "iso"};
 // The OpenCV form: intrinsics as "intrinsics" or "K" (+ "width", "height"), the pose as eye/target/up
 // or R/t, OpenCV's distCoeffs as "dist" (or "distortion").
 const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", "intrinsics", "K", "width", "height",
@@ -41,7 +44,8 @@ const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", 
 // Keys that only the OpenCV form takes: any of them selects it.
 const std::set<std::string> kOpenCvOnlyKeys = {"intrinsics", "K", "R", "t", "dist"};
 // Lens effects and the image size, in any form.
-const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture"};
+const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture", "barrel"};
+const std::set<std::string> kBarrelKeys = {"distance_mm", "diameter_mm"};
 const std::set<std::string> kApertureKeys = {"blades", "rotation_deg", "roundness", "anamorphic_squeeze"};
 const std::set<std::string> kDistortionKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
 const std::set<std::string> kChromaticKeys = {"lateral_red", "lateral_blue", "focus_distance_red",
@@ -218,6 +222,15 @@ CameraFile parsePhysical(const Reader& r) {
   c.focusDistance = r.has("focus_distance") ? r.distance("focus_distance") : glm::length(c.target - c.eye);
   if (r.has("near")) c.nearDistance = r.distance("near");
   if (r.has("far")) c.farDistance = r.distance("far");
+  // The exposure's settings (camera/Exposure.h); what they need of the rest is checked where the
+  // exposure is resolved, after the command line's options.
+  for (const auto& [key, range, field] : {std::tuple{"shutter_s", kShutterSecondsRange, &c.shutterSeconds},
+                                          std::tuple{"iso", kIsoRange, &c.iso}})
+    if (r.has(key)) {
+      const double value = r.number(key);
+      if (const auto problem = numberProblem(value, range)) r.failNumber(key, *problem);
+      *field = value;
+    }
   validate(c, r.where());
   CameraFile file;
   file.form = CameraFile::Form::Physical;
@@ -473,11 +486,25 @@ void parseCommon(const Reader& r, CameraFile& file) {
     if (o.has("anamorphic_squeeze")) a.anamorphicSqueeze = o.number("anamorphic_squeeze");
     if (const std::optional<ApertureProblem> problem = apertureShapeProblem(a)) o.fail(problem->field, problem->message);
   }
+  if (r.has("barrel")) {
+    const Reader o = r.object("barrel", kBarrelKeys);
+    o.require("distance_mm", "barrel");
+    o.require("diameter_mm", "barrel");
+    const double distance = o.number("distance_mm"), diameter = o.number("diameter_mm");
+    if (const std::optional<BarrelProblem> problem = barrelProblem(distance, diameter)) o.fail(problem->field, problem->message);
+    if (camera.view.projection != Projection::Perspective) r.fail("barrel", "needs a perspective projection");
+    if (e.needsRemap())
+      r.fail("barrel", "with distortion or lateral colour is not drawn yet; give one or the other");
+    camera.barrel = barrelFromMillimetres(distance, diameter);
+  }
   validateLensEffects(camera, r.where(), file.physical ? std::optional(file.physical->focalLengthMm * kMetresPerMillimetre) : std::nullopt);
 }
 
 // distortion, chromatic, field_curvature and aperture of `camera` into `j`, as parseCommon reads them.
 void writeEffects(const Camera& camera, json& j) {
+  if (camera.barrel.present())
+    j["barrel"] = {{"distance_mm", camera.barrel.distance / kMetresPerMillimetre},
+                   {"diameter_mm", 2.0 * camera.barrel.radius / kMetresPerMillimetre}};
   const ApertureShape& a = camera.aperture;
   if (a != ApertureShape{}) {
     json o = json::object();
@@ -591,10 +618,11 @@ std::string toCameraJson(const Camera& camera) {
 }
 
 std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar, const ApertureShape& aperture) {
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture, const LensBarrel& barrel) {
   Camera camera = toCamera(physical, "the frame's camera");
   camera.effects = effects;
   camera.aperture = aperture;
+  camera.barrel = barrel;
   const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
   json j;
   j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};

@@ -20,7 +20,9 @@
 //    "focal_length_mm": 35, "sensor_mm": [36, 24],  defaults
 //    "f_number": 2.8,                               default: none (a pinhole)
 //    "focus_distance": d | "infinity",              default |target − eye|
-//    "near": 0.05, "far": d | "infinity"}           defaults
+//    "near": 0.05, "far": d | "infinity",           defaults
+//    "shutter_s": 0.01, "iso": 100}                 default: none (no physical exposure; iso
+//                                                   alone is refused); camera/Exposure.h
 // OpenCV form — a calibrated pinhole (chosen by any of intrinsics, K, R, t, dist):
 //   intrinsics: {"intrinsics": {"fx", "fy", "cx", "cy", "width", "height"}}, or
 //               {"K": [[fx, 0, cx], [0, fy, cy], [0, 0, 1]], "width": W, "height": H} (or
@@ -57,8 +59,9 @@ std::string toCameraJson(const Camera& camera);
 // (K, distCoeffs as an array when the lens is all OpenCV's, plus focus_distance and aperture_radius):
 // one file both `lenslab render --camera` and vision tools read. `capture` writes one per frame.
 // near / far are written only when asked; left out, the renderer fits them to the scene. A shaped
-// aperture is written as "aperture".
+// aperture is written as "aperture", a barrel as "barrel".
 std::string toIntrinsicsCameraJson(const PhysicalCamera& camera, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar, const ApertureShape& aperture = {});
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture = {},
+                                   const LensBarrel& barrel = {});
 
 }  // namespace lenslab

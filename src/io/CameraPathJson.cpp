@@ -58,10 +58,13 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
     if (camera.contains("far")) path.farFromScene = false;
     key.effects = file.camera.effects;
     key.aperture = file.camera.aperture;
+    key.barrel = file.camera.barrel;
     // The iris and the lens's squeeze do not change along a shot: one shape for every key.
     if (!path.keys.empty() && key.aperture != path.keys.front().aperture)
       throw InputError(cat(name, ": \"aperture\" is ", describeAperture(key.aperture), " where the first key's is ",
                            describeAperture(path.keys.front().aperture), "; every key of a path takes the same aperture shape"));
+    if (!path.keys.empty() && key.barrel != path.keys.front().barrel)
+      throw InputError(cat(name, ": \"barrel\" differs from the first key's; every key of a path takes the same lens barrel"));
     path.keys.push_back(key);
   }
   validate(path, where);

@@ -35,6 +35,15 @@ float srgbFromLinear(float x) {
   return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+void applyDisplayForFile(const fs::path& path, Image& image, const DisplayEncoding& display) {
+  if (display.isIdentity() || lowerExtension(path) != ".png") return;
+  for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    float* p = &image.rgba[i];
+    const glm::vec3 d = displayLinear({p[0], p[1], p[2]}, display);
+    p[0] = d.r, p[1] = d.g, p[2] = d.b;
+  }
+}
+
 float linearFromSrgb(float x) {
   return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
 }

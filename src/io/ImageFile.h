@@ -1,9 +1,11 @@
 #pragma once
 // Image files through OpenImageIO. By extension: .png is 8-bit sRGB (the transfer function
-// applied here, values clamped to [0, 1]); .exr is linear 32-bit float, unclamped.
+// applied here, values clamped to [0, 1]; an exposure and a view transform, when a command asks
+// for them, are applied before: applyDisplayForFile); .exr is linear 32-bit float, unclamped.
 // Writing is atomic (see AtomicFile.h): a failed run leaves no partial file.
 #include "core/Image.h"
 #include "io/AtomicFile.h"
+#include "io/ToneMap.h"
 
 #include <filesystem>
 #include <string>
@@ -49,6 +51,13 @@ std::vector<float> readDepthChannel(const std::filesystem::path& path);
 std::vector<float> readChannel(const std::filesystem::path& path, const std::string& name);
 // The names of an image file's channels, as its reader lists them.
 std::vector<std::string> channelNames(const std::filesystem::path& path);
+
+// What a PNG of the image holds before its sRGB encoding: `display`'s exposure and view transform
+// (io/ToneMap.h) applied to the RGB of `image` in place, leaving display-referred linear values
+// in [0, 1]; alpha is kept. An EXR is left as it is: it holds the linear radiance, never exposed
+// or tone-mapped. Nothing changes for the identity encoding (the default), so that default PNGs
+// cost and hold what they always did.
+void applyDisplayForFile(const std::filesystem::path& path, Image& image, const DisplayEncoding& display);
 
 float linearFromSrgb(float encoded);
 float srgbFromLinear(float linear);

@@ -31,6 +31,24 @@ void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
   plan.depthMax = std::min(hi, camera.view.farDistance);
 }
 
+// Whether the barrel hides part of the aperture from some pixel: from the window's farthest corner
+// the aperture, seen in the opening's plane (radius R·|1 − L/z_f| about L·n), reaches past it.
+bool barrelClipsFrame(const Camera& camera) {
+  if (!camera.hasBarrel()) return false;
+  const ViewSpec& v = camera.view;
+  const LensBarrel& b = camera.barrel;
+  const double seen = camera.apertureRadius * apertureReach(camera.aperture) * std::abs(1.0 - b.distance * camera.inverseFocusDistance());
+  double farthest = 0.0;
+  for (const double u : {v.window.umin, v.window.umax})
+    for (const double w : {v.window.vmin, v.window.vmax})
+      farthest = std::max(farthest, glm::length(glm::dvec2(u - v.prp.x, w - v.prp.y)) / v.prp.z);
+  return b.distance * farthest + seen > b.radius;
+}
+
+// Views a frame takes at least where the barrel clips it: the cat's eye is a share of the
+// aperture, resolved to about 1/64 by as many aperture points, however sharp the scene is.
+constexpr int kBarrelMinSamples = 64;
+
 }  // namespace
 
 FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options,
@@ -108,6 +126,11 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
         plan.samplesWhy = cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)", 
                               plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
                               " (", range, ")");
+      if (barrelClipsFrame(camera) && plan.apertureSamples < std::min(kBarrelMinSamples, options.maxSamples)) {
+        plan.apertureSamples = std::min(kBarrelMinSamples, options.maxSamples);
+        plan.samplesWhy = cat(plan.apertureSamples, ": the lens barrel hides part of the aperture toward the corners (cat's-eye "
+                              "vignetting), a share resolved by that many aperture points (", range, ")");
+      }
     }
   }
 

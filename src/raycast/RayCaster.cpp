@@ -2,6 +2,7 @@
 
 #include "camera/LensMap.h"
 
+#include "camera/Projection.h"
 #include "camera/Ray.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -198,6 +199,13 @@ struct RayCaster::Impl {
                  double inverseFocusShift = 0.0) const {
     Ray ray = lensRay(camera, lensOffset, pixel, size, inverseFocusShift);
     ray.origin -= origin;
+    // The barrel's opening (cat's-eye vignetting): a ray it stops brings no light, background included.
+    if (camera.hasBarrel()) {
+      const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
+      const glm::dvec2 normalised = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
+      if (!throughBarrel(camera.barrel, lensOffset, normalised, camera.inverseFocusDistance() + inverseFocusShift))
+        return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
+    }
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
     // Checked here, not left to Embree's assertions: no input may reach an abort.
     // A direction that normalised to zero (its length overflowed) counts as not finite.
@@ -281,8 +289,25 @@ struct RayCaster::Impl {
         continue;
       }
       const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2);
-      return {shade(glm::vec3(base), normal, material.unlit, scene->lighting), true, tHit, ray, normal, glm::vec3(base),
-              instance.gltfNode};
+      glm::vec3 colour = shade(glm::vec3(base), normal, material.unlit, scene->lighting);
+      if (material.emits()) {
+        glm::vec3 emitted = material.emissive;
+        if (material.emissiveTexture >= 0) {
+          const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
+          auto uvAt = [&](glm::dvec2 offset) {
+            Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
+            r.origin -= origin;
+            const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
+            return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
+          };
+          const glm::vec2 uvHere = uvAt({0.0, 0.0});
+          const Texture& texture = scene->textures[static_cast<std::size_t>(material.emissiveTexture)];
+          emitted *= glm::vec3(samplers[static_cast<std::size_t>(material.emissiveTexture)].sample(
+              texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere));
+        }
+        colour += emitted;
+      }
+      return {colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};
     }
     return miss;
   }

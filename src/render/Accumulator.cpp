@@ -32,9 +32,19 @@ Accumulator::Accumulator()
     : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
       resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")) {}
 
-void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens) {
+void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens, const Barrel* barrel) {
   curvature_ = curvature ? std::optional<Curvature>(*curvature) : std::nullopt;
   lens_ = lens ? std::optional<LensGather>(*lens) : std::nullopt;
+  barrel_ = barrel ? std::optional<Barrel>(*barrel) : std::nullopt;
+  if (barrel_ && lens_) throw std::logic_error("accumulator: the barrel with the lens gather is not supported (refused with the camera)");
+  if (barrel_) {
+    gl::Program& program = accumulateBarrel_[curvature_ ? 1 : 0];
+    if (!program) {
+      std::vector<std::string> defines{"BARREL"};
+      if (curvature_) defines.push_back("FIELD_CURVATURE");
+      program = gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag", defines);
+    }
+  }
   if (curvature_ && !accumulateCurved_)
     accumulateCurved_ = gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag", {"FIELD_CURVATURE"});
   if (lens_) {
@@ -67,7 +77,7 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     if (glCheckNamedFramebufferStatus(gatherFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("accumulator: the lens gather's framebuffer is incomplete");
   }
-  mayAdd_ = !curvature_ && !lens_;
+  mayAdd_ = !curvature_ && !lens_ && !barrel_;
   requestedWidth_ = widthPx;
   requestedHeight_ = heightPx;
   if (mayAdd_ && !addBatch_) addBatch_ = gl::buildProgram("common/fullscreen.vert", "accumulate/add_batch.frag");
@@ -89,6 +99,7 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   pendingWeights_.assign(kMaxBatch, glm::vec4(0.0f));
   pendingShifts_.assign(kMaxBatch, glm::vec2(0.0f));
   pendingJitters_.assign(kMaxBatch, glm::vec2(0.0f));
+  pendingBarrelLens_.assign(kMaxBatch, glm::vec2(0.0f));
 }
 
 void Accumulator::allocateAddTarget() {
@@ -167,7 +178,7 @@ void Accumulator::resetDepthStencil(float depth, int stencil, bool inRegionOnly)
 }
 
 Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels, glm::vec2 curvatureShiftPx,
-                                        glm::vec2 jitterPx) {
+                                        glm::vec2 jitterPx, glm::vec2 barrelLens) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
   ++count_;
   // Alpha is shared out so that a full set of channel views adds 1, as one full view does.
@@ -188,6 +199,7 @@ Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels
   pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
   pendingShifts_[static_cast<std::size_t>(pending_)] = curvatureShiftPx;
   pendingJitters_[static_cast<std::size_t>(pending_)] = jitterPx;
+  pendingBarrelLens_[static_cast<std::size_t>(pending_)] = barrelLens;
   return {{framebuffers_[static_cast<std::size_t>(pending_++)].id(), viewWidth_, viewHeight_}, std::nullopt};
 }
 
@@ -240,14 +252,22 @@ void Accumulator::flushLayers() {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  const GLuint program = lens_ ? gatherLens_[(curvature_ ? 2 : 0) + (lens_->lateral ? 1 : 0)].id()
-                       : curvature_ ? accumulateCurved_.id() : accumulate_.id();
+  const GLuint program = lens_      ? gatherLens_[(curvature_ ? 2 : 0) + (lens_->lateral ? 1 : 0)].id()
+                       : barrel_    ? accumulateBarrel_[curvature_ ? 1 : 0].id()
+                       : curvature_ ? accumulateCurved_.id()
+                                    : accumulate_.id();
   glProgramUniform1i(program, 0, pending_);
   glProgramUniform4fv(program, 1, pending_, &pendingWeights_[0].x);
   if (curvature_) {
     glProgramUniform2fv(program, 9, pending_, &pendingShifts_[0].x);
     glProgramUniform2fv(program, 17, 1, &curvature_->normalisedAtOrigin.x);
     glProgramUniform2fv(program, 18, 1, &curvature_->normalisedPerPixel.x);
+  }
+  if (barrel_) {
+    glProgramUniform2fv(program, 17, 1, &barrel_->normalisedAtOrigin.x);
+    glProgramUniform2fv(program, 18, 1, &barrel_->normalisedPerPixel.x);
+    glProgramUniform2fv(program, 30, pending_, &pendingBarrelLens_[0].x);
+    glProgramUniform1f(program, 38, barrel_->reach);
   }
   if (lens_) {
     glProgramUniform2fv(program, 19, pending_, &pendingJitters_[0].x);

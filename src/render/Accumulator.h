@@ -52,6 +52,15 @@ class Accumulator {
     glm::vec2 lateralScale{1.0f};    // 1 + lateral, red and blue
   };
 
+  // Cat's-eye vignetting (lens/LensBarrel.h), applied per pixel as the views are summed: a view
+  // adds nothing (background included) where the barrel's opening hides its aperture point from
+  // the pixel's direction n. The mapping to n as Curvature's; `reach` = barrel distance / radius.
+  // Views are then layers (an added view has no per-pixel weight).
+  struct Barrel {
+    glm::vec2 normalisedAtOrigin;
+    glm::vec2 normalisedPerPixel;
+    float reach = 0.0f;
+  };
   // Views from the next one on go into layers even where they could be added straight into the
   // sum: an added view draws the scene twice (depth, then colour), so where vertices cost more
   // than pixels (a big scene at a small size) layers are cheaper. Tests and benchmarks compare too.
@@ -63,7 +72,8 @@ class Accumulator {
   static bool layersAreCheaper(double triangles, double pixels) { return triangles > kTrianglesPerPixelForLayers * pixels; }
   static constexpr double kTrianglesPerPixelForLayers = 0.1;
   // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
-  void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr);
+  void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr,
+             const Barrel* barrel = nullptr);
   // Where and how to draw the next view: into `target`, replacing it (a layer), or, when
   // `addWeight` is set, added into the sum with that weight (ScenePass::draw's addWeight). It
   // counts as added once drawn.
@@ -77,8 +87,10 @@ class Accumulator {
   // each channel by the number of views that contributed to it.
   // `curvatureShiftPx`: δ·d·κ of this view in pixels (GL orientation), used with start's Curvature.
   // `jitterPx`: the view's sub-pixel offset (GL orientation), used with start's LensGather.
+  // `barrelLens`: with start's Barrel, the view's aperture point seen in the opening's plane over
+  // the opening's radius, p·(1 − distance/z_f) / radius.
   View nextView(glm::vec3 background, glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f),
-                glm::vec2 jitterPx = glm::vec2(0.0f));
+                glm::vec2 jitterPx = glm::vec2(0.0f), glm::vec2 barrelLens = glm::vec2(0.0f));
   // Views added from now on reach only these rectangles of the sum (nullptr: all of it); the views
   // pending so far are added first, with the region they were drawn for. Per-tile budgets.
   void setRegion(const std::vector<PixelBox>* boxes);
@@ -120,6 +132,7 @@ class Accumulator {
 
   gl::Program accumulate_;
   gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
+  gl::Program accumulateBarrel_[2];  // with the barrel: [field curvature], built on first use
   gl::Program gatherLens_[4];     // the lens gather: [field curvature · 2 + lateral colour], built on first use
   gl::Program resolve_;
   gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
@@ -150,6 +163,8 @@ class Accumulator {
   std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share
   std::vector<glm::vec2> pendingShifts_;   // per view of the batch: field-curvature shift at r = 1
   std::vector<glm::vec2> pendingJitters_;  // per view of the batch: sub-pixel offset (lens gather)
+  std::vector<glm::vec2> pendingBarrelLens_;  // per view of the batch: its aperture point in the barrel's opening
+  std::optional<Barrel> barrel_;
   int viewWidth_ = 0;
   int viewHeight_ = 0;
   std::optional<Curvature> curvature_;  // set by start: the field-curvature variant sums the views

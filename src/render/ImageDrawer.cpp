@@ -12,15 +12,15 @@ ImageDrawer::ImageDrawer()
   glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void ImageDrawer::draw(const gl::ImageTexture& image, const gl::PixelRect& rect, float gain) const {
-  drawTexture(image.id(), rect, gain);
+void ImageDrawer::draw(const gl::ImageTexture& image, const gl::PixelRect& rect, float gain, const DisplayEncoding& display) const {
+  drawTexture(image.id(), rect, gain, display);
 }
 
-void ImageDrawer::draw(const gl::RenderTarget& image, const gl::PixelRect& rect, float gain) const {
-  drawTexture(image.colorTexture(), rect, gain);
+void ImageDrawer::draw(const gl::RenderTarget& image, const gl::PixelRect& rect, float gain, const DisplayEncoding& display) const {
+  drawTexture(image.colorTexture(), rect, gain, display);
 }
 
-void ImageDrawer::drawTexture(GLuint texture, const gl::PixelRect& r, float gain) const {
+void ImageDrawer::drawTexture(GLuint texture, const gl::PixelRect& r, float gain, const DisplayEncoding& display) const {
   if (r.empty()) return;
   glViewport(r.x, r.y, r.width, r.height);
   glDisable(GL_DEPTH_TEST);
@@ -31,6 +31,8 @@ void ImageDrawer::drawTexture(GLuint texture, const gl::PixelRect& r, float gain
                      static_cast<float>(r.height));
   glProgramUniform1i(program, 1, 1);
   glProgramUniform1f(program, 2, gain);
+  glProgramUniform1f(program, 3, display.exposureScale);
+  glProgramUniform1i(program, 4, static_cast<int>(display.transform));
   glBindTextureUnit(0, texture);
   glBindSampler(0, linear_.id());
   fullScreen_.draw(program_);

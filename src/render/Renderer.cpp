@@ -2,6 +2,8 @@
 
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
+#include "core/Error.h"
+#include "core/Text.h"
 #include "gl/Shader.h"
 #include "lens/SobolSequence.h"
 
@@ -40,6 +42,14 @@ const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot
   return *slot;
 }
 
+std::optional<Accumulator::Barrel> Renderer::barrelMask() const {
+  if (!camera_.hasBarrel()) return std::nullopt;
+  const Window& w = camera_.view.window;
+  const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
+  const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
+  return Accumulator::Barrel{glm::vec2(origin), glm::vec2(step), static_cast<float>(camera_.barrel.distance / camera_.barrel.radius)};
+}
+
 std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
   if (!plan_.fieldCurvature) return std::nullopt;
   const Window& w = camera_.view.window;
@@ -57,6 +67,9 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
   for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue})
     channelFocusShifts_[static_cast<std::size_t>(c)] = camera_.effects.chromatic.inverseFocusShift(c);
+  if (camera.hasBarrel() && (plan.remap || camera.view.projection != Projection::Perspective))
+    throw InputError(cat(camera.source, ": the lens barrel (cat's-eye vignetting) is drawn for a perspective camera without "
+                                        "distortion or lateral colour; remove \"barrel\" or those effects"));
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1, tables);
@@ -75,8 +88,9 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     const std::optional<Accumulator::Curvature> curvature = curvatureWarp();
     // With distortion or lateral colour each view's samples go straight to where the lens puts
     // them, as the views are summed: no resampling of the mean afterwards.
+    const std::optional<Accumulator::Barrel> barrel = barrelMask();
     accumulator_->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr,
-                        plan.remap ? &lensPass_->gather() : nullptr);
+                        plan.remap ? &lensPass_->gather() : nullptr, barrel ? &*barrel : nullptr);
   }
 }
 
@@ -103,6 +117,7 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   for (const Instance& instance : gpuScene_.scene().instances)
     triangles += static_cast<double>(gpuScene_.scene().meshes[static_cast<std::size_t>(instance.mesh)].indices.size() / 3);
   sum.setLayered(Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
+  const glm::dvec2 lensOffset = camera_.lensOffset(first.lens);
   for (int c = 0; c < plan_.viewsPerSample; ++c) {
     glm::vec3 mask(1.0f);
     double shift = 0.0;
@@ -111,7 +126,11 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
       mask[c] = 1.0f;
       shift = channelFocusShifts_[static_cast<std::size_t>(c)];
     }
-    const Accumulator::View view = sum.nextView(gpuScene_.scene().lighting.background, mask, curvatureShift, jitter);
+    // The barrel sees this view's aperture point at p·(1 − L/z_f), z_f this channel's focus.
+    const glm::vec2 barrelLens = camera_.hasBarrel()
+        ? glm::vec2(lensOffset * (1.0 - camera_.barrel.distance * (camera_.inverseFocusDistance() + shift)) / camera_.barrel.radius)
+        : glm::vec2(0.0f);
+    const Accumulator::View view = sum.nextView(gpuScene_.scene().lighting.background, mask, curvatureShift, jitter, barrelLens);
     for (const SamplePart& part : parts)
       scenePass_.draw(gpuScene_, sampleClip(part.sample, shift), view.target, lodBias, part.boxes,
                       view.addWeight ? &*view.addWeight : nullptr);
@@ -153,12 +172,15 @@ void Renderer::beginAdaptive() {
   wholeFrame_ = false;
   rounds_ = 0;
   const std::optional<Accumulator::Curvature> curvature = curvatureWarp();
+  const std::optional<Accumulator::Barrel> barrel = barrelMask();
   for (std::unique_ptr<Accumulator>* slot : {&accumulator_, &streamB_}) {
     if (!*slot) *slot = std::make_unique<Accumulator>();
-    (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr, plan_.remap ? &lensPass_->gather() : nullptr);
+    (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr, plan_.remap ? &lensPass_->gather() : nullptr,
+                   barrel ? &*barrel : nullptr);
   }
-  // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel.
-  scissorViews_ = !plan_.remap && !plan_.fieldCurvature;
+  // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel, and
+  // each view has one aperture point (the barrel's mask is per view).
+  scissorViews_ = !plan_.remap && !plan_.fieldCurvature && !camera_.hasBarrel();
   const TileGrid previous = grid_;
   grid_ = makeTileGrid(outSize_, a.tileSizePx);
   // About 16 regions of whole tiles, each with its own scramble (see step()).

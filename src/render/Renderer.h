@@ -104,6 +104,8 @@ class Renderer {
   int mostSamples() const;  // the most samples any tile has
   // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
   std::optional<Accumulator::Curvature> curvatureWarp() const;
+  // The barrel's per-pixel mask for the views (Accumulator::Barrel), if the camera has a barrel.
+  std::optional<Accumulator::Barrel> barrelMask() const;
   void beginAdaptive();
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);

@@ -29,6 +29,8 @@ enum Location : GLint {
   kClipFromModelDouble = 12,  // narrow_field.vert
   kBackground = 13,           // ADD_TO_SUM
   kAddWeight = 14,            // ADD_TO_SUM
+  kEmissive = 15,
+  kHasEmissiveTexture = 16,
 };
 
 // The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
@@ -175,6 +177,10 @@ void ScenePass::drawInstances(Programs programs, bool narrow, const GpuScene& gp
     const bool textured = material.baseColorTexture >= 0;
     glProgramUniform1i(program, kHasBaseColorTexture, textured);
     if (textured) gpuScene.bindTexture(material.baseColorTexture, 0);
+    glProgramUniform3fv(program, kEmissive, 1, glm::value_ptr(material.emissive));
+    const bool emissiveTextured = material.emissiveTexture >= 0;
+    glProgramUniform1i(program, kHasEmissiveTexture, emissiveTextured);
+    if (emissiveTextured) gpuScene.bindTexture(material.emissiveTexture, 1);
     glProgramUniform1i(program, kUnlit, material.unlit);
     glProgramUniform1i(program, kAlphaMask, material.alphaMode == AlphaMode::Mask);
     glProgramUniform1f(program, kAlphaCutoff, material.alphaCutoff);

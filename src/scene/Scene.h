@@ -50,6 +50,12 @@ struct Material {
   int baseColorTexture = -1;        // index into Scene::textures, -1 = none
   int baseColorTexCoord = 0;        // which TEXCOORD_n set; only 0 is kept by the loader
   bool unlit = false;               // KHR_materials_unlit: colour = base colour
+  // Emitted radiance, linear: emissiveFactor × KHR_materials_emissive_strength's strength (which
+  // may exceed 1: a light source), times the emissive texture (sRGB) where there is one. Added to
+  // the shaded colour, lit or unlit.
+  glm::vec3 emissive{0.0f};
+  int emissiveTexture = -1;         // index into Scene::textures, -1 = none
+  bool emits() const { return emissive != glm::vec3(0.0f); }
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;

@@ -95,6 +95,7 @@ int runView(const ViewOptions& o) {
   const SelectedCamera refocusedCamera = applyLensOptions(selected, o.lens);
   for (const std::string& w : focusWarnings(selected.camera, o.lens)) std::cerr << "lenslab: warning: " << w << "\n";
   EditableCamera camera{refocusedCamera.camera, refocusedCamera.physical};
+  const DisplaySettings display = resolveDisplay(o.exposure, o.viewTransform, refocusedCamera);
   // Interactive default: 640 px wide, so that llvmpipe keeps up; scripted runs follow `render`.
   const int defaultWidth = o.frames > 0 ? kDefaultWidthPx : 640;
   const ImageSize size = resolveImageSize(camera.camera, o.width, o.height, defaultWidth);
@@ -110,7 +111,7 @@ int runView(const ViewOptions& o) {
   glfwMakeContextCurrent(window.window);
   loadGlFunctions(glfwGetProcAddress, "the GLFW window");
   ImGuiSession imgui(window.window);
-  Viewer viewer(o, window.window, scene, std::move(camera), size, planOptions);
+  Viewer viewer(o, window.window, scene, std::move(camera), size, planOptions, display);
   return viewer.run();
 }
 

@@ -3,6 +3,7 @@
 // camera's image converging by progressive accumulation, a Dear ImGui panel with every camera and
 // lens parameter, and an outside view that draws the lecture's diagram of the camera in the scene.
 // Scripted mode (--frames) runs a fixed number of frames and writes a screenshot, for tests.
+#include "camera/Exposure.h"
 #include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
 
@@ -32,6 +33,8 @@ struct ViewOptions {
   std::string saveCamera;             // scripted: the camera at the end, as the panel's "Save camera" writes it
   std::optional<glm::ivec2> windowSize;  // window size in screen coordinates
   double frameBudgetMs = 16.0;        // accumulation work per frame (at least one sample)
+  ExposureRequest exposure;           // the display's starting exposure, as render's (io/ToneMap.h)
+  std::string viewTransform = "none";  // and view transform; the panel changes both
 };
 
 // Returns the exit code; throws InputError for bad input (files, cameras, options) and

@@ -63,9 +63,9 @@ std::vector<LineSegment> segments(const std::vector<DiagramLine>& lines) {
 }  // namespace
 
 Viewer::Viewer(const ViewOptions& options, GLFWwindow* window, const Scene& scene, EditableCamera camera,
-               ImageSize size, PlanOptions planOptions)
+               ImageSize size, PlanOptions planOptions, DisplaySettings display)
     : options_(options), window_(window), model_(scene, std::move(camera), size, planOptions, options.frameBudgetMs, std::cerr),
-      renderer_(scene), showBaseline_(options.showBaseline && !options.noUi), showOutside_(options.outsideView && !options.noUi) {
+      renderer_(scene), display_(std::move(display)), showBaseline_(options.showBaseline && !options.noUi), showOutside_(options.outsideView && !options.noUi) {
   float xs = 1.0f, ys = 1.0f;
   glfwGetWindowContentScale(window_, &xs, &ys);
   uiScale_ = std::max(1.0f, xs);
@@ -221,8 +221,8 @@ void Viewer::draw() {
   }
   gl::clearDefaultFramebuffer(fbWidth_, fbHeight_, {0.08f, 0.08f, 0.09f, 1.0f});
   const gl::PixelRect imageRect = toPixels(imageRect_);
-  if (showBaseline_ && baselineValid_) imageDrawer_.draw(baselineTexture_, imageRect);
-  else if (resolved_) imageDrawer_.draw(*resolved_, imageRect);
+  if (showBaseline_ && baselineValid_) imageDrawer_.draw(baselineTexture_, imageRect, 1.0f, display_.encoding);
+  else if (resolved_) imageDrawer_.draw(*resolved_, imageRect, 1.0f, display_.encoding);
   if (showOutside_) drawOutside(toPixels(outsideRect_));
   gl::bindDefaultFramebuffer(fbWidth_, fbHeight_);  // for the panel
 }
@@ -232,7 +232,13 @@ void Viewer::finishScripted() {
   OutputSet outputs;
   if (!options_.screenshot.empty()) {
     // --no-ui: the image itself, as `render` writes it; with the UI: the whole window.
-    writeImage(outputs, options_.screenshot, options_.noUi ? renderer_.resolve() : readWindow(fbWidth_, fbHeight_));
+    if (options_.noUi) {
+      Image image = renderer_.resolve();
+      applyDisplayForFile(options_.screenshot, image, display_.encoding);
+      writeImage(outputs, options_.screenshot, image);
+    } else {
+      writeImage(outputs, options_.screenshot, readWindow(fbWidth_, fbHeight_));
+    }
   }
   if (!options_.saveCamera.empty()) outputs.add(options_.saveCamera, toCameraJson(model_.camera().camera));
   if (!options_.statsFile.empty()) {
@@ -268,6 +274,9 @@ void Viewer::finishScripted() {
     const std::optional<double> focus = model_.lastFocusDistance();
     j["focus_distance"] = focus ? nlohmann::json(*focus) : nlohmann::json(nullptr);
     j["camera"] = model_.camera().camera.source;
+    j["display"] = {{"exposure_stops", std::log2(display_.encoding.exposureScale)},
+                    {"exposure_scale", display_.encoding.exposureScale},
+                    {"view_transform", viewTransformName(display_.encoding.transform)}};
     outputs.add(options_.statsFile, j.dump(2) + "\n");
   }
   outputs.commit();

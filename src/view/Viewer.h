@@ -40,7 +40,7 @@ enum class Region { None, Image, Outside };
 class Viewer {
  public:
   Viewer(const ViewOptions& options, GLFWwindow* window, const Scene& scene, EditableCamera camera, ImageSize size,
-         PlanOptions planOptions);
+         PlanOptions planOptions, DisplaySettings display = {});
 
   int run();
 
@@ -69,6 +69,7 @@ class Viewer {
   void sectionPhysical();
   void sectionSamples();
   void sectionLensEffects();
+  void sectionDisplay();
   void sectionCompare();
   void sectionFiles();
   void sectionHelp();
@@ -78,6 +79,7 @@ class Viewer {
   ViewerModel model_;
   Renderer renderer_;
   ImageDrawer imageDrawer_;
+  DisplaySettings display_;  // exposure and view transform of the image shown and of Save image's PNG
   LineDrawer lineDrawer_;
   std::unique_ptr<GatherDof> gather_;  // made when the baseline is first shown
   const gl::RenderTarget* resolved_ = nullptr;

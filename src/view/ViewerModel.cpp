@@ -127,6 +127,7 @@ void ViewerModel::editPhysical(const PhysicalCamera& physical) {
     cam_ = fromPhysical(physical, before.source);
     cam_.camera.effects = before.effects;
     cam_.camera.aperture = before.aperture;
+    cam_.camera.barrel = before.barrel;
     cam_.camera.calibratedSize = before.calibratedSize;
     dirty_ = true;
   } catch (const InputError& e) {
@@ -158,6 +159,8 @@ void ViewerModel::editLensEffects(const LensEffects& effects) {
   c.effects = effects;
   try {
     validateLensEffects(c, "the panel's lens");
+    if (c.barrel.present() && c.effects.needsRemap())
+      throw InputError("the panel's lens: distortion or lateral colour with the camera's lens barrel is not drawn yet");
     cam_.camera = c;
     dirty_ = true;
   } catch (const InputError& e) {

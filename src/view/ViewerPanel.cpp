@@ -368,7 +368,9 @@ void Viewer::sectionFiles() {
   if (pathAndButton("##image", imagePath_, "Save image")) {
     try {
       checkImageExtension(imagePath_.data());
-      writeImage(imagePath_.data(), renderer_.resolve());
+      Image image = renderer_.resolve();
+      applyDisplayForFile(imagePath_.data(), image, display_.encoding);  // a PNG as shown; an EXR linear
+      writeImage(imagePath_.data(), image);
       status_ = cat("wrote ", imagePath_.data(), " (", renderer_.samplesDone(), " samples)");
     } catch (const std::exception& e) {
       model_.reportError(e.what());
@@ -376,6 +378,30 @@ void Viewer::sectionFiles() {
   }
   if (pathAndButton("##window", windowPath_, "Save window")) saveWindowPending_ = true;  // read once this frame is drawn
   if (!status_.empty()) wrapped(status_);
+}
+
+void Viewer::sectionDisplay() {
+  if (!header(fit_, "Display", openFlags(true))) return;
+  // Stops about the starting exposure (a physical one can be far from 0 EV); the slider edits the
+  // scale that PNG files and the window share, and nothing is rendered again.
+  static const std::vector<std::string> names = {"none", "pbr-neutral"};  // ViewTransform's order
+  float stops = std::log2(display_.encoding.exposureScale);
+  const float start = static_cast<float>(display_.exposure.stops);
+  if (labelled(fit_, "exposure (EV)", [&](const char* id) {
+        return ImGui::SliderFloat(id, &stops, start - 10.0f, start + 10.0f, "%+.2f", ImGuiSliderFlags_AlwaysClamp);
+      }))
+    display_.encoding.exposureScale = std::exp2(stops);
+  int transform = static_cast<int>(display_.encoding.transform);
+  const auto name = [](void* list, int i, const char** out) {
+    *out = (*static_cast<const std::vector<std::string>*>(list))[static_cast<std::size_t>(i)].c_str();
+    return true;
+  };
+  if (labelled(fit_, "view transform", [&](const char* id) {
+        return ImGui::Combo(id, &transform, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
+      }))
+    display_.encoding.transform = static_cast<ViewTransform>(transform);
+  wrapped(cat("starting exposure: ", describe(display_.exposure), ". Save image writes a PNG as shown; an EXR holds the "
+              "linear radiance."));
 }
 
 void Viewer::sectionHelp() {
@@ -406,6 +432,7 @@ void Viewer::panel() {
   sectionPhysical();
   sectionSamples();
   sectionLensEffects();
+  sectionDisplay();
   sectionCompare();
   sectionFiles();
   sectionHelp();

@@ -4,8 +4,10 @@
 // by every aperture point, averaged over the aperture — per pixel, the area of the shape that
 // falls in the square about the pixel, over the shape's area (polygon clipping, exact).
 #include "camera/Camera.h"
+#include "camera/Projection.h"
 #include "gl_test_context.h"
 #include "lens/ApertureShape.h"
+#include "lens/LensBarrel.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
@@ -242,6 +244,67 @@ TEST(Bokeh, AnAnamorphicApertureBlursIntoAnOvalWithItsAxesInTheSqueezeRatio) {
     std::printf("  RMSE against squeeze 2: %.5f, against %.1f: %.5f\n", fit, other, otherFit);
     EXPECT_LT(fit * 1.3, otherFit);
   }
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// An unlit white wall on the plane of focus, filling the view: every aperture point sees the same
+// white at every pixel, so a pixel's value is the share of the aperture the barrel lets through
+// from its direction — the two circles' overlap (lens/LensBarrel.h), known in closed form.
+TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
+  LENSLAB_REQUIRE_GL();
+  Scene scene;
+  scene.source = "white wall";
+  scene.lighting.background = glm::vec3(0.0f);
+  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kFocus)), 4.0, 4.0, glm::vec3(1.0f));
+  Camera camera = bokehCamera(ApertureShape{});
+  camera.apertureRadius = 0.1;
+  // Seen in the opening's plane the aperture has radius 0.1·(1 − 0.2/2) = 0.09, centred at 0.2·n:
+  // whole at the centre, clipped toward the edges, most at the corners (|n| = 0.71).
+  camera.barrel = LensBarrel{0.2, 0.13};
+  const ImageSize size{48, 48};
+  Renderer renderer(scene);
+  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 1024, 1024, 3});
+  const Image raster = renderer.render(camera, plan, size);
+  const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{1024, 4});
+  double worstRaster = 0.0, worstRaycast = 0.0, least = 1.0;
+  for (int y = 0; y < size.heightPx; ++y)
+    for (int x = 0; x < size.widthPx; ++x) {
+      const glm::dvec2 w = windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx);
+      const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
+      const double share = roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, n, camera.inverseFocusDistance());
+      least = std::min(least, share);
+      worstRaster = std::max(worstRaster, std::abs(raster.at(x, y).g - share));
+      worstRaycast = std::max(worstRaycast, std::abs(raycast.at(x, y).g - share));
+    }
+  std::printf("  share of the aperture through the barrel: least %.3f (a corner); worst |image - overlap| raster %.4f, ray cast %.4f\n",
+              least, worstRaster, worstRaycast);
+  EXPECT_LT(least, 0.5) << "the test's barrel should clip the corners";
+  EXPECT_LT(worstRaster, 0.02);
+  EXPECT_LT(worstRaycast, 0.02);
+  EXPECT_NEAR(raster.at(24, 24).g, 1.0, 1e-4) << "the centre sees the whole aperture";
+}
+
+TEST(CatsEye, ABarrelThatClipsNothingChangesNothing) {
+  LENSLAB_REQUIRE_GL();
+  const Scene scene = markerScene();
+  Camera camera = bokehCamera(ApertureShape{});
+  const ImageSize size{kSizePx, kSizePx};
+  Renderer renderer(scene);
+  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 64, 64, 3});
+  const Image without = renderer.render(camera, plan, size);
+  camera.barrel = LensBarrel{0.01, 10.0};  // wide open
+  const FramePlan withPlan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
+  const FramePlan withoutPlan = makeFramePlan(scene, bokehCamera(ApertureShape{}), size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
+  EXPECT_EQ(withPlan.apertureSamples, withoutPlan.apertureSamples) << "no more views for a barrel that hides nothing";
+  const Image with = renderer.render(camera, plan, size);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < with.rgba.size(); ++i) worst = std::max(worst, static_cast<double>(std::abs(with.rgba[i] - without.rgba[i])));
+  EXPECT_LT(worst, 1e-5);
 }
 
 }  // namespace

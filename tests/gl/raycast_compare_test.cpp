@@ -13,6 +13,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -53,6 +55,45 @@ TEST(RasterVsRaycast, ThinLensRowsAndOccluder) {
   LENSLAB_REQUIRE_GL();
   EXPECT_GE(rasterVsRaycastPsnr("rows/rows.gltf", "rows/camera-dof.json", false, 1024, 256, {240, 160}), 40.0);
   EXPECT_GE(rasterVsRaycastPsnr("occluder/occluder.gltf", "occluder/camera-dof.json", false, 1024, 256, {240, 160}), 40.0);
+}
+
+// Emission (glTF emissiveFactor × KHR_materials_emissive_strength, times the emissive texture) is
+// added to the shaded colour by both renderers alike, and kept above 1 in the float image: `rows`
+// with its textured materials made to glow (their base colour texture as the emissive one) and
+// one unlit material a light of radiance 6.
+TEST(RasterVsRaycast, EmissionIsAddedAlikeAndKeptAboveOne) {
+  LENSLAB_REQUIRE_GL();
+  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
+  Scene scene = loadGltf(assets / "rows/rows.gltf");
+  int glowing = 0;
+  for (Material& m : scene.materials) {
+    if (m.baseColorTexture >= 0) {
+      m.emissive = glm::vec3(0.5f, 0.25f, 0.125f);
+      m.emissiveTexture = m.baseColorTexture;
+      ++glowing;
+    } else if (m.unlit) {
+      m.emissive = glm::vec3(6.0f);
+    }
+  }
+  ASSERT_GT(glowing, 0);
+  const Camera camera = loadCameraJson(assets / "rows/camera.json").camera;
+  const ImageSize size{240, 160};
+  Camera jittered = camera;
+  jittered.apertureRadius = 1e-3;  // only to get a plan with 256 jittered views
+  const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 256, 256, 3});
+  const Image raster = Renderer(scene).render(camera, plan, size);
+  const Image reference = RayCaster(scene).render(camera, size, RaycastOptions{128, 11});
+  float brightest = 0.0f;
+  for (std::size_t i = 0; i < raster.rgba.size(); i += 4) brightest = std::max(brightest, raster.rgba[i + 1]);
+  // PSNR with the peak at the brightest value: the images are HDR.
+  double mse = 0.0;
+  for (std::size_t i = 0; i < raster.rgba.size(); ++i)
+    if (i % 4 != 3) mse += (raster.rgba[i] - reference.rgba[i]) * (raster.rgba[i] - reference.rgba[i]);
+  mse /= 0.75 * static_cast<double>(raster.rgba.size());
+  const double psnr = 10.0 * std::log10(brightest * brightest / mse);
+  std::cout << "[ measure  ] rows glowing: brightest " << brightest << ", raster vs ray cast PSNR (peak the brightest) " << psnr << " dB\n";
+  EXPECT_GT(brightest, 5.0f) << "radiance above 1 is kept";
+  EXPECT_GE(psnr, 45.0);
 }
 
 // A scene and its camera moved far from the world origin render as they do at the origin: Embree

@@ -3,6 +3,7 @@
 // samples' strata compact.
 #include "lens/ApertureShape.h"
 #include "lens/AperturePattern.h"
+#include "lens/LensBarrel.h"
 
 #include <gtest/gtest.h>
 
@@ -171,6 +172,46 @@ TEST(ApertureShape, OutOfRangeShapesNameTheirField) {
   EXPECT_EQ(field({6, 0.0, 0.0, 11.0}), "anamorphic_squeeze");
   EXPECT_EQ(field({6, 0.0, 0.0, std::nan("")}), "anamorphic_squeeze");
   EXPECT_NE(apertureShapeProblem({2, 0.0, 0.0, 1.0})->message.find("3 to 64"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+TEST(LensBarrel, TheCatsEyeIsTheTwoCirclesOverlap) {
+  // The share of a round aperture the opening lets through, counted over a fine grid of aperture
+  // points with throughBarrel, against the closed-form overlap.
+  const LensBarrel barrel{0.04, 0.015};
+  const double radius = 0.0125, inverseFocus = 0.5;
+  for (const glm::dvec2 n : {glm::dvec2(0.0, 0.0), glm::dvec2(0.2, 0.0), glm::dvec2(0.3, -0.4), glm::dvec2(0.0, 0.6), glm::dvec2(2.0, 0.0)}) {
+    int inside = 0, through = 0;
+    constexpr int kGrid = 600;
+    for (int j = 0; j < kGrid; ++j)
+      for (int i = 0; i < kGrid; ++i) {
+        const glm::dvec2 p = radius * glm::dvec2(2.0 * (i + 0.5) / kGrid - 1.0, 2.0 * (j + 0.5) / kGrid - 1.0);
+        if (glm::dot(p, p) > radius * radius) continue;
+        ++inside;
+        through += throughBarrel(barrel, p, n, inverseFocus);
+      }
+    EXPECT_NEAR(static_cast<double>(through) / inside, roundApertureThroughBarrel(barrel, radius, n, inverseFocus), 2e-3)
+        << "n = (" << n.x << ", " << n.y << ")";
+  }
+  EXPECT_EQ(roundApertureThroughBarrel(barrel, radius, {0.0, 0.0}, inverseFocus), 1.0);  // 0.0125·0.98 inside 0.015
+  EXPECT_EQ(roundApertureThroughBarrel(barrel, radius, {2.0, 0.0}, inverseFocus), 0.0);  // 0.08 away: no overlap
+  EXPECT_EQ(roundApertureThroughBarrel(LensBarrel{}, radius, {2.0, 0.0}, inverseFocus), 1.0);  // no barrel
+}
+
+TEST(LensBarrel, MillimetresBecomeWorldUnitsAndBadValuesNameTheirField) {
+  const LensBarrel b = barrelFromMillimetres(40.0, 30.0);
+  EXPECT_DOUBLE_EQ(b.distance, 0.04);
+  EXPECT_DOUBLE_EQ(b.radius, 0.015);
+  EXPECT_FALSE(barrelProblem(40.0, 30.0));
+  EXPECT_EQ(barrelProblem(0.0, 30.0)->field, "distance_mm");
+  EXPECT_EQ(barrelProblem(std::nan(""), 30.0)->field, "distance_mm");
+  EXPECT_EQ(barrelProblem(40.0, -1.0)->field, "diameter_mm");
+  EXPECT_EQ(barrelProblem(40.0, 1e9)->field, "diameter_mm");
 }
 
 }  // namespace

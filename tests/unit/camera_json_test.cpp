@@ -168,3 +168,24 @@ TEST(CameraJson, RefusesABadApertureShapeNamingTheField) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+TEST(CameraJson, ReadsAndWritesTheLensBarrel) {
+  const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
+      "barrel": {"distance_mm": 40, "diameter_mm": 30}})", "cam.json");
+  EXPECT_DOUBLE_EQ(f.camera.barrel.distance, 0.04);
+  EXPECT_DOUBLE_EQ(f.camera.barrel.radius, 0.015);
+  const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
+  EXPECT_NEAR(back.camera.barrel.distance, 0.04, 1e-15);
+  EXPECT_NEAR(back.camera.barrel.radius, 0.015, 1e-15);
+  const std::string head = R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2, )";
+  expectRefused(head + R"("barrel": {"distance_mm": 40}})", "\"barrel.diameter_mm\" is missing");
+  expectRefused(head + R"("barrel": {"distance_mm": -4, "diameter_mm": 30}})", "\"barrel.distance_mm\" is -4");
+  expectRefused(head + R"("barrel": {"distance_mm": 40, "diameter_mm": 30}, "distortion": {"k1": 0.1}})",
+                "\"barrel\" with distortion or lateral colour is not drawn yet");
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -179,7 +179,8 @@ TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
     FAIL() << "loaded a Draco-compressed file";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
-                                                      "does not support (supported: KHR_materials_unlit)");
+                                                      "does not support (supported: KHR_materials_unlit, "
+                                                      "KHR_materials_emissive_strength)");
   }
 }
 
@@ -389,13 +390,16 @@ TEST(GltfSamples, MaterialsKeepAlphaModesSamplersAndSides) {
   EXPECT_LT(doubleSided, static_cast<int>(settings.materials.size()));
 }
 
-TEST(GltfSamples, OnlyTheBaseColourImageOfAFullPbrMaterialIsDecoded) {
+TEST(GltfSamples, OnlyTheBaseColourAndEmissiveImagesOfAFullPbrMaterialAreDecoded) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "DamagedHelmet");
   const Scene scene = loadSample("DamagedHelmet/glTF-Binary/DamagedHelmet.glb");  // five images in the file
-  EXPECT_EQ(scene.textures.size(), 1u);
-  EXPECT_EQ(scene.images.size(), 1u);
+  EXPECT_EQ(scene.textures.size(), 2u);
+  EXPECT_EQ(scene.images.size(), 2u);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_GE(scene.materials[0].emissiveTexture, 0);
+  EXPECT_EQ(scene.materials[0].emissive, glm::vec3(1.0f));
   bool noted = false;
-  for (const std::string& note : scene.notes) noted |= note.find("normal, occlusion, emissive") != std::string::npos;
+  for (const std::string& note : scene.notes) noted |= note.find("normal, occlusion and metallic-roughness") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
@@ -704,7 +708,7 @@ TEST_F(GltfWritten, RequiredUnsupportedExtensionIsRefusedByName) {
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
   const fs::path file = dir_ / "scene.gltf";
   EXPECT_EQ(refusal(b), file.string() + ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
-                                        "(supported: KHR_materials_unlit)");
+                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength)");
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit"};
   const Scene scene = load(b);
   EXPECT_TRUE(noted(scene, "EXT_meshopt_compression")) << "used but not required: a note";
@@ -1023,6 +1027,23 @@ TEST_F(GltfWritten, MaterialValuesMustBeValid) {
   EXPECT_TRUE(contains(refusal(b), "material 0 \"m\": alphaMode \"SOMETIMES\" must be OPAQUE, MASK or BLEND"));
   b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 2, 1, 1}}}}}};
   EXPECT_TRUE(contains(refusal(b), "baseColorFactor[1] is 2"));
+}
+
+TEST_F(GltfWritten, EmissionIsTheFactorTimesTheEmissiveStrength) {
+  GltfBuilder b = square();
+  b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
+  b.gltf["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  b.gltf["extensionsRequired"] = {"KHR_materials_emissive_strength"};
+  b.gltf["materials"] = {{{"emissiveFactor", {1.0, 0.5, 0.25}},
+                          {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 8.0}}}}}}};
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_EQ(scene.materials[0].emissive, glm::vec3(8.0f, 4.0f, 2.0f));
+  EXPECT_TRUE(scene.materials[0].emits());
+  b.gltf["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -1.0;
+  EXPECT_TRUE(contains(refusal(b), "emissiveStrength is -1")) << refusal(b);
+  b.gltf["materials"] = {{{"emissiveFactor", {0.0, 0.0, 0.0}}}};
+  EXPECT_FALSE(load(b).materials[0].emits()) << "no emission: nothing added";
 }
 
 // -- cameras

@@ -84,6 +84,19 @@ else
   fail "view/render with lens effects failed"
 fi
 
+# The display's exposure and view transform: a --no-ui PNG is render's PNG with the same options
+# (docs/exposure.md), and the panel-less window shows it.
+if "$lenslab" view --camera "$dof" --width 200 --aperture-samples 16 --seed 3 --exposure 2 --view-transform pbr-neutral \
+     --frames 2 --no-ui --screenshot "$work/exposed.png" --stats "$work/exposed.json" >/dev/null 2>&1 &&
+   "$lenslab" render --camera "$dof" --width 200 --aperture-samples 16 --seed 3 --exposure 2 --view-transform pbr-neutral \
+     --out "$work/exposed-render.png" -q; then
+  if "$check" psnr "$work/exposed.png" "$work/exposed-render.png" 35; then pass; else fail "--exposure: view differs from render"; fi
+  if python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))["display"]; sys.exit(0 if d["exposure_stops"]==2 and d["view_transform"]=="pbr-neutral" else 1)' "$work/exposed.json"; then pass
+  else fail "view --stats lacks the display: $(cat "$work/exposed.json")"; fi
+else
+  fail "view/render with --exposure failed"
+fi
+
 # A COLMAP image's camera (--colmap DIR --image NAME), from a model capture writes for a still path.
 printf '{"fps": 1, "frames": 1, "keys": [{"time": 0, "eye": [0.5, 1.1, 3], "target": [0, 0.55, -2]}]}' >"$work/still.json"
 if "$lenslab" capture --path "$work/still.json" --width 200 --out "$work/still/f_%d.png" --colmap-out "$work/still-model" -q &&

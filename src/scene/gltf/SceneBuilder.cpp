@@ -165,9 +165,27 @@ class SceneBuilder {
                                  "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
     else if (base.index >= 0)
       material.baseColorTexture = textureFor(base.index);
-    if (m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 || m.emissiveTexture.index >= 0 ||
-        m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-      noteOnce(scene_.notes, "normal, occlusion, emissive and metallic-roughness inputs are ignored (lenslab shades base colour x Lambert)");
+    // Emission: the factor, scaled by KHR_materials_emissive_strength (glTF caps the factor at 1).
+    const std::vector<double>& e = m.emissiveFactor;
+    double strength = 1.0;
+    if (const auto found = m.extensions.find("KHR_materials_emissive_strength"); found != m.extensions.end()) {
+      const tinygltf::Value& s = found->second.Get("emissiveStrength");
+      if (s.IsNumber()) strength = s.GetNumberAsDouble();
+      if (!s.IsNumber() && found->second.Has("emissiveStrength"))
+        refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength must be a number");
+      if (!(strength >= 0.0) || !std::isfinite(strength))
+        refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength is ", strength, "; give a finite number >= 0");
+    }
+    if (e.size() == 3) material.emissive = glm::vec3(static_cast<float>(e[0] * strength), static_cast<float>(e[1] * strength),
+                                                     static_cast<float>(e[2] * strength));
+    const tinygltf::TextureInfo& emissive = m.emissiveTexture;
+    if (emissive.index >= 0 && emissive.texCoord != 0)
+      noteOnce(scene_.notes, cat("material ", gltfIndex, " samples its emissive texture with TEXCOORD_", emissive.texCoord,
+                                 "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
+    else if (emissive.index >= 0 && material.emits())
+      material.emissiveTexture = textureFor(emissive.index);
+    if (m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 || m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
+      noteOnce(scene_.notes, "normal, occlusion and metallic-roughness inputs are ignored (lenslab shades base colour x Lambert, plus emission)");
     scene_.materials.push_back(std::move(material));
     return materials_[gltfIndex] = static_cast<int>(scene_.materials.size()) - 1;
   }

@@ -1,11 +1,13 @@
 // lenslab capture: a sequence of frames along a camera path, headless, with ground truth beside
-// each image (its camera as a file `render --camera` reads, OpenCV intrinsics, optional depth) and
-// frame ranges that split over independent processes (Slurm job arrays, Kubernetes indexed Jobs).
+// each image (its camera as a file `render --camera` reads, OpenCV intrinsics, optional AOVs:
+// depth, normal, albedo, instance) and frame ranges that split over independent processes (Slurm
+// job arrays, Kubernetes indexed Jobs).
 //
 // A frame's pixels depend only on the scene, the path, the frame number, the options and the
 // seed: each frame's camera is written as text and read back through the camera-file parser that
 // `render --camera` uses, its seed is a hash of --seed and the frame number, and it is rendered by
 // the same code as `render` (app/FrameRender.h) on a renderer that starts every frame afresh.
+#include "app/AovOption.h"
 #include "app/CliOptions.h"
 #include "app/ExposureOptions.h"
 #include "app/Commands.h"
@@ -19,6 +21,7 @@
 #include "core/Text.h"
 #include "gl/GlContext.h"
 #include "io/AtomicFile.h"
+#include "io/AovChannels.h"
 #include "io/CameraJson.h"
 #include "io/CameraPathJson.h"
 #include "io/CameraSelection.h"
@@ -338,7 +341,7 @@ int runCapture(const CaptureOptions& o) {
   const Shard shard = parseShard(o.shard);
   const std::vector<int> frames = shardFrames(range, shard);
   checkFramePattern(o.out, "--out");
-  const bool depthAov = !o.aovs.empty();
+  const AovSelection aovs = parseAovs(o.aovs);
   const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
 
   // Every output checked before any work (the frames' folders made first: a cluster's shards
@@ -353,8 +356,7 @@ int runCapture(const CaptureOptions& o) {
   const fs::path firstImage = formatFramePath(o.out, frames.empty() ? range.first : frames.front());
   checkOutputPath(firstImage, OutputKind::Image, "--out");
   checkOutputPath(frameCameraPath(firstImage), OutputKind::Any, "--out");  // its name is longer than the image's
-  if (depthAov && firstImage.extension() != ".exr")
-    throw InputError(cat("--aov depth: ", o.out, ": depth goes in an EXR's Z channel; give an --out ending in .exr"));
+  checkAovOutput(aovs, o.out, "--out");
   checkOutputPath(manifest, OutputKind::JsonLines, "--manifest");
   checkNotInput(manifest, "--manifest", o.pathFile, "--path");
   // Nor one of this run's frame camera files (f_0002.camera.json), which the manifest's lines would be
@@ -379,7 +381,7 @@ int runCapture(const CaptureOptions& o) {
 
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   Renderer renderer(scene);
-  std::unique_ptr<RayCaster> caster;  // the depth AOV; rebuilt each frame when the scene moves
+  std::unique_ptr<RayCaster> caster;  // the AOVs; rebuilt each frame when the scene moves
   const RenderTargetLimits limits = queryRenderTargetLimits();
 
   if (colmapFiles) writeColmapModel(o.colmapOut, *colmapFiles);
@@ -426,16 +428,16 @@ int runCapture(const CaptureOptions& o) {
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
     Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
-    std::vector<float> depth;
-    if (depthAov) {
+    std::vector<ImageChannel> aovChannelValues;
+    if (aovs.any()) {
       if (!caster || animated) caster = std::make_unique<RayCaster>(scene);
-      depth = caster->depthImage(camera, size);
+      aovChannelValues = aovChannels(caster->aovImages(camera, size, aovs));
     }
 
     OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
     outputs.add(cameraFile, cameraText);
     applyDisplayForFile(imageFile, image, display.encoding);
-    writeImage(outputs, imageFile, image, depthAov ? &depth : nullptr);
+    writeImage(outputs, imageFile, image, aovChannelValues);
     const double seconds = secondsSince(frameStart);
     ++rendered;
     nlohmann::json line;
@@ -452,7 +454,13 @@ int runCapture(const CaptureOptions& o) {
     line["focal_length_mm"] = key.camera.focalLengthMm;
     line["f_number"] = distanceJson(key.camera.fNumber);
     line["focus_distance"] = distanceJson(key.camera.focusDistance);
-    if (depthAov) line["aov"] = {"depth"};
+    if (aovs.any()) {
+      line["aov"] = aovs.names();
+      // Every channel of the frame's EXR, in the order written.
+      nlohmann::json channels = {"R", "G", "B", "A"};
+      for (const std::string& c : aovChannelNames(aovs)) channels.push_back(c);
+      line["channels"] = channels;
+    }
     if (!display.encoding.isIdentity())
       line["display"] = {{"exposure_stops", display.exposure.stops}, {"exposure", describe(display.exposure)},
                          {"view_transform", viewTransformName(display.encoding.transform)}};
@@ -481,7 +489,7 @@ int runCapture(const CaptureOptions& o) {
 std::function<int()> addCaptureCommand(CLI::App& app) {
   auto o = std::make_shared<CaptureOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "capture", "Render a sequence of frames along a camera path, headless, with each frame's camera (and depth) beside it");
+      "capture", "Render a sequence of frames along a camera path, headless, with each frame's camera (and AOVs) beside it");
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
   cmd->add_option("--path", o->pathFile,
                   "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in the physical form>}, ...]} "
@@ -504,10 +512,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_flag("--skip-existing", o->skipExisting,
                 "leave frames alone whose image exists and whose line the manifest holds (a frame with an image but no "
                 "line is rendered again)");
-  cmd->add_option("--aov", o->aovs,
-                  "extra outputs: depth = a Z channel in the EXR, the distance from the lens centre along the optical axis "
-                  "(world units, +inf where nothing is hit)")
-      ->check(CLI::IsMember({"depth"}));
+  addAovOption(*cmd, o->aovs);
   cmd->add_option("--manifest", o->manifest,
                   "the JSON-lines file each rendered frame appends one line to (default: manifest.jsonl beside the frames)");
   cmd->add_option("--width", o->width, "image width in pixels (default 960; height follows the window's aspect)");

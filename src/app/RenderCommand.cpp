@@ -1,5 +1,6 @@
 // lenslab render: one image of a scene through the lecture's camera, rasterized headless.
 // lenslab raycast: the same image by the CPU ray-cast reference (same options, plus --spp).
+#include "app/AovOption.h"
 #include "app/CliOptions.h"
 #include "app/ExposureOptions.h"
 #include "app/FrameRender.h"
@@ -12,6 +13,7 @@
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
+#include "io/AovChannels.h"
 #include "io/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
@@ -60,6 +62,7 @@ struct RenderOptions {
   std::optional<glm::vec3> background;
   int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
+  std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
   ExposureOptions exposure;           // PNG output only
 };
 
@@ -67,11 +70,20 @@ struct RenderOptions {
 constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
 
+// The selected AOVs of `camera` (the camera the image was rendered with) from the ray caster, as
+// EXR channels; none when none is selected.
+std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, ImageSize size, const AovSelection& aovs) {
+  if (!aovs.any()) return {};
+  return aovChannels(caster.aovImages(camera, size, aovs));
+}
+
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
-// `out`'s temporary file in `outputs`.
+// `out`'s temporary file in `outputs`. `aovChannelValues` gets the selected AOVs (`aovs`) of the
+// camera rendered with (refused for a tiled image).
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
                                const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
-                               ProgressReporter& progress, const DisplayEncoding& display) {
+                               ProgressReporter& progress, const DisplayEncoding& display, const AovSelection& aovs,
+                               std::vector<ImageChannel>& aovChannelValues) {
   Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
@@ -102,6 +114,9 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   if (tiles.tiled && plan.adaptive)
     throw InputError(cat("--target-psnr: ", tiles.why, "; per-tile budgets are not combined with that yet: give a smaller "
                          "--width, or --aperture-samples"));
+  if (tiles.tiled && aovs.any())
+    throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why, "; the AOVs are written with an image rendered in one "
+                         "piece: give a smaller --width (and no --tile-size), or use raycast"));
   if (tiles.tiled) {
 #ifdef __GLIBC__
     // The tiles' buffers (tables, targets, read-backs) are 5 to 30 MB each and differ a little in
@@ -146,11 +161,12 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
 
   Image image = renderPlanned(renderer, camera, plan, size, stats, &progress, o.quiet);
   stats.renderSeconds = secondsSince(renderStart);
+  if (aovs.any()) aovChannelValues = aovsOf(RayCaster(scene), camera, size, aovs);
   return image;
 }
 
 Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats,
-              ProgressReporter& progress) {
+              ProgressReporter& progress, const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues) {
   Camera camera = selected.camera;
   if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
   if (size.pixelCount() > kMaxRaycastPixels)
@@ -178,6 +194,7 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed},
                               [&](int done, int rows) { progress.update(done, rows); });
   stats.renderSeconds = secondsSince(t);
+  aovChannelValues = aovsOf(caster, camera, size, aovs);
   return image;
 }
 
@@ -186,6 +203,8 @@ int runRender(const RenderOptions& o) {
   const fs::path out = o.out;
   // Every output checked before any work, so that a bad --stats refuses before the image exists.
   checkOutputPath(out, OutputKind::Image, "--out");
+  const AovSelection aovs = parseAovs(o.aovs);
+  checkAovOutput(aovs, out, "--out");
   if (!o.statsFile.empty()) checkOutputPath(o.statsFile, OutputKind::Json, "--stats");
   const PlanOptions planOptions = toPlanOptions(o.lens);
 
@@ -227,19 +246,21 @@ int runRender(const RenderOptions& o) {
   // The image and the stats appear together or not at all (io/AtomicFile.h).
   OutputSet outputs;
   std::optional<Image> image;
+  std::vector<ImageChannel> aovChannelValues;  // --aov, beside the image in its EXR
   // One reporter for the whole run: its last line comes after the file is written.
   ProgressReporter progress(stats.command, o.method == Method::Raster ? "samples" : "rows", o.quiet);
   if (o.method == Method::Raster) {
-    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display.encoding);
+    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display.encoding, aovs,
+                      aovChannelValues);
   } else {
-    image = raycast(o, scene, selected, size, stats, progress);
+    image = raycast(o, scene, selected, size, stats, progress, aovs, aovChannelValues);
   }
 
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
     progress.setDetail(cat("writing ", out.string()));
     applyDisplayForFile(out, *image, display.encoding);
-    writeImage(outputs, out, *image);
+    writeImage(outputs, out, *image, aovChannelValues);
     stats.writeSeconds = secondsSince(t);
   }
   progress.setDetail({});  // written: the last line says no more than the figures
@@ -305,6 +326,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);
+  addAovOption(*cmd, options->aovs);
   addExposureOptions(*cmd, options->exposure);
   addTimeOption(*cmd, options->timeSeconds,
                 "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "

@@ -56,10 +56,20 @@ void checkImageExtension(const fs::path& path) {
 }
 
 std::string encodeImage(const fs::path& path, const Image& image, const std::vector<float>* depthZ) {
+  if (!depthZ) return encodeImage(path, image, std::vector<ImageChannel>{});
+  return encodeImage(path, image, std::vector<ImageChannel>{{"Z", *depthZ}});
+}
+
+std::string encodeImage(const fs::path& path, const Image& image, const std::vector<ImageChannel>& extra) {
   checkImageExtension(path);
   const bool png = lowerExtension(path) == ".png";
-  if (depthZ && png) throw InputError(cat(path.string(), ": a depth channel needs .exr (PNG holds 8-bit colour only)"));
-  if (depthZ && depthZ->size() != image.rgba.size() / 4) throw std::logic_error("encodeImage: depth and image sizes differ");
+  if (!extra.empty() && png) {
+    std::string names;
+    for (const ImageChannel& c : extra) names += (names.empty() ? "" : ", ") + c.name;
+    throw InputError(cat(path.string(), ": channels ", names, " need .exr (PNG holds 8-bit colour only)"));
+  }
+  for (const ImageChannel& c : extra)
+    if (c.values.size() != image.rgba.size() / 4) throw std::logic_error("encodeImage: a channel's and the image's sizes differ");
   auto out = OIIO::ImageOutput::create(path.filename().string());  // the format, by extension
   if (!out) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(OIIO::geterror())));
   std::vector<unsigned char> bytes;
@@ -70,11 +80,14 @@ std::string encodeImage(const fs::path& path, const Image& image, const std::vec
   // a second time). EXR: RGBA, A the coverage (the fraction of the pixel × aperture that sees a
   // surface); RGB includes the background over 1 − A, so with --background 0,0,0 it is
   // premultiplied RGBA in OpenEXR's convention, ready to composite.
-  const int channels = png ? 3 : depthZ ? 5 : 4;
+  const int channels = png ? 3 : 4 + static_cast<int>(extra.size());
   OIIO::ImageSpec spec(image.width, image.height, channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-  if (depthZ) {
-    spec.channelnames = {"R", "G", "B", "A", "Z"};
-    spec.z_channel = 4;
+  if (!extra.empty()) {
+    spec.channelnames = {"R", "G", "B", "A"};
+    for (const ImageChannel& c : extra) {
+      if (c.name == "Z") spec.z_channel = static_cast<int>(spec.channelnames.size());
+      spec.channelnames.push_back(c.name);
+    }
   }
   spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
   spec.attribute("Software", "lenslab");
@@ -86,13 +99,14 @@ std::string encodeImage(const fs::path& path, const Image& image, const std::vec
     for (std::size_t i = 0; i < encoded.size(); ++i)
       encoded[i] = static_cast<std::uint8_t>(std::lround(srgbFromLinear(image.rgba[i / 3 * 4 + i % 3]) * 255.0f));
     ok = out->write_image(OIIO::TypeDesc::UINT8, encoded.data());
-  } else if (depthZ) {
-    std::vector<float> rgbaz(depthZ->size() * 5);
-    for (std::size_t i = 0; i < depthZ->size(); ++i) {
-      for (std::size_t k = 0; k < 4; ++k) rgbaz[i * 5 + k] = image.rgba[i * 4 + k];
-      rgbaz[i * 5 + 4] = (*depthZ)[i];
+  } else if (!extra.empty()) {
+    const std::size_t n = 4 + extra.size(), pixels = image.rgba.size() / 4;
+    std::vector<float> interleaved(pixels * n);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      for (std::size_t k = 0; k < 4; ++k) interleaved[i * n + k] = image.rgba[i * 4 + k];
+      for (std::size_t k = 0; k < extra.size(); ++k) interleaved[i * n + 4 + k] = extra[k].values[i];
     }
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, rgbaz.data());
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, interleaved.data());
   } else {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
   }
@@ -105,6 +119,10 @@ std::string encodeImage(const fs::path& path, const Image& image, const std::vec
 
 void writeImage(OutputSet& outputs, const fs::path& path, const Image& image, const std::vector<float>* depthZ) {
   outputs.add(path, encodeImage(path, image, depthZ));
+}
+
+void writeImage(OutputSet& outputs, const fs::path& path, const Image& image, const std::vector<ImageChannel>& channels) {
+  outputs.add(path, encodeImage(path, image, channels));
 }
 
 void writeImage(const fs::path& path, const Image& image) {
@@ -147,6 +165,26 @@ std::vector<float> readDepthChannel(const fs::path& path) {
   if (!in->read_image(0, 0, z, z + 1, OIIO::TypeDesc::FLOAT, depth.data()))
     throw InputError(cat(path.string(), ": cannot read image: ", oneLine(in->geterror())));
   return depth;
+}
+
+std::vector<float> readChannel(const fs::path& path, const std::string& name) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(cat(path.string(), ": cannot read image: ", oneLine(OIIO::geterror())));
+  const OIIO::ImageSpec& spec = in->spec();
+  int found = -1;
+  for (int c = 0; c < spec.nchannels; ++c)
+    if (spec.channelnames[static_cast<std::size_t>(c)] == name) found = c;
+  if (found < 0) throw InputError(cat(path.string(), ": has no channel ", name));
+  std::vector<float> values(static_cast<std::size_t>(spec.width) * spec.height);
+  if (!in->read_image(0, 0, found, found + 1, OIIO::TypeDesc::FLOAT, values.data()))
+    throw InputError(cat(path.string(), ": cannot read image: ", oneLine(in->geterror())));
+  return values;
+}
+
+std::vector<std::string> channelNames(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(cat(path.string(), ": cannot read image: ", oneLine(OIIO::geterror())));
+  return in->spec().channelnames;
 }
 
 }  // namespace lenslab

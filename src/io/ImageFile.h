@@ -24,16 +24,33 @@ void checkImageExtension(const std::filesystem::path& path);
 // (OpenEXR's name for depth; spec.z_channel); only .exr holds it.
 std::string encodeImage(const std::filesystem::path& path, const Image& linear, const std::vector<float>* depthZ = nullptr);
 
+// A float channel an EXR holds beside R, G, B, A: its name (OpenEXR's, e.g. "Z", "N.X") and one
+// value a pixel, rows from the top.
+struct ImageChannel {
+  std::string name;
+  std::vector<float> values;
+};
+// As above with any number of extra channels, written in this order after R, G, B, A (readers
+// find them by name: OpenEXR itself stores channels sorted by name). A channel named "Z" is the
+// depth (spec.z_channel). Only .exr holds them; a .png with channels is refused naming them.
+std::string encodeImage(const std::filesystem::path& path, const Image& linear, const std::vector<ImageChannel>& channels);
+
 // One file, whole or not at all.
 void writeImage(const std::filesystem::path& path, const Image& linear);
 // Into `outputs`: the target appears when the set is committed, with the run's other files.
 void writeImage(OutputSet& outputs, const std::filesystem::path& path, const Image& linear,
                 const std::vector<float>* depthZ = nullptr);
+void writeImage(OutputSet& outputs, const std::filesystem::path& path, const Image& linear,
+                const std::vector<ImageChannel>& channels);
 
 // Reads PNG/EXR (or anything OIIO reads) into linear RGBA; 8-bit files are decoded from sRGB.
 Image readImage(const std::filesystem::path& path);
 // The Z channel of an EXR (rows from the top). Throws InputError when the file has none.
 std::vector<float> readDepthChannel(const std::filesystem::path& path);
+// The channel called `name` of an image file (rows from the top). Throws InputError when it has none.
+std::vector<float> readChannel(const std::filesystem::path& path, const std::string& name);
+// The names of an image file's channels, as its reader lists them.
+std::vector<std::string> channelNames(const std::filesystem::path& path);
 
 // What a PNG of the image holds before its sRGB encoding: `display`'s exposure and view transform
 // (io/ToneMap.h) applied to the RGB of `image` in place, leaving display-referred linear values

@@ -171,7 +171,23 @@ struct RayCaster::Impl {
     bool surface = false;  // false: the background
     double t = std::numeric_limits<double>::infinity();  // along the unit ray direction
     Ray ray;
+    // What the surface is, for the AOVs (unset on a miss): the normal it was shaded with (world,
+    // unit), its base colour (linear RGB) and the glTF node of its instance.
+    glm::vec3 normal{0.0f};
+    glm::vec3 albedo{0.0f};
+    int gltfNode = -1;
   };
+
+  // The normal the surface is shaded with at barycentric (b0, b1, b2): the interpolated vertex
+  // normal (the loader gives a mesh without normals its face normals) in world space, turned to
+  // the viewer on the back of a double-sided material, as shaders/scene/scene.frag does. The one
+  // place a normal map would perturb it.
+  static glm::vec3 shadingNormal(const Geometry& g, const Material& material, bool front, const Vertex& v0,
+                                 const Vertex& v1, const Vertex& v2, float b0, float b1, float b2) {
+    glm::vec3 normal = glm::normalize(g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal));
+    if (material.doubleSided && !front) normal = -normal;
+    return normal;
+  }
 
   // First visible surface along `ray` (single-sided back faces and masked-out texels are passed
   // through, as the rasterizer culls and discards them), shaded. Textures are filtered over
@@ -272,8 +288,7 @@ struct RayCaster::Impl {
         tNear = skipTo;
         continue;
       }
-      glm::vec3 normal = glm::normalize(g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal));
-      if (material.doubleSided && !front) normal = -normal;
+      const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2);
       glm::vec3 colour = shade(glm::vec3(base), normal, material.unlit, scene->lighting);
       if (material.emits()) {
         glm::vec3 emitted = material.emissive;
@@ -292,7 +307,7 @@ struct RayCaster::Impl {
         }
         colour += emitted;
       }
-      return {colour, true, tHit, ray};
+      return {colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};
     }
     return miss;
   }
@@ -335,10 +350,31 @@ double RayCaster::depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size
 }
 
 std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) const {
-  std::vector<float> depth(static_cast<std::size_t>(size.pixelCount()));
+  AovSelection depth;
+  depth.depth = true;
+  return aovImages(camera, size, depth).depth;
+}
+
+AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const {
+  AovImages out;
+  out.widthPx = size.widthPx;
+  out.heightPx = size.heightPx;
+  const auto pixels = static_cast<std::size_t>(size.pixelCount());
+  if (selection.depth) out.depth.resize(pixels);
+  if (selection.normal) out.normal.resize(3 * pixels);
+  if (selection.albedo) out.albedo.resize(3 * pixels);
+  if (selection.instance) {
+    out.instance.resize(pixels);
+    // Float holds every integer to 2^24 exactly, and skips odd ones beyond.
+    for (const Instance& instance : impl_->scene->instances)
+      if (instance.gltfNode > kMaxExactInstance)
+        throw InputError(cat(impl_->scene->source, ": node ", instance.gltfNode, " has an index beyond 2^24 = ",
+                             kMaxExactInstance, ", the largest the float instance AOV holds exactly"));
+  }
   impl_->rebase(impl_->originFor(camera, size));
   const Impl& m = *impl_;
-  const glm::dvec3 axis = -viewBasis(camera.view).n;
+  const ViewBasis basis = viewBasis(camera.view);
+  const glm::dvec3 axis = -basis.n;
   const bool lensEffects = !camera.effects.isZero();
   Camera focused = camera;
   focused.effects = {};
@@ -348,12 +384,23 @@ std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) c
         glm::dvec2 pixel(x + 0.5, y + 0.5);
         if (lensEffects) pixel = undistortedSample(camera, Channel::Green, pixel, size).pixel;
         const Impl::Hit hit = m.shadeAlong(focused, {0.0, 0.0}, pixel, size, 1.0);
-        depth[static_cast<std::size_t>(y) * size.widthPx + x] =
-            std::isinf(hit.t) ? std::numeric_limits<float>::infinity()
-                              : static_cast<float>(glm::dot(hit.t * hit.ray.direction, axis));
+        const std::size_t i = static_cast<std::size_t>(y) * size.widthPx + x;
+        if (selection.depth)
+          out.depth[i] = std::isinf(hit.t) ? std::numeric_limits<float>::infinity()
+                                           : static_cast<float>(glm::dot(hit.t * hit.ray.direction, axis));
+        if (selection.normal && hit.surface) {
+          // Camera space: the world normal's components along u, v and n.
+          const glm::dvec3 n(hit.normal);
+          const glm::dvec3 cameraNormal(glm::dot(n, basis.u), glm::dot(n, basis.v), glm::dot(n, basis.n));
+          for (int k = 0; k < 3; ++k) out.normal[3 * i + k] = static_cast<float>(cameraNormal[k]);
+        }
+        if (selection.albedo && hit.surface)
+          for (int k = 0; k < 3; ++k) out.albedo[3 * i + k] = hit.albedo[k];
+        if (selection.instance)
+          out.instance[i] = hit.surface ? static_cast<float>(hit.gltfNode) : kNoSurfaceInstance;
       }
   });
-  return depth;
+  return out;
 }
 
 Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,

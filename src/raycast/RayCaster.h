@@ -7,6 +7,7 @@
 // rows over the cores.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
+#include "core/Aovs.h"
 #include "core/Image.h"
 #include "scene/Scene.h"
 
@@ -52,6 +53,12 @@ class RayCaster {
   // first taken back through the inverse lens model (green's), so depth lines up with the image.
   // One ray per pixel: depth is not averaged over the pixel or the aperture. Rows from the top.
   std::vector<float> depthImage(const Camera& camera, ImageSize size) const;
+
+  // The selected AOVs (core/Aovs.h) of the same ray per pixel as depthImage: the first surface
+  // seen through each pixel centre from the lens centre. The normal is the one that surface is
+  // shaded with, in camera space (u, v, n: right, up, toward the viewer); the albedo its base
+  // colour (factor × texture over one pixel × vertex colour, linear); the instance its glTF node.
+  AovImages aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const;
 
  private:
   struct Impl;

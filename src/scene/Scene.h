@@ -81,6 +81,10 @@ struct Mesh {
 struct Instance {
   int mesh = -1;
   glm::dmat4 worldFromModel{1.0};
+  // The glTF node that places it (its index in the file's "nodes"), which the instance AOV
+  // reports; -1 for an instance made in code. A node with a mesh of several primitives places
+  // one instance per primitive, all with the node's index.
+  int gltfNode = -1;
 };
 
 // The largest world coordinate a scene may have. Both renderers carry positions in float

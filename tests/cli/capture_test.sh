@@ -52,6 +52,27 @@ EOF
 if out=$($python -c "$check_manifest" "$work/one/manifest.jsonl" "$work/sharded/manifest.jsonl" 2>&1); then pass
 else fail "manifest: $out"; fi
 
+# --- every AOV: the frame's EXR holds their channels, the manifest names them ---
+if "$lenslab" capture --path "$path" --width 32 --aperture-samples 1 --frames 10:11 --aov depth,normal,albedo,instance \
+     --out "$work/aovs/frame_%04d.exr" -q; then
+  check_aovs=$(cat <<'EOF'
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1])]
+assert len(lines) == 2, lines
+for l in lines:
+    assert l["aov"] == ["depth", "normal", "albedo", "instance"], l["aov"]
+    assert l["channels"] == ["R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z", "albedo.R", "albedo.G", "albedo.B", "instance"], l["channels"]
+EOF
+)
+  if out=$($python -c "$check_aovs" "$work/aovs/manifest.jsonl" 2>&1); then pass; else fail "aov manifest: $out"; fi
+  names=$(iinfo -v "$work/aovs/frame_0010.exr" | sed -n 's/^ *channel list: //p' | tr -d ' ')
+  for c in Z N.X N.Y N.Z albedo.R albedo.G albedo.B instance; do
+    if tr ',' '\n' <<<"$names" | grep -qxF "$c"; then pass; else fail "capture --aov: no channel $c in: $names"; fi
+  done
+else
+  fail "capture --aov depth,normal,albedo,instance"
+fi
+
 # --- the cluster scripts as their schedulers would run them ---
 # Slurm: an array 2-6:2 (it need not start at 0 nor step by 1), each task with the variables Slurm sets.
 for task in 2 4 6; do
@@ -289,6 +310,7 @@ expect_refusal "shard index" "--shard 3/3" -- capture --path "$path" --shard 3/3
 expect_refusal "shard form" "--shard 1" -- capture --path "$path" --shard 1 "${bad[@]}"
 expect_refusal "depth in a PNG" "--aov depth" -- capture --path "$path" --aov depth "${bad[@]}"
 expect_refusal "unknown aov" "--aov" -- capture --path "$path" --aov normals "${bad[@]}"
+expect_refusal "normals in a PNG" "--aov depth,normal: " -- capture --path "$path" --aov depth,normal "${bad[@]}"
 
 echo "capture: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -46,6 +46,33 @@ for cmd in render raycast; do
   fi
 done
 if "$lenslab" render --width 48 --out "$work/rgb.png" -q && oiiotool --info "$work/rgb.png" | grep -q "3 channel"; then pass; else fail "PNG is not RGB: $(oiiotool --info "$work/rgb.png")"; fi
+# --aov: the AOVs as EXR channels beside RGBA, for render and raycast; the image itself unchanged.
+aov_channels="R,G,B,A,Z,N.X,N.Y,N.Z,albedo.R,albedo.G,albedo.B,instance"
+for cmd in render raycast; do
+  extra=(--width 48 --seed 3 -q)
+  [ "$cmd" = raycast ] && extra+=(--spp 2)
+  if "$lenslab" $cmd "${extra[@]}" --aov depth,normal --aov albedo,instance --out "$work/aov-$cmd.exr" &&
+     "$lenslab" $cmd "${extra[@]}" --out "$work/plain-$cmd.exr"; then
+    # Compared as sets: OpenImageIO lists R, G, B, A first, then the rest in its own order.
+    names=$(iinfo -v "$work/aov-$cmd.exr" | sed -n 's/^ *channel list: //p' | tr -d ' ' | tr ',' '\n' | sort | paste -sd,)
+    want=$(tr ',' '\n' <<<"$aov_channels" | sort | paste -sd,)
+    if [ "$names" = "$want" ]; then pass; else fail "$cmd --aov: channels $names, not $want"; fi
+    if oiiotool "$work/aov-$cmd.exr" --ch R,G,B,A -o "$work/aov-rgba-$cmd.exr" &&
+       idiff -fail 0 -warn 0 "$work/aov-rgba-$cmd.exr" "$work/plain-$cmd.exr" >/dev/null; then pass
+    else fail "$cmd --aov changed the image"; fi
+    # The rows scene shows the sky (instance -1) and its nodes (whole indices >= 0).
+    stats=$(oiiotool "$work/aov-$cmd.exr" --ch instance --printstats 2>&1)
+    if grep -Eq "Stats Min: -1.000000" <<<"$stats" && grep -Eq "Stats Max: [0-9]+\.000000" <<<"$stats"; then pass
+    else fail "$cmd --aov instance: $(grep Stats <<<"$stats")"; fi
+  else
+    fail "$cmd --aov depth,normal --aov albedo,instance"
+  fi
+done
+expect_refusal "render aov in a PNG" "--aov normal: " -- render --aov normal --out "$work/out.png"
+expect_refusal "raycast aov in a PNG" "--aov depth,albedo: " -- raycast --aov depth,albedo --out "$work/out.png"
+expect_refusal "render unknown aov" "--aov" -- render --aov normals --out "$work/out.exr"
+expect_refusal "raycast unknown aov" "--aov" -- raycast --aov depth,Z --out "$work/out.exr"
+expect_refusal "render aov of a tiled image" "--aov instance: " -- render --aov instance --width 66 --tile-size 16 --out "$work/out.exr"
 expect_refusal "background with two values" "--background" -- render --background 1,2 --out "$work/out.png"
 expect_refusal "negative background" "--background" -- raycast --background -1,0,0 --out "$work/out.png"
 

@@ -269,10 +269,10 @@ struct RayCaster::Impl {
       const Vertex& v0 = mesh.vertices[i0];
       const Vertex& v1 = mesh.vertices[i1];
       const Vertex& v2 = mesh.vertices[i2];
-      glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
-      if (material.baseColorTexture >= 0) {
-        const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
-        // Ray differentials: the same lens point, one footprint over in x and in y.
+      // A texture of this surface at the hit, filtered over the sample's footprint by ray
+      // differentials: the same lens point, one footprint over in x and in y.
+      const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
+      const auto sampleTexture = [&](int index) {
         auto uvAt = [&](glm::dvec2 offset) {
           Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
           r.origin -= origin;
@@ -280,10 +280,12 @@ struct RayCaster::Impl {
           return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
         };
         const glm::vec2 uvHere = uvAt({0.0, 0.0});
-        const Texture& texture = scene->textures[static_cast<std::size_t>(material.baseColorTexture)];
-        base *= samplers[static_cast<std::size_t>(material.baseColorTexture)].sample(
-            texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere);
-      }
+        const Texture& texture = scene->textures[static_cast<std::size_t>(index)];
+        return samplers[static_cast<std::size_t>(index)].sample(texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere,
+                                                               uvAt({0.0, footprintPx}) - uvHere);
+      };
+      glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
+      if (material.baseColorTexture >= 0) base *= sampleTexture(material.baseColorTexture);
       if (material.alphaMode == AlphaMode::Mask && base.a < material.alphaCutoff) {
         tNear = skipTo;
         continue;
@@ -292,19 +294,7 @@ struct RayCaster::Impl {
       glm::vec3 colour = shade(glm::vec3(base), normal, material.unlit, scene->lighting);
       if (material.emits()) {
         glm::vec3 emitted = material.emissive;
-        if (material.emissiveTexture >= 0) {
-          const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
-          auto uvAt = [&](glm::dvec2 offset) {
-            Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
-            r.origin -= origin;
-            const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
-            return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
-          };
-          const glm::vec2 uvHere = uvAt({0.0, 0.0});
-          const Texture& texture = scene->textures[static_cast<std::size_t>(material.emissiveTexture)];
-          emitted *= glm::vec3(samplers[static_cast<std::size_t>(material.emissiveTexture)].sample(
-              texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere));
-        }
+        if (material.emissiveTexture >= 0) emitted *= glm::vec3(sampleTexture(material.emissiveTexture));
         colour += emitted;
       }
       return {colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};

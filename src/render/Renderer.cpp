@@ -42,20 +42,23 @@ const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot
   return *slot;
 }
 
-std::optional<Accumulator::Barrel> Renderer::barrelMask() const {
-  if (!camera_.hasBarrel()) return std::nullopt;
-  const Window& w = camera_.view.window;
-  const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
-  const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
-  return Accumulator::Barrel{glm::vec2(origin), glm::vec2(step), static_cast<float>(camera_.barrel.distance / camera_.barrel.radius)};
-}
-
-std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
-  if (!plan_.fieldCurvature) return std::nullopt;
+Accumulator::Curvature Renderer::normalisedPixels() const {
   const Window& w = camera_.view.window;
   const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
   const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
   return Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
+}
+
+std::optional<Accumulator::Barrel> Renderer::barrelMask() const {
+  if (!camera_.hasBarrel()) return std::nullopt;
+  const Accumulator::Curvature pixels = normalisedPixels();
+  return Accumulator::Barrel{pixels.normalisedAtOrigin, pixels.normalisedPerPixel,
+                             static_cast<float>(camera_.barrel.distance / camera_.barrel.radius)};
+}
+
+std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
+  if (!plan_.fieldCurvature) return std::nullopt;
+  return normalisedPixels();
 }
 
 void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables) {

@@ -104,6 +104,9 @@ class Renderer {
   int mostSamples() const;  // the most samples any tile has
   // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
   std::optional<Accumulator::Curvature> curvatureWarp() const;
+  // Normalised image coordinates of the views' GL pixel corner (0, 0) and their step per pixel
+  // (the mapping both the field-curvature warp and the barrel's mask take).
+  Accumulator::Curvature normalisedPixels() const;
   // The barrel's per-pixel mask for the views (Accumulator::Barrel), if the camera has a barrel.
   std::optional<Accumulator::Barrel> barrelMask() const;
   void beginAdaptive();

@@ -3,6 +3,13 @@
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
 #include "../common/shading.glsl"
 
+// Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
+//   2–16      base colour, alpha, the default light, emission (below)
+//   20–79     metallic-roughness, occlusion and punctual lights   texture units 2–3 (+ 9 for a table)
+//   80–99     normal maps and KHR_texture_transform                texture unit 4
+//   100–119   the environment                                      texture units 5–8
+// Vertex attributes: 0–3 below, 4 tangent, 5 TEXCOORD_1.
+
 #ifdef ADD_TO_SUM
 // Depth and stencil decide which fragment adds before it is shaded (the pass has no discard).
 layout(early_fragment_tests) in;

@@ -60,7 +60,7 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
   }
   // Field by field: a struct's padding bytes are unspecified, so hashing whole structs could give
   // another key for the same scene on another run.
-  static_assert(sizeof(Vertex) == 12 * sizeof(float), "Vertex is hashed as its bytes: it must have no padding");
+  static_assert(sizeof(Vertex) == 18 * sizeof(float), "Vertex is hashed as its bytes: it must have no padding");
   for (const Instance& i : scene.instances) {
     h.add(&i.mesh, sizeof i.mesh);
     h.add(&i.worldFromModel, sizeof i.worldFromModel);

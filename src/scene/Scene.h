@@ -44,6 +44,16 @@ struct Texture {
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// A material's use of a texture: which texture, which TEXCOORD_n set, and KHR_texture_transform's
+// map of that set's coordinates (uv' = uvFromTexCoord · (u, v, 1)), the identity where the file
+// gives none.
+struct TextureRef {
+  int texture = -1;  // index into Scene::textures, -1 = none
+  int texCoord = 0;  // TEXCOORD_0 or TEXCOORD_1
+  glm::mat3 uvFromTexCoord{1.0f};
+  bool present() const { return texture >= 0; }
+};
+
 struct Material {
   std::string name;
   glm::vec4 baseColorFactor{1.0f};  // linear RGBA
@@ -56,6 +66,14 @@ struct Material {
   glm::vec3 emissive{0.0f};
   int emissiveTexture = -1;         // index into Scene::textures, -1 = none
   bool emits() const { return emissive != glm::vec3(0.0f); }
+  // glTF 2.0 metallic-roughness, with the specification's defaults (a rough metal).
+  float metallicFactor = 1.0f;
+  float roughnessFactor = 1.0f;         // perceptual roughness; the GGX alpha is its square
+  TextureRef metallicRoughnessTexture;  // linear: G = roughness, B = metallic
+  TextureRef occlusionTexture;          // linear: R
+  float occlusionStrength = 1.0f;
+  TextureRef normalTexture;             // linear, tangent space
+  float normalScale = 1.0f;
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
@@ -66,6 +84,8 @@ struct Vertex {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   glm::vec2 uv{0.0f};
   glm::vec4 color{1.0f};  // COLOR_0, linear; white when absent
+  glm::vec4 tangent{0.0f};  // TANGENT (xyz unit, w = ±1 the bitangent's sign); zero when the mesh has none
+  glm::vec2 uv1{0.0f};      // TEXCOORD_1
 };
 
 // One triangle list with one material (glTF strips and fans are converted to lists).
@@ -75,6 +95,7 @@ struct Mesh {
   std::vector<std::uint32_t> indices;  // always indexed, 3 per triangle
   int material = -1;                   // index into Scene::materials, -1 = glTF default material
   bool hasVertexColors = false;
+  bool hasTangents = false;  // from the file, or generated for a normal map
 };
 
 // A mesh placed in the world by the node hierarchy.
@@ -131,6 +152,22 @@ struct Lighting {
   glm::vec3 background{0.05f, 0.06f, 0.08f};  // linear colour where no surface is hit
 };
 
+// A KHR_lights_punctual light placed by its node, in the extension's units: a directional light's
+// intensity is illuminance (lux), a point or spot light's is luminous intensity (candela).
+enum class LightType { Directional, Point, Spot };
+struct PunctualLight {
+  std::string name;
+  LightType type = LightType::Point;
+  glm::vec3 color{1.0f};  // linear
+  float intensity = 1.0f;
+  double range = 0.0;     // world units; 0 = unbounded (inverse square only)
+  float innerConeAngleRadians = 0.0f;
+  float outerConeAngleRadians = 0.7853982f;  // π/4
+  glm::dvec3 worldPosition{0.0};             // point and spot
+  glm::dvec3 worldDirection{0.0, 0.0, -1.0};  // unit, the way the light shines (its node's −Z)
+  int gltfNode = -1;
+};
+
 struct Scene {
   std::string source;  // file it came from, for messages
   std::vector<Mesh> meshes;
@@ -140,6 +177,7 @@ struct Scene {
   std::vector<Instance> instances;
   std::vector<SceneCamera> cameras;
   Lighting lighting;
+  std::vector<PunctualLight> lights;  // KHR_lights_punctual; empty = lenslab's one default light
   Bounds bounds;                      // world-space bounds of all instances
   std::vector<std::string> notes;     // what the loader left out and why (shown by `lenslab info`)
   SceneAnimation animation;           // what poseScene needs to move instances and cameras; empty when nothing moves

@@ -204,6 +204,7 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.timeSeconds = cameras.timeOf(frame);
   k.where = cat(cameras.name(), ": frame ", frame, " (", k.timeSeconds, " s)");
   k.key = cameras.at(scene, k.timeSeconds, k.where);
+  k.key.aperture = withApertureOptions(k.key.aperture, o.lens);  // --blades / --squeeze over every frame's
   k.camera = toCamera(k.key.camera, k.where);
   k.camera.effects = k.key.effects;
   k.camera.aperture = k.key.aperture;
@@ -424,6 +425,8 @@ int runCapture(const CaptureOptions& o) {
     const FramePlan plan = planFrame(renderer, scene, camera, size, toPlanOptions(lens), stats);
     for (const std::string& w : plan.warnings)
       if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
+    for (const std::string& w : focusWarnings(camera, o.lens))
+      if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
@@ -526,6 +529,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       "seed for the aperture and sub-pixel samples: each frame's seed is a hash of this and the frame number "
       "(the manifest's seed; render --seed with it reproduces the frame)");
   addTargetOption(*cmd, o->lens);
+  addApertureShapeOptions(*cmd, o->lens);
   addCameraOptions(*cmd, o->camera);
   cmd->add_option("--colmap-out", o->colmapOut,
                   "also write the cameras of every frame of --frames as a COLMAP text model in DIR (cameras.txt, "

@@ -43,10 +43,7 @@ PlanOptions toPlanOptions(const LensOptions& o) {
   return p;
 }
 
-namespace {
-
-SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
-  ApertureShape& a = c.camera.aperture;
+ApertureShape withApertureOptions(ApertureShape a, const LensOptions& o) {
   if (o.blades) a.blades = *o.blades;
   if (o.squeeze) a.anamorphicSqueeze = *o.squeeze;
   if (const std::optional<ApertureProblem> problem = apertureShapeProblem(a)) {
@@ -54,6 +51,13 @@ SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
     if (blades && o.blades) throw InputError(cat("--blades ", problem->message));
     if (problem->field == "anamorphic_squeeze" && o.squeeze) throw InputError(cat("--squeeze ", problem->message));
   }
+  return a;
+}
+
+namespace {
+
+SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
+  c.camera.aperture = withApertureOptions(c.camera.aperture, o);
   return c;
 }
 

@@ -34,6 +34,8 @@ PlanOptions toPlanOptions(const LensOptions& options);
 // focus_distance (see refocused(SelectedCamera)); then --blades and --squeeze over the camera's
 // aperture shape (lens/ApertureShape.h), refused in one line naming the option when out of range.
 SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& options);
+// --blades and --squeeze alone over `aperture` (capture: each frame's camera), refused alike.
+ApertureShape withApertureOptions(ApertureShape aperture, const LensOptions& options);
 
 // The background colour (linear RGB) where no surface is seen, replacing the scene's.
 void applyBackground(Scene& scene, const std::optional<glm::vec3>& background);

@@ -250,5 +250,13 @@ if "$lenslab" render --blades 6 --width 48 --out "$work/pinhole-blades.png" 2>"$
    grep -q "warning: --blades 6: the camera has no aperture (a pinhole), so nothing is blurred into the aperture's shape" "$work/stderr"; then pass
 else fail "--blades on a pinhole: $(cat "$work/stderr")"; fi
 
+# capture: over every frame's camera, written into the frame's camera file
+if "$lenslab" capture --path "$src/assets/rows/dolly-zoom.json" --f-number 2 --blades 5 --squeeze 1.5 --width 48 \
+     --aperture-samples 4 --frames 96 --out "$work/cap/f_%04d.png" -q 2>"$work/stderr" &&
+   holds "$work/cap/f_0096.camera.json" 'j["aperture"]["blades"] == 5 and close(j["aperture"]["anamorphic_squeeze"], 1.5)'; then pass
+else fail "capture --blades 5 --squeeze 1.5: $(cat "$work/stderr"; ls "$work/cap" 2>&1)"; fi
+expect_refusal "capture --blades 2" "--blades is 2; give 0 (a circle) or 3 to 64 blades" \
+  -- capture --path "$src/assets/rows/dolly-zoom.json" --blades 2 --width 48 --frames 96 --out "$work/cap2/f_%04d.png"
+
 echo "camera options: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

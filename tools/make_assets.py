@@ -71,6 +71,36 @@ def bricks(x, y):
     return (210, 205, 195) if mortar else (165, 70, 45)
 
 
+def tile_height(x, y, size=128, tiles=4, bevel=0.2):
+    """Raised square tiles with bevelled edges, height 0 (groove) to 1 (tile top), x and y in pixels."""
+    cell = size / tiles
+    fx, fy = ((x + 0.5) % cell) / cell, ((y + 0.5) % cell) / cell
+    edge = min(fx, 1 - fx, fy, 1 - fy)  # 0 at the groove, 0.5 at the tile's centre
+    return min(1.0, edge / bevel)
+
+
+def tiles_normal(x, y, size=128, depth_px=6.0):
+    """The tiles' tangent-space normal map (glTF: +X right, +Y up in the image, +Z out), 8-bit linear."""
+    hx = (tile_height(x + 1, y) - tile_height(x - 1, y)) * 0.5 * depth_px
+    hy = (tile_height(x, y - 1) - tile_height(x, y + 1)) * 0.5 * depth_px  # image rows run down; +Y is up
+    n = normalize([-hx, -hy, 1.0])
+    return tuple(int(round((c * 0.5 + 0.5) * 255)) for c in n)
+
+
+def tiles_occlusion(x, y):
+    """Ambient occlusion of the tiles: the grooves see less of the sky."""
+    a = int(round(255 * (0.45 + 0.55 * tile_height(x, y))))
+    return (a, a, a)
+
+
+def tiles_metal_rough(x, y, size=128, tiles=4):
+    """glTF metallic-roughness: G = roughness, B = metallic. Alternate tiles are polished metal and
+    rough paint; the grooves are rough."""
+    cell = size // tiles
+    metal = (x // cell + y // cell) % 2 == 0 and tile_height(x, y) > 0.99
+    return (0, 60 if metal else 200, 255 if metal else 0)
+
+
 # ---------------------------------------------------------------- glTF builder
 
 class Gltf:
@@ -127,11 +157,33 @@ class Gltf:
         self.images.append((name + ".png", width, height, pixels))
         return len(doc["textures"]) - 1
 
-    def material(self, name, color=(1, 1, 1, 1), texture=None, unlit=False, emissive=None, strength=1.0):
-        pbr = {"baseColorFactor": list(color), "metallicFactor": 0.0, "roughnessFactor": 1.0}
+    def material(self, name, color=(1, 1, 1, 1), texture=None, unlit=False, emissive=None, strength=1.0,
+                 metallic=0.0, roughness=1.0, mr_texture=None, normal_texture=None, normal_scale=1.0,
+                 occlusion_texture=None, occlusion_strength=1.0, occlusion_texcoord=0, transforms=None):
+        """transforms: {"baseColorTexture": {"offset": .., "rotation": .., "scale": ..}, ...} (KHR_texture_transform)."""
+        transforms = transforms or {}
+
+        def ref(slot, index, texcoord=0, **extra):
+            r = {"index": index}
+            if texcoord:
+                r["texCoord"] = texcoord
+            r.update(extra)
+            if slot in transforms:
+                r["extensions"] = {"KHR_texture_transform": transforms[slot]}
+                self._use("KHR_texture_transform")
+            return r
+
+        pbr = {"baseColorFactor": list(color), "metallicFactor": metallic, "roughnessFactor": roughness}
         if texture is not None:
-            pbr["baseColorTexture"] = {"index": texture}
+            pbr["baseColorTexture"] = ref("baseColorTexture", texture)
+        if mr_texture is not None:
+            pbr["metallicRoughnessTexture"] = ref("metallicRoughnessTexture", mr_texture)
         mat = {"name": name, "pbrMetallicRoughness": pbr}
+        if normal_texture is not None:
+            mat["normalTexture"] = ref("normalTexture", normal_texture, **({"scale": normal_scale} if normal_scale != 1.0 else {}))
+        if occlusion_texture is not None:
+            mat["occlusionTexture"] = ref("occlusionTexture", occlusion_texture, occlusion_texcoord,
+                                          **({"strength": occlusion_strength} if occlusion_strength != 1.0 else {}))
         extensions = {}
         if unlit:
             extensions["KHR_materials_unlit"] = {}
@@ -141,27 +193,49 @@ class Gltf:
                 extensions["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
         if extensions:
             mat["extensions"] = extensions
-            used = self.doc.setdefault("extensionsUsed", [])
             for name_used in sorted(extensions):
-                if name_used not in used:
-                    used.append(name_used)
+                self._use(name_used)
         self.doc["materials"].append(mat)
         return len(self.doc["materials"]) - 1
 
-    def mesh(self, name, geometry, material, normals=True, colors=None):
+    def _use(self, extension):
+        used = self.doc.setdefault("extensionsUsed", [])
+        if extension not in used:
+            used.append(extension)
+
+    def light(self, name, kind, color=(1, 1, 1), intensity=1.0, range_m=None, inner=None, outer=None):
+        """A KHR_lights_punctual light (lux for directional, candela for point and spot); place it with node(light=)."""
+        light = {"name": name, "type": kind, "color": list(color), "intensity": intensity}
+        if range_m is not None:
+            light["range"] = range_m
+        if kind == "spot":
+            light["spot"] = {"innerConeAngle": inner, "outerConeAngle": outer}
+        lights = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})["lights"]
+        lights.append(light)
+        self._use("KHR_lights_punctual")
+        return len(lights) - 1
+
+    def mesh(self, name, geometry, material, normals=True, colors=None, uv1=False):
+        """uv1: also a TEXCOORD_1, the same coordinates as TEXCOORD_0 (for a map that asks for set 1)."""
         positions, geo_normals, uvs, indices = geometry
         attributes = {"POSITION": self._accessor(positions, "VEC3", 3)}
         if normals:
             attributes["NORMAL"] = self._accessor(geo_normals, "VEC3", 0)
         attributes["TEXCOORD_0"] = self._accessor(uvs, "VEC2", 2)
+        if uv1:
+            attributes["TEXCOORD_1"] = self._accessor(uvs, "VEC2", 2)
         if colors:
             attributes["COLOR_0"] = self._accessor(colors, "VEC4", 4)
         self.doc["meshes"].append({"name": name, "primitives": [
             {"attributes": attributes, "indices": self._indices(indices), "material": material}]})
         return len(self.doc["meshes"]) - 1
 
-    def node(self, name, mesh=None, translation=None, scale=None, matrix=None, camera=None):
+    def node(self, name, mesh=None, translation=None, scale=None, matrix=None, camera=None, light=None, rotation=None):
         node = {"name": name}
+        if light is not None:
+            node["extensions"] = {"KHR_lights_punctual": {"light": light}}
+        if rotation is not None:
+            node["rotation"] = list(rotation)
         if mesh is not None:
             node["mesh"] = mesh
         if camera is not None:
@@ -290,6 +364,28 @@ def disc(radius, sides=8):
     indices = []
     for k in range(sides):
         indices += [0, 1 + k, 1 + (k + 1) % sides]
+    return positions, normals, uvs, indices
+
+
+def sphere(radius, rings=24, segments=48):
+    """A uv sphere centred at the origin: u once around from +z towards +x, v from the top (+y) down."""
+    positions, normals, uvs, indices = [], [], [], []
+    for i in range(rings + 1):
+        theta = math.pi * i / rings
+        for j in range(segments + 1):
+            phi = 2 * math.pi * j / segments
+            n = [math.sin(theta) * math.sin(phi), math.cos(theta), math.sin(theta) * math.cos(phi)]
+            positions.append([radius * c for c in n])
+            normals.append(n)
+            uvs.append([j / segments, i / rings])
+    for i in range(rings):
+        for j in range(segments):
+            a = i * (segments + 1) + j
+            b = a + segments + 1
+            if i > 0:
+                indices += [a, b, a + 1]
+            if i < rings - 1:
+                indices += [a + 1, b, b + 1]
     return positions, normals, uvs, indices
 
 
@@ -455,10 +551,37 @@ def make_bokeh():
     behind it: out of focus, each lamp takes the aperture's shape."""
     g = Gltf("bokeh")
     floor_tex = g.texture("floor-checker", 256, 256, image(256, 256, checker(32, (120, 120, 120), (25, 25, 25))))
-    g.node("floor", g.mesh("floor", floor(80.0, 40.0), g.material("floor", texture=floor_tex)), translation=(0.0, 0.0, -30.0))
+    g.node("floor", g.mesh("floor", floor(80.0, 40.0), g.material("floor", texture=floor_tex, roughness=0.6)),
+           translation=(0.0, 0.0, -30.0))
     subject_tex = g.texture("subject-stripes", 128, 128, image(128, 128, stripes))
-    g.node("subject-2m", g.mesh("subject", box(0.12, 0.12, 0.12), g.material("subject", texture=subject_tex)),
-           translation=(-0.3, 0.12, -2.0))
+    # The subject uses every map lenslab reads: base colour, metallic-roughness, a normal map, an
+    # occlusion map through TEXCOORD_1, and a KHR_texture_transform (the stripes turned by 90°).
+    normal_tex = g.texture("subject-normal", 128, 128, image(128, 128, tiles_normal))
+    occlusion_tex = g.texture("subject-occlusion", 128, 128, image(128, 128, tiles_occlusion))
+    mr_tex = g.texture("subject-metal-rough", 128, 128, image(128, 128, tiles_metal_rough))
+    subject = g.material("subject", texture=subject_tex, metallic=1.0, roughness=1.0, mr_texture=mr_tex,
+                         normal_texture=normal_tex, occlusion_texture=occlusion_tex, occlusion_texcoord=1,
+                         transforms={"baseColorTexture": {"rotation": math.pi / 2, "offset": [0.0, 1.0]}})
+    g.node("subject-2m", g.mesh("subject", box(0.12, 0.12, 0.12), subject, uv1=True), translation=(-0.3, 0.12, -2.0))
+    # Three spheres beside it: gold (polished metal), a glossy white dielectric, a rough blue one.
+    for k, (name, color, metallic, roughness) in enumerate([
+            ("gold", (1.0, 0.77, 0.34, 1.0), 1.0, 0.25), ("white-gloss", (0.85, 0.85, 0.85, 1.0), 0.0, 0.15),
+            ("blue-rough", (0.1, 0.25, 0.7, 1.0), 0.0, 0.7)]):
+        g.node("sphere-" + name, g.mesh("sphere-" + name, sphere(0.07), g.material(name, color=color, metallic=metallic,
+                                                                                  roughness=roughness)),
+               translation=(-0.05 + 0.17 * k, 0.07, -2.0 + 0.05 * k))
+    # A spot light above and to the right of the subject (candela), and a low sun over the floor (lux).
+    spot = g.light("key-spot", "spot", color=(1.0, 0.95, 0.88), intensity=12.0, inner=0.2, outer=0.45)
+    # The spot at (0.6, 1.2, -1.2) looks along its node's -Z, turned to face the subject at (0, 0.1, -2):
+    # a rotation taking -Z to that direction (quaternion built from the shortest arc).
+    aim = normalize(sub([0.0, 0.1, -2.0], [0.6, 1.2, -1.2]))
+    axis = cross([0.0, 0.0, -1.0], aim)
+    half = math.acos(max(-1.0, min(1.0, -aim[2]))) / 2
+    axis = normalize(axis)
+    g.node("key-spot", light=spot, translation=(0.6, 1.2, -1.2),
+           rotation=[axis[0] * math.sin(half), axis[1] * math.sin(half), axis[2] * math.sin(half), math.cos(half)])
+    sun = g.light("sun", "directional", color=(1.0, 0.97, 0.92), intensity=2.0)
+    g.node("sun", light=sun, rotation=[-0.3826834, 0.0, 0.0, 0.9238795])  # tilted 45° down, towards -Z
     warm = g.material("lamp-warm", color=(0, 0, 0, 1), unlit=True, emissive=(1.0, 0.62, 0.3), strength=6.0)
     cool = g.material("lamp-cool", color=(0, 0, 0, 1), unlit=True, emissive=(0.45, 0.65, 1.0), strength=6.0)
     warm_lamps, cool_lamps = [], []
@@ -501,7 +624,7 @@ except `report/` (outputs of `lenslab sweep` and renders shown in the top-level 
 | `occluder` | partial obscuration: eleven 1.5 cm bars, 12 cm apart, 1 m away, before a 4 × 3 m checker wall at 4 m | physical, 50 mm, focus 4 m |
 | `grid` | distortion: 21 × 15 dots (octagons of radius 4 cm, 0.25 m apart) in the plane z = 0.001, on a dark 8 × 6 m plane | lecture form, view plane on the dots, PRP 3 m in front |
 | `depth-range` | depth precision: cubes at 0.01, 0.1, 1, 10, 100, 1e3, 1e4 and 1e5 m, each 6 % of its distance wide; a red 120 m quad at 1 km in front of a green 240 m quad 1 cm farther | physical, near 0.001, far infinity |
-| `bokeh` | out-of-focus highlights: a striped box at 2 m (left of centre) over a checker floor, 36 small lamps (emissive, strength 6) from 5 to 30 m behind it | physical, 50 mm f/1.4, focus 2 m; `camera-blades.json` (6 blades), `camera-anamorphic.json` (2x squeeze), `camera-cats-eye.json` (a lens barrel) |
+| `bokeh` | out-of-focus highlights and materials: at 2 m a tiled box with every map (base colour through a texture transform, metallic-roughness, normal, occlusion on TEXCOORD_1) and gold, glossy white and rough blue spheres, lit by a spot light and a low sun (KHR_lights_punctual), over a checker floor; 36 small lamps (emissive, strength 6) from 5 to 30 m behind them | physical, 50 mm f/1.4, focus 2 m; `camera-blades.json` (6 blades), `camera-anamorphic.json` (2x squeeze), `camera-cats-eye.json` (a lens barrel) |
 
 `rows/camera-dof.json` (f/1.4, focused on the nearest box at 2 m) and `occluder/camera-dof.json` (f/2) are the same cameras with an
 aperture: the depth-of-field showcase and the partial-obscuration case. Lens effects:

@@ -1,6 +1,6 @@
 // glTF 2.0's metallic-roughness BRDF (the specification's Appendix B) and KHR_lights_punctual, for
 // both renderers. One definition: scene.frag includes this file as GLSL, and src/scene/Brdf.cpp
-// compiles it as C++ with glm (which spells vec2, vec3, dot, mix, clamp as GLSL does). So it keeps
+// compiles it as C++ with glm (which spells vec2, vec3, dot, cross, mix, clamp as GLSL does). So it keeps
 // to what both languages read: float literals with an f suffix, no swizzles, no `out` parameters,
 // no struct constructors (callers build the structs), no GLSL-only built-ins.
 // The includer defines `vec2 dfgTexel(int x, int y)` first: texel (x, y) of the DFG table
@@ -53,10 +53,12 @@ float alphaFromPerceptual(float perceptualRoughness) {
   return r * r;
 }
 
-// Trowbridge-Reitz (GGX) normal distribution.
-float distributionGgx(float nh, float alpha) {
+// Trowbridge-Reitz (GGX) normal distribution, with its denominator nh²(α² − 1) + 1 written as
+// |n × h|² + nh²α²: near the peak (nh → 1, small α) 1 − nh² cancels to rounding noise, which
+// the cross product's length does not (Filament does the same).
+float distributionGgx(float nh, float sinSquared, float alpha) {
   float a2 = alpha * alpha;
-  float f = nh * nh * (a2 - 1.0f) + 1.0f;
+  float f = sinSquared + nh * nh * a2;
   return a2 / (kPi * f * f);
 }
 
@@ -124,7 +126,8 @@ vec3 punctualRadiance(Surface s, Light light, vec3 p) {
   float alpha = alphaFromPerceptual(s.perceptualRoughness);
   vec3 f = fresnelSchlick(specularF0(s), vh);
   vec3 diffuse = (vec3(1.0f) - f) * diffuseColor(s) * (1.0f / kPi);
-  vec3 specular = f * (distributionGgx(nh, alpha) * visibilitySmithGgx(nl, nv, alpha));
+  vec3 nxh = cross(s.n, h);
+  vec3 specular = f * (distributionGgx(nh, dot(nxh, nxh), alpha) * visibilitySmithGgx(nl, nv, alpha));
   return (diffuse + specular) * illuminanceFacingLight(light, p) * nl;
 }
 

@@ -14,6 +14,7 @@ const std::vector<glm::vec2>& table();
 // The GLSL, as C++: glm's names are GLSL's.
 namespace glsl {
 using glm::clamp;
+using glm::cross;
 using glm::dot;
 using glm::length;
 using glm::max;

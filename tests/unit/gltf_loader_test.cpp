@@ -180,7 +180,7 @@ TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
                                                       "does not support (supported: KHR_materials_unlit, "
-                                                      "KHR_materials_emissive_strength)");
+                                                      "KHR_materials_emissive_strength, KHR_lights_punctual)");
   }
 }
 
@@ -339,7 +339,7 @@ TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "UnicodeTest");
   const Scene spaces = loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf");
   EXPECT_EQ(spaces.triangleCount(), 12u);
-  ASSERT_EQ(spaces.images.size(), 1u) << "the base colour image's %20-encoded URI resolves";
+  ASSERT_EQ(spaces.images.size(), 2u) << "the base colour and metallic-roughness images' %20-encoded URIs resolve";
   for (const char* file : {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
     const Scene unicode = loadSample(file);
     EXPECT_EQ(unicode.triangleCount(), 2u) << file;

@@ -10,6 +10,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -82,6 +83,34 @@ TEST(RasterVsRaycast, MetallicRoughnessOcclusionPointAndSpot) {
   unlit.lighting.diffuse = 0.0f;
   const Image dark = RayCaster(unlit).render(camera, size, RaycastOptions{4, 11});
   EXPECT_LT(compareImages(dark, reference, 0.0).psnrDb, 30.0) << "the lights change the image";
+}
+
+// The same scene and its lights moved 1e7 from the world origin light it as at the origin, in both
+// renderers: positions reach the shading relative to each view's eye (the raster) or to a point
+// near the camera (the ray caster), composed in double. In float world coordinates a point light
+// 1e7 away would be placed to within a unit, and the highlights would wander.
+TEST(MaterialsFarFromTheOrigin, ALitSceneMovedBy1e7RendersAsAtTheOrigin) {
+  LENSLAB_REQUIRE_GL();
+  const Scene scene = rowsWithMaterialsAndLights();
+  const Camera camera = loadCameraJson(fs::path(LENSLAB_TEST_ASSET_DIR) / "rows/camera.json").camera;
+  const ImageSize size{160, 107};
+  const glm::dvec3 offset(1e7, 2.5e6, -5e6);
+  Scene moved = scene;
+  for (Instance& instance : moved.instances) instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
+  for (PunctualLight& light : moved.lights) light.worldPosition += offset;
+  moved.bounds = computeBounds(moved);
+  Camera far = camera;
+  far.view.vrp += offset;
+  Camera jittered = camera;
+  jittered.apertureRadius = 1e-3;  // only to get a plan with 16 jittered views
+  const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3});
+  const double raster = compareImages(Renderer(moved).render(far, plan, size), Renderer(scene).render(camera, plan, size), 0.0).psnrDb;
+  const RaycastOptions options{4, 5};
+  const double rayCast = compareImages(RayCaster(moved).render(far, size, options), RayCaster(scene).render(camera, size, options), 0.0).psnrDb;
+  std::cout << "[ measure  ] rows with materials and lights moved by 1e7: raster " << raster << " dB, ray cast " << rayCast
+            << " dB vs at the origin\n";
+  EXPECT_GE(raster, 50.0);
+  EXPECT_GE(rayCast, 50.0);
 }
 
 }  // namespace

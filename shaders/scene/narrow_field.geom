@@ -14,6 +14,7 @@ in ToClip {
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+  vec3 shadingPosition;
 } vertex[];
 
 // Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
@@ -22,6 +23,7 @@ invariant gl_Position;
 out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;
+out vec3 shadingPosition;
 
 const int kMaxCorners = 7;
 const double kGuard = 2.0;
@@ -31,6 +33,7 @@ struct Corner {
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+  vec3 shadingPosition;
 };
 
 Corner mixCorners(Corner a, Corner b, double t) {
@@ -39,6 +42,7 @@ Corner mixCorners(Corner a, Corner b, double t) {
   c.worldNormal = mix(a.worldNormal, b.worldNormal, float(t));
   c.uv = mix(a.uv, b.uv, float(t));
   c.vertexColor = mix(a.vertexColor, b.vertexColor, float(t));
+  c.shadingPosition = mix(a.shadingPosition, b.shadingPosition, float(t));
   return c;
 }
 
@@ -52,7 +56,8 @@ void main() {
   Corner polygon[kMaxCorners];
   int count = 3;
   for (int i = 0; i < 3; ++i)
-    polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor);
+    polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor,
+                        vertex[i].shadingPosition);
 
   // Sutherland–Hodgman, one plane at a time.
   for (int p = 0; p < 4 && count > 0; ++p) {
@@ -76,6 +81,7 @@ void main() {
       worldNormal = c.worldNormal;
       uv = c.uv;
       vertexColor = c.vertexColor;
+      shadingPosition = c.shadingPosition;
       EmitVertex();
     }
     EndPrimitive();

@@ -11,12 +11,14 @@ layout(location = 3) in vec4 inColor;
 
 layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
 layout(location = 12) uniform dmat4 clipFromModelDouble;
+layout(location = 20) uniform mat4 shadingFromModel;  // as in scene.vert
 
 out ToClip {
   dvec4 clipPosition;
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+  vec3 shadingPosition;
 } vertex;
 
 void main() {
@@ -24,4 +26,5 @@ void main() {
   vertex.worldNormal = worldNormalFromModel * inNormal;
   vertex.uv = inUv;
   vertex.vertexColor = inColor;
+  vertex.shadingPosition = (shadingFromModel * vec4(inPosition, 1.0)).xyz;
 }

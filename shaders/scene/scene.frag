@@ -1,7 +1,6 @@
 #version 450 core
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
-#include "../common/shading.glsl"
 
 // Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
 //   2–16      base colour, alpha, the default light, emission (below)
@@ -18,6 +17,7 @@ layout(early_fragment_tests) in;
 in vec3 worldNormal;
 in vec2 uv;
 in vec4 vertexColor;
+in vec3 shadingPosition;  // scene.vert: the point relative to the view's shading origin
 
 layout(location = 2) uniform vec4 baseColorFactor;
 layout(location = 3) uniform bool hasBaseColorTexture;
@@ -25,9 +25,8 @@ layout(location = 4) uniform bool unlit;
 layout(location = 5) uniform bool alphaMask;
 layout(location = 6) uniform float alphaCutoff;
 layout(location = 7) uniform bool doubleSided;
-layout(location = 8) uniform vec3 toLight;
+// Radiance of the uniform surround (Lighting::ambient). Locations 8 and 10 (the former light) are free.
 layout(location = 9) uniform float ambient;
-layout(location = 10) uniform float diffuse;
 // Added to GL's level of detail. N jittered views sample each pixel N times, so each lookup should
 // filter over its own 1/√N of the pixel (λ − ½·log2 N), not over the whole pixel: the mean of the
 // views then converges to the pixel integral of the unfiltered texture, not to a pixel-blurred one.
@@ -45,6 +44,62 @@ layout(location = 14) uniform vec4 addWeight;
 
 layout(binding = 0) uniform sampler2D baseColorTexture;
 layout(binding = 1) uniform sampler2D emissiveTexture;
+
+// glTF metallic-roughness and KHR_lights_punctual (docs/materials.md; render/ScenePass.cpp sets them).
+// The shading origin is this view's eye for a perspective view; a parallel view has no eye, its
+// direction toward the viewer is `towardViewer` and the origin a point near the scene.
+layout(location = 21) uniform vec3 towardViewer;
+layout(location = 22) uniform bool parallelView;
+layout(location = 23) uniform float metallicFactor;
+layout(location = 24) uniform float roughnessFactor;
+layout(location = 25) uniform bool hasMetallicRoughnessTexture;
+layout(location = 26) uniform bool hasOcclusionTexture;
+layout(location = 27) uniform float occlusionStrength;
+layout(location = 28) uniform int lightCount;
+// Up to kMaxShadingLights (scene/ShadingLights.h) lights, positions relative to the shading origin.
+layout(location = 32) uniform vec4 lightPositionRange[8];   // xyz position, w range (0: none)
+layout(location = 40) uniform vec4 lightDirectionType[8];   // xyz the way it shines, w LightType
+layout(location = 48) uniform vec3 lightIntensity[8];       // colour × lux or candela
+layout(location = 56) uniform vec2 lightSpot[8];            // spotScaleOffset
+layout(binding = 2) uniform sampler2D metallicRoughnessTexture;  // linear: G roughness, B metallic
+layout(binding = 3) uniform sampler2D occlusionTexture;          // linear: R
+layout(binding = 9) uniform sampler2D dfgTable;                  // RG32F, kDfgSize², texelFetch only
+
+vec2 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rg; }
+#include "../common/brdf.glsl"
+
+// Punctual lights plus the surround, as the ray caster's shadeAlong computes them.
+vec3 shadeLit(vec3 base, vec3 n) {
+  Surface s;
+  s.baseColor = base;
+  s.metallic = metallicFactor;
+  s.perceptualRoughness = roughnessFactor;
+  if (hasMetallicRoughnessTexture) {
+    vec4 mr = texture(metallicRoughnessTexture, uv, lodBias);
+    s.perceptualRoughness *= mr.g;
+    s.metallic *= mr.b;
+  }
+  s.occlusion = hasOcclusionTexture ? 1.0 + occlusionStrength * (texture(occlusionTexture, uv, lodBias).r - 1.0) : 1.0;
+  s.n = n;
+  s.v = parallelView ? towardViewer : normalize(-shadingPosition);
+  vec3 colour = vec3(0.0);
+  for (int i = 0; i < lightCount; ++i) {
+    Light light;
+    light.type = int(lightDirectionType[i].w);
+    light.intensity = lightIntensity[i];
+    light.position = lightPositionRange[i].xyz;
+    light.direction = lightDirectionType[i].xyz;
+    light.range = lightPositionRange[i].w;
+    light.spotScale = lightSpot[i].x;
+    light.spotOffset = lightSpot[i].y;
+    colour += punctualRadiance(s, light, shadingPosition);
+  }
+  // The uniform surround; an environment's lookups go here.
+  vec3 ambientDiffuse = vec3(ambient);
+  vec3 ambientSpecular = vec3(ambient);
+  colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgLookup(dot(s.n, s.v), s.perceptualRoughness));
+  return colour;
+}
 
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
@@ -69,7 +124,7 @@ void main() {
   vec3 n = normalize(worldNormal);
   // A double-sided surface seen from behind is lit as its back: the normal faces the viewer.
   if (doubleSided && !gl_FrontFacing) n = -n;
-  vec3 colour = shade(base.rgb, n, unlit, Lighting(toLight, ambient, diffuse));
+  vec3 colour = unlit ? base.rgb : shadeLit(base.rgb, n);
   colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, uv, lodBias).rgb : emissive;
 #ifdef ADD_TO_SUM
   outColor = addWeight * vec4(colour - background, 1.0);

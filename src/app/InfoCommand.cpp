@@ -86,10 +86,19 @@ int runInfo(const std::string& path, const std::string& cameraFile, const Camera
     out << "  [" << i << "] " << (m.name.empty() ? "(unnamed)" : m.name) << ": " << (m.unlit ? "unlit" : "lit")
         << ", base [" << m.baseColorFactor.r << ", " << m.baseColorFactor.g << ", " << m.baseColorFactor.b << ", "
         << m.baseColorFactor.a << "]" << (m.baseColorTexture >= 0 ? ", textured" : "")
+        << (m.unlit ? std::string() : cat(", metallic ", m.metallicFactor, ", roughness ", m.roughnessFactor))
+        << (m.metallicRoughnessTexture.present() ? ", metallic-roughness map" : "") << (m.occlusionTexture.present() ? ", occlusion map" : "")
         << (m.alphaMode == AlphaMode::Mask ? ", alpha mask" : m.alphaMode == AlphaMode::Blend ? ", alpha blend (drawn opaque)" : "")
         << (m.doubleSided ? ", double-sided" : "") << "\n";
   }
   out << "textures    " << scene.textures.size() << " (" << scene.images.size() << " images)\n";
+  out << "lights      " << scene.lights.size() << (scene.lights.empty() ? " (lenslab's default directional light)" : " (KHR_lights_punctual)") << "\n";
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const PunctualLight& l = scene.lights[i];
+    static const char* const kTypes[] = {"directional", "point", "spot"};
+    out << "  [" << i << "] " << (l.name.empty() ? "(unnamed)" : l.name) << ": " << kTypes[static_cast<int>(l.type)] << ", "
+        << l.intensity << (l.type == LightType::Directional ? " lx" : " cd") << ", node " << l.gltfNode << "\n";
+  }
   for (const std::string& note : scene.notes) out << "note        " << note << "\n";
 
   if (scene.triangleCount() > 0) {

@@ -51,7 +51,7 @@ class ShaderFiles {
   std::optional<fs::path> folder_;
 };
 
-// `file` is relative to the shader folder and normalised ("common/shading.glsl"), which is also
+// `file` is relative to the shader folder and normalised ("common/brdf.glsl"), which is also
 // the name compile errors give.
 void expand(const fs::path& file, const ShaderFiles& files, ShaderSource& out, int depth) {
   if (depth > 16) throw std::runtime_error("shader " + file.generic_string() + ": #include nested too deeply");

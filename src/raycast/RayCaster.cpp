@@ -8,6 +8,7 @@
 #include "core/Text.h"
 #include "lens/AperturePattern.h"
 #include "raycast/TextureSampler.h"
+#include "scene/ShadingLights.h"
 
 #include <embree3/rtcore.h>
 #include <limits>
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -42,11 +44,11 @@ glm::dvec2 barycentricOnPlane(const Ray& ray, const glm::dvec3& p0, const glm::d
   return {(d11 * d20 - d01 * d21) / det, (d00 * d21 - d01 * d20) / det};
 }
 
-// lenslab's shading model (src/scene/Scene.h), as shaders/common/shading.glsl computes it.
-glm::vec3 shade(const glm::vec3& base, const glm::vec3& normal, bool unlit, const Lighting& light) {
-  if (unlit) return base;
-  const float lambert = std::max(0.0f, glm::dot(normal, light.toLight));
-  return base * (light.ambient + light.diffuse * lambert);
+// Textures a material reads as linear data rather than sRGB colour.
+bool readAsLinear(const Scene& scene, int texture) {
+  for (const Material& m : scene.materials)
+    if (m.metallicRoughnessTexture.texture == texture || m.occlusionTexture.texture == texture) return true;
+  return false;
 }
 
 }  // namespace
@@ -63,6 +65,8 @@ struct RayCaster::Impl {
   };
   std::vector<Geometry> geometries;           // by Embree geometry ID
   std::vector<TextureSampler> samplers;       // by Scene texture index
+  std::vector<std::optional<TextureSampler>> linearSamplers;  // the same, decoded as linear data where a material needs it
+  std::vector<ShadingLight> lights;           // positions relative to `origin` (rebase)
   // Embree works in float. Its geometry is stored relative to `origin` (the point of the scene's
   // bounds nearest the camera's lens centre, subtracted in double), and each ray starts where it
   // enters the bounds: a scene 1e7 from the world origin, or a telephoto's subject 1e9 from the
@@ -93,6 +97,7 @@ struct RayCaster::Impl {
     release();
     geometries.clear();
     origin = newOrigin;
+    lights = shadingLights(*scene, origin);
     const double size = scene->bounds.empty() ? 0.0 : glm::length(scene->bounds.max - scene->bounds.min);
     scale = std::isfinite(size) && size > 0.0 ? std::exp2(std::round(std::log2(size))) : 1.0;
     rtcScene = rtcNewScene(device);
@@ -272,7 +277,7 @@ struct RayCaster::Impl {
       // A texture of this surface at the hit, filtered over the sample's footprint by ray
       // differentials: the same lens point, one footprint over in x and in y.
       const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
-      const auto sampleTexture = [&](int index) {
+      const auto sampleTexture = [&](int index, bool linear = false) {
         auto uvAt = [&](glm::dvec2 offset) {
           Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
           r.origin -= origin;
@@ -281,7 +286,9 @@ struct RayCaster::Impl {
         };
         const glm::vec2 uvHere = uvAt({0.0, 0.0});
         const Texture& texture = scene->textures[static_cast<std::size_t>(index)];
-        return samplers[static_cast<std::size_t>(index)].sample(texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere,
+        const TextureSampler& sampler =
+            linear ? *linearSamplers[static_cast<std::size_t>(index)] : samplers[static_cast<std::size_t>(index)];
+        return sampler.sample(texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere,
                                                                uvAt({0.0, footprintPx}) - uvHere);
       };
       glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
@@ -291,7 +298,30 @@ struct RayCaster::Impl {
         continue;
       }
       const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2);
-      glm::vec3 colour = shade(glm::vec3(base), normal, material.unlit, scene->lighting);
+      glm::vec3 colour(base);
+      if (!material.unlit) {
+        // brdf.glsl, as scene.frag evaluates it: the same inputs, v toward this ray's origin.
+        ShadingSurface surface;
+        surface.baseColor = glm::vec3(base);
+        surface.metallic = material.metallicFactor;
+        surface.perceptualRoughness = material.roughnessFactor;
+        if (material.metallicRoughnessTexture.present()) {
+          const glm::vec4 mr = sampleTexture(material.metallicRoughnessTexture.texture, true);
+          surface.perceptualRoughness *= mr.g;
+          surface.metallic *= mr.b;
+        }
+        if (material.occlusionTexture.present())
+          surface.occlusion = 1.0f + material.occlusionStrength * (sampleTexture(material.occlusionTexture.texture, true).r - 1.0f);
+        surface.n = normal;
+        surface.v = -glm::vec3(ray.direction);
+        const glm::vec3 position(ray.origin + tHit * ray.direction);  // relative to `origin`, as the lights are
+        colour = glm::vec3(0.0f);
+        for (const ShadingLight& light : lights) colour += punctualRadiance(surface, light, position);
+        // The uniform surround (Lighting::ambient); an environment's lookups go here.
+        const glm::vec3 ambientDiffuse(scene->lighting.ambient), ambientSpecular(scene->lighting.ambient);
+        const glm::vec2 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
+        colour += imageLightRadiance(surface, ambientDiffuse, ambientSpecular, dfg);
+      }
       if (material.emits()) {
         glm::vec3 emitted = material.emissive;
         if (material.emissiveTexture >= 0) emitted *= glm::vec3(sampleTexture(material.emissiveTexture));
@@ -321,6 +351,9 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   for (const Texture& t : scene.textures) {
     const bool mipmaps = t.sampler.minFilter != Filter::Nearest && t.sampler.minFilter != Filter::Linear;
     m.samplers.emplace_back(scene.images[static_cast<std::size_t>(t.image)], mipmaps);
+    m.linearSamplers.emplace_back();
+    if (readAsLinear(scene, static_cast<int>(m.samplers.size()) - 1))
+      m.linearSamplers.back().emplace(scene.images[static_cast<std::size_t>(t.image)], mipmaps, false);
   }
 }
 

@@ -20,6 +20,9 @@ class TextureSampler {
  public:
   TextureSampler() = default;
   TextureSampler(const TextureImage& image, bool mipmaps);
+  // `srgb` false: the image holds linear data (metallic-roughness, occlusion, normals), decoded as
+  // value / 255 and averaged as such for its mip chain, as the GPU's RGBA8 texture of it is.
+  TextureSampler(const TextureImage& image, bool mipmaps, bool srgb);
 
   // uv in glTF's convention (0, 0 at the image's top-left); dUvDx, dUvDy: how far uv moves across
   // the sample's footprint along image x and y. Returns linear RGBA.

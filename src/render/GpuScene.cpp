@@ -37,6 +37,16 @@ GpuScene::GpuMesh upload(const Mesh& mesh) {
   return gpu;
 }
 
+gl::Texture uploadImage(const TextureImage& image, bool mipmaps, GLenum format) {
+  gl::Texture texture = gl::Texture::create();
+  const int levels = mipmaps ? 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height)))) : 1;
+  glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba8.data());
+  if (levels > 1) glGenerateTextureMipmap(texture.id());
+  return texture;
+}
+
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
@@ -48,8 +58,16 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   for (const Texture& t : scene.textures)
     if (t.image >= 0 && usesMipmaps(t.sampler.minFilter)) wantsMipmaps[static_cast<std::size_t>(t.image)] = true;
 
+  // Images some material reads as linear data get a linear copy besides (an image may serve both).
+  std::vector<bool> readLinear(scene.images.size(), false);
+  for (const Material& m : scene.materials)
+    for (const TextureRef* ref : {&m.metallicRoughnessTexture, &m.occlusionTexture})
+      if (ref->present()) readLinear[static_cast<std::size_t>(scene.textures[static_cast<std::size_t>(ref->texture)].image)] = true;
+
   for (std::size_t i = 0; i < scene.images.size(); ++i) {
     const TextureImage& image = scene.images[i];
+    linearImages_.emplace_back();
+    if (readLinear[i]) linearImages_.back() = uploadImage(image, wantsMipmaps[i], GL_RGBA8);
     gl::Texture texture = gl::Texture::create();
     const int levels = wantsMipmaps[i]
         ? 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))))
@@ -79,6 +97,12 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
 void GpuScene::bindTexture(int index, GLuint unit) const {
   const Texture& t = scene_->textures[static_cast<std::size_t>(index)];
   glBindTextureUnit(unit, images_[static_cast<std::size_t>(t.image)].id());
+  glBindSampler(unit, samplers_[static_cast<std::size_t>(index)].id());
+}
+
+void GpuScene::bindLinearTexture(int index, GLuint unit) const {
+  const Texture& t = scene_->textures[static_cast<std::size_t>(index)];
+  glBindTextureUnit(unit, linearImages_[static_cast<std::size_t>(t.image)].id());
   glBindSampler(unit, samplers_[static_cast<std::size_t>(index)].id());
 }
 

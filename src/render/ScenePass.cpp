@@ -1,6 +1,9 @@
 #include "render/ScenePass.h"
 
+#include "camera/ProjectionCentre.h"
 #include "gl/Shader.h"
+#include "scene/Brdf.h"
+#include "scene/ShadingLights.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -22,16 +25,34 @@ enum Location : GLint {
   kAlphaMask = 5,
   kAlphaCutoff = 6,
   kDoubleSided = 7,
-  kToLight = 8,
   kAmbient = 9,
-  kDiffuse = 10,
   kLodBias = 11,
   kClipFromModelDouble = 12,  // narrow_field.vert
   kBackground = 13,           // ADD_TO_SUM
   kAddWeight = 14,            // ADD_TO_SUM
   kEmissive = 15,
   kHasEmissiveTexture = 16,
+  // Metallic-roughness and punctual lights (scene.frag, scene.vert).
+  kShadingFromModel = 20,
+  kTowardViewer = 21,
+  kParallelView = 22,
+  kMetallicFactor = 23,
+  kRoughnessFactor = 24,
+  kHasMetallicRoughnessTexture = 25,
+  kHasOcclusionTexture = 26,
+  kOcclusionStrength = 27,
+  kLightCount = 28,
+  kLightPositionRange = 32,  // arrays of kMaxShadingLights
+  kLightDirectionType = 40,
+  kLightIntensity = 48,
+  kLightSpot = 56,
 };
+
+// Texture units (scene.frag).
+constexpr GLuint kMetallicRoughnessUnit = 2;
+constexpr GLuint kOcclusionUnit = 3;
+constexpr GLuint kDfgUnit = 9;
+static_assert(kMaxShadingLights == 8, "scene.frag's light arrays hold 8");
 
 // The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
 // the image is unchanged, but a PRP 1e-100 from the view plane (entries of 1e100) no longer
@@ -55,13 +76,50 @@ bool isNarrowField(const glm::dmat4& clipFromWorld) {
   return w > 0.0 && std::max(rowLength(0), rowLength(1)) > kNarrowFieldSlope * w;
 }
 
-ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")) {}
+ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")), dfgTable_(gl::Texture::create()) {
+  // The split-sum DFG table (scene/Brdf.h), read by texelFetch: brdf.glsl interpolates it itself,
+  // exactly as the ray caster does.
+  glTextureStorage2D(dfgTable_.id(), 1, GL_RG32F, kDfgTableSize, kDfgTableSize);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(dfgTable_.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RG, GL_FLOAT, dfgTable().data());
+  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
 
 void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) const {
-  glProgramUniform3fv(program, kToLight, 1, glm::value_ptr(scene.lighting.toLight));
   glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
-  glProgramUniform1f(program, kDiffuse, scene.lighting.diffuse);
   glProgramUniform1f(program, kLodBias, lodBias);
+  glProgramUniform3fv(program, kTowardViewer, 1, glm::value_ptr(towardViewer_));
+  glProgramUniform1i(program, kParallelView, parallelView_);
+  const std::vector<ShadingLight> lights = shadingLights(scene, shadingOrigin_);
+  const std::size_t count = std::min(lights.size(), static_cast<std::size_t>(kMaxShadingLights));
+  glm::vec4 positionRange[kMaxShadingLights], directionType[kMaxShadingLights];
+  glm::vec3 intensity[kMaxShadingLights];
+  glm::vec2 spot[kMaxShadingLights];
+  for (std::size_t i = 0; i < count; ++i) {
+    const ShadingLight& l = lights[i];
+    positionRange[i] = glm::vec4(l.position, l.range);
+    directionType[i] = glm::vec4(l.direction, static_cast<float>(l.type));
+    intensity[i] = l.intensity;
+    spot[i] = glm::vec2(l.spotScale, l.spotOffset);
+  }
+  const auto n = static_cast<GLsizei>(count);
+  glProgramUniform1i(program, kLightCount, n);
+  if (n > 0) {
+    glProgramUniform4fv(program, kLightPositionRange, n, glm::value_ptr(positionRange[0]));
+    glProgramUniform4fv(program, kLightDirectionType, n, glm::value_ptr(directionType[0]));
+    glProgramUniform3fv(program, kLightIntensity, n, glm::value_ptr(intensity[0]));
+    glProgramUniform2fv(program, kLightSpot, n, glm::value_ptr(spot[0]));
+  }
+}
+
+void ScenePass::placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFromWorld) const {
+  // The view's eye (shading positions and lights relative to it, composed in double); a parallel
+  // view has none: the scene's centre serves, and v is the constant way back along its rays.
+  const ProjectionCentre centre = projectionCentre(clipFromWorld);
+  parallelView_ = centre.atInfinity;
+  towardViewer_ = glm::vec3(centre.towardViewer);
+  shadingOrigin_ = !centre.atInfinity ? centre.point : scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
 }
 
 ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
@@ -91,6 +149,9 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   if (narrow && !narrowProgram_)
     narrowProgram_ = gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag");
   const GLuint program = narrow ? narrowProgram_->id() : program_.id();
+  placeShadingOrigin(scene, clipFromWorld);
+  glBindTextureUnit(kDfgUnit, dfgTable_.id());
+  glBindSampler(kDfgUnit, 0);
   if (!addWeight) setLighting(program, scene, lodBias);
   if (addWeight) {
     for (const char* define : {"DEPTH_ONLY", "ADD_TO_SUM"}) {
@@ -173,6 +234,18 @@ void ScenePass::drawInstances(Programs programs, bool narrow, const GpuScene& gp
       glProgramUniformMatrix4fv(program, kClipFromModel, 1, GL_FALSE, glm::value_ptr(rounded));
     }
     glProgramUniformMatrix3fv(program, kWorldNormalFromModel, 1, GL_FALSE, glm::value_ptr(normalFromModel));
+    glm::dmat4 shadingFromWorld(1.0);
+    shadingFromWorld[3] = glm::dvec4(-shadingOrigin_, 1.0);
+    const glm::mat4 shadingFromModel(shadingFromWorld * instance.worldFromModel);
+    glProgramUniformMatrix4fv(program, kShadingFromModel, 1, GL_FALSE, glm::value_ptr(shadingFromModel));
+    glProgramUniform1f(program, kMetallicFactor, material.metallicFactor);
+    glProgramUniform1f(program, kRoughnessFactor, material.roughnessFactor);
+    glProgramUniform1f(program, kOcclusionStrength, material.occlusionStrength);
+    glProgramUniform1i(program, kHasMetallicRoughnessTexture, material.metallicRoughnessTexture.present());
+    if (material.metallicRoughnessTexture.present())
+      gpuScene.bindLinearTexture(material.metallicRoughnessTexture.texture, kMetallicRoughnessUnit);
+    glProgramUniform1i(program, kHasOcclusionTexture, material.occlusionTexture.present());
+    if (material.occlusionTexture.present()) gpuScene.bindLinearTexture(material.occlusionTexture.texture, kOcclusionUnit);
     glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
     const bool textured = material.baseColorTexture >= 0;
     glProgramUniform1i(program, kHasBaseColorTexture, textured);

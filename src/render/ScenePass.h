@@ -54,8 +54,15 @@ class ScenePass {
   // The variant with `define` (DEPTH_ONLY, ADD_TO_SUM), built on first use.
   Programs variant(const char* define, bool narrow) const;
   void setLighting(GLuint program, const Scene& scene, float lodBias) const;
+  // The shading origin of the view drawn now: its eye (its projection centre), or for a parallel
+  // view the scene's centre and the direction toward the viewer.
+  void placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFromWorld) const;
 
   gl::Program program_;
+  gl::Texture dfgTable_;  // scene/Brdf.h's table, RG32F
+  mutable glm::dvec3 shadingOrigin_{0.0};
+  mutable glm::vec3 towardViewer_{0.0f, 0.0f, 1.0f};
+  mutable bool parallelView_ = false;
   mutable std::optional<gl::Program> narrowProgram_;  // built on first use: needs fp64 shaders
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];

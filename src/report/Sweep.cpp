@@ -49,10 +49,40 @@ struct Hash {
   void addString(const std::string& s) { add(s.data(), s.size()); }
 };
 
+// A texture reference, field by field (glm's matrices hold their floats without padding).
+void addTextureRef(Hash& h, const TextureRef& t) {
+  const int ints[] = {t.texture, t.texCoord};
+  h.add(ints, sizeof ints);
+  h.add(&t.uvFromTexCoord, sizeof t.uvFromTexCoord);
+}
+
+// What a material adds to the base colour: emission, metallic-roughness, occlusion, normal map.
+void addShadingFields(Hash& h, const Material& m) {
+  h.add(&m.emissive, sizeof m.emissive);
+  h.add(&m.emissiveTexture, sizeof m.emissiveTexture);
+  const float factors[] = {m.metallicFactor, m.roughnessFactor, m.occlusionStrength, m.normalScale};
+  h.add(factors, sizeof factors);
+  for (const TextureRef* t : {&m.metallicRoughnessTexture, &m.occlusionTexture, &m.normalTexture}) addTextureRef(h, *t);
+}
+
+void addLight(Hash& h, const PunctualLight& l) {
+  const int type = static_cast<int>(l.type);
+  h.add(&type, sizeof type);
+  const float floats[] = {l.color.r, l.color.g, l.color.b, l.intensity, l.innerConeAngleRadians, l.outerConeAngleRadians};
+  h.add(floats, sizeof floats);
+  const double doubles[] = {l.range, l.worldPosition.x, l.worldPosition.y, l.worldPosition.z,
+                            l.worldDirection.x, l.worldDirection.y, l.worldDirection.z};
+  h.add(doubles, sizeof doubles);
+}
+
+}  // namespace
+
 std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {
   Hash h;
   // v2: textures filtered per sample (the pixel integral, not a pixel-blurred image), two halves.
   h.addString("lenslab reference v2");
+  // v3: glTF metallic-roughness shading and punctual lights (shaders/common/brdf.glsl).
+  h.addString("v3 metallic-roughness");
   for (const Mesh& m : scene.meshes) {
     h.addVector(m.vertices);
     h.addVector(m.indices);
@@ -70,7 +100,9 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
     const int flags[] = {m.baseColorTexture, m.unlit, static_cast<int>(m.alphaMode), m.doubleSided};
     h.add(flags, sizeof flags);
     h.add(&m.alphaCutoff, sizeof m.alphaCutoff);
+    addShadingFields(h, m);
   }
+  for (const PunctualLight& light : scene.lights) addLight(h, light);
   for (const TextureImage& i : scene.images) h.addVector(i.rgba8);
   for (const Texture& t : scene.textures) {
     const int fields[] = {t.image, static_cast<int>(t.sampler.wrapS), static_cast<int>(t.sampler.wrapT),
@@ -90,6 +122,8 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
   s << std::hex << std::setw(16) << std::setfill('0') << h.value;
   return s.str();
 }
+
+namespace {
 
 std::vector<int> doublings(int max) {
   std::vector<int> n;

@@ -87,6 +87,11 @@ struct SweepResult {
 // pinhole camera: there is no depth of field to converge to.
 SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& options);
 
+// The key a cached ray-cast reference is stored under: a hash of everything the reference
+// depends on (geometry, materials, textures, lights, camera, size, samples), so that a cached
+// reference is never reused for another scene.
+std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& options);
+
 // Pixels near a depth discontinuity lying within the local circle of confusion (radius capped at
 // 32 px), from a pinhole depth map in world units (rows from the top).
 std::vector<bool> occlusionEdgeMask(const Camera& camera, ImageSize size, const std::vector<double>& depth);

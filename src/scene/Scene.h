@@ -141,10 +141,10 @@ struct SceneCamera {
   glm::dmat4 worldFromCamera{1.0};
 };
 
-// The one light of lenslab's shading model, which the ray caster reproduces exactly:
-//   unlit:  colour = base
-//   lit:    colour = base * (ambient + diffuse * max(0, dot(n, toLight)))
-// n faces the viewer on double-sided materials. No shadows, no image lighting.
+// lenslab's own lighting (docs/materials.md): a uniform surround of radiance `ambient`, and, in a
+// scene without KHR_lights_punctual lights, one directional light shining along −toLight of
+// π · diffuse lux, so that a white Lambert surface facing it reflects radiance `diffuse`
+// (scene/ShadingLights.h). n faces the viewer on double-sided materials. No shadows.
 struct Lighting {
   glm::vec3 toLight = glm::normalize(glm::vec3(0.35f, 0.8f, 0.5f));  // world, unit
   float ambient = 0.25f;

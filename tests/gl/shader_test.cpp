@@ -73,9 +73,9 @@ TEST(Shader, ExpandsIncludesWithLineDirectives) {
   const gl::ShaderSource source = gl::loadShaderSource("scene/scene.frag", {"VARIANT_X"});
   ASSERT_EQ(source.files.size(), 2u);
   EXPECT_EQ(source.files[0], "scene/scene.frag");
-  EXPECT_EQ(source.files[1], "common/shading.glsl");
+  EXPECT_EQ(source.files[1], "common/brdf.glsl");
   EXPECT_EQ(source.text.rfind("#version 450 core\n#define VARIANT_X\n", 0), 0u);
-  EXPECT_NE(source.text.find("vec3 shade("), std::string::npos);
+  EXPECT_NE(source.text.find("vec3 punctualRadiance("), std::string::npos);
 }
 
 // The shaders compiled into the library (what an installed lenslab uses) are the source tree's,

@@ -180,7 +180,7 @@ TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
                                                       "does not support (supported: KHR_materials_unlit, "
-                                                      "KHR_materials_emissive_strength)");
+                                                      "KHR_materials_emissive_strength, KHR_lights_punctual)");
   }
 }
 
@@ -339,7 +339,7 @@ TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "UnicodeTest");
   const Scene spaces = loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf");
   EXPECT_EQ(spaces.triangleCount(), 12u);
-  ASSERT_EQ(spaces.images.size(), 1u) << "the base colour image's %20-encoded URI resolves";
+  ASSERT_EQ(spaces.images.size(), 2u) << "the base colour and metallic-roughness images' %20-encoded URIs resolve";
   for (const char* file : {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
     const Scene unicode = loadSample(file);
     EXPECT_EQ(unicode.triangleCount(), 2u) << file;
@@ -390,16 +390,21 @@ TEST(GltfSamples, MaterialsKeepAlphaModesSamplersAndSides) {
   EXPECT_LT(doubleSided, static_cast<int>(settings.materials.size()));
 }
 
-TEST(GltfSamples, OnlyTheBaseColourAndEmissiveImagesOfAFullPbrMaterialAreDecoded) {
+TEST(GltfSamples, AFullPbrMaterialDecodesAllButItsNormalMap) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "DamagedHelmet");
   const Scene scene = loadSample("DamagedHelmet/glTF-Binary/DamagedHelmet.glb");  // five images in the file
-  EXPECT_EQ(scene.textures.size(), 2u);
-  EXPECT_EQ(scene.images.size(), 2u);
+  EXPECT_EQ(scene.textures.size(), 4u);  // base colour, metallic-roughness, emissive, occlusion
+  EXPECT_EQ(scene.images.size(), 4u);
   ASSERT_EQ(scene.materials.size(), 1u);
-  EXPECT_GE(scene.materials[0].emissiveTexture, 0);
-  EXPECT_EQ(scene.materials[0].emissive, glm::vec3(1.0f));
+  const Material& m = scene.materials[0];
+  EXPECT_GE(m.emissiveTexture, 0);
+  EXPECT_EQ(m.emissive, glm::vec3(1.0f));
+  EXPECT_TRUE(m.metallicRoughnessTexture.present());
+  EXPECT_TRUE(m.occlusionTexture.present());
+  EXPECT_NE(m.metallicRoughnessTexture.texture, m.occlusionTexture.texture);
+  EXPECT_FALSE(m.normalTexture.present());
   bool noted = false;
-  for (const std::string& note : scene.notes) noted |= note.find("normal, occlusion and metallic-roughness") != std::string::npos;
+  for (const std::string& note : scene.notes) noted |= note.find("normal textures are ignored") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
@@ -708,7 +713,7 @@ TEST_F(GltfWritten, RequiredUnsupportedExtensionIsRefusedByName) {
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
   const fs::path file = dir_ / "scene.gltf";
   EXPECT_EQ(refusal(b), file.string() + ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
-                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength)");
+                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength, KHR_lights_punctual)");
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit"};
   const Scene scene = load(b);
   EXPECT_TRUE(noted(scene, "EXT_meshopt_compression")) << "used but not required: a note";

@@ -3,9 +3,11 @@
 #include "core/NumberInput.h"
 #include "scene/gltf/Animations.h"
 #include "scene/gltf/Images.h"
+#include "scene/gltf/Lights.h"
 #include "scene/gltf/Limits.h"
 #include "scene/gltf/Primitives.h"
 #include "scene/gltf/Problems.h"
+#include "scene/ShadingLights.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -130,6 +132,17 @@ class SceneBuilder {
       scene_.cameras.back().gltfNode = placed.gltfNode;
     }
     if (node.skin >= 0) noteOnce(scene_.notes, "skins are ignored: skinned meshes are drawn in their bind pose");
+    placeLight(node, worldFromNode, placed.gltfNode);
+  }
+
+  // KHR_lights_punctual: a light at its node's rest placement (animation moves no light).
+  void placeLight(const tinygltf::Node& node, const glm::dmat4& worldFromNode, int nodeIndex) {
+    std::optional<PunctualLight> light = placedLight(model_, node, nodeIndex, worldFromNode);
+    if (!light) return;
+    if (scene_.lights.size() >= static_cast<std::size_t>(kMaxShadingLights))
+      refuse("node ", nodeIndex, " places a KHR_lights_punctual light beyond the ", kMaxShadingLights,
+             " lenslab shades; place at most ", kMaxShadingLights, " lights in the drawn scene");
+    scene_.lights.push_back(std::move(*light));
   }
 
   // The Scene mesh of a glTF primitive, converted on first use; -1 where nothing is drawn.
@@ -184,10 +197,37 @@ class SceneBuilder {
                                  "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
     else if (emissive.index >= 0 && material.emits())
       material.emissiveTexture = textureFor(emissive.index);
-    if (m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 || m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-      noteOnce(scene_.notes, "normal, occlusion and metallic-roughness inputs are ignored (lenslab shades base colour x Lambert, plus emission)");
+    readMetallicRoughness(m, gltfIndex, material);
+    if (m.normalTexture.index >= 0) noteOnce(scene_.notes, "normal textures are ignored (shading uses the vertex normals)");
     scene_.materials.push_back(std::move(material));
     return materials_[gltfIndex] = static_cast<int>(scene_.materials.size()) - 1;
+  }
+
+  // glTF metallic-roughness and occlusion (factors in the schema ranges, else refused): the
+  // textures from TEXCOORD_0 (others are left out with a note).
+  void readMetallicRoughness(const tinygltf::Material& m, int gltfIndex, Material& material) {
+    const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+    material.metallicFactor = static_cast<float>(pbr.metallicFactor);
+    material.roughnessFactor = static_cast<float>(pbr.roughnessFactor);
+    for (const auto& [name, texCoord, index, ref] :
+         {std::tuple{"metallic-roughness", pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.index, &material.metallicRoughnessTexture},
+          std::tuple{"occlusion", m.occlusionTexture.texCoord, m.occlusionTexture.index, &material.occlusionTexture}}) {
+      if (index < 0) continue;
+      if (texCoord != 0) {
+        noteOnce(scene_.notes, cat("material ", gltfIndex, " samples its ", name, " texture with TEXCOORD_", texCoord,
+                                   "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
+        continue;
+      }
+      ref->texture = textureFor(index);
+      ref->texCoord = 0;
+    }
+    material.occlusionStrength = static_cast<float>(m.occlusionTexture.strength);
+    if (!(material.metallicFactor >= 0.0f && material.metallicFactor <= 1.0f))
+      refuse("material ", gltfIndex, " pbrMetallicRoughness.metallicFactor is ", pbr.metallicFactor, "; give a number in [0, 1]");
+    if (!(material.roughnessFactor >= 0.0f && material.roughnessFactor <= 1.0f))
+      refuse("material ", gltfIndex, " pbrMetallicRoughness.roughnessFactor is ", pbr.roughnessFactor, "; give a number in [0, 1]");
+    if (!(material.occlusionStrength >= 0.0f && material.occlusionStrength <= 1.0f))
+      refuse("material ", gltfIndex, " occlusionTexture.strength is ", m.occlusionTexture.strength, "; give a number in [0, 1]");
   }
 
   int textureFor(int gltfIndex) {

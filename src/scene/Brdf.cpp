@@ -1,0 +1,115 @@
+#include "scene/Brdf.h"
+
+#include "scene/Scene.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace lenslab {
+
+namespace {
+const std::vector<glm::vec2>& table();
+}
+
+// The GLSL, as C++: glm's names are GLSL's.
+namespace glsl {
+using glm::clamp;
+using glm::cross;
+using glm::dot;
+using glm::length;
+using glm::max;
+using glm::min;
+using glm::mix;
+using glm::vec2;
+using glm::vec3;
+using std::cos;
+using std::sqrt;
+// brdf.glsl's one input from its includer: a texel of the DFG table.
+vec2 dfgTexel(int x, int y) { return table()[static_cast<std::size_t>(y * 32 + x)]; }  // 32: kDfgSize, asserted below
+#include "../../shaders/common/brdf.glsl"
+}  // namespace glsl
+
+static_assert(glsl::kDfgSize == kDfgTableSize);
+static_assert(glsl::kLightDirectional == static_cast<int>(LightType::Directional));
+static_assert(glsl::kLightPoint == static_cast<int>(LightType::Point));
+static_assert(glsl::kLightSpot == static_cast<int>(LightType::Spot));
+
+namespace {
+
+glsl::Surface toGlsl(const ShadingSurface& s) {
+  return {s.baseColor, s.metallic, s.perceptualRoughness, s.occlusion, s.n, s.v};
+}
+
+glsl::Light toGlsl(const ShadingLight& l) {
+  return {l.type, l.intensity, l.position, l.direction, l.range, l.spotScale, l.spotOffset};
+}
+
+// The i-th of n points of the Hammersley set: (i/n, radical inverse of i in base 2).
+glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
+  std::uint32_t bits = i;
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  return {static_cast<float>(i) / static_cast<float>(n), static_cast<float>(bits) * 2.3283064365386963e-10f};
+}
+
+const std::vector<glm::vec2>& table() {
+  static const std::vector<glm::vec2> t = [] {
+    std::vector<glm::vec2> values(static_cast<std::size_t>(kDfgTableSize * kDfgTableSize));
+    for (int y = 0; y < kDfgTableSize; ++y)
+      for (int x = 0; x < kDfgTableSize; ++x) {
+        const float nv = (static_cast<float>(x) + 0.5f) / kDfgTableSize;
+        const float roughness = (static_cast<float>(y) + 0.5f) / kDfgTableSize;
+        values[static_cast<std::size_t>(y * kDfgTableSize + x)] = dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples);
+      }
+    return values;
+  }();
+  return t;
+}
+
+}  // namespace
+
+glm::vec2 dfgIntegral(float nv, float alpha, int samples) {
+  // n = +z, v in the xz plane. Half vectors drawn from D(h)·(n·h), so that the sample weight of
+  // f·(n·l) with f = F·D·V is F · V · 4 (v·h) (n·l) / (n·h), split into F's two terms.
+  const glm::dvec3 v(std::sqrt(std::max(0.0, 1.0 - double(nv) * nv)), 0.0, nv);
+  const double a2 = double(alpha) * alpha;
+  double sumA = 0.0, sumB = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    const glm::vec2 u = hammersley(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(samples));
+    const double phi = 2.0 * glsl::kPi * u.x;
+    const double cosTheta = std::sqrt((1.0 - u.y) / (1.0 + (a2 - 1.0) * u.y));
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const glm::dvec3 h(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+    const double vh = glm::dot(v, h);
+    const glm::dvec3 l = 2.0 * vh * h - v;
+    if (l.z <= 0.0 || vh <= 0.0) continue;
+    const double visibility = glsl::visibilitySmithGgx(static_cast<float>(l.z), nv, alpha);
+    const double weight = visibility * 4.0 * vh * l.z / h.z;
+    const double fc = std::pow(1.0 - vh, 5.0);
+    sumA += (1.0 - fc) * weight;
+    sumB += fc * weight;
+  }
+  return {static_cast<float>(sumA / samples), static_cast<float>(sumB / samples)};
+}
+
+glm::vec3 punctualRadiance(const ShadingSurface& s, const ShadingLight& light, const glm::vec3& p) {
+  return glsl::punctualRadiance(toGlsl(s), toGlsl(light), p);
+}
+
+glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance, const glm::vec3& specularRadiance,
+                             glm::vec2 dfg) {
+  return glsl::imageLightRadiance(toGlsl(s), diffuseRadiance, specularRadiance, dfg);
+}
+
+glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadians) {
+  return glsl::spotScaleOffset(innerConeAngleRadians, outerConeAngleRadians);
+}
+
+const std::vector<glm::vec2>& dfgTable() { return table(); }
+
+glm::vec2 dfgLookup(float nv, float perceptualRoughness) { return glsl::dfgLookup(nv, perceptualRoughness); }
+
+}  // namespace lenslab

@@ -67,7 +67,9 @@ TEST(Brdf, WhiteMetalUnderUniformLightReflectsAtMostOneAndAlmostAllWhenSmooth) {
       const float reflected = imageLightRadiance(s, glm::vec3(1.0f), glm::vec3(1.0f), dfgLookup(nv, roughness)).g;
       EXPECT_LE(reflected, 1.0f + 1e-4f) << "roughness " << roughness << " n.v " << nv;
       EXPECT_GT(reflected, 0.0f);
-      if (roughness <= 0.1f && nv >= 0.2f) EXPECT_GE(reflected, 0.97f) << "roughness " << roughness << " n.v " << nv;
+      if (roughness <= 0.1f && nv >= 0.2f) {
+        EXPECT_GE(reflected, 0.97f) << "roughness " << roughness << " n.v " << nv;
+      }
     }
 }
 
@@ -84,7 +86,9 @@ TEST(Brdf, WhiteDielectricUnderUniformLightReflectsOne) {
       EXPECT_LE(all - specular, 1.0 + 1e-3) << "roughness " << roughness << " n.v " << nv;
       EXPECT_GE(all - specular, 0.85) << "roughness " << roughness << " n.v " << nv;
       const glm::vec2 dfg = dfgLookup(nv, roughness);
-      if (roughness >= 0.3f) EXPECT_NEAR(specular, 0.04 * dfg.x + dfg.y, 0.01) << "roughness " << roughness << " n.v " << nv;
+      if (roughness >= 0.3f) {
+        EXPECT_NEAR(specular, 0.04 * dfg.x + dfg.y, 0.01) << "roughness " << roughness << " n.v " << nv;
+      }
     }
 }
 
@@ -130,7 +134,9 @@ TEST(Brdf, DirectionalLightInLuxOnATiltedPlane) {
       const float got = punctualRadiance(s, directional({0, 0, -1}, 1000.0f), glm::vec3(5.0f)).g;
       const double expected = closedForm(0.7, metallic, 0.5, n, glm::dvec3(v), {0, 0, 1}, 1000.0);
       EXPECT_NEAR(got, expected, 1e-5 * 1000.0) << "tilt " << tiltDeg;
-      if (tiltDeg > 90.0) EXPECT_EQ(got, 0.0f);
+      if (tiltDeg > 90.0) {
+        EXPECT_EQ(got, 0.0f);
+      }
     }
 }
 

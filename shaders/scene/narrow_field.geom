@@ -14,6 +14,8 @@ in ToClip {
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+  vec4 worldTangent;
+  vec2 uv1;
 } vertex[];
 
 // Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
@@ -22,6 +24,8 @@ invariant gl_Position;
 out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;
+out vec4 worldTangent;
+out vec2 uv1;
 
 const int kMaxCorners = 7;
 const double kGuard = 2.0;
@@ -31,6 +35,8 @@ struct Corner {
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+  vec4 worldTangent;
+  vec2 uv1;
 };
 
 Corner mixCorners(Corner a, Corner b, double t) {
@@ -39,6 +45,8 @@ Corner mixCorners(Corner a, Corner b, double t) {
   c.worldNormal = mix(a.worldNormal, b.worldNormal, float(t));
   c.uv = mix(a.uv, b.uv, float(t));
   c.vertexColor = mix(a.vertexColor, b.vertexColor, float(t));
+  c.worldTangent = mix(a.worldTangent, b.worldTangent, float(t));
+  c.uv1 = mix(a.uv1, b.uv1, float(t));
   return c;
 }
 
@@ -52,7 +60,8 @@ void main() {
   Corner polygon[kMaxCorners];
   int count = 3;
   for (int i = 0; i < 3; ++i)
-    polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor);
+    polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor,
+                        vertex[i].worldTangent, vertex[i].uv1);
 
   // Sutherland–Hodgman, one plane at a time.
   for (int p = 0; p < 4 && count > 0; ++p) {
@@ -76,6 +85,8 @@ void main() {
       worldNormal = c.worldNormal;
       uv = c.uv;
       vertexColor = c.vertexColor;
+      worldTangent = c.worldTangent;
+      uv1 = c.uv1;
       EmitVertex();
     }
     EndPrimitive();

@@ -8,15 +8,21 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inColor;
+layout(location = 4) in vec4 inTangent;
+layout(location = 5) in vec2 inUv1;
 
 layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
 layout(location = 12) uniform dmat4 clipFromModelDouble;
+layout(location = 80) uniform mat3 worldTangentFromModel;  // as in scene.vert
+layout(location = 81) uniform float handednessFromModel;
 
 out ToClip {
   dvec4 clipPosition;
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+  vec4 worldTangent;
+  vec2 uv1;
 } vertex;
 
 void main() {
@@ -24,4 +30,6 @@ void main() {
   vertex.worldNormal = worldNormalFromModel * inNormal;
   vertex.uv = inUv;
   vertex.vertexColor = inColor;
+  vertex.worldTangent = vec4(worldTangentFromModel * inTangent.xyz, inTangent.w * handednessFromModel);
+  vertex.uv1 = inUv1;
 }

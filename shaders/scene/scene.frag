@@ -2,6 +2,7 @@
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
 #include "../common/shading.glsl"
+#include "../common/material_maps.glsl"
 
 // Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
 //   2–16      base colour, alpha, the default light, emission (below)
@@ -18,6 +19,8 @@ layout(early_fragment_tests) in;
 in vec3 worldNormal;
 in vec2 uv;
 in vec4 vertexColor;
+in vec4 worldTangent;  // xyz, w: handedness (mirrored with the instance); zero without tangents
+in vec2 uv1;
 
 layout(location = 2) uniform vec4 baseColorFactor;
 layout(location = 3) uniform bool hasBaseColorTexture;
@@ -46,6 +49,24 @@ layout(location = 14) uniform vec4 addWeight;
 layout(binding = 0) uniform sampler2D baseColorTexture;
 layout(binding = 1) uniform sampler2D emissiveTexture;
 
+// Normal map and texture coordinates (locations 80–99; 80–81 are scene.vert's tangent transform).
+// Each texture slot samples TEXCOORD_<texCoord> through its KHR_texture_transform (slotUv).
+layout(location = 82) uniform bool hasNormalTexture;
+layout(location = 83) uniform float normalScale;
+layout(location = 84) uniform int normalTexCoord;
+layout(location = 85) uniform mat3 normalUvFromTexCoord;
+layout(location = 86) uniform int baseColorTexCoord;
+layout(location = 87) uniform mat3 baseColorUvFromTexCoord;
+layout(location = 88) uniform int emissiveTexCoord;
+layout(location = 89) uniform mat3 emissiveUvFromTexCoord;
+// For the metallic-roughness and occlusion textures (the shading code samples those):
+//   slotUv(uv, uv1, metallicRoughnessTexCoord, metallicRoughnessUvFromTexCoord)
+layout(location = 90) uniform int metallicRoughnessTexCoord;
+layout(location = 91) uniform mat3 metallicRoughnessUvFromTexCoord;
+layout(location = 92) uniform int occlusionTexCoord;
+layout(location = 93) uniform mat3 occlusionUvFromTexCoord;
+layout(binding = 4) uniform sampler2D normalTexture;  // linear (GL_RGBA8)
+
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
 #endif
@@ -55,22 +76,28 @@ void main() {
 #ifdef DEPTH_ONLY
   // Alpha-masked materials only: the cut-out must not hide what is behind it.
 #ifdef ALPHA_MASK
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, slotUv(uv, uv1, baseColorTexCoord, baseColorUvFromTexCoord), lodBias);
   if (alphaMask && base.a < alphaCutoff) discard;
 #endif
   return;
 #else
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, slotUv(uv, uv1, baseColorTexCoord, baseColorUvFromTexCoord), lodBias);
 #ifndef ADD_TO_SUM
   // (Added views need no discard: the depth pass left no depth where a cut-out is.)
   if (alphaMask && base.a < alphaCutoff) discard;
 #endif
 
   vec3 n = normalize(worldNormal);
-  // A double-sided surface seen from behind is lit as its back: the normal faces the viewer.
+  if (hasNormalTexture) {
+    const vec3 texel = texture(normalTexture, slotUv(uv, uv1, normalTexCoord, normalUvFromTexCoord), lodBias).rgb;
+    n = mappedNormal(worldNormal, worldTangent.xyz, worldTangent.w, texel, normalScale);
+  }
+  // A double-sided surface seen from behind is lit as its back: the normal faces the viewer
+  // (with a normal map, the whole frame turns: t, b and n, as the Sample Viewer does).
   if (doubleSided && !gl_FrontFacing) n = -n;
   vec3 colour = shade(base.rgb, n, unlit, Lighting(toLight, ambient, diffuse));
-  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, uv, lodBias).rgb : emissive;
+  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, slotUv(uv, uv1, emissiveTexCoord, emissiveUvFromTexCoord), lodBias).rgb
+                                : emissive;
 #ifdef ADD_TO_SUM
   outColor = addWeight * vec4(colour - background, 1.0);
 #else

@@ -31,7 +31,35 @@ enum Location : GLint {
   kAddWeight = 14,            // ADD_TO_SUM
   kEmissive = 15,
   kHasEmissiveTexture = 16,
+  // Normal maps and texture coordinates (80–99).
+  kWorldTangentFromModel = 80,
+  kHandednessFromModel = 81,
+  kHasNormalTexture = 82,
+  kNormalScale = 83,
+  kNormalTexCoord = 84,  // each slot: its TEXCOORD set, then its uv transform one location on
+  kBaseColorTexCoord = 86,
+  kEmissiveTexCoord = 88,
+  kMetallicRoughnessTexCoord = 90,
+  kOcclusionTexCoord = 92,
 };
+
+// Texture units (shaders/scene/scene.frag).
+constexpr GLuint kNormalTextureUnit = 4;
+
+// A texture slot's TEXCOORD set and KHR_texture_transform, into the uniforms from `texCoordLocation`.
+void setTextureSlot(GLuint program, GLint texCoordLocation, const TextureRef& ref) {
+  glProgramUniform1i(program, texCoordLocation, ref.texCoord);
+  glProgramUniformMatrix3fv(program, texCoordLocation + 1, 1, GL_FALSE, glm::value_ptr(ref.uvFromTexCoord));
+}
+
+// worldFromModel's linear part scaled to its largest entry near 1 (tangents are normalised after,
+// and a model scaled by 1e-20 would otherwise hand the shader tangents whose squares underflow).
+glm::mat3 tangentFromModel(const glm::dmat3& linear) {
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(linear[c][r]));
+  return glm::mat3(largest > 0.0 && std::isfinite(largest) ? linear * (1.0 / largest) : linear);
+}
 
 // The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
 // the image is unchanged, but a PRP 1e-100 from the view plane (entries of 1e100) no longer
@@ -174,13 +202,31 @@ void ScenePass::drawInstances(Programs programs, bool narrow, const GpuScene& gp
     }
     glProgramUniformMatrix3fv(program, kWorldNormalFromModel, 1, GL_FALSE, glm::value_ptr(normalFromModel));
     glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
-    const bool textured = material.baseColorTexture >= 0;
+    const bool textured = material.baseColorTexture.present();
     glProgramUniform1i(program, kHasBaseColorTexture, textured);
-    if (textured) gpuScene.bindTexture(material.baseColorTexture, 0);
+    if (textured) {
+      gpuScene.bindTexture(material.baseColorTexture.texture, 0);
+      setTextureSlot(program, kBaseColorTexCoord, material.baseColorTexture);
+    }
     glProgramUniform3fv(program, kEmissive, 1, glm::value_ptr(material.emissive));
-    const bool emissiveTextured = material.emissiveTexture >= 0;
+    const bool emissiveTextured = material.emissiveTexture.present();
     glProgramUniform1i(program, kHasEmissiveTexture, emissiveTextured);
-    if (emissiveTextured) gpuScene.bindTexture(material.emissiveTexture, 1);
+    if (emissiveTextured) {
+      gpuScene.bindTexture(material.emissiveTexture.texture, 1);
+      setTextureSlot(program, kEmissiveTexCoord, material.emissiveTexture);
+    }
+    if (material.metallicRoughnessTexture.present()) setTextureSlot(program, kMetallicRoughnessTexCoord, material.metallicRoughnessTexture);
+    if (material.occlusionTexture.present()) setTextureSlot(program, kOcclusionTexCoord, material.occlusionTexture);
+    // The normal map: a tangent frame per vertex (the file's or generated, scene/Tangents.h).
+    const bool normalMapped = material.normalTexture.present() && mesh.hasTangents;
+    glProgramUniform1i(program, kHasNormalTexture, normalMapped);
+    if (normalMapped) {
+      gpuScene.bindLinearTexture(material.normalTexture.texture, kNormalTextureUnit);
+      setTextureSlot(program, kNormalTexCoord, material.normalTexture);
+      glProgramUniform1f(program, kNormalScale, material.normalScale);
+      glProgramUniformMatrix3fv(program, kWorldTangentFromModel, 1, GL_FALSE, glm::value_ptr(tangentFromModel(linear)));
+      glProgramUniform1f(program, kHandednessFromModel, glm::determinant(linear) < 0.0 ? -1.0f : 1.0f);
+    }
     glProgramUniform1i(program, kUnlit, material.unlit);
     glProgramUniform1i(program, kAlphaMask, material.alphaMode == AlphaMode::Mask);
     glProgramUniform1f(program, kAlphaCutoff, material.alphaCutoff);

@@ -93,7 +93,11 @@ void expectWellFormed(const Scene& scene) {
     EXPECT_GE(mesh.material, -1);
     EXPECT_LT(mesh.material, static_cast<int>(scene.materials.size()));
   }
-  for (const Material& m : scene.materials) EXPECT_LT(m.baseColorTexture, static_cast<int>(scene.textures.size()));
+  for (const Material& m : scene.materials)
+    for (const TextureRef* r : {&m.baseColorTexture, &m.emissiveTexture, &m.normalTexture}) {
+      EXPECT_LT(r->texture, static_cast<int>(scene.textures.size()));
+      EXPECT_TRUE(r->texCoord == 0 || r->texCoord == 1);
+    }
   for (const Texture& t : scene.textures) {
     ASSERT_GE(t.image, 0);
     EXPECT_LT(t.image, static_cast<int>(scene.images.size()));
@@ -180,7 +184,7 @@ TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
                                                       "does not support (supported: KHR_materials_unlit, "
-                                                      "KHR_materials_emissive_strength)");
+                                                      "KHR_materials_emissive_strength, KHR_texture_transform)");
   }
 }
 
@@ -291,7 +295,7 @@ TEST(GltfSamples, BoxTexturedDecodesItsOneImage) {
     EXPECT_EQ(scene.images[0].rgba8.size(), 256u * 256u * 4u) << file;
     EXPECT_EQ(scene.images[0].rgba8[3], 255) << "an opaque PNG gets alpha 255";
     ASSERT_EQ(scene.materials.size(), 1u) << file;
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0) << file;
+    EXPECT_EQ(scene.materials[0].baseColorTexture.texture, 0) << file;
   }
 }
 
@@ -339,7 +343,7 @@ TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "UnicodeTest");
   const Scene spaces = loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf");
   EXPECT_EQ(spaces.triangleCount(), 12u);
-  ASSERT_EQ(spaces.images.size(), 1u) << "the base colour image's %20-encoded URI resolves";
+  ASSERT_EQ(spaces.images.size(), 2u) << "the base colour and normal images' %20-encoded URIs resolve";
   for (const char* file : {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
     const Scene unicode = loadSample(file);
     EXPECT_EQ(unicode.triangleCount(), 2u) << file;
@@ -390,16 +394,17 @@ TEST(GltfSamples, MaterialsKeepAlphaModesSamplersAndSides) {
   EXPECT_LT(doubleSided, static_cast<int>(settings.materials.size()));
 }
 
-TEST(GltfSamples, OnlyTheBaseColourAndEmissiveImagesOfAFullPbrMaterialAreDecoded) {
+TEST(GltfSamples, OnlyTheImagesOfAFullPbrMaterialThatAreShadedAreDecoded) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "DamagedHelmet");
   const Scene scene = loadSample("DamagedHelmet/glTF-Binary/DamagedHelmet.glb");  // five images in the file
-  EXPECT_EQ(scene.textures.size(), 2u);
-  EXPECT_EQ(scene.images.size(), 2u);
+  EXPECT_EQ(scene.textures.size(), 3u);  // base colour, emissive, normal
+  EXPECT_EQ(scene.images.size(), 3u);
   ASSERT_EQ(scene.materials.size(), 1u);
-  EXPECT_GE(scene.materials[0].emissiveTexture, 0);
+  EXPECT_TRUE(scene.materials[0].emissiveTexture.present());
+  EXPECT_TRUE(scene.materials[0].normalTexture.present());
   EXPECT_EQ(scene.materials[0].emissive, glm::vec3(1.0f));
   bool noted = false;
-  for (const std::string& note : scene.notes) noted |= note.find("normal, occlusion and metallic-roughness") != std::string::npos;
+  for (const std::string& note : scene.notes) noted |= note.find("occlusion and metallic-roughness") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
@@ -409,8 +414,7 @@ TEST(GltfSamples, IgnoredFeaturesAreNoted) {
       {"SimpleSkin/glTF/SimpleSkin.gltf", "skins are ignored"},
       {"AnimatedTriangle/glTF/AnimatedTriangle.gltf", "animation"},
       {"SimpleMorph/glTF/SimpleMorph.gltf", "morph targets"},
-      {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"},
-      {"TextureTransformTest/glTF/TextureTransformTest.gltf", "KHR_texture_transform"}};
+      {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"}};
   for (const auto& [file, words] : cases) {
     const Scene scene = loadSample(file);
     bool noted = false;
@@ -708,7 +712,7 @@ TEST_F(GltfWritten, RequiredUnsupportedExtensionIsRefusedByName) {
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
   const fs::path file = dir_ / "scene.gltf";
   EXPECT_EQ(refusal(b), file.string() + ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
-                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength)");
+                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength, KHR_texture_transform)");
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit"};
   const Scene scene = load(b);
   EXPECT_TRUE(noted(scene, "EXT_meshopt_compression")) << "used but not required: a note";
@@ -968,7 +972,7 @@ TEST_F(GltfWritten, OnlyUsedMaterialsTexturesAndImagesAreKeptAndReindexed) {
   EXPECT_EQ(scene.materials[0].baseColorFactor, glm::vec4(0.5f, 1, 1, 1));
   EXPECT_EQ(scene.meshes[0].material, 0);
   ASSERT_EQ(scene.textures.size(), 1u);
-  EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+  EXPECT_EQ(scene.materials[0].baseColorTexture.texture, 0);
   EXPECT_EQ(scene.textures[0].sampler.wrapS, Wrap::ClampToEdge);
   EXPECT_EQ(scene.textures[0].sampler.wrapT, Wrap::Repeat);
   EXPECT_EQ(scene.textures[0].sampler.magFilter, Filter::Nearest);
@@ -990,18 +994,18 @@ TEST_F(GltfWritten, SixteenBitGreyImagesBecomeRgba8) {
   EXPECT_EQ(scene.images[0].rgba8, (std::vector<std::uint8_t>{128, 128, 128, 255, 255, 255, 255, 255}));
 }
 
-TEST_F(GltfWritten, BaseColourFromAnotherUvSetIsLeftOutWithANote) {
+TEST_F(GltfWritten, BaseColourFromAUvSetBeyondOneIsLeftOutWithANote) {
   GltfBuilder b = square();
   b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
   b.gltf["textures"] = {{{"source", 0}}};
-  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}, {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 2}}}}}, {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
   b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
   const Scene scene = load(b);
   ASSERT_EQ(scene.materials.size(), 1u);
   EXPECT_TRUE(scene.materials[0].unlit);
-  EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+  EXPECT_FALSE(scene.materials[0].baseColorTexture.present());
   EXPECT_TRUE(scene.images.empty());
-  EXPECT_TRUE(noted(scene, "TEXCOORD_1"));
+  EXPECT_TRUE(noted(scene, "TEXCOORD_2"));
 }
 
 TEST_F(GltfWritten, BrokenImagesAreRefusedNamingThem) {

@@ -22,6 +22,7 @@ constexpr std::uint32_t kMaxImageSide = 16384;
 constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 27;
 
 // The extensions lenslab implements, so the only ones a file may require.
-inline const std::vector<std::string> kSupportedExtensions = {"KHR_materials_unlit", "KHR_materials_emissive_strength"};
+inline const std::vector<std::string> kSupportedExtensions = {"KHR_materials_unlit", "KHR_materials_emissive_strength",
+                                                           "KHR_texture_transform"};
 
 }  // namespace lenslab::gltf

@@ -27,7 +27,9 @@ GpuScene::GpuMesh upload(const Mesh& mesh) {
   const Attribute attributes[] = {{0, 3, offsetof(Vertex, position)},
                                   {1, 3, offsetof(Vertex, normal)},
                                   {2, 2, offsetof(Vertex, uv)},
-                                  {3, 4, offsetof(Vertex, color)}};
+                                  {3, 4, offsetof(Vertex, color)},
+                                  {4, 4, offsetof(Vertex, tangent)},
+                                  {5, 2, offsetof(Vertex, uv1)}};
   for (const Attribute& a : attributes) {
     glEnableVertexArrayAttrib(vao, a.location);
     glVertexArrayAttribFormat(vao, a.location, a.size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));

@@ -11,8 +11,9 @@
 // surfaces revisited", as its reference implementation runs with its defaults):
 //  1. Each triangle's tangent is ∂P/∂u of the plane through it, from its edges e1, e2 and their uv
 //     steps (du, dv): T = (e1·dv2 − e2·dv1) / (du1·dv2 − du2·dv1), normalised. The sign of the uv
-//     area (the denominator) is the triangle's handedness: uv mirrored across the seam of a
-//     symmetric model gives −1. A triangle of no uv area has no direction and adds nothing.
+//     area (the denominator) is the triangle's handedness, negated because glTF's v points down
+//     the image while its normal maps' +Y points up (see triangleFrame): uv mirrored across the
+//     seam of a symmetric model flips it. A triangle of no uv area has no direction and adds nothing.
 //  2. At each corner, T less its component along the vertex normal (Gram–Schmidt), normalised,
 //     weighted by the corner's angle (its edges projected into the plane ⟂ the normal), is
 //     summed over every triangle of the same handedness meeting at the vertex. Vertices are
@@ -66,7 +67,11 @@ TriangleFrame triangleFrame(const Vertex& a, const Vertex& b, const Vertex& c, i
   const double length = glm::length(t);
   if (!(length > 0.0) || !std::isfinite(length)) return f;
   f.tangent = t / length;
-  f.positive = det > 0.0;
+  // glTF's v runs down the image and a normal map's +Y is up the image (glTF 2.0, material.
+  // normalTexture: "+X is right and +Y is up"), so the bitangent is −∂P/∂v: right-handed where
+  // the uv area, with v pointing down, is negative. (MikkTSpace is fed v pointing up by the
+  // exporters that write glTF's tangents, e.g. Blender's, which flip v on export.)
+  f.positive = det < 0.0;
   f.valid = true;
   return f;
 }

@@ -18,7 +18,8 @@ struct TangentStats {
 };
 
 // Fills every vertex's `tangent` (xyz unit and perpendicular to its normal, w = ±1: the
-// bitangent is w · cross(normal, tangent.xyz), glTF's convention) from the uv set `texCoord`
+// bitangent is w · cross(normal, tangent.xyz), glTF's convention; tangent.xyz follows ∂P/∂u and
+// the bitangent −∂P/∂v, up the image, as glTF's normal maps have +Y up) from the uv set `texCoord`
 // (0: Vertex::uv, 1: Vertex::uv1), and sets mesh.hasTangents. May add vertices (see splitVertices).
 TangentStats generateTangents(Mesh& mesh, int texCoord);
 

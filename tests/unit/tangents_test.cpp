@@ -51,19 +51,30 @@ TEST(Tangents, FlatQuadFollowsDpDu) {
     expectUnitPerpendicular(v);
     EXPECT_NEAR(v.tangent.x, c, 1e-4f);
     EXPECT_NEAR(v.tangent.y, s, 1e-4f);
-    EXPECT_EQ(v.tangent.w, 1.0f);  // ∂P/∂v = (−sin 30°, cos 30°) = cross(n, ∂P/∂u): right-handed
+    // ∂P/∂v = (−sin 30°, cos 30°) = cross(n, ∂P/∂u); the bitangent is −∂P/∂v (up the image,
+    // against glTF's v), so w = −1.
+    EXPECT_EQ(v.tangent.w, -1.0f);
   }
 }
 
-TEST(Tangents, MirroredUvGivesNegativeHandedness) {
-  // u decreasing along x: ∂P/∂u = −x, and ∂P/∂v = +y = −cross(n, ∂P/∂u): w = −1.
-  Mesh m = quad({1, 0}, {0, 0}, {0, 1}, {1, 1});
+TEST(Tangents, ImageUprightIsRightHandedAndMirroredUvIsLeftHanded) {
+  // The image upright on the quad (glTF's v down the image, so v falls along +y): ∂P/∂u = +x,
+  // the bitangent (up the image, −∂P/∂v) = +y = cross(n, t): w = +1.
+  Mesh upright = quad({0, 1}, {1, 1}, {1, 0}, {0, 0});
+  generateTangents(upright, 0);
+  for (const Vertex& v : upright.vertices) {
+    expectUnitPerpendicular(v);
+    EXPECT_NEAR(v.tangent.x, 1.0f, 1e-4f);
+    EXPECT_EQ(v.tangent.w, 1.0f);
+  }
+  // Mirrored (u decreasing along x): ∂P/∂u = −x, the bitangent still +y = −cross(n, t): w = −1.
+  Mesh m = quad({1, 1}, {0, 1}, {0, 0}, {1, 0});
   generateTangents(m, 0);
   for (const Vertex& v : m.vertices) {
     expectUnitPerpendicular(v);
     EXPECT_NEAR(v.tangent.x, -1.0f, 1e-4f);
     EXPECT_EQ(v.tangent.w, -1.0f);
-    // glTF's bitangent, w · cross(n, t), is ∂P/∂v's direction.
+    // glTF's bitangent, w · cross(n, t), points up the image: −∂P/∂v = +y.
     const glm::vec3 bitangent = v.tangent.w * glm::cross(v.normal, glm::vec3(v.tangent));
     EXPECT_NEAR(bitangent.y, 1.0f, 1e-4f);
   }
@@ -84,7 +95,7 @@ TEST(Tangents, SharedVertexOfBothHandednessIsSplit) {
     for (int c = 0; c < 3; ++c) {
       const Vertex& v = m.vertices[m.indices[3 * t + static_cast<std::size_t>(c)]];
       expectUnitPerpendicular(v);
-      EXPECT_EQ(v.tangent.w, t < 2 ? 1.0f : -1.0f) << "triangle " << t;
+      EXPECT_EQ(v.tangent.w, t < 2 ? -1.0f : 1.0f) << "triangle " << t;  // v along +y: −1 (see above)
       EXPECT_NEAR(v.tangent.x, t < 2 ? 1.0f : -1.0f, 1e-4f) << "triangle " << t;
     }
 }
@@ -119,7 +130,7 @@ TEST(Tangents, UsesTheChosenUvSet) {
   generateTangents(m, 1);
   for (const Vertex& v : m.vertices) {
     EXPECT_NEAR(v.tangent.y, 1.0f, 1e-4f);
-    EXPECT_EQ(v.tangent.w, -1.0f);  // swapping u and v mirrors
+    EXPECT_EQ(v.tangent.w, 1.0f);  // swapping u and v mirrors (set 0 here would give −1)
   }
 }
 
@@ -163,7 +174,7 @@ TEST(Tangents, UvSphereFollowsDpDu) {
     // vertices only where their uv agree).
     const bool seam = v.uv.x == 0.0f || v.uv.x == 1.0f;
     (seam ? worstSeam : worst) = std::max(seam ? worstSeam : worst, glm::length(glm::dvec3(v.tangent) - dPdu));
-    const double handedness = glm::dot(glm::cross(glm::dvec3(v.normal), dPdu), dPdv);
+    const double handedness = glm::dot(glm::cross(glm::dvec3(v.normal), dPdu), -dPdv);  // bitangent: −∂P/∂v
     EXPECT_EQ(v.tangent.w, handedness > 0.0 ? 1.0f : -1.0f);
   }
   EXPECT_LE(worst, 1e-4);

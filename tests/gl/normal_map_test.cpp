@@ -101,18 +101,38 @@ glm::dvec3 tiltedWorldNormal(const glm::dmat4& worldFromModel, double normalScal
   return glm::normalize(glm::transpose(glm::inverse(glm::dmat3(worldFromModel))) * model);
 }
 
+// Under a non-uniform scale the glTF frame is not the tilted surface's: the specification's
+// tangent moves with the surface (worldFromModel's linear part M: a tangent is a difference of
+// surface points) and the normal by the normal matrix N = M⁻ᵀ, and the map's normal is taken in
+// the frame (M·t, w·cross(N·n, M·t), N·n), each normalised, as the Sample Viewer does.
+glm::dvec3 glTFFrameNormal(const glm::dmat4& worldFromModel, double normalScale) {
+  glm::dvec3 m = glm::dvec3(kTexel[0], kTexel[1], kTexel[2]) / 255.0 * 2.0 - 1.0;
+  m = glm::normalize(glm::dvec3(m.x * normalScale, m.y * normalScale, m.z));
+  const glm::dmat3 linear(worldFromModel);
+  const glm::dvec3 t = glm::normalize(linear * glm::dvec3(1, 0, 0));
+  const glm::dvec3 n = glm::normalize(glm::transpose(glm::inverse(linear)) * glm::dvec3(0, 0, 1));
+  const double w = glm::determinant(linear) < 0.0 ? -1.0 : 1.0;  // the quad's own w is +1 (image upright)
+  return glm::normalize(t * m.x + w * glm::normalize(glm::cross(n, t)) * m.y + n * m.z);
+}
+
 class NormalMap : public ::testing::TestWithParam<int> {};
 
 // 0: placed by a rotation and translation; 1: also mirrored (the bitangent mirrors with it);
-// 2: a normal scale of 0.4.
+// 2: a normal scale of 0.4; 3: scaled 3:1 along a direction in the plane (tangents move by
+// worldFromModel's linear part, not the normal matrix: that frame is the expected one).
 TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRenderers) {
   LENSLAB_REQUIRE_GL();
   const int variant = GetParam();
   glm::dmat4 worldFromModel = glm::rotate(glm::translate(glm::dmat4(1.0), {0.2, -0.1, -6.0}), 0.3, glm::dvec3(0.2, 1.0, 0.1));
   if (variant == 1) worldFromModel = worldFromModel * glm::scale(glm::dmat4(1.0), {-1.0, 1.0, 1.0});
+  if (variant == 3)
+    worldFromModel = worldFromModel * glm::rotate(glm::dmat4(1.0), -0.5, glm::dvec3(0, 0, 1)) * glm::scale(glm::dmat4(1.0), {3.0, 1.0, 1.0}) *
+                     glm::rotate(glm::dmat4(1.0), 0.5, glm::dvec3(0, 0, 1));
   const float scale = variant == 2 ? 0.4f : 1.0f;
   const Scene scene = tiltedByMap(worldFromModel, scale);
-  const glm::dvec3 normal = tiltedWorldNormal(worldFromModel, scale);
+  const glm::dvec3 normal = variant == 3 ? glTFFrameNormal(worldFromModel, scale) : tiltedWorldNormal(worldFromModel, scale);
+  if (variant != 3) EXPECT_LE(glm::length(normal - glTFFrameNormal(worldFromModel, scale)), 1e-12) << "the two closed forms agree";
+  if (variant == 3) ASSERT_GT(glm::length(normal - tiltedWorldNormal(worldFromModel, scale)), 0.01) << "and here they differ";
   const Lighting& light = scene.lighting;
   const double lambert = std::max(0.0, glm::dot(normal, glm::dvec3(light.toLight)));
   const glm::dvec3 expected = glm::dvec3(kBase) * (light.ambient + light.diffuse * lambert);
@@ -151,7 +171,7 @@ TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRend
   EXPECT_LE(worstAov, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Placements, NormalMap, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Placements, NormalMap, ::testing::Values(0, 1, 2, 3));
 
 TEST(NormalMapFallback, AMeshWithoutTangentsIsShadedWithItsGeometricNormal) {
   LENSLAB_REQUIRE_GL();

@@ -1129,5 +1129,149 @@ TEST_F(GltfWritten, MutatedFilesLoadOrAreRefusedNeverCrash) {
   EXPECT_EQ(loaded + refused, 400);
 }
 
+
+// -- normal maps, tangents, TEXCOORD_1 and KHR_texture_transform
+
+class GltfMaps : public GltfWritten {
+ protected:
+  // The square with TEXCOORD_0 (and more attributes from `extra`), drawn with material 0.
+  static GltfBuilder texturedSquare(json extra = json::object()) {
+    GltfBuilder b;
+    const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    json attributes = {{"POSITION", p}, {"TEXCOORD_0", b.accessor(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}, kFloat, "VEC2", 4)}};
+    for (auto& [name, value] : extra.items()) attributes[name] = value;
+    b.drawnMesh({{"attributes", attributes}, {"indices", b.indices({0, 1, 2, 0, 2, 3})}, {"material", 0}});
+    b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
+    b.gltf["textures"] = {{{"source", 0}}};
+    return b;
+  }
+};
+
+TEST_F(GltfMaps, TangentsAndTheSecondUvSetAreRead) {
+  GltfBuilder b;
+  const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  const std::vector<float> tangents{1, 0, 0, 1, 0, 1, 0, -1, 0.6f, 0.8f, 0, 1};
+  const std::vector<float> uv1{0.25f, 0.5f, 0.75f, 0.5f, 0.25f, 1.0f};
+  b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(tangents, kFloat, "VEC4", 3)},
+                                {"TEXCOORD_1", b.accessor(uv1, kFloat, "VEC2", 3)}}}});
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  EXPECT_TRUE(mesh.hasTangents);
+  ASSERT_EQ(mesh.vertices.size(), 3u);  // flat normals keep one vertex per corner here
+  EXPECT_EQ(mesh.vertices[1].tangent, glm::vec4(0, 1, 0, -1));
+  EXPECT_NEAR(mesh.vertices[2].tangent.x, 0.6f, 1e-6f);
+  EXPECT_EQ(mesh.vertices[2].uv1, glm::vec2(0.25f, 1.0f));
+}
+
+TEST_F(GltfMaps, TangentsThatAreNotUnitOrHaveNoSignAreRefusedInOneLine) {
+  const std::pair<std::vector<float>, const char*> cases[] = {
+      {{1, 0, 0, 0.5f, 1, 0, 0, 1, 1, 0, 0, 1}, "TANGENT: element 0 has w = 0.5; it must be 1 or -1"},
+      {{1, 0, 0, 1, 2, 0, 0, 1, 1, 0, 0, 1}, "TANGENT: element 1 has xyz of length 2; it must be a unit vector"}};
+  for (const auto& [values, message] : cases) {
+    GltfBuilder b;
+    const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+    b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(values, kFloat, "VEC4", 3)}}}});
+    EXPECT_TRUE(contains(refusal(b), message)) << message;
+  }
+  GltfBuilder b;
+  const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3)}}}});
+  EXPECT_TRUE(contains(refusal(b), "TANGENT (accessor 1) is VEC3 of FLOAT; it must be VEC4 FLOAT"));
+}
+
+TEST_F(GltfMaps, ANormalMapWithoutTangentsGetsGeneratedOnesAndItsScale) {
+  GltfBuilder b = texturedSquare();
+  b.gltf["materials"] = {{{"normalTexture", {{"index", 0}, {"scale", 0.5}}}}};
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_TRUE(scene.materials[0].normalTexture.present());
+  EXPECT_EQ(scene.materials[0].normalScale, 0.5f);
+  const Mesh& mesh = scene.meshes[0];
+  EXPECT_TRUE(mesh.hasTangents);
+  for (const Vertex& v : mesh.vertices) {
+    // The image upright on the square (v falls along +y): ∂P/∂u = +x, bitangent +y, w = +1.
+    EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);
+    EXPECT_EQ(v.tangent.w, 1.0f);
+  }
+  // The same square without a normal map gets no tangents (no tangent path).
+  GltfBuilder plain = texturedSquare();
+  plain.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  const Scene unmapped = load(plain);
+  EXPECT_FALSE(unmapped.meshes[0].hasTangents);
+  EXPECT_EQ(unmapped.meshes[0].vertices[0].tangent, glm::vec4(0.0f));
+}
+
+TEST_F(GltfMaps, TextureTransformAndTexCoordAreReadOnEveryTextureReference) {
+  GltfBuilder b = texturedSquare({{"TEXCOORD_1", json()}});
+  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
+  const json transform = {{"offset", {0.5, -0.25}}, {"rotation", 1.5707963267948966}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
+  b.gltf["extensionsUsed"] = {"KHR_texture_transform"};
+  b.gltf["extensionsRequired"] = {"KHR_texture_transform"};
+  json material;
+  material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+  material["emissiveFactor"] = {1, 1, 1};
+  material["emissiveTexture"] = {{"index", 0}, {"texCoord", 1}};
+  material["normalTexture"] = {{"index", 0}};
+  material["normalTexture"]["extensions"]["KHR_texture_transform"]["offset"] = {0.125, 0};
+  b.gltf["materials"] = json::array({material});
+  const Scene scene = load(b);
+  const Material& m = scene.materials[0];
+  EXPECT_EQ(m.baseColorTexture.texCoord, 1) << "the extension's texCoord overrides the textureInfo's";
+  // The extension's formula: u' = cos·2u + sin·3v + 0.5, v' = −sin·2u + cos·3v − 0.25 at 90°.
+  const glm::vec3 mapped = m.baseColorTexture.uvFromTexCoord * glm::vec3(0.1f, 0.2f, 1.0f);
+  EXPECT_NEAR(mapped.x, 3.0f * 0.2f + 0.5f, 1e-6f);
+  EXPECT_NEAR(mapped.y, -2.0f * 0.1f - 0.25f, 1e-6f);
+  EXPECT_EQ(m.emissiveTexture.texCoord, 1);
+  EXPECT_EQ(m.emissiveTexture.uvFromTexCoord, glm::mat3(1.0f));
+  EXPECT_EQ(m.normalTexture.texCoord, 0);
+  EXPECT_NEAR((m.normalTexture.uvFromTexCoord * glm::vec3(0.0f, 0.0f, 1.0f)).x, 0.125f, 1e-7f);
+  EXPECT_FALSE(noted(scene, "KHR_texture_transform"));
+}
+
+TEST_F(GltfMaps, MalformedTextureTransformsAreRefusedNamingTheField) {
+  const std::pair<json, const char*> cases[] = {
+      {{{"offset", {1, 2, 3}}}, "material 0 baseColorTexture KHR_texture_transform.offset must be an array of 2 numbers"},
+      {{{"rotation", "left"}}, "material 0 baseColorTexture KHR_texture_transform.rotation must be a finite number"},
+      {{{"scale", {1, "x"}}}, "KHR_texture_transform.scale must be an array of 2 numbers"},
+      {{{"texCoord", -1}}, "KHR_texture_transform.texCoord must be an integer >= 0"}};
+  for (const auto& [transform, message] : cases) {
+    GltfBuilder b = texturedSquare();
+    json material;
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+    b.gltf["materials"] = json::array({material});
+    EXPECT_TRUE(contains(refusal(b), message)) << message;
+  }
+}
+
+TEST(GltfSamples, NormalMapsTexCoord1AndTextureTransformsOfTheSamples) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "NormalTangentTest");
+  // No TANGENT in the file: generated for every normal-mapped mesh, unit and ⟂ the normal.
+  const Scene normalTangent = loadSample("NormalTangentTest/glTF-Binary/NormalTangentTest.glb");
+  int mapped = 0;
+  for (const Mesh& mesh : normalTangent.meshes) {
+    if (mesh.material < 0 || !normalTangent.materials[static_cast<std::size_t>(mesh.material)].normalTexture.present()) continue;
+    ++mapped;
+    ASSERT_TRUE(mesh.hasTangents) << mesh.name;
+    for (const Vertex& v : mesh.vertices) {
+      ASSERT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-4f) << mesh.name;
+      ASSERT_NEAR(glm::dot(glm::vec3(v.tangent), v.normal), 0.0f, 1e-4f) << mesh.name;
+    }
+  }
+  EXPECT_GT(mapped, 0);
+  // MultiUVTest: the emissive texture samples TEXCOORD_1.
+  const Scene multiUv = loadSample("MultiUVTest/glTF/MultiUVTest.gltf");
+  bool secondSet = false;
+  for (const Material& m : multiUv.materials) secondSet |= m.emissiveTexture.present() && m.emissiveTexture.texCoord == 1;
+  EXPECT_TRUE(secondSet);
+  // TextureTransformTest: rotation 0.392699 rad on one of its materials.
+  const Scene transformed = loadSample("TextureTransformTest/glTF/TextureTransformTest.gltf");
+  bool rotated = false;
+  for (const Material& m : transformed.materials)
+    rotated |= std::abs(m.baseColorTexture.uvFromTexCoord[0][0] - std::cos(0.392699f)) < 1e-5f &&
+               std::abs(m.baseColorTexture.uvFromTexCoord[1][0] - std::sin(0.392699f)) < 1e-5f;
+  EXPECT_TRUE(rotated);
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -14,8 +14,10 @@ in ToClip {
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+#ifdef MATERIAL_MAPS
   vec4 worldTangent;
   vec2 uv1;
+#endif
 } vertex[];
 
 // Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
@@ -24,8 +26,10 @@ invariant gl_Position;
 out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;
+#ifdef MATERIAL_MAPS
 out vec4 worldTangent;
 out vec2 uv1;
+#endif
 
 const int kMaxCorners = 7;
 const double kGuard = 2.0;
@@ -35,8 +39,10 @@ struct Corner {
   vec3 worldNormal;
   vec2 uv;
   vec4 vertexColor;
+#ifdef MATERIAL_MAPS
   vec4 worldTangent;
   vec2 uv1;
+#endif
 };
 
 Corner mixCorners(Corner a, Corner b, double t) {
@@ -45,8 +51,10 @@ Corner mixCorners(Corner a, Corner b, double t) {
   c.worldNormal = mix(a.worldNormal, b.worldNormal, float(t));
   c.uv = mix(a.uv, b.uv, float(t));
   c.vertexColor = mix(a.vertexColor, b.vertexColor, float(t));
+#ifdef MATERIAL_MAPS
   c.worldTangent = mix(a.worldTangent, b.worldTangent, float(t));
   c.uv1 = mix(a.uv1, b.uv1, float(t));
+#endif
   return c;
 }
 
@@ -60,8 +68,12 @@ void main() {
   Corner polygon[kMaxCorners];
   int count = 3;
   for (int i = 0; i < 3; ++i)
+#ifdef MATERIAL_MAPS
     polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor,
                         vertex[i].worldTangent, vertex[i].uv1);
+#else
+    polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor);
+#endif
 
   // Sutherland–Hodgman, one plane at a time.
   for (int p = 0; p < 4 && count > 0; ++p) {
@@ -85,8 +97,10 @@ void main() {
       worldNormal = c.worldNormal;
       uv = c.uv;
       vertexColor = c.vertexColor;
+#ifdef MATERIAL_MAPS
       worldTangent = c.worldTangent;
       uv1 = c.uv1;
+#endif
       EmitVertex();
     }
     EndPrimitive();

@@ -19,8 +19,10 @@ layout(early_fragment_tests) in;
 in vec3 worldNormal;
 in vec2 uv;
 in vec4 vertexColor;
+#ifdef MATERIAL_MAPS
 in vec4 worldTangent;  // xyz, w: handedness (mirrored with the instance); zero without tangents
 in vec2 uv1;
+#endif
 
 layout(location = 2) uniform vec4 baseColorFactor;
 layout(location = 3) uniform bool hasBaseColorTexture;
@@ -49,8 +51,12 @@ layout(location = 14) uniform vec4 addWeight;
 layout(binding = 0) uniform sampler2D baseColorTexture;
 layout(binding = 1) uniform sampler2D emissiveTexture;
 
-// Normal map and texture coordinates (locations 80–99; 80–81 are scene.vert's tangent transform).
-// Each texture slot samples TEXCOORD_<texCoord> through its KHR_texture_transform (slotUv).
+// Normal map and texture coordinates (locations 80–99; 80–81 are scene.vert's tangent transform),
+// in the MATERIAL_MAPS variant only (materials with a normal map, TEXCOORD_1 or a uv transform).
+// Each texture slot samples TEXCOORD_<texCoord> through its KHR_texture_transform: its uv is
+// <slot>Uv() in either variant (the plain variant's is TEXCOORD_0 as it is), e.g. for the
+// metallic-roughness and occlusion textures metallicRoughnessUv() and occlusionUv().
+#ifdef MATERIAL_MAPS
 layout(location = 82) uniform bool hasNormalTexture;
 layout(location = 83) uniform float normalScale;
 layout(location = 84) uniform int normalTexCoord;
@@ -59,13 +65,21 @@ layout(location = 86) uniform int baseColorTexCoord;
 layout(location = 87) uniform mat3 baseColorUvFromTexCoord;
 layout(location = 88) uniform int emissiveTexCoord;
 layout(location = 89) uniform mat3 emissiveUvFromTexCoord;
-// For the metallic-roughness and occlusion textures (the shading code samples those):
-//   slotUv(uv, uv1, metallicRoughnessTexCoord, metallicRoughnessUvFromTexCoord)
 layout(location = 90) uniform int metallicRoughnessTexCoord;
 layout(location = 91) uniform mat3 metallicRoughnessUvFromTexCoord;
 layout(location = 92) uniform int occlusionTexCoord;
 layout(location = 93) uniform mat3 occlusionUvFromTexCoord;
 layout(binding = 4) uniform sampler2D normalTexture;  // linear (GL_RGBA8)
+vec2 baseColorUv() { return slotUv(uv, uv1, baseColorTexCoord, baseColorUvFromTexCoord); }
+vec2 emissiveUv() { return slotUv(uv, uv1, emissiveTexCoord, emissiveUvFromTexCoord); }
+vec2 metallicRoughnessUv() { return slotUv(uv, uv1, metallicRoughnessTexCoord, metallicRoughnessUvFromTexCoord); }
+vec2 occlusionUv() { return slotUv(uv, uv1, occlusionTexCoord, occlusionUvFromTexCoord); }
+#else
+vec2 baseColorUv() { return uv; }
+vec2 emissiveUv() { return uv; }
+vec2 metallicRoughnessUv() { return uv; }
+vec2 occlusionUv() { return uv; }
+#endif
 
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
@@ -76,28 +90,29 @@ void main() {
 #ifdef DEPTH_ONLY
   // Alpha-masked materials only: the cut-out must not hide what is behind it.
 #ifdef ALPHA_MASK
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, slotUv(uv, uv1, baseColorTexCoord, baseColorUvFromTexCoord), lodBias);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, baseColorUv(), lodBias);
   if (alphaMask && base.a < alphaCutoff) discard;
 #endif
   return;
 #else
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, slotUv(uv, uv1, baseColorTexCoord, baseColorUvFromTexCoord), lodBias);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, baseColorUv(), lodBias);
 #ifndef ADD_TO_SUM
   // (Added views need no discard: the depth pass left no depth where a cut-out is.)
   if (alphaMask && base.a < alphaCutoff) discard;
 #endif
 
   vec3 n = normalize(worldNormal);
+#ifdef MATERIAL_MAPS
   if (hasNormalTexture) {
     const vec3 texel = texture(normalTexture, slotUv(uv, uv1, normalTexCoord, normalUvFromTexCoord), lodBias).rgb;
     n = mappedNormal(worldNormal, worldTangent.xyz, worldTangent.w, texel, normalScale);
   }
+#endif
   // A double-sided surface seen from behind is lit as its back: the normal faces the viewer
   // (with a normal map, the whole frame turns: t, b and n, as the Sample Viewer does).
   if (doubleSided && !gl_FrontFacing) n = -n;
   vec3 colour = shade(base.rgb, n, unlit, Lighting(toLight, ambient, diffuse));
-  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, slotUv(uv, uv1, emissiveTexCoord, emissiveUvFromTexCoord), lodBias).rgb
-                                : emissive;
+  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, emissiveUv(), lodBias).rgb : emissive;
 #ifdef ADD_TO_SUM
   outColor = addWeight * vec4(colour - background, 1.0);
 #else

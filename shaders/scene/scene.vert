@@ -7,18 +7,24 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inColor;
+#ifdef MATERIAL_MAPS
+// The variant for materials with a normal map, TEXCOORD_1 or a uv transform (ScenePass): the
+// plain one carries none of this, so a scene without them costs what it did before.
 layout(location = 4) in vec4 inTangent;  // xyz, w = ±1; zero where the mesh has none
 layout(location = 5) in vec2 inUv1;      // TEXCOORD_1
+#endif
 
 layout(location = 0) uniform mat4 clipFromModel;
 layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
 // Tangents lie in the surface, so they move with it: by worldFromModel's linear part (glTF 2.0
 // §3.7.2.1: "TANGENT … XYZW vertex tangents"; a direction on the surface is a difference of two
 // points), not by the normal matrix. Scaled to its largest entry near 1, as the normal matrix is.
+#ifdef MATERIAL_MAPS
 layout(location = 80) uniform mat3 worldTangentFromModel;
 // −1 where worldFromModel mirrors (negative determinant): the bitangent, w·cross(n, t), must
 // mirror with the surface, and cross() of the mirrored n and t does not.
 layout(location = 81) uniform float handednessFromModel;
+#endif
 
 // Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
 invariant gl_Position;
@@ -26,14 +32,18 @@ invariant gl_Position;
 out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;
+#ifdef MATERIAL_MAPS
 out vec4 worldTangent;
 out vec2 uv1;
+#endif
 
 void main() {
   gl_Position = clipFromModel * vec4(inPosition, 1.0);
   worldNormal = worldNormalFromModel * inNormal;
   uv = inUv;
   vertexColor = inColor;
+#ifdef MATERIAL_MAPS
   worldTangent = vec4(worldTangentFromModel * inTangent.xyz, inTangent.w * handednessFromModel);
   uv1 = inUv1;
+#endif
 }

@@ -187,10 +187,9 @@ struct RayCaster::Impl {
 
   // The normal the surface is shaded with at barycentric (b0, b1, b2): the interpolated vertex
   // normal (the loader gives a mesh without normals its face normals) in world space, turned to
-  // the viewer on the back of a double-sided material, as shaders/scene/scene.frag does. The one
-  // place a normal map would perturb it.
-  // With a normal map (`texel`: its linear RGB at the hit), the interpolated tangent frame turns
-  // it, by material_maps.glsl's mappedNormal as scene.frag does.
+  // the viewer on the back of a double-sided material, as shaders/scene/scene.frag does. With a
+  // normal map (`texel`: its linear RGB at the hit), the interpolated tangent frame turns it first,
+  // by material_maps.glsl's mappedNormal as scene.frag does.
   static glm::vec3 shadingNormal(const Geometry& g, const Material& material, bool front, const Vertex& v0,
                                  const Vertex& v1, const Vertex& v2, float b0, float b1, float b2,
                                  const glm::vec3* texel = nullptr) {

@@ -3,10 +3,12 @@
 // that way; a texture with KHR_texture_transform (offset, rotation, scale) on TEXCOORD_1 shows,
 // at each pixel, the texel the transform's formula picks.
 #include "camera/PhysicalCamera.h"
+#include "camera/Projection.h"
 #include "gl_test_context.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
+#include "render/ScenePass.h"
 #include "scene/ProceduralScenes.h"
 #include "scene/Tangents.h"
 
@@ -175,6 +177,23 @@ TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRend
 }
 
 INSTANTIATE_TEST_SUITE_P(Placements, NormalMap, ::testing::Values(0, 1, 2, 3));
+
+// A narrow field of view (about 4e-4 rad) is drawn by the double-precision clipping path
+// (narrow_field.vert, .geom), which carries the tangent and the second uv set too.
+TEST(NormalMapNarrowField, TheDoublePrecisionPathShadesTheMapAlike) {
+  LENSLAB_REQUIRE_GL();
+  const glm::dmat4 worldFromModel = glm::rotate(glm::translate(glm::dmat4(1.0), {0.0, 0.0, -6.0}), 0.3, glm::dvec3(0.2, 1.0, 0.1));
+  const Scene scene = tiltedByMap(worldFromModel, 1.0f);
+  const double lambert = std::max(0.0, glm::dot(tiltedWorldNormal(worldFromModel, 1.0), glm::dvec3(scene.lighting.toLight)));
+  const glm::dvec3 expected = glm::dvec3(kBase) * (scene.lighting.ambient + scene.lighting.diffuse * lambert);
+  PhysicalCamera c = lookingAt({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0});
+  c.focalLengthMm = 1e5;
+  const Camera camera = toCamera(c, "test");
+  ASSERT_TRUE(isNarrowField(clipFromWorld(camera.view)));
+  const ImageSize size = resolveImageSize(camera, 16, std::nullopt);
+  const Image image = raster(scene, camera, size, 1);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(image.at(size.widthPx / 2, size.heightPx / 2)[k], expected[k], 2e-3);
+}
 
 TEST(NormalMapFallback, AMeshWithoutTangentsIsShadedWithItsGeometricNormal) {
   LENSLAB_REQUIRE_GL();

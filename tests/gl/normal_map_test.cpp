@@ -121,11 +121,13 @@ class NormalMap : public ::testing::TestWithParam<int> {};
 
 // 0: placed by a rotation and translation; 1: also mirrored (the bitangent mirrors with it);
 // 2: a normal scale of 0.4; 3: scaled 3:1 along a direction in the plane (tangents move by
-// worldFromModel's linear part, not the normal matrix: that frame is the expected one).
+// worldFromModel's linear part, not the normal matrix: that frame is the expected one);
+// 4: plane and camera 1e7 from the world origin (nothing of the map depends on where it is).
 TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRenderers) {
   LENSLAB_REQUIRE_GL();
   const int variant = GetParam();
-  glm::dmat4 worldFromModel = glm::rotate(glm::translate(glm::dmat4(1.0), {0.2, -0.1, -6.0}), 0.3, glm::dvec3(0.2, 1.0, 0.1));
+  const glm::dvec3 far = variant == 4 ? glm::dvec3(1e7, 2.5e6, -5e6) : glm::dvec3(0.0);
+  glm::dmat4 worldFromModel = glm::rotate(glm::translate(glm::dmat4(1.0), far + glm::dvec3(0.2, -0.1, -6.0)), 0.3, glm::dvec3(0.2, 1.0, 0.1));
   if (variant == 1) worldFromModel = worldFromModel * glm::scale(glm::dmat4(1.0), {-1.0, 1.0, 1.0});
   if (variant == 3)
     worldFromModel = worldFromModel * glm::rotate(glm::dmat4(1.0), -0.5, glm::dvec3(0, 0, 1)) * glm::scale(glm::dmat4(1.0), {3.0, 1.0, 1.0}) *
@@ -146,7 +148,7 @@ TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRend
                                              glm::dvec3(light.toLight)));
   ASSERT_GT(std::abs(lambert - flat), 0.05);
 
-  const PhysicalCamera c = lookingAt({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0});
+  const PhysicalCamera c = lookingAt(far, far + glm::dvec3(0.0, 0.0, -1.0));
   const Camera camera = toCamera(c, "test");
   const ImageSize size = resolveImageSize(camera, 48, std::nullopt);
   const Image rasterImage = raster(scene, camera, size, 4);
@@ -176,7 +178,7 @@ TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRend
   EXPECT_LE(worstAov, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Placements, NormalMap, ::testing::Values(0, 1, 2, 3));
+INSTANTIATE_TEST_SUITE_P(Placements, NormalMap, ::testing::Values(0, 1, 2, 3, 4));
 
 // A narrow field of view (about 4e-4 rad) is drawn by the double-precision clipping path
 // (narrow_field.vert, .geom), which carries the tangent and the second uv set too.
@@ -278,6 +280,59 @@ TEST(TextureTransform, EachPixelShowsTheTexelTheTransformOfItsSecondUvSetPicks) 
       ++checked;
     }
   EXPECT_GT(checked, 500);
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// A uv transform that scales the texture by 8 shrinks it on screen by 8: its footprint, and so its
+// mip level, grows by log2 8 = 3. GL takes the derivatives of the transformed uv; the ray caster
+// carries its ray differentials through the transform. A 1-texel checker whose footprint is then
+// ~5 texels per pixel filters to an even grey in both; with the untransformed footprint (under a
+// texel per pixel) the ray caster would show the checker's texels instead.
+TEST(TextureTransform, ScaledUvWidensTheFootprintInBothRenderersAlike) {
+  LENSLAB_REQUIRE_GL();
+  Scene scene;
+  scene.source = "scaled checker";
+  TextureImage image;
+  image.name = "checker";
+  image.width = image.height = 64;
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const std::uint8_t v = (i + j) % 2 ? 255 : 0;
+      image.rgba8.insert(image.rgba8.end(), {v, v, v, 255});
+    }
+  scene.images.push_back(image);
+  scene.textures.push_back({0, Sampler{Wrap::Repeat, Wrap::Repeat, Filter::Linear, Filter::LinearMipmapLinear}});
+  Material m;
+  m.unlit = true;
+  m.baseColorTexture.texture = 0;
+  m.baseColorTexture.uvFromTexCoord = glm::mat3(glm::vec3(8, 0, 0), glm::vec3(0, 8, 0), glm::vec3(0.1f, 0.3f, 1));
+  scene.materials.push_back(m);
+  scene.meshes.push_back(quadMesh(1.0, 1.0, 0));
+  scene.instances.push_back({0, glm::dmat4(1.0)});
+  scene.bounds = computeBounds(scene);
+  const PhysicalCamera c = lookingAt({0.0, 0.0, 1.2}, {0.0, 0.0, 0.0});
+  const Camera camera = toCamera(c, "test");
+  const ImageSize size = resolveImageSize(camera, 96, std::nullopt);
+  const Image rasterImage = raster(scene, camera, size, 1);
+  const Image castImage = RayCaster(scene).render(camera, size, RaycastOptions{1, 3});
+  double difference = 0.0, castSpread = 0.0;
+  int pixels = 0;
+  for (int y = size.heightPx / 4; y < 3 * size.heightPx / 4; ++y)
+    for (int x = size.widthPx / 4; x < 3 * size.widthPx / 4; ++x) {
+      difference += std::abs(rasterImage.at(x, y).g - castImage.at(x, y).g);
+      castSpread += std::abs(castImage.at(x, y).g - 0.5);  // the checker's mean in linear light
+      ++pixels;
+    }
+  difference /= pixels;
+  castSpread /= pixels;
+  std::printf("[ measure  ] scaled checker: mean |raster − ray cast| %.3g, ray cast's mean |value − 0.5| %.3g\n", difference, castSpread);
+  EXPECT_LE(difference, 0.02);
+  EXPECT_LE(castSpread, 0.05);
 }
 
 }  // namespace

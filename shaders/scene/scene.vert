@@ -16,9 +16,11 @@ layout(location = 5) in vec2 inUv1;      // TEXCOORD_1
 
 layout(location = 0) uniform mat4 clipFromModel;
 layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
-// Tangents lie in the surface, so they move with it: by worldFromModel's linear part (glTF 2.0
-// §3.7.2.1: "TANGENT … XYZW vertex tangents"; a direction on the surface is a difference of two
-// points), not by the normal matrix. Scaled to its largest entry near 1, as the normal matrix is.
+// Tangents lie in the surface, so they move with it: by worldFromModel's linear part (a direction
+// on the surface is a difference of two surface points; glTF 2.0's mesh attribute TANGENT is such
+// a direction, ∂P/∂u), not by the normal matrix, as the Khronos glTF Sample Viewer transforms them
+// (its model matrix for tangents, its normal matrix for normals). Scaled to its largest entry
+// near 1, as the normal matrix is.
 #ifdef MATERIAL_MAPS
 layout(location = 80) uniform mat3 worldTangentFromModel;
 // −1 where worldFromModel mirrors (negative determinant): the bitangent, w·cross(n, t), must

@@ -15,6 +15,10 @@ in ToClip {
   vec2 uv;
   vec4 vertexColor;
   vec3 shadingPosition;
+#ifdef MATERIAL_MAPS
+  vec4 worldTangent;
+  vec2 uv1;
+#endif
 } vertex[];
 
 // Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.
@@ -24,6 +28,10 @@ out vec3 worldNormal;
 out vec2 uv;
 out vec4 vertexColor;
 out vec3 shadingPosition;
+#ifdef MATERIAL_MAPS
+out vec4 worldTangent;
+out vec2 uv1;
+#endif
 
 const int kMaxCorners = 7;
 const double kGuard = 2.0;
@@ -34,6 +42,10 @@ struct Corner {
   vec2 uv;
   vec4 vertexColor;
   vec3 shadingPosition;
+#ifdef MATERIAL_MAPS
+  vec4 worldTangent;
+  vec2 uv1;
+#endif
 };
 
 Corner mixCorners(Corner a, Corner b, double t) {
@@ -43,6 +55,10 @@ Corner mixCorners(Corner a, Corner b, double t) {
   c.uv = mix(a.uv, b.uv, float(t));
   c.vertexColor = mix(a.vertexColor, b.vertexColor, float(t));
   c.shadingPosition = mix(a.shadingPosition, b.shadingPosition, float(t));
+#ifdef MATERIAL_MAPS
+  c.worldTangent = mix(a.worldTangent, b.worldTangent, float(t));
+  c.uv1 = mix(a.uv1, b.uv1, float(t));
+#endif
   return c;
 }
 
@@ -56,8 +72,13 @@ void main() {
   Corner polygon[kMaxCorners];
   int count = 3;
   for (int i = 0; i < 3; ++i)
+#ifdef MATERIAL_MAPS
+    polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor,
+                        vertex[i].shadingPosition, vertex[i].worldTangent, vertex[i].uv1);
+#else
     polygon[i] = Corner(vertex[i].clipPosition, vertex[i].worldNormal, vertex[i].uv, vertex[i].vertexColor,
                         vertex[i].shadingPosition);
+#endif
 
   // Sutherland–Hodgman, one plane at a time.
   for (int p = 0; p < 4 && count > 0; ++p) {
@@ -82,6 +103,10 @@ void main() {
       uv = c.uv;
       vertexColor = c.vertexColor;
       shadingPosition = c.shadingPosition;
+#ifdef MATERIAL_MAPS
+      worldTangent = c.worldTangent;
+      uv1 = c.uv1;
+#endif
       EmitVertex();
     }
     EndPrimitive();

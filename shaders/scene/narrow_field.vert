@@ -8,10 +8,18 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inColor;
+#ifdef MATERIAL_MAPS
+layout(location = 4) in vec4 inTangent;
+layout(location = 5) in vec2 inUv1;
+#endif
 
 layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
 layout(location = 12) uniform dmat4 clipFromModelDouble;
 layout(location = 20) uniform mat4 shadingFromModel;  // as in scene.vert
+#ifdef MATERIAL_MAPS
+layout(location = 80) uniform mat3 worldTangentFromModel;  // as in scene.vert
+layout(location = 81) uniform float handednessFromModel;
+#endif
 
 out ToClip {
   dvec4 clipPosition;
@@ -19,6 +27,10 @@ out ToClip {
   vec2 uv;
   vec4 vertexColor;
   vec3 shadingPosition;
+#ifdef MATERIAL_MAPS
+  vec4 worldTangent;
+  vec2 uv1;
+#endif
 } vertex;
 
 void main() {
@@ -27,4 +39,8 @@ void main() {
   vertex.uv = inUv;
   vertex.vertexColor = inColor;
   vertex.shadingPosition = (shadingFromModel * vec4(inPosition, 1.0)).xyz;
+#ifdef MATERIAL_MAPS
+  vertex.worldTangent = vec4(worldTangentFromModel * inTangent.xyz, inTangent.w * handednessFromModel);
+  vertex.uv1 = inUv1;
+#endif
 }

@@ -1,6 +1,7 @@
 #version 450 core
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
+#include "../common/material_maps.glsl"
 
 // Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
 //   2–16      base colour, alpha, the default light, emission (below)
@@ -18,6 +19,10 @@ in vec3 worldNormal;
 in vec2 uv;
 in vec4 vertexColor;
 in vec3 shadingPosition;  // scene.vert: the point relative to the view's shading origin
+#ifdef MATERIAL_MAPS
+in vec4 worldTangent;  // xyz, w: handedness (mirrored with the instance); zero without tangents
+in vec2 uv1;
+#endif
 
 layout(location = 2) uniform vec4 baseColorFactor;
 layout(location = 3) uniform bool hasBaseColorTexture;
@@ -45,6 +50,35 @@ layout(location = 14) uniform vec4 addWeight;
 layout(binding = 0) uniform sampler2D baseColorTexture;
 layout(binding = 1) uniform sampler2D emissiveTexture;
 
+// Normal map and texture coordinates (locations 80–99; 80–81 are scene.vert's tangent transform),
+// in the MATERIAL_MAPS variant only (materials with a normal map, TEXCOORD_1 or a uv transform).
+// Each texture slot samples TEXCOORD_<texCoord> through its KHR_texture_transform: its uv is
+// <slot>Uv() in either variant (the plain variant's is TEXCOORD_0 as it is), e.g. for the
+// metallic-roughness and occlusion textures metallicRoughnessUv() and occlusionUv().
+#ifdef MATERIAL_MAPS
+layout(location = 82) uniform bool hasNormalTexture;
+layout(location = 83) uniform float normalScale;
+layout(location = 84) uniform int normalTexCoord;
+layout(location = 85) uniform mat3 normalUvFromTexCoord;
+layout(location = 86) uniform int baseColorTexCoord;
+layout(location = 87) uniform mat3 baseColorUvFromTexCoord;
+layout(location = 88) uniform int emissiveTexCoord;
+layout(location = 89) uniform mat3 emissiveUvFromTexCoord;
+layout(location = 90) uniform int metallicRoughnessTexCoord;
+layout(location = 91) uniform mat3 metallicRoughnessUvFromTexCoord;
+layout(location = 92) uniform int occlusionTexCoord;
+layout(location = 93) uniform mat3 occlusionUvFromTexCoord;
+layout(binding = 4) uniform sampler2D normalTexture;  // linear (GL_RGBA8)
+vec2 baseColorUv() { return slotUv(uv, uv1, baseColorTexCoord, baseColorUvFromTexCoord); }
+vec2 emissiveUv() { return slotUv(uv, uv1, emissiveTexCoord, emissiveUvFromTexCoord); }
+vec2 metallicRoughnessUv() { return slotUv(uv, uv1, metallicRoughnessTexCoord, metallicRoughnessUvFromTexCoord); }
+vec2 occlusionUv() { return slotUv(uv, uv1, occlusionTexCoord, occlusionUvFromTexCoord); }
+#else
+vec2 baseColorUv() { return uv; }
+vec2 emissiveUv() { return uv; }
+vec2 metallicRoughnessUv() { return uv; }
+vec2 occlusionUv() { return uv; }
+#endif
 // glTF metallic-roughness and KHR_lights_punctual (docs/materials.md; render/ScenePass.cpp sets them).
 // The shading origin is this view's eye for a perspective view; a parallel view has no eye, its
 // direction toward the viewer is `towardViewer` and the origin a point near the scene.
@@ -75,11 +109,11 @@ vec3 shadeLit(vec3 base, vec3 n) {
   s.metallic = metallicFactor;
   s.perceptualRoughness = roughnessFactor;
   if (hasMetallicRoughnessTexture) {
-    vec4 mr = texture(metallicRoughnessTexture, uv, lodBias);
+    vec4 mr = texture(metallicRoughnessTexture, metallicRoughnessUv(), lodBias);
     s.perceptualRoughness *= mr.g;
     s.metallic *= mr.b;
   }
-  s.occlusion = hasOcclusionTexture ? 1.0 + occlusionStrength * (texture(occlusionTexture, uv, lodBias).r - 1.0) : 1.0;
+  s.occlusion = hasOcclusionTexture ? 1.0 + occlusionStrength * (texture(occlusionTexture, occlusionUv(), lodBias).r - 1.0) : 1.0;
   s.n = n;
   s.v = parallelView ? towardViewer : normalize(-shadingPosition);
   vec3 colour = vec3(0.0);
@@ -110,22 +144,29 @@ void main() {
 #ifdef DEPTH_ONLY
   // Alpha-masked materials only: the cut-out must not hide what is behind it.
 #ifdef ALPHA_MASK
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, baseColorUv(), lodBias);
   if (alphaMask && base.a < alphaCutoff) discard;
 #endif
   return;
 #else
-  if (hasBaseColorTexture) base *= texture(baseColorTexture, uv, lodBias);
+  if (hasBaseColorTexture) base *= texture(baseColorTexture, baseColorUv(), lodBias);
 #ifndef ADD_TO_SUM
   // (Added views need no discard: the depth pass left no depth where a cut-out is.)
   if (alphaMask && base.a < alphaCutoff) discard;
 #endif
 
   vec3 n = normalize(worldNormal);
-  // A double-sided surface seen from behind is lit as its back: the normal faces the viewer.
+#ifdef MATERIAL_MAPS
+  if (hasNormalTexture) {
+    const vec3 texel = texture(normalTexture, slotUv(uv, uv1, normalTexCoord, normalUvFromTexCoord), lodBias).rgb;
+    n = mappedNormal(worldNormal, worldTangent.xyz, worldTangent.w, texel, normalScale);
+  }
+#endif
+  // A double-sided surface seen from behind is lit as its back: the normal faces the viewer
+  // (with a normal map, the whole frame turns: t, b and n, as the Sample Viewer does).
   if (doubleSided && !gl_FrontFacing) n = -n;
   vec3 colour = unlit ? base.rgb : shadeLit(base.rgb, n);
-  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, uv, lodBias).rgb : emissive;
+  colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, emissiveUv(), lodBias).rgb : emissive;
 #ifdef ADD_TO_SUM
   outColor = addWeight * vec4(colour - background, 1.0);
 #else

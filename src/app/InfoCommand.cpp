@@ -85,9 +85,10 @@ int runInfo(const std::string& path, const std::string& cameraFile, const Camera
     const Material& m = scene.materials[i];
     out << "  [" << i << "] " << (m.name.empty() ? "(unnamed)" : m.name) << ": " << (m.unlit ? "unlit" : "lit")
         << ", base [" << m.baseColorFactor.r << ", " << m.baseColorFactor.g << ", " << m.baseColorFactor.b << ", "
-        << m.baseColorFactor.a << "]" << (m.baseColorTexture >= 0 ? ", textured" : "")
+        << m.baseColorFactor.a << "]" << (m.baseColorTexture.present() ? ", textured" : "")
         << (m.unlit ? std::string() : cat(", metallic ", m.metallicFactor, ", roughness ", m.roughnessFactor))
         << (m.metallicRoughnessTexture.present() ? ", metallic-roughness map" : "") << (m.occlusionTexture.present() ? ", occlusion map" : "")
+        << (m.normalTexture.present() ? ", normal map" : "")
         << (m.alphaMode == AlphaMode::Mask ? ", alpha mask" : m.alphaMode == AlphaMode::Blend ? ", alpha blend (drawn opaque)" : "")
         << (m.doubleSided ? ", double-sided" : "") << "\n";
   }

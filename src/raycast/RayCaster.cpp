@@ -9,6 +9,7 @@
 #include "lens/AperturePattern.h"
 #include "raycast/TextureSampler.h"
 #include "scene/ShadingLights.h"
+#include "scene/MaterialMaps.h"
 
 #include <embree3/rtcore.h>
 #include <limits>
@@ -44,13 +45,6 @@ glm::dvec2 barycentricOnPlane(const Ray& ray, const glm::dvec3& p0, const glm::d
   return {(d11 * d20 - d01 * d21) / det, (d00 * d21 - d01 * d20) / det};
 }
 
-// Textures a material reads as linear data rather than sRGB colour.
-bool readAsLinear(const Scene& scene, int texture) {
-  for (const Material& m : scene.materials)
-    if (m.metallicRoughnessTexture.texture == texture || m.occlusionTexture.texture == texture) return true;
-  return false;
-}
-
 }  // namespace
 
 struct RayCaster::Impl {
@@ -62,11 +56,12 @@ struct RayCaster::Impl {
     const float* relativePositions;  // Embree's vertex buffer: 3 floats per vertex, (world − origin) / scale
     glm::mat3 normalFromModel;
     bool mirrored;
+    glm::mat3 tangentFromModel;  // worldFromModel's linear part, scaled to its largest entry (scene.vert)
   };
   std::vector<Geometry> geometries;           // by Embree geometry ID
   std::vector<TextureSampler> samplers;       // by Scene texture index
-  std::vector<std::optional<TextureSampler>> linearSamplers;  // the same, decoded as linear data where a material needs it
   std::vector<ShadingLight> lights;           // positions relative to `origin` (rebase)
+  std::vector<TextureSampler> dataSamplers;   // the same, for textures read as data (linear); empty where none is
   // Embree works in float. Its geometry is stored relative to `origin` (the point of the scene's
   // bounds nearest the camera's lens centre, subtracted in double), and each ray starts where it
   // enters the bounds: a scene 1e7 from the world origin, or a telephoto's subject 1e9 from the
@@ -122,8 +117,12 @@ struct RayCaster::Impl {
       rtcReleaseGeometry(geometry);
       const glm::dmat3 linear(instance.worldFromModel);
       if (id != geometries.size()) throw std::logic_error("Embree geometry IDs are not sequential");
+      double largest = 0.0;
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(linear[c][r]));
+      const glm::mat3 tangentFromModel(largest > 0.0 && std::isfinite(largest) ? linear * (1.0 / largest) : linear);
       geometries.push_back({static_cast<int>(k), positions, glm::mat3(worldNormalFromModel(instance.worldFromModel)),
-                            glm::determinant(linear) < 0.0});
+                            glm::determinant(linear) < 0.0, tangentFromModel});
     }
     rtcCommitScene(rtcScene);
   }
@@ -185,11 +184,18 @@ struct RayCaster::Impl {
 
   // The normal the surface is shaded with at barycentric (b0, b1, b2): the interpolated vertex
   // normal (the loader gives a mesh without normals its face normals) in world space, turned to
-  // the viewer on the back of a double-sided material, as shaders/scene/scene.frag does. The one
-  // place a normal map would perturb it.
+  // the viewer on the back of a double-sided material, as shaders/scene/scene.frag does. With a
+  // normal map (`texel`: its linear RGB at the hit), the interpolated tangent frame turns it first,
+  // by material_maps.glsl's mappedNormal as scene.frag does.
   static glm::vec3 shadingNormal(const Geometry& g, const Material& material, bool front, const Vertex& v0,
-                                 const Vertex& v1, const Vertex& v2, float b0, float b1, float b2) {
-    glm::vec3 normal = glm::normalize(g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal));
+                                 const Vertex& v1, const Vertex& v2, float b0, float b1, float b2,
+                                 const glm::vec3* texel = nullptr) {
+    const glm::vec3 interpolated = g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal);
+    glm::vec3 normal = glm::normalize(interpolated);
+    if (texel) {
+      const glm::vec4 t = b0 * v0.tangent + b1 * v1.tangent + b2 * v2.tangent;
+      normal = mappedNormal(interpolated, g.tangentFromModel * glm::vec3(t), g.mirrored ? -t.w : t.w, *texel, material.normalScale);
+    }
     if (material.doubleSided && !front) normal = -normal;
     return normal;
   }
@@ -276,28 +282,35 @@ struct RayCaster::Impl {
       const Vertex& v2 = mesh.vertices[i2];
       // A texture of this surface at the hit, filtered over the sample's footprint by ray
       // differentials: the same lens point, one footprint over in x and in y.
-      const glm::vec2 uv = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv;
-      const auto sampleTexture = [&](int index, bool linear = false) {
+      const glm::vec2 uv0 = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv, uv1 = b0 * v0.uv1 + b1 * v1.uv1 + b2 * v2.uv1;
+      // Each texture reference samples its own uv set through its uv transform (slotUv, as
+      // scene.frag); the footprint's derivatives go through the same transform, so a scaled uv
+      // widens the footprint as GL's derivatives of the transformed uv do.
+      const auto sampleTexture = [&](const TextureRef& ref, bool data = false) {
         auto uvAt = [&](glm::dvec2 offset) {
           Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
           r.origin -= origin;
           const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
-          return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.uv) + b.x * glm::dvec2(v1.uv) + b.y * glm::dvec2(v2.uv));
+          const auto at = [&](glm::vec2 Vertex::*set) {
+            return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.*set) + b.x * glm::dvec2(v1.*set) + b.y * glm::dvec2(v2.*set));
+          };
+          return slotUv(at(&Vertex::uv), at(&Vertex::uv1), ref.texCoord, ref.uvFromTexCoord);
         };
         const glm::vec2 uvHere = uvAt({0.0, 0.0});
-        const Texture& texture = scene->textures[static_cast<std::size_t>(index)];
-        const TextureSampler& sampler =
-            linear ? *linearSamplers[static_cast<std::size_t>(index)] : samplers[static_cast<std::size_t>(index)];
-        return sampler.sample(texture.sampler, uv, uvAt({footprintPx, 0.0}) - uvHere,
-                                                               uvAt({0.0, footprintPx}) - uvHere);
+        const auto index = static_cast<std::size_t>(ref.texture);
+        const Texture& texture = scene->textures[index];
+        return (data ? dataSamplers : samplers)[index].sample(texture.sampler, slotUv(uv0, uv1, ref.texCoord, ref.uvFromTexCoord),
+                                                              uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere);
       };
       glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
-      if (material.baseColorTexture >= 0) base *= sampleTexture(material.baseColorTexture);
+      if (material.baseColorTexture.present()) base *= sampleTexture(material.baseColorTexture);
       if (material.alphaMode == AlphaMode::Mask && base.a < material.alphaCutoff) {
         tNear = skipTo;
         continue;
       }
-      const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2);
+      const bool normalMapped = material.normalTexture.present() && mesh.hasTangents;
+      const glm::vec3 normalTexel = normalMapped ? glm::vec3(sampleTexture(material.normalTexture, true)) : glm::vec3(0.0f);
+      const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2, normalMapped ? &normalTexel : nullptr);
       glm::vec3 colour(base);
       if (!material.unlit) {
         // brdf.glsl, as scene.frag evaluates it: the same inputs, v toward this ray's origin.
@@ -306,12 +319,12 @@ struct RayCaster::Impl {
         surface.metallic = material.metallicFactor;
         surface.perceptualRoughness = material.roughnessFactor;
         if (material.metallicRoughnessTexture.present()) {
-          const glm::vec4 mr = sampleTexture(material.metallicRoughnessTexture.texture, true);
+          const glm::vec4 mr = sampleTexture(material.metallicRoughnessTexture, true);
           surface.perceptualRoughness *= mr.g;
           surface.metallic *= mr.b;
         }
         if (material.occlusionTexture.present())
-          surface.occlusion = 1.0f + material.occlusionStrength * (sampleTexture(material.occlusionTexture.texture, true).r - 1.0f);
+          surface.occlusion = 1.0f + material.occlusionStrength * (sampleTexture(material.occlusionTexture, true).r - 1.0f);
         surface.n = normal;
         surface.v = -glm::vec3(ray.direction);
         const glm::vec3 position(ray.origin + tHit * ray.direction);  // relative to `origin`, as the lights are
@@ -324,7 +337,7 @@ struct RayCaster::Impl {
       }
       if (material.emits()) {
         glm::vec3 emitted = material.emissive;
-        if (material.emissiveTexture >= 0) emitted *= glm::vec3(sampleTexture(material.emissiveTexture));
+        if (material.emissiveTexture.present()) emitted *= glm::vec3(sampleTexture(material.emissiveTexture));
         colour += emitted;
       }
       return {colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};
@@ -348,12 +361,18 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   // The Embree scene is built on first use, relative to that camera (rebase): building it here too
   // would build it twice for every render.
   // Mip chains where the GPU makes them: any sampler of the image minifies with mipmaps.
-  for (const Texture& t : scene.textures) {
+  // Textures that a material reads as data (a normal map) get a linear copy as well, as GpuScene
+  // stores their images as GL_RGBA8.
+  std::vector<bool> asData(scene.textures.size(), false);
+  for (const Material& material : scene.materials)
+    for (const TextureRef* ref : {&material.normalTexture, &material.metallicRoughnessTexture, &material.occlusionTexture})
+      if (ref->present()) asData[static_cast<std::size_t>(ref->texture)] = true;
+  m.dataSamplers.resize(scene.textures.size());
+  for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+    const Texture& t = scene.textures[i];
     const bool mipmaps = t.sampler.minFilter != Filter::Nearest && t.sampler.minFilter != Filter::Linear;
     m.samplers.emplace_back(scene.images[static_cast<std::size_t>(t.image)], mipmaps);
-    m.linearSamplers.emplace_back();
-    if (readAsLinear(scene, static_cast<int>(m.samplers.size()) - 1))
-      m.linearSamplers.back().emplace(scene.images[static_cast<std::size_t>(t.image)], mipmaps, false);
+    if (asData[i]) m.dataSamplers[i] = TextureSampler(scene.images[static_cast<std::size_t>(t.image)], mipmaps, false);
   }
 }
 

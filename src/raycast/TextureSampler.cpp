@@ -42,15 +42,14 @@ bool mipmapped(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
 
 }  // namespace
 
-TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps) : TextureSampler(image, mipmaps, true) {}
-
 TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srgb) {
-  const auto toLinear = [srgb](std::uint8_t v) { return srgb ? decode(v) : static_cast<float>(v) / 255.0f; };
-  const auto fromLinear = [srgb](float x) {
-    return srgb ? encode(x) : static_cast<std::uint8_t>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f));
-  };
   // Level 0 keeps the file's 8-bit sRGB values; each next level averages 2×2 in linear light and
-  // is stored back as 8-bit sRGB (as the GPU's SRGB8_ALPHA8 mip levels are).
+  // is stored back as 8-bit sRGB (as the GPU's SRGB8_ALPHA8 mip levels are). Data images
+  // (srgb false) average and store their 8-bit values as they are (GL_RGBA8).
+  const auto decodeChannel = [srgb](std::uint8_t v) { return srgb ? decode(v) : static_cast<float>(v) / 255.0f; };
+  const auto encodeChannel = [srgb](float v) {
+    return srgb ? encode(v) : static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  };
   std::vector<std::uint8_t> bytes = image.rgba8;
   int w = image.width, h = image.height;
   while (true) {
@@ -59,7 +58,7 @@ TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srg
     level.height = h;
     level.texels.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     for (std::size_t i = 0; i < level.texels.size(); ++i)
-      level.texels[i] = {toLinear(bytes[i * 4]), toLinear(bytes[i * 4 + 1]), toLinear(bytes[i * 4 + 2]),
+      level.texels[i] = {decodeChannel(bytes[i * 4]), decodeChannel(bytes[i * 4 + 1]), decodeChannel(bytes[i * 4 + 2]),
                          static_cast<float>(bytes[i * 4 + 3]) / 255.0f};
     levels_.push_back(std::move(level));
     if (!mipmaps || (w == 1 && h == 1)) break;
@@ -74,9 +73,9 @@ TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srg
             sum += src.texels[static_cast<std::size_t>(std::min(2 * y + dy, h - 1) * w + std::min(2 * x + dx, w - 1))];
         sum *= 0.25f;
         std::uint8_t* out = &next[(static_cast<std::size_t>(y) * static_cast<std::size_t>(nw) + static_cast<std::size_t>(x)) * 4];
-        out[0] = fromLinear(sum.r);
-        out[1] = fromLinear(sum.g);
-        out[2] = fromLinear(sum.b);
+        out[0] = encodeChannel(sum.r);
+        out[1] = encodeChannel(sum.g);
+        out[2] = encodeChannel(sum.b);
         out[3] = static_cast<std::uint8_t>(std::lround(std::clamp(sum.a, 0.0f, 1.0f) * 255.0f));
       }
     bytes = std::move(next);

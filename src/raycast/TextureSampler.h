@@ -19,10 +19,9 @@ namespace lenslab {
 class TextureSampler {
  public:
   TextureSampler() = default;
-  TextureSampler(const TextureImage& image, bool mipmaps);
-  // `srgb` false: the image holds linear data (metallic-roughness, occlusion, normals), decoded as
-  // value / 255 and averaged as such for its mip chain, as the GPU's RGBA8 texture of it is.
-  TextureSampler(const TextureImage& image, bool mipmaps, bool srgb);
+  // `srgb`: the image holds colour, decoded from sRGB before filtering (GL_SRGB8_ALPHA8); false:
+  // it holds data (normal, metallic-roughness, occlusion maps), filtered as stored (GL_RGBA8).
+  TextureSampler(const TextureImage& image, bool mipmaps, bool srgb = true);
 
   // uv in glTF's convention (0, 0 at the image's top-left); dUvDx, dUvDy: how far uv moves across
   // the sample's footprint along image x and y. Returns linear RGBA.
@@ -34,7 +33,7 @@ class TextureSampler {
   struct Level {
     int width = 0;
     int height = 0;
-    std::vector<glm::vec4> texels;  // linear, decoded from the stored 8-bit sRGB
+    std::vector<glm::vec4> texels;  // linear, decoded from the stored 8 bits (sRGB or not)
   };
   glm::vec4 bilinear(const Level& level, const Sampler& s, glm::vec2 uv, bool linear) const;
 

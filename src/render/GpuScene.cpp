@@ -27,7 +27,9 @@ GpuScene::GpuMesh upload(const Mesh& mesh) {
   const Attribute attributes[] = {{0, 3, offsetof(Vertex, position)},
                                   {1, 3, offsetof(Vertex, normal)},
                                   {2, 2, offsetof(Vertex, uv)},
-                                  {3, 4, offsetof(Vertex, color)}};
+                                  {3, 4, offsetof(Vertex, color)},
+                                  {4, 4, offsetof(Vertex, tangent)},
+                                  {5, 2, offsetof(Vertex, uv1)}};
   for (const Attribute& a : attributes) {
     glEnableVertexArrayAttrib(vao, a.location);
     glVertexArrayAttribFormat(vao, a.location, a.size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
@@ -35,16 +37,6 @@ GpuScene::GpuMesh upload(const Mesh& mesh) {
   }
   gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
   return gpu;
-}
-
-gl::Texture uploadImage(const TextureImage& image, bool mipmaps, GLenum format) {
-  gl::Texture texture = gl::Texture::create();
-  const int levels = mipmaps ? 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height)))) : 1;
-  glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba8.data());
-  if (levels > 1) glGenerateTextureMipmap(texture.id());
-  return texture;
 }
 
 }  // namespace
@@ -58,26 +50,34 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   for (const Texture& t : scene.textures)
     if (t.image >= 0 && usesMipmaps(t.sampler.minFilter)) wantsMipmaps[static_cast<std::size_t>(t.image)] = true;
 
-  // Images some material reads as linear data get a linear copy besides (an image may serve both).
-  std::vector<bool> readLinear(scene.images.size(), false);
-  for (const Material& m : scene.materials)
-    for (const TextureRef* ref : {&m.metallicRoughnessTexture, &m.occlusionTexture})
-      if (ref->present()) readLinear[static_cast<std::size_t>(scene.textures[static_cast<std::size_t>(ref->texture)].image)] = true;
+  // Images that some material reads as data (linear) rather than as colour (sRGB); an image used
+  // both ways is stored twice.
+  std::vector<bool> asData(scene.images.size(), false), asColour(scene.images.size(), false);
+  const auto mark = [&](std::vector<bool>& uses, const TextureRef& ref) {
+    if (ref.present()) uses[static_cast<std::size_t>(scene.textures[static_cast<std::size_t>(ref.texture)].image)] = true;
+  };
+  for (const Material& m : scene.materials) {
+    for (const TextureRef* ref : {&m.normalTexture, &m.metallicRoughnessTexture, &m.occlusionTexture}) mark(asData, *ref);
+    for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture}) mark(asColour, *ref);
+  }
 
+  linearImages_.resize(scene.images.size());
   for (std::size_t i = 0; i < scene.images.size(); ++i) {
     const TextureImage& image = scene.images[i];
-    linearImages_.emplace_back();
-    if (readLinear[i]) linearImages_.back() = uploadImage(image, wantsMipmaps[i], GL_RGBA8);
-    gl::Texture texture = gl::Texture::create();
     const int levels = wantsMipmaps[i]
         ? 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))))
         : 1;
-    glTextureStorage2D(texture.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                        image.rgba8.data());
-    if (levels > 1) glGenerateTextureMipmap(texture.id());
-    images_.push_back(std::move(texture));
+    const auto upload = [&](GLenum format) {
+      gl::Texture texture = gl::Texture::create();
+      glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                          image.rgba8.data());
+      if (levels > 1) glGenerateTextureMipmap(texture.id());
+      return texture;
+    };
+    images_.push_back(asData[i] && !asColour[i] ? gl::Texture() : upload(GL_SRGB8_ALPHA8));
+    if (asData[i]) linearImages_[i] = upload(GL_RGBA8);
   }
 
   for (const Texture& t : scene.textures) {

@@ -24,15 +24,15 @@ class GpuScene {
   const GpuMesh& mesh(int index) const { return meshes_[static_cast<std::size_t>(index)]; }
   // Binds texture `index` (image and sampler) to texture unit `unit`.
   void bindTexture(int index, GLuint unit) const;
-  // The same texture with its image read as linear data (metallic-roughness, occlusion): RGBA8,
-  // not sRGB. Only textures a material uses so have one.
+  // The same for a texture that holds data, not colour (normal, metallic-roughness and occlusion
+  // maps): its image stored as linear GL_RGBA8, so the sampler returns the file's values.
   void bindLinearTexture(int index, GLuint unit) const;
 
  private:
   const Scene* scene_;
   std::vector<GpuMesh> meshes_;
   std::vector<gl::Texture> images_;
-  std::vector<gl::Texture> linearImages_;  // by image; empty where no material reads it as linear data
+  std::vector<gl::Texture> linearImages_;  // by image; empty where no material reads it as data
   std::vector<gl::Sampler> samplers_;
 };
 

@@ -46,13 +46,39 @@ enum Location : GLint {
   kLightDirectionType = 40,
   kLightIntensity = 48,
   kLightSpot = 56,
+  // Normal maps and texture coordinates (80–99).
+  kWorldTangentFromModel = 80,
+  kHandednessFromModel = 81,
+  kHasNormalTexture = 82,
+  kNormalScale = 83,
+  kNormalTexCoord = 84,  // each slot: its TEXCOORD set, then its uv transform one location on
+  kBaseColorTexCoord = 86,
+  kEmissiveTexCoord = 88,
+  kMetallicRoughnessTexCoord = 90,
+  kOcclusionTexCoord = 92,
 };
 
 // Texture units (scene.frag).
 constexpr GLuint kMetallicRoughnessUnit = 2;
 constexpr GLuint kOcclusionUnit = 3;
+constexpr GLuint kNormalTextureUnit = 4;
 constexpr GLuint kDfgUnit = 9;
 static_assert(kMaxShadingLights == 8, "scene.frag's light arrays hold 8");
+
+// A texture slot's TEXCOORD set and KHR_texture_transform, into the uniforms from `texCoordLocation`.
+void setTextureSlot(GLuint program, GLint texCoordLocation, const TextureRef& ref) {
+  glProgramUniform1i(program, texCoordLocation, ref.texCoord);
+  glProgramUniformMatrix3fv(program, texCoordLocation + 1, 1, GL_FALSE, glm::value_ptr(ref.uvFromTexCoord));
+}
+
+// worldFromModel's linear part scaled to its largest entry near 1 (tangents are normalised after,
+// and a model scaled by 1e-20 would otherwise hand the shader tangents whose squares underflow).
+glm::mat3 tangentFromModel(const glm::dmat3& linear) {
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(linear[c][r]));
+  return glm::mat3(largest > 0.0 && std::isfinite(largest) ? linear * (1.0 / largest) : linear);
+}
 
 // The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
 // the image is unchanged, but a PRP 1e-100 from the view plane (entries of 1e100) no longer
@@ -64,9 +90,35 @@ glm::dmat4 wellScaled(const glm::dmat4& m) {
   return largest > 0.0 && std::isfinite(largest) ? m * (1.0 / largest) : m;
 }
 
+// The MATERIAL_MAPS variant's uniforms: each texture slot's uv set and transform, and the normal
+// map with its tangent frame (the file's tangents or generated ones, scene/Tangents.h).
+void setMaterialMaps(GLuint program, const GpuScene& gpuScene, const Material& material, const Mesh& mesh, const glm::dmat3& linear) {
+  const std::pair<GLint, const TextureRef*> slots[] = {{kBaseColorTexCoord, &material.baseColorTexture},
+                                                       {kEmissiveTexCoord, &material.emissiveTexture},
+                                                       {kMetallicRoughnessTexCoord, &material.metallicRoughnessTexture},
+                                                       {kOcclusionTexCoord, &material.occlusionTexture}};
+  for (const auto& [location, ref] : slots)
+    if (ref->present()) setTextureSlot(program, location, *ref);
+  const bool normalMapped = material.normalTexture.present() && mesh.hasTangents;
+  glProgramUniform1i(program, kHasNormalTexture, normalMapped);
+  if (!normalMapped) return;
+  gpuScene.bindLinearTexture(material.normalTexture.texture, kNormalTextureUnit);
+  setTextureSlot(program, kNormalTexCoord, material.normalTexture);
+  glProgramUniform1f(program, kNormalScale, material.normalScale);
+  glProgramUniformMatrix3fv(program, kWorldTangentFromModel, 1, GL_FALSE, glm::value_ptr(tangentFromModel(linear)));
+  glProgramUniform1f(program, kHandednessFromModel, glm::determinant(linear) < 0.0 ? -1.0f : 1.0f);
+}
+
 const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaque, single-sided
 
 }  // namespace
+
+bool materialMaps(const Material& m) {
+  if (m.normalTexture.present()) return true;
+  for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture, &m.metallicRoughnessTexture, &m.occlusionTexture})
+    if (ref->present() && (ref->texCoord != 0 || ref->uvFromTexCoord != glm::mat3(1.0f))) return true;
+  return false;
+}
 
 bool isNarrowField(const glm::dmat4& clipFromWorld) {
   // Rows x, y of a perspective projection grow as 1/(window size) and row w as 1/(PRP distance);
@@ -135,6 +187,25 @@ ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
   return {addProgram, addProgram};
 }
 
+ScenePass::Programs ScenePass::mapsVariant(const char* define, bool narrow, const Scene& scene, float lodBias) const {
+  const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
+    defines.push_back("MATERIAL_MAPS");
+    if (!slot)
+      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag", defines)
+                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", defines);
+    setLighting(slot.id(), scene, lodBias);
+    return slot.id();
+  };
+  gl::Program* slots = mapsPrograms_[narrow ? 1 : 0];
+  if (!define) {
+    const GLuint plain = build(slots[0], {});
+    return {plain, plain};
+  }
+  if (std::string(define) == "DEPTH_ONLY") return {build(slots[1], {"DEPTH_ONLY"}), build(slots[2], {"DEPTH_ONLY", "ALPHA_MASK"})};
+  const GLuint addProgram = build(slots[3], {define});
+  return {addProgram, addProgram};
+}
+
 void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
                      float lodBias, const std::vector<PixelBox>* boxes, const glm::vec4* addWeight) const {
   const Scene& scene = gpuScene.scene();
@@ -153,6 +224,8 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glBindTextureUnit(kDfgUnit, dfgTable_.id());
   glBindSampler(kDfgUnit, 0);
   if (!addWeight) setLighting(program, scene, lodBias);
+  const bool anyMaps = std::any_of(scene.materials.begin(), scene.materials.end(), materialMaps);
+  const Programs plainMaps = anyMaps && !addWeight ? mapsVariant(nullptr, narrow, scene, lodBias) : Programs{};
   if (addWeight) {
     for (const char* define : {"DEPTH_ONLY", "ADD_TO_SUM"}) {
       const Programs p = variant(define, narrow);
@@ -170,7 +243,7 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
       glScissor(b.x, b.y, b.width, b.height);
     }
     if (addWeight) {
-      drawAdded(gpuScene, clipFromWorld, narrow, *addWeight);
+      drawAdded(gpuScene, clipFromWorld, narrow, *addWeight, lodBias);
       continue;
     }
     const glm::vec3& bg = scene.lighting.background;
@@ -180,24 +253,31 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     const float clearDepth = 0.0f;  // reverse-Z: far is 0
     glClearBufferfv(GL_COLOR, 0, clearColor);
     glClearBufferfv(GL_DEPTH, 0, &clearDepth);
-    drawInstances({program, program}, narrow, gpuScene, clipFromWorld);
+    drawInstances({program, program}, plainMaps, narrow, gpuScene, clipFromWorld);
   }
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
 }
 
-void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight) const {
+void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight,
+                          float lodBias) const {
   // Depth only: no colour written, so llvmpipe shades nothing (opaque materials have no discard).
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
-  drawInstances(variant("DEPTH_ONLY", narrow), narrow, gpuScene, clipFromWorld);
+  const Scene& scene = gpuScene.scene();
+  const bool anyMaps = std::any_of(scene.materials.begin(), scene.materials.end(), materialMaps);
+  const auto maps = [&](const char* define) { return anyMaps ? mapsVariant(define, narrow, scene, lodBias) : Programs{}; };
+  drawInstances(variant("DEPTH_ONLY", narrow), maps("DEPTH_ONLY"), narrow, gpuScene, clipFromWorld);
 
   // Colour where the depth is the visible surface's, once per pixel.
-  const Programs add = variant("ADD_TO_SUM", narrow);
+  const Programs add = variant("ADD_TO_SUM", narrow), addMaps = maps("ADD_TO_SUM");
   const glm::vec3& bg = gpuScene.scene().lighting.background;
-  glProgramUniform3fv(add.opaque, kBackground, 1, glm::value_ptr(bg));
-  glProgramUniform4fv(add.opaque, kAddWeight, 1, glm::value_ptr(weight));
+  for (const GLuint id : {add.opaque, addMaps.opaque}) {
+    if (!id) continue;
+    glProgramUniform3fv(id, kBackground, 1, glm::value_ptr(bg));
+    glProgramUniform4fv(id, kAddWeight, 1, glm::value_ptr(weight));
+  }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -207,20 +287,23 @@ void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWo
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  drawInstances(add, narrow, gpuScene, clipFromWorld);
+  drawInstances(add, addMaps, narrow, gpuScene, clipFromWorld);
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_GREATER);
 }
 
-void ScenePass::drawInstances(Programs programs, bool narrow, const GpuScene& gpuScene, const glm::dmat4& clipFromWorld) const {
+void ScenePass::drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& gpuScene,
+                              const glm::dmat4& clipFromWorld) const {
   const Scene& scene = gpuScene.scene();
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const Material& material =
         mesh.material >= 0 ? scene.materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
-    const GLuint program = material.alphaMode == AlphaMode::Mask ? programs.masked : programs.opaque;
+    const bool maps = withMaps.opaque != 0 && materialMaps(material);
+    const Programs& chosen = maps ? withMaps : programs;
+    const GLuint program = material.alphaMode == AlphaMode::Mask ? chosen.masked : chosen.opaque;
     glUseProgram(program);
 
     // Composed in double, rounded once (see scene.vert).
@@ -247,13 +330,14 @@ void ScenePass::drawInstances(Programs programs, bool narrow, const GpuScene& gp
     glProgramUniform1i(program, kHasOcclusionTexture, material.occlusionTexture.present());
     if (material.occlusionTexture.present()) gpuScene.bindLinearTexture(material.occlusionTexture.texture, kOcclusionUnit);
     glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
-    const bool textured = material.baseColorTexture >= 0;
+    const bool textured = material.baseColorTexture.present();
     glProgramUniform1i(program, kHasBaseColorTexture, textured);
-    if (textured) gpuScene.bindTexture(material.baseColorTexture, 0);
+    if (textured) gpuScene.bindTexture(material.baseColorTexture.texture, 0);
     glProgramUniform3fv(program, kEmissive, 1, glm::value_ptr(material.emissive));
-    const bool emissiveTextured = material.emissiveTexture >= 0;
+    const bool emissiveTextured = material.emissiveTexture.present();
     glProgramUniform1i(program, kHasEmissiveTexture, emissiveTextured);
-    if (emissiveTextured) gpuScene.bindTexture(material.emissiveTexture, 1);
+    if (emissiveTextured) gpuScene.bindTexture(material.emissiveTexture.texture, 1);
+    if (maps) setMaterialMaps(program, gpuScene, material, mesh, linear);
     glProgramUniform1i(program, kUnlit, material.unlit);
     glProgramUniform1i(program, kAlphaMask, material.alphaMode == AlphaMode::Mask);
     glProgramUniform1f(program, kAlphaCutoff, material.alphaCutoff);

@@ -49,10 +49,15 @@ class ScenePass {
   // where depth is EQUAL, and the stencil lets only the first such fragment add (two surfaces at
   // the same depth add once, as GREATER keeps the first in a plain pass). The caller has set depth
   // to far and stencil to 0 where the view may add, and adds weight · background itself.
-  void drawAdded(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight) const;
-  void drawInstances(Programs programs, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld) const;
+  void drawAdded(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight, float lodBias) const;
+  // `withMaps`: the same programs in their MATERIAL_MAPS variant, for materials that need it
+  // (materialMaps below); unbuilt (0) when no material of the scene does.
+  void drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld) const;
   // The variant with `define` (DEPTH_ONLY, ADD_TO_SUM), built on first use.
   Programs variant(const char* define, bool narrow) const;
+  // The MATERIAL_MAPS variant (normal map, TEXCOORD_1, uv transforms) of the plain program
+  // (`define` null) or of variant(define), built on first use, with the lighting set.
+  Programs mapsVariant(const char* define, bool narrow, const Scene& scene, float lodBias) const;
   void setLighting(GLuint program, const Scene& scene, float lodBias) const;
   // The shading origin of the view drawn now: its eye (its projection centre), or for a parallel
   // view the scene's centre and the direction toward the viewer.
@@ -66,6 +71,13 @@ class ScenePass {
   mutable std::optional<gl::Program> narrowProgram_;  // built on first use: needs fp64 shaders
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];
+  // MATERIAL_MAPS programs, built on first use: [narrow][plain, DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
+  mutable gl::Program mapsPrograms_[2][4];
 };
+
+// Whether a material needs scene.frag's MATERIAL_MAPS variant: a normal map, or a texture that
+// samples TEXCOORD_1 or has a uv transform. Materials without keep the plain program, which
+// carries no tangent, no second uv set and no transform (docs/materials.md).
+bool materialMaps(const Material& material);
 
 }  // namespace lenslab

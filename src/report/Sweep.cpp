@@ -97,10 +97,17 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
   }
   for (const Material& m : scene.materials) {
     h.add(&m.baseColorFactor, sizeof m.baseColorFactor);
-    const int flags[] = {m.baseColorTexture, m.unlit, static_cast<int>(m.alphaMode), m.doubleSided};
+    const int flags[] = {m.baseColorTexture.texture, m.unlit, static_cast<int>(m.alphaMode), m.doubleSided};
     h.add(flags, sizeof flags);
     h.add(&m.alphaCutoff, sizeof m.alphaCutoff);
     addShadingFields(h, m);
+    // Texture references: which uv set and transform (normal maps and KHR_texture_transform).
+    for (const TextureRef* r : {&m.baseColorTexture, &m.emissiveTexture, &m.normalTexture}) {
+      const int ref[] = {r->texture, r->texCoord};
+      h.add(ref, sizeof ref);
+      h.add(&r->uvFromTexCoord, sizeof r->uvFromTexCoord);
+    }
+    h.add(&m.normalScale, sizeof m.normalScale);
   }
   for (const PunctualLight& light : scene.lights) addLight(h, light);
   for (const TextureImage& i : scene.images) h.addVector(i.rgba8);

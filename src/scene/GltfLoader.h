@@ -4,13 +4,14 @@
 //
 // What is kept: the default scene's node hierarchy (matrix or TRS, composed in double precision),
 // triangle primitives (lists, strips and fans; indexed or not), normals (flat ones generated when
-// absent, as the glTF spec asks), TEXCOORD_0, COLOR_0, base colour factor and texture with its
-// sampler, KHR_materials_unlit, alpha mode and cutoff, double-sidedness, cameras, and the node
+// absent, as the glTF spec asks), TEXCOORD_0 and TEXCOORD_1, TANGENT (MikkTSpace tangents made
+// where a normal-mapped mesh has none), COLOR_0, base colour factor and texture with its
+// sampler, normal texture and scale, KHR_texture_transform on every texture, KHR_materials_unlit, alpha mode and cutoff, double-sidedness, cameras, and the node
 // animations (translation, rotation, scale; STEP, LINEAR, CUBICSPLINE), each of the file's
 // animations a clip of Scene::animation. The returned scene is at rest (the nodes' own
 // transforms); poseScene (scene/SceneAnimation.h) moves it to a time.
-// What is left out, with a line in Scene::notes: points and lines, other PBR inputs, other
-// texture coordinate sets, skins (bind pose), morph targets (base mesh) and the animation channels
+// What is left out, with a line in Scene::notes: points and lines, other PBR inputs, texture
+// coordinate sets beyond 1, skins (bind pose), morph targets (base mesh) and the animation channels
 // that drive their weights, channels on nodes outside the drawn scene or given by a matrix,
 // unsupported extensions that the file uses but does not require.
 // Only meshes, materials, textures and images that the drawn scene uses end up in the Scene, and

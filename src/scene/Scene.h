@@ -57,14 +57,13 @@ struct TextureRef {
 struct Material {
   std::string name;
   glm::vec4 baseColorFactor{1.0f};  // linear RGBA
-  int baseColorTexture = -1;        // index into Scene::textures, -1 = none
-  int baseColorTexCoord = 0;        // which TEXCOORD_n set; only 0 is kept by the loader
+  TextureRef baseColorTexture;      // sRGB
   bool unlit = false;               // KHR_materials_unlit: colour = base colour
   // Emitted radiance, linear: emissiveFactor × KHR_materials_emissive_strength's strength (which
   // may exceed 1: a light source), times the emissive texture (sRGB) where there is one. Added to
   // the shaded colour, lit or unlit.
   glm::vec3 emissive{0.0f};
-  int emissiveTexture = -1;         // index into Scene::textures, -1 = none
+  TextureRef emissiveTexture;       // sRGB
   bool emits() const { return emissive != glm::vec3(0.0f); }
   // glTF 2.0 metallic-roughness, with the specification's defaults (a rough metal).
   float metallicFactor = 1.0f;
@@ -72,8 +71,8 @@ struct Material {
   TextureRef metallicRoughnessTexture;  // linear: G = roughness, B = metallic
   TextureRef occlusionTexture;          // linear: R
   float occlusionStrength = 1.0f;
-  TextureRef normalTexture;             // linear, tangent space
-  float normalScale = 1.0f;
+  TextureRef normalTexture;             // linear, tangent space (docs/materials.md)
+  float normalScale = 1.0f;             // scales the map's x and y before the normal is normalised
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;

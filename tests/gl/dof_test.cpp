@@ -57,7 +57,7 @@ Scene checkerQuadAt(double depth, double halfSize) {
   scene.textures.push_back({0, Sampler{}});
   Material m;
   m.unlit = true;
-  m.baseColorTexture = 0;
+  m.baseColorTexture.texture = 0;
   scene.materials.push_back(m);
   scene.meshes.push_back(quadMesh(halfSize, halfSize, 0));
   scene.instances.push_back({0, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -depth))});

@@ -28,11 +28,11 @@ Scene rowsWithMaterialsAndLights() {
   int mapped = 0;
   for (Material& m : scene.materials) {
     if (m.unlit) continue;
-    if (m.baseColorTexture >= 0) {
+    if (m.baseColorTexture.present()) {
       m.metallicFactor = 1.0f;
       m.roughnessFactor = 1.0f;
-      m.metallicRoughnessTexture.texture = m.baseColorTexture;
-      m.occlusionTexture.texture = m.baseColorTexture;
+      m.metallicRoughnessTexture.texture = m.baseColorTexture.texture;
+      m.occlusionTexture.texture = m.baseColorTexture.texture;
       m.occlusionStrength = 0.8f;
       ++mapped;
     } else {

@@ -44,7 +44,7 @@ Scene planeScene(const TexturedPlane& plane, const Sampler& sampler) {
   Material material;
   material.unlit = true;  // shading = texture × factor (1)
   material.doubleSided = true;
-  material.baseColorTexture = 0;
+  material.baseColorTexture.texture = 0;
   scene.materials.push_back(material);
   scene.meshes.push_back(test::planeMesh(plane, 0));
   scene.instances.push_back({0, glm::dmat4(1.0)});

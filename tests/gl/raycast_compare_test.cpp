@@ -67,7 +67,7 @@ TEST(RasterVsRaycast, EmissionIsAddedAlikeAndKeptAboveOne) {
   Scene scene = loadGltf(assets / "rows/rows.gltf");
   int glowing = 0;
   for (Material& m : scene.materials) {
-    if (m.baseColorTexture >= 0) {
+    if (m.baseColorTexture.present()) {
       m.emissive = glm::vec3(0.5f, 0.25f, 0.125f);
       m.emissiveTexture = m.baseColorTexture;
       ++glowing;

@@ -27,7 +27,7 @@ TEST(ReferenceKey, ChangesWithEveryShadingInput) {
   light.worldPosition = glm::dvec3(0.0, 2.0, 0.0);
   const std::pair<const char*, std::function<void(Scene&)>> changes[] = {
       {"emissive", [](Scene& s) { s.materials[0].emissive = glm::vec3(0.5f); }},
-      {"emissiveTexture", [](Scene& s) { s.materials[0].emissiveTexture = 0; }},
+      {"emissiveTexture", [](Scene& s) { s.materials[0].emissiveTexture.texture = 0; }},
       {"metallicFactor", [](Scene& s) { s.materials[0].metallicFactor = 0.5f; }},
       {"roughnessFactor", [](Scene& s) { s.materials[0].roughnessFactor = 0.5f; }},
       {"metallicRoughnessTexture", [](Scene& s) { s.materials[0].metallicRoughnessTexture.texture = 0; }},

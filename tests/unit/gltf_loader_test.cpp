@@ -93,7 +93,11 @@ void expectWellFormed(const Scene& scene) {
     EXPECT_GE(mesh.material, -1);
     EXPECT_LT(mesh.material, static_cast<int>(scene.materials.size()));
   }
-  for (const Material& m : scene.materials) EXPECT_LT(m.baseColorTexture, static_cast<int>(scene.textures.size()));
+  for (const Material& m : scene.materials)
+    for (const TextureRef* r : {&m.baseColorTexture, &m.emissiveTexture, &m.normalTexture}) {
+      EXPECT_LT(r->texture, static_cast<int>(scene.textures.size()));
+      EXPECT_TRUE(r->texCoord == 0 || r->texCoord == 1);
+    }
   for (const Texture& t : scene.textures) {
     ASSERT_GE(t.image, 0);
     EXPECT_LT(t.image, static_cast<int>(scene.images.size()));
@@ -180,7 +184,7 @@ TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
                                                       "does not support (supported: KHR_materials_unlit, "
-                                                      "KHR_materials_emissive_strength, KHR_lights_punctual)");
+                                                      "KHR_materials_emissive_strength, KHR_lights_punctual, KHR_texture_transform)");
   }
 }
 
@@ -291,7 +295,7 @@ TEST(GltfSamples, BoxTexturedDecodesItsOneImage) {
     EXPECT_EQ(scene.images[0].rgba8.size(), 256u * 256u * 4u) << file;
     EXPECT_EQ(scene.images[0].rgba8[3], 255) << "an opaque PNG gets alpha 255";
     ASSERT_EQ(scene.materials.size(), 1u) << file;
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0) << file;
+    EXPECT_EQ(scene.materials[0].baseColorTexture.texture, 0) << file;
   }
 }
 
@@ -339,7 +343,7 @@ TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "UnicodeTest");
   const Scene spaces = loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf");
   EXPECT_EQ(spaces.triangleCount(), 12u);
-  ASSERT_EQ(spaces.images.size(), 2u) << "the base colour and metallic-roughness images' %20-encoded URIs resolve";
+  ASSERT_EQ(spaces.images.size(), 3u) << "the base colour, metallic-roughness and normal images' %20-encoded URIs resolve";
   for (const char* file : {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
     const Scene unicode = loadSample(file);
     EXPECT_EQ(unicode.triangleCount(), 2u) << file;
@@ -390,22 +394,22 @@ TEST(GltfSamples, MaterialsKeepAlphaModesSamplersAndSides) {
   EXPECT_LT(doubleSided, static_cast<int>(settings.materials.size()));
 }
 
-TEST(GltfSamples, AFullPbrMaterialDecodesAllButItsNormalMap) {
+TEST(GltfSamples, AFullPbrMaterialDecodesEveryMap) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "DamagedHelmet");
   const Scene scene = loadSample("DamagedHelmet/glTF-Binary/DamagedHelmet.glb");  // five images in the file
-  EXPECT_EQ(scene.textures.size(), 4u);  // base colour, metallic-roughness, emissive, occlusion
-  EXPECT_EQ(scene.images.size(), 4u);
+  EXPECT_EQ(scene.textures.size(), 5u);  // base colour, metallic-roughness, emissive, occlusion, normal
+  EXPECT_EQ(scene.images.size(), 5u);
   ASSERT_EQ(scene.materials.size(), 1u);
   const Material& m = scene.materials[0];
-  EXPECT_GE(m.emissiveTexture, 0);
+  EXPECT_TRUE(m.emissiveTexture.present());
   EXPECT_EQ(m.emissive, glm::vec3(1.0f));
   EXPECT_TRUE(m.metallicRoughnessTexture.present());
   EXPECT_TRUE(m.occlusionTexture.present());
   EXPECT_NE(m.metallicRoughnessTexture.texture, m.occlusionTexture.texture);
-  EXPECT_FALSE(m.normalTexture.present());
+  EXPECT_TRUE(m.normalTexture.present());
   bool noted = false;
-  for (const std::string& note : scene.notes) noted |= note.find("normal textures are ignored") != std::string::npos;
-  EXPECT_TRUE(noted);
+  for (const std::string& note : scene.notes) noted |= note.find("left out") != std::string::npos;
+  EXPECT_FALSE(noted) << "every map is read";
 }
 
 TEST(GltfSamples, IgnoredFeaturesAreNoted) {
@@ -414,8 +418,7 @@ TEST(GltfSamples, IgnoredFeaturesAreNoted) {
       {"SimpleSkin/glTF/SimpleSkin.gltf", "skins are ignored"},
       {"AnimatedTriangle/glTF/AnimatedTriangle.gltf", "animation"},
       {"SimpleMorph/glTF/SimpleMorph.gltf", "morph targets"},
-      {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"},
-      {"TextureTransformTest/glTF/TextureTransformTest.gltf", "KHR_texture_transform"}};
+      {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"}};
   for (const auto& [file, words] : cases) {
     const Scene scene = loadSample(file);
     bool noted = false;
@@ -713,7 +716,7 @@ TEST_F(GltfWritten, RequiredUnsupportedExtensionIsRefusedByName) {
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
   const fs::path file = dir_ / "scene.gltf";
   EXPECT_EQ(refusal(b), file.string() + ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
-                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength, KHR_lights_punctual)");
+                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength, KHR_lights_punctual, KHR_texture_transform)");
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit"};
   const Scene scene = load(b);
   EXPECT_TRUE(noted(scene, "EXT_meshopt_compression")) << "used but not required: a note";
@@ -973,7 +976,7 @@ TEST_F(GltfWritten, OnlyUsedMaterialsTexturesAndImagesAreKeptAndReindexed) {
   EXPECT_EQ(scene.materials[0].baseColorFactor, glm::vec4(0.5f, 1, 1, 1));
   EXPECT_EQ(scene.meshes[0].material, 0);
   ASSERT_EQ(scene.textures.size(), 1u);
-  EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+  EXPECT_EQ(scene.materials[0].baseColorTexture.texture, 0);
   EXPECT_EQ(scene.textures[0].sampler.wrapS, Wrap::ClampToEdge);
   EXPECT_EQ(scene.textures[0].sampler.wrapT, Wrap::Repeat);
   EXPECT_EQ(scene.textures[0].sampler.magFilter, Filter::Nearest);
@@ -995,18 +998,18 @@ TEST_F(GltfWritten, SixteenBitGreyImagesBecomeRgba8) {
   EXPECT_EQ(scene.images[0].rgba8, (std::vector<std::uint8_t>{128, 128, 128, 255, 255, 255, 255, 255}));
 }
 
-TEST_F(GltfWritten, BaseColourFromAnotherUvSetIsLeftOutWithANote) {
+TEST_F(GltfWritten, BaseColourFromAUvSetBeyondOneIsLeftOutWithANote) {
   GltfBuilder b = square();
   b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
   b.gltf["textures"] = {{{"source", 0}}};
-  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}, {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 2}}}}}, {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
   b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
   const Scene scene = load(b);
   ASSERT_EQ(scene.materials.size(), 1u);
   EXPECT_TRUE(scene.materials[0].unlit);
-  EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+  EXPECT_FALSE(scene.materials[0].baseColorTexture.present());
   EXPECT_TRUE(scene.images.empty());
-  EXPECT_TRUE(noted(scene, "TEXCOORD_1"));
+  EXPECT_TRUE(noted(scene, "TEXCOORD_2"));
 }
 
 TEST_F(GltfWritten, BrokenImagesAreRefusedNamingThem) {
@@ -1128,6 +1131,150 @@ TEST_F(GltfWritten, MutatedFilesLoadOrAreRefusedNeverCrash) {
     }
   }
   EXPECT_EQ(loaded + refused, 400);
+}
+
+
+// -- normal maps, tangents, TEXCOORD_1 and KHR_texture_transform
+
+class GltfMaps : public GltfWritten {
+ protected:
+  // The square with TEXCOORD_0 (and more attributes from `extra`), drawn with material 0.
+  static GltfBuilder texturedSquare(json extra = json::object()) {
+    GltfBuilder b;
+    const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    json attributes = {{"POSITION", p}, {"TEXCOORD_0", b.accessor(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}, kFloat, "VEC2", 4)}};
+    for (auto& [name, value] : extra.items()) attributes[name] = value;
+    b.drawnMesh({{"attributes", attributes}, {"indices", b.indices({0, 1, 2, 0, 2, 3})}, {"material", 0}});
+    b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
+    b.gltf["textures"] = {{{"source", 0}}};
+    return b;
+  }
+};
+
+TEST_F(GltfMaps, TangentsAndTheSecondUvSetAreRead) {
+  GltfBuilder b;
+  const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  const std::vector<float> tangents{1, 0, 0, 1, 0, 1, 0, -1, 0.6f, 0.8f, 0, 1};
+  const std::vector<float> uv1{0.25f, 0.5f, 0.75f, 0.5f, 0.25f, 1.0f};
+  b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(tangents, kFloat, "VEC4", 3)},
+                                {"TEXCOORD_1", b.accessor(uv1, kFloat, "VEC2", 3)}}}});
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  EXPECT_TRUE(mesh.hasTangents);
+  ASSERT_EQ(mesh.vertices.size(), 3u);  // flat normals keep one vertex per corner here
+  EXPECT_EQ(mesh.vertices[1].tangent, glm::vec4(0, 1, 0, -1));
+  EXPECT_NEAR(mesh.vertices[2].tangent.x, 0.6f, 1e-6f);
+  EXPECT_EQ(mesh.vertices[2].uv1, glm::vec2(0.25f, 1.0f));
+}
+
+TEST_F(GltfMaps, TangentsThatAreNotUnitOrHaveNoSignAreRefusedInOneLine) {
+  const std::pair<std::vector<float>, const char*> cases[] = {
+      {{1, 0, 0, 0.5f, 1, 0, 0, 1, 1, 0, 0, 1}, "TANGENT: element 0 has w = 0.5; it must be 1 or -1"},
+      {{1, 0, 0, 1, 2, 0, 0, 1, 1, 0, 0, 1}, "TANGENT: element 1 has xyz of length 2; it must be a unit vector"}};
+  for (const auto& [values, message] : cases) {
+    GltfBuilder b;
+    const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+    b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(values, kFloat, "VEC4", 3)}}}});
+    EXPECT_TRUE(contains(refusal(b), message)) << message;
+  }
+  GltfBuilder b;
+  const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3)}}}});
+  EXPECT_TRUE(contains(refusal(b), "TANGENT (accessor 1) is VEC3 of FLOAT; it must be VEC4 FLOAT"));
+}
+
+TEST_F(GltfMaps, ANormalMapWithoutTangentsGetsGeneratedOnesAndItsScale) {
+  GltfBuilder b = texturedSquare();
+  b.gltf["materials"] = {{{"normalTexture", {{"index", 0}, {"scale", 0.5}}}}};
+  const Scene scene = load(b);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_TRUE(scene.materials[0].normalTexture.present());
+  EXPECT_EQ(scene.materials[0].normalScale, 0.5f);
+  const Mesh& mesh = scene.meshes[0];
+  EXPECT_TRUE(mesh.hasTangents);
+  for (const Vertex& v : mesh.vertices) {
+    // The image upright on the square (v falls along +y): ∂P/∂u = +x, bitangent +y, w = +1.
+    EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);
+    EXPECT_EQ(v.tangent.w, 1.0f);
+  }
+  // The same square without a normal map gets no tangents (no tangent path).
+  GltfBuilder plain = texturedSquare();
+  plain.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  const Scene unmapped = load(plain);
+  EXPECT_FALSE(unmapped.meshes[0].hasTangents);
+  EXPECT_EQ(unmapped.meshes[0].vertices[0].tangent, glm::vec4(0.0f));
+}
+
+TEST_F(GltfMaps, TextureTransformAndTexCoordAreReadOnEveryTextureReference) {
+  GltfBuilder b = texturedSquare({{"TEXCOORD_1", json()}});
+  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
+  const json transform = {{"offset", {0.5, -0.25}}, {"rotation", 1.5707963267948966}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
+  b.gltf["extensionsUsed"] = {"KHR_texture_transform"};
+  b.gltf["extensionsRequired"] = {"KHR_texture_transform"};
+  json material;
+  material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+  material["emissiveFactor"] = {1, 1, 1};
+  material["emissiveTexture"] = {{"index", 0}, {"texCoord", 1}};
+  material["normalTexture"] = {{"index", 0}};
+  material["normalTexture"]["extensions"]["KHR_texture_transform"]["offset"] = {0.125, 0};
+  b.gltf["materials"] = json::array({material});
+  const Scene scene = load(b);
+  const Material& m = scene.materials[0];
+  EXPECT_EQ(m.baseColorTexture.texCoord, 1) << "the extension's texCoord overrides the textureInfo's";
+  // The extension's formula: u' = cos·2u + sin·3v + 0.5, v' = −sin·2u + cos·3v − 0.25 at 90°.
+  const glm::vec3 mapped = m.baseColorTexture.uvFromTexCoord * glm::vec3(0.1f, 0.2f, 1.0f);
+  EXPECT_NEAR(mapped.x, 3.0f * 0.2f + 0.5f, 1e-6f);
+  EXPECT_NEAR(mapped.y, -2.0f * 0.1f - 0.25f, 1e-6f);
+  EXPECT_EQ(m.emissiveTexture.texCoord, 1);
+  EXPECT_EQ(m.emissiveTexture.uvFromTexCoord, glm::mat3(1.0f));
+  EXPECT_EQ(m.normalTexture.texCoord, 0);
+  EXPECT_NEAR((m.normalTexture.uvFromTexCoord * glm::vec3(0.0f, 0.0f, 1.0f)).x, 0.125f, 1e-7f);
+  EXPECT_FALSE(noted(scene, "KHR_texture_transform"));
+}
+
+TEST_F(GltfMaps, MalformedTextureTransformsAreRefusedNamingTheField) {
+  const std::pair<json, const char*> cases[] = {
+      {{{"offset", {1, 2, 3}}}, "material 0 baseColorTexture KHR_texture_transform.offset must be an array of 2 numbers"},
+      {{{"rotation", "left"}}, "material 0 baseColorTexture KHR_texture_transform.rotation must be a finite number"},
+      {{{"scale", {1, "x"}}}, "KHR_texture_transform.scale must be an array of 2 numbers"},
+      {{{"texCoord", -1}}, "KHR_texture_transform.texCoord must be an integer >= 0"}};
+  for (const auto& [transform, message] : cases) {
+    GltfBuilder b = texturedSquare();
+    json material;
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+    b.gltf["materials"] = json::array({material});
+    EXPECT_TRUE(contains(refusal(b), message)) << message;
+  }
+}
+
+TEST(GltfSamples, NormalMapsTexCoord1AndTextureTransformsOfTheSamples) {
+  SKIP_UNLESS_EXISTS(samplesDirectory() / "NormalTangentTest");
+  // No TANGENT in the file: generated for every normal-mapped mesh, unit and ⟂ the normal.
+  const Scene normalTangent = loadSample("NormalTangentTest/glTF-Binary/NormalTangentTest.glb");
+  int mapped = 0;
+  for (const Mesh& mesh : normalTangent.meshes) {
+    if (mesh.material < 0 || !normalTangent.materials[static_cast<std::size_t>(mesh.material)].normalTexture.present()) continue;
+    ++mapped;
+    ASSERT_TRUE(mesh.hasTangents) << mesh.name;
+    for (const Vertex& v : mesh.vertices) {
+      ASSERT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-4f) << mesh.name;
+      ASSERT_NEAR(glm::dot(glm::vec3(v.tangent), v.normal), 0.0f, 1e-4f) << mesh.name;
+    }
+  }
+  EXPECT_GT(mapped, 0);
+  // MultiUVTest: the emissive texture samples TEXCOORD_1.
+  const Scene multiUv = loadSample("MultiUVTest/glTF/MultiUVTest.gltf");
+  bool secondSet = false;
+  for (const Material& m : multiUv.materials) secondSet |= m.emissiveTexture.present() && m.emissiveTexture.texCoord == 1;
+  EXPECT_TRUE(secondSet);
+  // TextureTransformTest: rotation 0.392699 rad on one of its materials.
+  const Scene transformed = loadSample("TextureTransformTest/glTF/TextureTransformTest.gltf");
+  bool rotated = false;
+  for (const Material& m : transformed.materials)
+    rotated |= std::abs(m.baseColorTexture.uvFromTexCoord[0][0] - std::cos(0.392699f)) < 1e-5f &&
+               std::abs(m.baseColorTexture.uvFromTexCoord[1][0] - std::sin(0.392699f)) < 1e-5f;
+  EXPECT_TRUE(rotated);
 }
 
 }  // namespace

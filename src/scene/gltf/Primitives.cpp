@@ -23,6 +23,7 @@ namespace {
 const AttributeFormat kPositionFormat{{TINYGLTF_TYPE_VEC3}, false, "VEC3 FLOAT"};
 const AttributeFormat kNormalFormat{{TINYGLTF_TYPE_VEC3}, false, "VEC3 FLOAT"};
 const AttributeFormat kTexcoordFormat{{TINYGLTF_TYPE_VEC2}, true, "VEC2 of FLOAT or of normalized UNSIGNED_BYTE/UNSIGNED_SHORT"};
+const AttributeFormat kTangentFormat{{TINYGLTF_TYPE_VEC4}, false, "VEC4 FLOAT"};
 const AttributeFormat kColorFormat{{TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, true,
                                    "VEC3/VEC4 of FLOAT or of normalized UNSIGNED_BYTE/UNSIGNED_SHORT"};
 
@@ -100,7 +101,7 @@ std::optional<Mesh> PrimitiveConverter::convert(int meshIndex, std::size_t k) co
   return mesh;
 }
 
-// POSITION, NORMAL, TEXCOORD_0 and COLOR_0 into mesh.vertices; returns the vertex count.
+// POSITION, NORMAL, TEXCOORD_0, TEXCOORD_1, TANGENT and COLOR_0 into mesh.vertices; returns the vertex count.
 std::size_t PrimitiveConverter::readVertices(const tinygltf::Primitive& p, const std::string& where, Mesh& mesh) const {
   const Elements positions = *readAttribute(p, "POSITION", kPositionFormat, std::nullopt, where);
   const std::size_t n = positions.count;
@@ -116,12 +117,33 @@ std::size_t PrimitiveConverter::readVertices(const tinygltf::Primitive& p, const
   }
   if (const auto uvs = readAttribute(p, "TEXCOORD_0", kTexcoordFormat, n, where))
     for (std::size_t i = 0; i < n; ++i) mesh.vertices[i].uv = glm::vec2(uvs->at(i, 0), uvs->at(i, 1));
+  if (const auto uvs = readAttribute(p, "TEXCOORD_1", kTexcoordFormat, n, where))
+    for (std::size_t i = 0; i < n; ++i) mesh.vertices[i].uv1 = glm::vec2(uvs->at(i, 0), uvs->at(i, 1));
+  if (const auto tangents = readAttribute(p, "TANGENT", kTangentFormat, n, where)) readTangents(*tangents, where, mesh);
   if (const auto colors = readAttribute(p, "COLOR_0", kColorFormat, n, where)) {
     for (std::size_t i = 0; i < n; ++i)
       mesh.vertices[i].color = glm::vec4(colors->at(i, 0), colors->at(i, 1), colors->at(i, 2), colors->components == 4 ? colors->at(i, 3) : 1.0);
     mesh.hasVertexColors = true;
   }
   return n;
+}
+
+// glTF: TANGENT is "XYZW vertex tangents where the XYZ portion is normalized, and the W component
+// is a sign value (-1 or +1) indicating handedness of the tangent basis". Lengths within 1 % of 1
+// are normalised (writers round them); a zero-length tangent is what some exporters write where
+// uv is degenerate, and is kept as zero (the shader then uses the geometric normal); anything
+// else is refused.
+void PrimitiveConverter::readTangents(const Elements& tangents, const std::string& where, Mesh& mesh) const {
+  for (std::size_t i = 0; i < tangents.count; ++i) {
+    const glm::dvec3 t(tangents.at(i, 0), tangents.at(i, 1), tangents.at(i, 2));
+    const double w = tangents.at(i, 3), length = glm::length(t);
+    if (w != 1.0 && w != -1.0) refuse(where, " TANGENT: element ", i, " has w = ", w, "; it must be 1 or -1 (the handedness)");
+    if (length != 0.0 && std::abs(length - 1.0) > 0.01)
+      refuse(where, " TANGENT: element ", i, " has xyz of length ", length, "; it must be a unit vector");
+    if (length == 0.0) noteOnce(notes_, cat(where, " has zero-length tangents; those vertices are shaded without their normal map"));
+    mesh.vertices[i].tangent = glm::vec4(length > 0.0 ? glm::vec3(t / length) : glm::vec3(0.0f), static_cast<float>(w));
+  }
+  mesh.hasTangents = true;
 }
 
 // An attribute in one of its allowed formats, every value finite; nothing when absent.

@@ -1,6 +1,6 @@
 #pragma once
 // Primitives → meshes: a glTF primitive as a lenslab triangle mesh (lists, strips and fans as
-// lists; POSITION, NORMAL or flat normals, TEXCOORD_0, COLOR_0), or nothing with a note where
+// lists; POSITION, NORMAL or flat normals, TEXCOORD_0 and _1, TANGENT, COLOR_0), or nothing with a note where
 // lenslab does not draw it.
 #include "scene/Scene.h"
 #include "scene/gltf/Accessors.h"
@@ -28,6 +28,7 @@ class PrimitiveConverter {
 
  private:
   std::size_t readVertices(const tinygltf::Primitive& p, const std::string& where, Mesh& mesh) const;
+  void readTangents(const Elements& tangents, const std::string& where, Mesh& mesh) const;
   std::optional<Elements> readAttribute(const tinygltf::Primitive& p, const char* name, const AttributeFormat& format,
                                         std::optional<std::size_t> vertexCount, const std::string& where) const;
   std::vector<std::uint32_t> vertexOrder(const tinygltf::Primitive& p, std::size_t vertexCount, const std::string& where) const;

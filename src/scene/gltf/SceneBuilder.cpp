@@ -8,6 +8,8 @@
 #include "scene/gltf/Primitives.h"
 #include "scene/gltf/Problems.h"
 #include "scene/ShadingLights.h"
+#include "scene/gltf/TextureInfo.h"
+#include "scene/Tangents.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -153,11 +155,23 @@ class SceneBuilder {
     if (std::optional<Mesh> mesh = converter_.convert(meshIndex, k)) {
       const int material = model_.meshes[toIndex(meshIndex)].primitives[k].material;
       mesh->material = material >= 0 ? materialFor(material) : -1;  // -1: glTF's default material
+      if (mesh->material >= 0) addTangentsForNormalMap(*mesh, meshIndex, k);
       scene_.meshes.push_back(std::move(*mesh));
       index = static_cast<int>(scene_.meshes.size()) - 1;
     }
     meshes_.emplace(key, index);
     return index;
+  }
+
+  // A mesh whose material has a normal map and whose file gives no TANGENT gets MikkTSpace
+  // tangents, as glTF asks (scene/Tangents.h); meshes without a normal map need none.
+  void addTangentsForNormalMap(Mesh& mesh, int meshIndex, std::size_t k) {
+    const TextureRef& normalMap = scene_.materials[toIndex(mesh.material)].normalTexture;
+    if (!normalMap.present() || mesh.hasTangents) return;
+    const TangentStats stats = generateTangents(mesh, normalMap.texCoord);
+    if (stats.fallbackVertices > 0)
+      noteOnce(scene_.notes, cat("mesh ", meshIndex, " primitive ", k, ": ", stats.fallbackVertices,
+                                 " vertices have no uv gradient for their normal map's tangents (an arbitrary tangent is used)"));
   }
 
   int materialFor(int gltfIndex) {
@@ -172,12 +186,7 @@ class SceneBuilder {
     if (material.alphaMode == AlphaMode::Blend) noteOnce(scene_.notes, "alphaMode BLEND is drawn opaque (lenslab sorts no transparency)");
     material.alphaCutoff = static_cast<float>(m.alphaCutoff);
     material.doubleSided = m.doubleSided;
-    const tinygltf::TextureInfo& base = m.pbrMetallicRoughness.baseColorTexture;
-    if (base.index >= 0 && base.texCoord != 0)
-      noteOnce(scene_.notes, cat("material ", gltfIndex, " samples its base colour texture with TEXCOORD_", base.texCoord,
-                                 "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
-    else if (base.index >= 0)
-      material.baseColorTexture = textureFor(base.index);
+    material.baseColorTexture = textureRefFor(m.pbrMetallicRoughness.baseColorTexture, gltfIndex, "baseColorTexture");
     // Emission: the factor, scaled by KHR_materials_emissive_strength (glTF caps the factor at 1).
     const std::vector<double>& e = m.emissiveFactor;
     double strength = 1.0;
@@ -191,36 +200,24 @@ class SceneBuilder {
     }
     if (e.size() == 3) material.emissive = glm::vec3(static_cast<float>(e[0] * strength), static_cast<float>(e[1] * strength),
                                                      static_cast<float>(e[2] * strength));
-    const tinygltf::TextureInfo& emissive = m.emissiveTexture;
-    if (emissive.index >= 0 && emissive.texCoord != 0)
-      noteOnce(scene_.notes, cat("material ", gltfIndex, " samples its emissive texture with TEXCOORD_", emissive.texCoord,
-                                 "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
-    else if (emissive.index >= 0 && material.emits())
-      material.emissiveTexture = textureFor(emissive.index);
+    if (material.emits()) material.emissiveTexture = textureRefFor(m.emissiveTexture, gltfIndex, "emissiveTexture");
+    // Normal map (tangents: meshFor); its scale multiplies the map's x and y.
+    material.normalTexture = textureRefFor(m.normalTexture, gltfIndex, "normalTexture");
+    material.normalScale = static_cast<float>(m.normalTexture.scale);
+    if (!std::isfinite(material.normalScale)) refuse("material ", gltfIndex, " normalTexture.scale must be a finite number");
     readMetallicRoughness(m, gltfIndex, material);
-    if (m.normalTexture.index >= 0) noteOnce(scene_.notes, "normal textures are ignored (shading uses the vertex normals)");
     scene_.materials.push_back(std::move(material));
     return materials_[gltfIndex] = static_cast<int>(scene_.materials.size()) - 1;
   }
 
-  // glTF metallic-roughness and occlusion (factors in the schema ranges, else refused): the
-  // textures from TEXCOORD_0 (others are left out with a note).
+  // glTF metallic-roughness and occlusion (factors in the schema ranges, else refused), the
+  // textures through textureRefFor (TEXCOORD_0 or 1, with their uv transforms).
   void readMetallicRoughness(const tinygltf::Material& m, int gltfIndex, Material& material) {
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
     material.metallicFactor = static_cast<float>(pbr.metallicFactor);
     material.roughnessFactor = static_cast<float>(pbr.roughnessFactor);
-    for (const auto& [name, texCoord, index, ref] :
-         {std::tuple{"metallic-roughness", pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.index, &material.metallicRoughnessTexture},
-          std::tuple{"occlusion", m.occlusionTexture.texCoord, m.occlusionTexture.index, &material.occlusionTexture}}) {
-      if (index < 0) continue;
-      if (texCoord != 0) {
-        noteOnce(scene_.notes, cat("material ", gltfIndex, " samples its ", name, " texture with TEXCOORD_", texCoord,
-                                   "; lenslab reads TEXCOORD_0 only, so that texture is left out"));
-        continue;
-      }
-      ref->texture = textureFor(index);
-      ref->texCoord = 0;
-    }
+    material.metallicRoughnessTexture = textureRefFor(pbr.metallicRoughnessTexture, gltfIndex, "metallicRoughnessTexture");
+    material.occlusionTexture = textureRefFor(m.occlusionTexture, gltfIndex, "occlusionTexture");
     material.occlusionStrength = static_cast<float>(m.occlusionTexture.strength);
     if (!(material.metallicFactor >= 0.0f && material.metallicFactor <= 1.0f))
       refuse("material ", gltfIndex, " pbrMetallicRoughness.metallicFactor is ", pbr.metallicFactor, "; give a number in [0, 1]");
@@ -228,6 +225,21 @@ class SceneBuilder {
       refuse("material ", gltfIndex, " pbrMetallicRoughness.roughnessFactor is ", pbr.roughnessFactor, "; give a number in [0, 1]");
     if (!(material.occlusionStrength >= 0.0f && material.occlusionStrength <= 1.0f))
       refuse("material ", gltfIndex, " occlusionTexture.strength is ", m.occlusionTexture.strength, "; give a number in [0, 1]");
+  }
+
+  // A textureInfo as a TextureRef of this scene (its uv set and KHR_texture_transform); none,
+  // with a note, where it samples a uv set lenslab does not read.
+  template <class Info>
+  TextureRef textureRefFor(const Info& info, int material, const char* slot) {
+    if (info.index < 0) return {};
+    const std::string where = cat("material ", material, " ", slot);
+    (void)textureRef(-1, info.texCoord, info.extensions, where);  // refuses a malformed transform first
+    const int set = effectiveTexCoord(info.texCoord, info.extensions);
+    if (set != 0 && set != 1) {
+      noteOnce(scene_.notes, cat(where, " samples TEXCOORD_", set, "; lenslab reads TEXCOORD_0 and TEXCOORD_1, so that texture is left out"));
+      return {};
+    }
+    return textureRef(textureFor(info.index), info.texCoord, info.extensions, where);
   }
 
   int textureFor(int gltfIndex) {

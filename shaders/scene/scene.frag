@@ -2,6 +2,8 @@
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
 #include "../common/shading.glsl"
+// The environment's lookups, for the image-light term (call them where hasEnvironment is true).
+#include "../common/environment_textures.glsl"
 
 // Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
 //   2–16      base colour, alpha, the default light, emission (below)

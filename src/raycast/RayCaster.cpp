@@ -212,6 +212,9 @@ struct RayCaster::Impl {
     if (!finite(ray.origin) || !(std::abs(glm::length(ray.direction) - 1.0) < 1e-6) || std::isnan(ray.tNear) ||
         std::isnan(ray.tFar))
       throw unfiniteRay(camera, pixel);
+    // The environment, where there is one, is what a ray that hits nothing sees: at infinity, so
+    // only the ray's direction picks it (shaders/common/environment.glsl, as the rasterizer's).
+    if (scene->environment) miss.color = scene->environment->background(glm::vec3(ray.direction));
     // Embree's ray starts where this one enters the scene's bounds (in double), so that its float
     // origin is within the scene's size of `origin` however far away the camera stands; a start
     // before the PRP (a parallel projection's negative near) is fine there too.

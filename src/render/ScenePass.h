@@ -10,10 +10,12 @@
 #include "gl/Framebuffer.h"
 #include "gl/Object.h"
 #include "plan/TileBudget.h"
+#include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <optional>
 
 namespace lenslab {
@@ -54,11 +56,19 @@ class ScenePass {
   // The variant with `define` (DEPTH_ONLY, ADD_TO_SUM), built on first use.
   Programs variant(const char* define, bool narrow) const;
   void setLighting(GLuint program, const Scene& scene, float lodBias) const;
+  // The scene's environment on the GPU (uploaded on first use), or null when it has none. With
+  // one, every view draws it behind its surfaces, each with its own directions (GpuEnvironment).
+  const GpuEnvironment* environment(const Scene& scene) const;
+  // An added view's background: weight · environment where its depth pass left no surface.
+  void drawAddedBackground(const GpuEnvironment& environment, const glm::dmat4& clipFromWorld,
+                           const gl::DrawTarget& target, const glm::vec4& weight) const;
 
   gl::Program program_;
   mutable std::optional<gl::Program> narrowProgram_;  // built on first use: needs fp64 shaders
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];
+  mutable std::unique_ptr<GpuEnvironment> environment_;
+  mutable const EnvironmentLookup* environmentSource_ = nullptr;  // what environment_ was made from
 };
 
 }  // namespace lenslab

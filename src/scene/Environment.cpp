@@ -27,11 +27,21 @@ struct EnvironmentGlsl {
   const EnvironmentImage* single = nullptr;  // sampleBilinear's one image
 
   vec3 environmentTexel(int map, int x, int y, int layer) const {
+    // Only a direction that is not finite (a NaN's int) reaches outside; no read may.
+    x = glm::clamp(x, 0, (single ? single->width : mapWidth(map)) - 1);
+    y = glm::clamp(y, 0, (single ? single->height : mapHeight(map)) - 1);
     if (single) return single->at(x, y);
+    if (map == kEnvironmentSpecular) layer = glm::clamp(layer, 0, static_cast<int>(maps->specular.size()) - 1);
     if (map == kEnvironmentBackground) return maps->background.at(x, y);
     if (map == kEnvironmentDiffuse) return maps->diffuse.at(x, y);
     return maps->specular[static_cast<std::size_t>(layer)].at(x, y);
   }
+
+  const EnvironmentImage& mapImage(int map) const {
+    return map == kEnvironmentBackground ? maps->background : map == kEnvironmentDiffuse ? maps->diffuse : maps->specular.front();
+  }
+  int mapWidth(int map) const { return mapImage(map).width; }
+  int mapHeight(int map) const { return mapImage(map).height; }
 
 #include "../../shaders/common/environment.glsl"
 

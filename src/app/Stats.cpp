@@ -54,6 +54,12 @@ std::string toJson(const RunStats& s) {
     }
     j["display"] = d;
   }
+  if (s.environment) {
+    const EnvironmentSummary& e = *s.environment;
+    j["environment"] = {{"file", e.file}, {"intensity", e.intensity}, {"rotation_deg", e.rotationDegrees},
+                        {"width", e.widthPx}, {"height", e.heightPx}, {"specular_levels", e.specularLevels},
+                        {"from_cache", e.fromCache}, {"load_seconds", e.seconds}};
+  }
   j["width"] = s.size.widthPx;
   j["height"] = s.size.heightPx;
   j["backend"] = s.backend;

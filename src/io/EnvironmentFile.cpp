@@ -213,4 +213,24 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
   return loaded;
 }
 
+std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request, std::ostream& warnings) {
+  if (request.file.empty()) return std::nullopt;
+  if (!(request.intensity >= 0.0) || !std::isfinite(request.intensity))
+    throw InputError(cat("--environment-intensity ", request.intensity, ": give a finite number ≥ 0"));
+  const LoadedEnvironment loaded = loadEnvironment(request.file, PrefilterSettings{}, environmentCacheFolder());
+  if (!loaded.warning.empty()) warnings << "lenslab: warning: " << loaded.warning << "\n";
+  scene.environment = std::make_shared<const EnvironmentLookup>(
+      loaded.maps, EnvironmentPlacement{request.rotationDegrees, static_cast<float>(request.intensity)});
+  EnvironmentSummary s;
+  s.file = request.file;
+  s.intensity = request.intensity;
+  s.rotationDegrees = request.rotationDegrees;
+  s.widthPx = loaded.maps->background.width;
+  s.heightPx = loaded.maps->background.height;
+  s.specularLevels = loaded.maps->specularLevels();
+  s.fromCache = loaded.fromCache;
+  s.seconds = loaded.seconds;
+  return s;
+}
+
 }  // namespace lenslab

@@ -10,10 +10,12 @@
 // costs a warning and the prefiltering next time, never the run.
 #include "scene/Environment.h"
 #include "scene/EnvironmentPrefilter.h"
+#include "scene/Scene.h"
 
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 
 namespace lenslab {
@@ -38,6 +40,29 @@ struct LoadedEnvironment {
 // no cache) or computed and stored there.
 LoadedEnvironment loadEnvironment(const std::filesystem::path& path, const PrefilterSettings& settings,
                                   const std::optional<std::filesystem::path>& cacheFolder);
+
+// What a command asks for (--environment, --environment-intensity, --environment-rotation).
+struct EnvironmentRequest {
+  std::string file;              // empty: no environment
+  double intensity = 1.0;        // ≥ 0
+  double rotationDegrees = 0.0;  // about world +Y
+};
+
+// What --stats reports of the environment a run used.
+struct EnvironmentSummary {
+  std::string file;
+  double intensity = 1.0;
+  double rotationDegrees = 0.0;
+  int widthPx = 0;
+  int heightPx = 0;
+  int specularLevels = 0;
+  bool fromCache = false;
+  double seconds = 0.0;  // reading it, and prefiltering when not cached
+};
+
+// Loads the requested environment (the cache in environmentCacheFolder()) into scene.environment;
+// nothing without a file. The cache's warning, if any, goes to `warnings` as one line.
+std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request, std::ostream& warnings);
 
 // The bytes of a cache entry and back (for tests): `key` names what it was made from; read
 // returns nullopt when the bytes are not a whole entry of that key.

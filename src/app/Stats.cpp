@@ -79,7 +79,7 @@ std::string toJson(const RunStats& s) {
                {"pattern", patternName(s.plan.pattern)},
                {"seed", s.plan.seed},
                {"coc_px", {{"min", s.plan.cocMinPx}, {"max", s.plan.cocMaxPx}}},
-               {"depth_range", {{"min", s.plan.depthMin}, {"max", s.plan.depthMax}}},
+               {"depth_range", {{"min", s.plan.depthMin}, {"max", distanceJson(s.plan.depthMax)}}},
                {"views_per_sample", s.plan.viewsPerSample},
                {"render_size", {s.plan.overscan.size.widthPx, s.plan.overscan.size.heightPx}}};
   if (s.plan.visible) {

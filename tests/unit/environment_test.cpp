@@ -1,12 +1,17 @@
 // The environment: its direction map, prefiltering against closed forms, files and the cache.
 #include "core/Error.h"
+#include "io/CameraJson.h"
 #include "io/EnvironmentFile.h"
+#include "plan/FramePlan.h"
+#include "plan/VisibleBlur.h"
+#include "scene/GltfLoader.h"
 #include "scene/Environment.h"
 #include "scene/EnvironmentPrefilter.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -254,6 +259,44 @@ TEST(EnvironmentFile, RefusesBadFilesInOneLine) {
     EXPECT_EQ(m.find('\n'), std::string::npos);
     EXPECT_NE(m.find(p.string()), std::string::npos);
   }
+}
+
+// The frame plan counts the environment's blur: at infinity, beyond the scene's bounds. A small
+// scene near the plane of focus alone would ask for few samples, and the sky behind it is blurred
+// by the whole aperture.
+TEST(EnvironmentPlan, SamplesCoverTheBlurAtInfinity) {
+  const fs::path assets = LENSLAB_UNIT_ASSET_DIR;
+  Scene scene = loadGltf(assets / "rows/rows.gltf");
+  const Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;  // focused at 2 m
+  // Only the instance nearest the plane of focus (the floor, which runs under the camera, would
+  // have the largest circle on its own).
+  const auto distance = [&](const Instance& i) {
+    Scene one = scene;
+    one.instances = {i};
+    const glm::dvec3 eye = camera.view.vrp + camera.view.prp.z * glm::normalize(camera.view.vpn);
+    return std::abs(glm::length(computeBounds(one).center() - eye) - 1.0 / camera.inverseFocusDistance()) +
+           (glm::length(computeBounds(one).size()) > 10.0 ? 1e9 : 0.0);
+  };
+  const Instance nearest = *std::min_element(scene.instances.begin(), scene.instances.end(),
+                                             [&](const Instance& a, const Instance& b) { return distance(a) < distance(b); });
+  scene.instances = {nearest};
+  scene.bounds = computeBounds(scene);
+  const ImageSize size{480, 320};
+  const FramePlan plain = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 4096, 1});
+  scene.environment = std::make_shared<const EnvironmentLookup>(
+      std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(constantImage(16, glm::vec3(1.0f)), smallSettings())),
+      EnvironmentPlacement{});
+  const FramePlan lit = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 4096, 1});
+  EXPECT_TRUE(std::isinf(lit.depthMax));
+  const double atInfinity = cocDiameterOnWindow(camera, std::numeric_limits<double>::infinity(), 0.0) * size.widthPx /
+                            camera.view.window.width();
+  EXPECT_GE(lit.cocMaxPx, atInfinity * (1.0 - 1e-9));
+  EXPECT_GT(lit.cocMaxPx, plain.cocMaxPx);
+  EXPECT_GE(lit.apertureSamples, plain.apertureSamples);
+  // The visible blur: a view of nothing but the environment has infinity's circle everywhere.
+  const std::vector<double> nothing(static_cast<std::size_t>(60 * 40), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(visibleBlur(camera, size, {60, 40}, nothing).maxPx, 0.0);
+  EXPECT_NEAR(visibleBlur(camera, size, {60, 40}, nothing, true).maxPx, atInfinity, 1e-6 * atInfinity);
 }
 
 }  // namespace

@@ -18,6 +18,8 @@
 #include <numbers>
 #include <random>
 
+#include <unistd.h>
+
 namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
@@ -177,10 +179,17 @@ TEST(EnvironmentCache, EncodesAndDecodesExactly) {
   EXPECT_FALSE(decodeEnvironmentCache("key", bytes.substr(0, bytes.size() - 3)));
 }
 
+// A file in this process's scratch folder, removed when the tests end.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("lenslab-environment-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  static const struct Folder {
+    fs::path path = fs::temp_directory_path() / ("lenslab-environment-test-" + std::to_string(::getpid()));
+    ~Folder() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  } folder;
+  fs::create_directories(folder.path);
+  return folder.path / name;
 }
 
 void writeExr(const fs::path& path, int width, int height, int channels, float value) {

@@ -335,7 +335,7 @@ int runCapture(const CaptureOptions& o) {
   const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
-  applyEnvironment(scene, o.environment, std::cerr);
+  const std::optional<EnvironmentSummary> environmentSummary = applyEnvironment(scene, o.environment, std::cerr);
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   selectAnimation(scene, o.camera.animation);
   const FrameCameras cameras(o, scene, o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0);
@@ -467,6 +467,9 @@ int runCapture(const CaptureOptions& o) {
     if (!display.encoding.isIdentity())
       line["display"] = {{"exposure_stops", display.exposure.stops}, {"exposure", describe(display.exposure)},
                          {"view_transform", viewTransformName(display.encoding.transform)}};
+    if (environmentSummary)
+      line["environment"] = {{"file", environmentSummary->file}, {"intensity", environmentSummary->intensity},
+                             {"rotation_deg", environmentSummary->rotationDegrees}};
     line["opencv"] = openCvJson(camera, size);
     line["shard"] = cat(shard.index, "/", shard.count);
     commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());

@@ -79,6 +79,7 @@ check holds "$work/rc.json" 'j["environment"]["from_cache"] == True'
 if ! same_pixels "$work/first.exr" "$work/turned.exr"; then pass; else fail "rotation and intensity changed nothing"; fi
 "$lenslab" capture --path "$src/assets/rows/rack-focus.json" --environment "$studio" --frames 0:1 --width 32 -q --out "$work/cap/frame_%04d.exr" 2>/dev/null
 check test -f "$work/cap/frame_0000.exr"
+check $python -c "import json,sys; l=json.loads(open(sys.argv[1]).readline()); sys.exit(0 if l['environment']['file'].endswith('studio.hdr') else 1)" "$work/cap/manifest.jsonl"
 "$lenslab" render --width 64 -q --out "$work/plain.exr" --stats "$work/plain.json" 2>/dev/null
 check holds "$work/plain.json" '"environment" not in j'
 

@@ -35,32 +35,24 @@ gl::Texture upload(const EnvironmentImage& image) {
 }  // namespace
 
 glm::dmat3 worldDirectionFromNdc(const glm::dmat4& clipFromWorld) {
-  // Scaled first: homogeneous, so the same map, and its inverse neither overflows nor underflows.
-  double largest = 0.0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) largest = std::max(largest, std::abs(clipFromWorld[c][r]));
-  const glm::dmat4 worldFromClip = glm::inverse(largest > 0.0 ? clipFromWorld * (1.0 / largest) : clipFromWorld);
-  // The points of NDC depth 0 and 1 in homogeneous world coordinates; w depends on depth alone
-  // (a projection's inverse), so w_b·a − w_a·b, which is w_a·w_b times the difference of the two
-  // points, is linear in (x, y). Its sign is fixed by that of w_a·w_b (a far plane at infinity,
-  // w = 0, needs none).
-  const auto along = [&](double x, double y) {
-    const glm::dvec4 a = worldFromClip * glm::dvec4(x, y, 0.0, 1.0);
-    const glm::dvec4 b = worldFromClip * glm::dvec4(x, y, 1.0, 1.0);
-    return glm::dvec3(a) * b.w - glm::dvec3(b) * a.w;
-  };
-  const glm::dvec4 a = worldFromClip * glm::dvec4(0.0, 0.0, 0.0, 1.0);
-  const glm::dvec4 b = worldFromClip * glm::dvec4(0.0, 0.0, 1.0, 1.0);
-  // Depth 0 is the far plane (reverse-Z, lenslab's), so the ray runs from b to a: along / (w_a·w_b).
-  // A far plane at infinity (w_a = 0) makes along = a·w_b, already pointing that way.
-  const double sign = (a.w == 0.0 || b.w == 0.0 || a.w * b.w > 0.0) ? 1.0 : -1.0;
-  const glm::dvec3 centre = along(0.0, 0.0);
-  glm::dmat3 m(along(1.0, 0.0) - centre, along(0.0, 1.0) - centre, centre);
-  m *= sign;
+  // Only the linear part L (rows x, y, z, w of clipFromWorld's first three columns) is used: the
+  // point at infinity along d has clip coordinates L·d, whatever the eye's position, so a view
+  // 1e15 from the origin loses nothing to cancellation. A pixel at NDC (x, y) sees the d with
+  // (L_x − x·L_w)·d = 0 and (L_y − y·L_w)·d = 0: their cross product, which expands to
+  // L_x×L_y − x·(L_w×L_y) − y·(L_x×L_w), linear in (x, y). (A parallel view has L_w = 0: one
+  // direction, L_x×L_y, for every pixel.)
+  const auto row = [&](int r) { return glm::dvec3(clipFromWorld[0][r], clipFromWorld[1][r], clipFromWorld[2][r]); };
+  const glm::dvec3 lx = row(0), ly = row(1), lz = row(2), lw = row(3);
+  glm::dmat3 m(-glm::cross(lw, ly), -glm::cross(lx, lw), glm::cross(lx, ly));
+  // Towards what the view sees: in front (w > 0) for a perspective view; towards the far plane
+  // (reverse-Z: smaller depth) for a parallel one.
+  const glm::dvec3 centre = m[2];
+  const bool flip = glm::dot(lw, lw) > 0.0 ? glm::dot(lw, centre) < 0.0 : glm::dot(lz, centre) > 0.0;
+  if (flip) m = -m;
   double scale = 0.0;
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r) scale = std::max(scale, std::abs(m[c][r]));
-  return scale > 0.0 ? m * (1.0 / scale) : m;
+  return scale > 0.0 && std::isfinite(scale) ? m * (1.0 / scale) : m;
 }
 
 GpuEnvironment::GpuEnvironment(const EnvironmentLookup& lookup)

@@ -12,8 +12,8 @@
 namespace lenslab {
 
 // The 3 × 3 matrix M with M · (x, y, 1) along the world direction of the ray through NDC (x, y)
-// of a view with this clipFromWorld (perspective or parallel; reverse-Z or not), from the near
-// plane towards the far one: computed in double, scaled to a largest entry of 1.
+// of a view with this clipFromWorld (perspective, or parallel with reverse-Z), pointing into the
+// view: from its linear part alone (no eye position), in double, scaled to a largest entry of 1.
 glm::dmat3 worldDirectionFromNdc(const glm::dmat4& clipFromWorld);
 
 class GpuEnvironment {

@@ -166,6 +166,15 @@ TEST(EnvironmentGlsl, DirectionFromNdcFollowsTheProjection) {
   EXPECT_NEAR(centre.z, -1.0, 1e-12);
   EXPECT_NEAR(right.x, std::sqrt(0.5), 1e-12);
   EXPECT_NEAR(right.z, -std::sqrt(0.5), 1e-12);
+  // The same view 1e15 from the origin, turned: the directions only turn (no eye position in them).
+  const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), 0.7, glm::dvec3(0.3, 1.0, 0.2));
+  const glm::dmat4 far = clipFromView * glm::inverse(glm::translate(glm::dmat4(1.0), glm::dvec3(1e15, -3e14, 7e14)) * turn);
+  const glm::dmat3 mFar = worldDirectionFromNdc(far);
+  for (const glm::dvec3 ndc : {glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 1), glm::dvec3(-0.3, 0.8, 1)}) {
+    const glm::dvec3 want = glm::dmat3(turn) * glm::normalize(m * ndc);
+    const glm::dvec3 got = glm::normalize(mFar * ndc);
+    EXPECT_NEAR(glm::length(got - want), 0.0, 1e-12);
+  }
 }
 
 // An empty view of the environment: every pixel the background, through the lens.

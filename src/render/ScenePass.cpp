@@ -67,9 +67,9 @@ void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) c
 
 const GpuEnvironment* ScenePass::environment(const Scene& scene) const {
   if (!scene.environment) return nullptr;
-  if (environmentSource_ != scene.environment.get()) {
+  if (environmentSource_ != scene.environment) {
     environment_ = std::make_unique<GpuEnvironment>(*scene.environment);
-    environmentSource_ = scene.environment.get();
+    environmentSource_ = scene.environment;
   }
   return environment_.get();
 }

@@ -68,7 +68,8 @@ class ScenePass {
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];
   mutable std::unique_ptr<GpuEnvironment> environment_;
-  mutable const EnvironmentLookup* environmentSource_ = nullptr;  // what environment_ was made from
+  // What environment_ was made from, held so that its address cannot be reused by another.
+  mutable std::shared_ptr<const EnvironmentLookup> environmentSource_;
 };
 
 }  // namespace lenslab

@@ -2,6 +2,8 @@
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
 #include "../common/material_maps.glsl"
+// The environment's lookups, for the image-light term (call them where hasEnvironment is true).
+#include "../common/environment_textures.glsl"
 
 // Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
 //   2–16      base colour, alpha, the default light, emission (below)
@@ -128,9 +130,14 @@ vec3 shadeLit(vec3 base, vec3 n) {
     light.spotOffset = lightSpot[i].y;
     colour += punctualRadiance(s, light, shadingPosition);
   }
-  // The uniform surround; an environment's lookups go here.
+  // Light from all around: the environment, prefiltered (environment.glsl), or the uniform surround.
   vec3 ambientDiffuse = vec3(ambient);
   vec3 ambientSpecular = vec3(ambient);
+  if (hasEnvironment) {
+    EnvironmentParams e = environmentParams();
+    ambientDiffuse = environmentDiffuse(e, s.n);
+    ambientSpecular = environmentSpecular(e, reflect(-s.v, s.n), s.perceptualRoughness);
+  }
   colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgLookup(dot(s.n, s.v), s.perceptualRoughness));
   return colour;
 }

@@ -9,6 +9,7 @@
 // the same code as `render` (app/FrameRender.h) on a renderer that starts every frame afresh.
 #include "app/AovOption.h"
 #include "app/CliOptions.h"
+#include "app/EnvironmentOptions.h"
 #include "app/ExposureOptions.h"
 #include "app/Commands.h"
 #include "app/FrameRender.h"
@@ -74,6 +75,7 @@ struct CaptureOptions {
   std::optional<glm::vec3> background;
   std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
   ExposureOptions exposure;  // PNG frames only; physical settings take each frame's f-number
+  EnvironmentRequest environment;
 };
 
 // Where each frame's camera comes from: the path's keys, or (no --path) the scene's own camera —
@@ -334,6 +336,7 @@ int runCapture(const CaptureOptions& o) {
   const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
+  const std::optional<EnvironmentSummary> environmentSummary = applyEnvironment(scene, o.environment, std::cerr);
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   selectAnimation(scene, o.camera.animation);
   const FrameCameras cameras(o, scene, o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0);
@@ -467,6 +470,9 @@ int runCapture(const CaptureOptions& o) {
     if (!display.encoding.isIdentity())
       line["display"] = {{"exposure_stops", display.exposure.stops}, {"exposure", describe(display.exposure)},
                          {"view_transform", viewTransformName(display.encoding.transform)}};
+    if (environmentSummary)
+      line["environment"] = {{"file", environmentSummary->file}, {"intensity", environmentSummary->intensity},
+                             {"rotation_deg", environmentSummary->rotationDegrees}};
     line["opencv"] = openCvJson(camera, size);
     line["shard"] = cat(shard.index, "/", shard.count);
     commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
@@ -538,6 +544,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       ->type_name("DIR");
   addBackgroundOption(*cmd, o->background);
   addExposureOptions(*cmd, o->exposure);
+  addEnvironmentOptions(*cmd, o->environment);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success");
   return [cmd, o]() { return cmd->parsed() ? runCapture(*o) : -1; };
 }

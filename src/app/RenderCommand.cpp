@@ -5,6 +5,7 @@
 #include "app/ExposureOptions.h"
 #include "app/FrameRender.h"
 #include "app/Commands.h"
+#include "app/EnvironmentOptions.h"
 #include "app/Stats.h"
 #include "camera/DepthRange.h"
 #include "camera/FocusOnPixel.h"
@@ -64,6 +65,7 @@ struct RenderOptions {
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
   std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
   ExposureOptions exposure;           // PNG output only
+  EnvironmentRequest environment;
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -215,6 +217,7 @@ int runRender(const RenderOptions& o) {
   checkNotInput(o.statsFile, "--stats", cameraPath.value_or(fs::path()), "--camera");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
+  const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
   for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";
   if (scene.triangleCount() == 0)
     throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
@@ -235,6 +238,7 @@ int runRender(const RenderOptions& o) {
 
   RunStats stats;
   stats.exposure = display.exposure;
+  stats.environment = environment;
   stats.viewTransform = display.encoding.transform;
   stats.command = o.method == Method::Raster ? "render" : "raycast";
   stats.scene = scenePath.string();
@@ -328,6 +332,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   addBackgroundOption(*cmd, options->background);
   addAovOption(*cmd, options->aovs);
   addExposureOptions(*cmd, options->exposure);
+  addEnvironmentOptions(*cmd, options->environment);
   addTimeOption(*cmd, options->timeSeconds,
                 "pose the scene's glTF animations at this time (seconds; as capture does for each frame's time); "
                 "default: the rest pose");

@@ -54,6 +54,12 @@ std::string toJson(const RunStats& s) {
     }
     j["display"] = d;
   }
+  if (s.environment) {
+    const EnvironmentSummary& e = *s.environment;
+    j["environment"] = {{"file", e.file}, {"intensity", e.intensity}, {"rotation_deg", e.rotationDegrees},
+                        {"width", e.widthPx}, {"height", e.heightPx}, {"specular_levels", e.specularLevels},
+                        {"from_cache", e.fromCache}, {"load_seconds", e.seconds}};
+  }
   j["width"] = s.size.widthPx;
   j["height"] = s.size.heightPx;
   j["backend"] = s.backend;
@@ -73,7 +79,7 @@ std::string toJson(const RunStats& s) {
                {"pattern", patternName(s.plan.pattern)},
                {"seed", s.plan.seed},
                {"coc_px", {{"min", s.plan.cocMinPx}, {"max", s.plan.cocMaxPx}}},
-               {"depth_range", {{"min", s.plan.depthMin}, {"max", s.plan.depthMax}}},
+               {"depth_range", {{"min", s.plan.depthMin}, {"max", distanceJson(s.plan.depthMax)}}},
                {"views_per_sample", s.plan.viewsPerSample},
                {"render_size", {s.plan.overscan.size.widthPx, s.plan.overscan.size.heightPx}}};
   if (s.plan.visible) {

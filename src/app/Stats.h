@@ -4,6 +4,7 @@
 #include "camera/ImageSize.h"
 #include "camera/PhysicalCamera.h"
 #include "io/AtomicFile.h"
+#include "io/EnvironmentFile.h"
 #include "io/ToneMap.h"
 #include "plan/FramePlan.h"
 #include "plan/TileBudget.h"
@@ -39,6 +40,8 @@ struct RunStats {
   // How PNG output shows the radiance (app/ExposureOptions.h): "display" in the JSON.
   Exposure exposure;
   ViewTransform viewTransform = ViewTransform::None;
+  // The environment (--environment): "environment" in the JSON, absent without one.
+  std::optional<EnvironmentSummary> environment;
 
   // The camera's source, focus, aperture and physical description.
   void setCamera(const SelectedCamera& selected);

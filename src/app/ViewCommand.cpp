@@ -1,6 +1,7 @@
 // lenslab view: the interactive window demo (src/view/ViewApp.h), and its scripted mode for tests.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "app/EnvironmentOptions.h"
 #include "app/ExposureOptions.h"
 #include "core/ParseNumber.h"
 #include "io/OutputPath.h"
@@ -30,6 +31,7 @@ std::function<int()> addViewCommand(CLI::App& app) {
                 "pose the scene's glTF animation at this time (seconds), as render --time does; default: the rest pose");
   addBackgroundOption(*cmd, o->background);
   addExposureOptions(*cmd, o->exposure, o->viewTransform);
+  addEnvironmentOptions(*cmd, o->environment);
   cmd->add_option("--frames", o->frames,
                   "scripted: run at least N frames (and on until the accumulation is complete), write --screenshot, exit");
   cmd->add_option("--screenshot", o->screenshot,

@@ -29,6 +29,9 @@ void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
   }
   plan.depthMin = std::max(lo, camera.view.nearDistance);
   plan.depthMax = std::min(hi, camera.view.farDistance);
+  // An environment is seen wherever nothing else is, at infinity (beyond any far plane).
+  if (scene.environment && camera.view.projection == Projection::Perspective)
+    plan.depthMax = std::numeric_limits<double>::infinity();
 }
 
 // Whether the barrel hides part of the aperture from some pixel: from the window's farthest corner

@@ -79,7 +79,8 @@ double VisibleBlur::maxOver(int x0, int y0, int x1, int y1) const {
   return m;
 }
 
-VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass, const std::vector<double>& depth) {
+VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass, const std::vector<double>& depth,
+                        bool backgroundAtInfinity) {
   if (depth.size() != static_cast<std::size_t>(prepass.pixelCount()))
     throw std::invalid_argument("visibleBlur: the depth map does not match the pre-pass size");
   VisibleBlur blur;
@@ -96,7 +97,8 @@ VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass
   double ownMin = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     const double z = depth[i];
-    if (!(z > 0.0) || std::isinf(z)) continue;  // nothing seen: the background has no circle
+    // Nothing seen: a constant background has no circle; an environment has infinity's.
+    if (!(z > 0.0) || (std::isinf(z) && !(backgroundAtInfinity && camera.view.projection == Projection::Perspective))) continue;
     double c = 0.0;
     if (!camera.isPinhole())
       for (const double shift : shifts) c = std::max(c, cocDiameterOnWindow(camera, z, shift) * pxPerWindowUnit);

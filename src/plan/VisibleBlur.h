@@ -40,6 +40,9 @@ ImageSize prepassSizeFor(ImageSize image, int targetWidthPx = 320);
 // `depth`: the pinhole view's depth per pre-pass pixel (world units from the PRP along −n, rows
 // from the top; +infinity where nothing is seen). The camera's axial colour and field curvature
 // count as in the frame plan: the largest circle over the channels' and the corners' focus.
-VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass, const std::vector<double>& depth);
+// `backgroundAtInfinity`: where nothing is seen an environment is (render/GpuEnvironment), whose
+// circle is that of depth infinity (perspective cameras; else the background has no circle).
+VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass, const std::vector<double>& depth,
+                        bool backgroundAtInfinity = false);
 
 }  // namespace lenslab

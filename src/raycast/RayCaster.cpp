@@ -223,6 +223,9 @@ struct RayCaster::Impl {
     if (!finite(ray.origin) || !(std::abs(glm::length(ray.direction) - 1.0) < 1e-6) || std::isnan(ray.tNear) ||
         std::isnan(ray.tFar))
       throw unfiniteRay(camera, pixel);
+    // The environment, where there is one, is what a ray that hits nothing sees: at infinity, so
+    // only the ray's direction picks it (shaders/common/environment.glsl, as the rasterizer's).
+    if (scene->environment) miss.color = scene->environment->background(glm::vec3(ray.direction));
     // Embree's ray starts where this one enters the scene's bounds (in double), so that its float
     // origin is within the scene's size of `origin` however far away the camera stands; a start
     // before the PRP (a parallel projection's negative near) is fine there too.
@@ -330,8 +333,13 @@ struct RayCaster::Impl {
         const glm::vec3 position(ray.origin + tHit * ray.direction);  // relative to `origin`, as the lights are
         colour = glm::vec3(0.0f);
         for (const ShadingLight& light : lights) colour += punctualRadiance(surface, light, position);
-        // The uniform surround (Lighting::ambient); an environment's lookups go here.
-        const glm::vec3 ambientDiffuse(scene->lighting.ambient), ambientSpecular(scene->lighting.ambient);
+        // Light from all around: the environment, prefiltered (environment.glsl), or the uniform
+        // surround (Lighting::ambient), as scene.frag's shadeLit.
+        glm::vec3 ambientDiffuse(scene->lighting.ambient), ambientSpecular(scene->lighting.ambient);
+        if (scene->environment) {
+          ambientDiffuse = scene->environment->diffuse(surface.n);
+          ambientSpecular = scene->environment->specular(glm::reflect(-surface.v, surface.n), surface.perceptualRoughness);
+        }
         const glm::vec2 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
         colour += imageLightRadiance(surface, ambientDiffuse, ambientSpecular, dfg);
       }

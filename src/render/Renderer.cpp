@@ -30,6 +30,11 @@ constexpr double kPixelsPerDrawBox = 1e4;
 // (rows, 40 dB) at 512 px: seconds per sample per pixel of each way to the same target.
 constexpr double kTilePixelCost = 1.5;
 
+
+// The background the accumulator adds for all views at once: the scene's constant colour; none
+// with an environment, which each view draws itself (ScenePass), its directions its own.
+glm::vec3 constantBackground(const Scene& scene) { return scene.environment ? glm::vec3(0.0f) : scene.lighting.background; }
+
 }  // namespace
 
 Renderer::Renderer(const Scene& scene) : gpuScene_(scene) {}
@@ -133,7 +138,7 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
     const glm::vec2 barrelLens = camera_.hasBarrel()
         ? glm::vec2(lensOffset * (1.0 - camera_.barrel.distance * (camera_.inverseFocusDistance() + shift)) / camera_.barrel.radius)
         : glm::vec2(0.0f);
-    const Accumulator::View view = sum.nextView(gpuScene_.scene().lighting.background, mask, curvatureShift, jitter, barrelLens);
+    const Accumulator::View view = sum.nextView(constantBackground(gpuScene_.scene()), mask, curvatureShift, jitter, barrelLens);
     for (const SamplePart& part : parts)
       scenePass_.draw(gpuScene_, sampleClip(part.sample, shift), view.target, lodBias, part.boxes,
                       view.addWeight ? &*view.addWeight : nullptr);

@@ -34,6 +34,7 @@ class Renderer {
  public:
   // Uploads the scene and builds the programs; `scene` must outlive the renderer.
   explicit Renderer(const Scene& scene);
+  const Scene& scene() const { return gpuScene_.scene(); }
 
   // The whole frame (begin, complete, resolve); waits for the GPU (glFinish), so wall time around
   // it is honest.

@@ -163,6 +163,7 @@ void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) c
     glProgramUniform3fv(program, kLightIntensity, n, glm::value_ptr(intensity[0]));
     glProgramUniform2fv(program, kLightSpot, n, glm::value_ptr(spot[0]));
   }
+  if (const GpuEnvironment* env = environment(scene)) env->bind(program);
 }
 
 void ScenePass::placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFromWorld) const {
@@ -172,6 +173,25 @@ void ScenePass::placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFro
   parallelView_ = centre.atInfinity;
   towardViewer_ = glm::vec3(centre.towardViewer);
   shadingOrigin_ = !centre.atInfinity ? centre.point : scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
+}
+
+const GpuEnvironment* ScenePass::environment(const Scene& scene) const {
+  if (!scene.environment) return nullptr;
+  if (environmentSource_ != scene.environment) {
+    environment_ = std::make_unique<GpuEnvironment>(*scene.environment);
+    environmentSource_ = scene.environment;
+  }
+  return environment_.get();
+}
+
+void ScenePass::drawAddedBackground(const GpuEnvironment& env, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
+                                    const glm::vec4& weight) const {
+  // Where the depth pass left far and the stencil lets this view add (as its surfaces do).
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  env.drawBackground(clipFromWorld, target.width, target.height, glm::vec3(weight), true);
+  glDisable(GL_STENCIL_TEST);
 }
 
 ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
@@ -244,6 +264,7 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     }
     if (addWeight) {
       drawAdded(gpuScene, clipFromWorld, narrow, *addWeight, lodBias);
+      if (const GpuEnvironment* env = environment(scene)) drawAddedBackground(*env, clipFromWorld, target, *addWeight);
       continue;
     }
     const glm::vec3& bg = scene.lighting.background;
@@ -254,6 +275,8 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     glClearBufferfv(GL_COLOR, 0, clearColor);
     glClearBufferfv(GL_DEPTH, 0, &clearDepth);
     drawInstances({program, program}, plainMaps, narrow, gpuScene, clipFromWorld);
+    if (const GpuEnvironment* env = environment(scene))
+      env->drawBackground(clipFromWorld, target.width, target.height, glm::vec3(1.0f), false);
   }
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
@@ -272,7 +295,9 @@ void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWo
 
   // Colour where the depth is the visible surface's, once per pixel.
   const Programs add = variant("ADD_TO_SUM", narrow), addMaps = maps("ADD_TO_SUM");
-  const glm::vec3& bg = gpuScene.scene().lighting.background;
+  // With an environment the background varies per pixel and view: drawn by the view itself
+  // (drawAddedBackground), so the accumulator adds none and the surfaces subtract none.
+  const glm::vec3 bg = gpuScene.scene().environment ? glm::vec3(0.0f) : gpuScene.scene().lighting.background;
   for (const GLuint id : {add.opaque, addMaps.opaque}) {
     if (!id) continue;
     glProgramUniform3fv(id, kBackground, 1, glm::value_ptr(bg));

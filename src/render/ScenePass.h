@@ -10,10 +10,12 @@
 #include "gl/Framebuffer.h"
 #include "gl/Object.h"
 #include "plan/TileBudget.h"
+#include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <optional>
 
 namespace lenslab {
@@ -62,6 +64,12 @@ class ScenePass {
   // The shading origin of the view drawn now: its eye (its projection centre), or for a parallel
   // view the scene's centre and the direction toward the viewer.
   void placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFromWorld) const;
+  // The scene's environment on the GPU (uploaded on first use), or null when it has none. With
+  // one, every view draws it behind its surfaces, each with its own directions (GpuEnvironment).
+  const GpuEnvironment* environment(const Scene& scene) const;
+  // An added view's background: weight · environment where its depth pass left no surface.
+  void drawAddedBackground(const GpuEnvironment& environment, const glm::dmat4& clipFromWorld,
+                           const gl::DrawTarget& target, const glm::vec4& weight) const;
 
   gl::Program program_;
   gl::Texture dfgTable_;  // scene/Brdf.h's table, RG32F
@@ -73,6 +81,9 @@ class ScenePass {
   mutable gl::Program addPrograms_[2][3];
   // MATERIAL_MAPS programs, built on first use: [narrow][plain, DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program mapsPrograms_[2][4];
+  mutable std::unique_ptr<GpuEnvironment> environment_;
+  // What environment_ was made from, held so that its address cannot be reused by another.
+  mutable std::shared_ptr<const EnvironmentLookup> environmentSource_;
 };
 
 // Whether a material needs scene.frag's MATERIAL_MAPS variant: a normal map, or a texture that

@@ -13,7 +13,7 @@ VisibleBlur measureVisibleBlur(Renderer& renderer, const Camera& camera, ImageSi
   std::vector<double> depth(zNdc.size());
   for (std::size_t i = 0; i < zNdc.size(); ++i)
     depth[i] = zNdc[i] > 0.0f ? depthFromReverseZ(camera.view, zNdc[i]) : std::numeric_limits<double>::infinity();
-  return visibleBlur(camera, image, prepass, depth);
+  return visibleBlur(camera, image, prepass, depth, renderer.scene().environment != nullptr);
 }
 
 }  // namespace lenslab

@@ -1,12 +1,14 @@
 #pragma once
 // The renderable scene: what every renderer (raster and ray caster) draws, flattened out of glTF.
 // Pure data (GLM + std), no GL: src/render uploads it, src/raycast will intersect it.
+#include "scene/Environment.h"
 #include "scene/SceneAnimation.h"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -180,6 +182,9 @@ struct Scene {
   Bounds bounds;                      // world-space bounds of all instances
   std::vector<std::string> notes;     // what the loader left out and why (shown by `lenslab info`)
   SceneAnimation animation;           // what poseScene needs to move instances and cameras; empty when nothing moves
+  // The environment (--environment): the background both renderers show where no surface is, and
+  // the image lighting's lookups; null = none (lighting.background, and no image lighting).
+  std::shared_ptr<const EnvironmentLookup> environment;
 
   std::size_t triangleCount() const;  // over all instances
 };

@@ -25,7 +25,8 @@ std::vector<ShadingLight> shadingLights(const Scene& scene, const glm::dvec3& or
     s.spotOffset = cone.y;
     out.push_back(s);
   };
-  if (scene.lights.empty()) add(defaultLight(scene.lighting));
+  // An environment lights the scene itself: the default light is for scenes with neither.
+  if (scene.lights.empty() && !scene.environment) add(defaultLight(scene.lighting));
   for (const PunctualLight& l : scene.lights) add(l);
   return out;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // The punctual lights a scene is shaded with, as both renderers hand them to brdf.glsl: the
-// file's KHR_lights_punctual lights, or, where it has none, lenslab's one default directional
-// light (scene/Scene.h's Lighting), with positions relative to an origin near the viewer so that a
-// scene far from the world origin keeps its precision in float.
+// file's KHR_lights_punctual lights, or, where it has none and no environment lights it,
+// lenslab's one default directional light (scene/Scene.h's Lighting), with positions relative to
+// an origin near the viewer so that a scene far from the world origin keeps its precision.
 #include "scene/Brdf.h"
 #include "scene/Scene.h"
 

@@ -88,6 +88,7 @@ int runView(const ViewOptions& o) {
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
+  applyEnvironment(scene, o.environment, std::cerr);
   for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0;

@@ -4,6 +4,7 @@
 // lens parameter, and an outside view that draws the lecture's diagram of the camera in the scene.
 // Scripted mode (--frames) runs a fixed number of frames and writes a screenshot, for tests.
 #include "camera/Exposure.h"
+#include "io/EnvironmentFile.h"
 #include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
 
@@ -35,6 +36,7 @@ struct ViewOptions {
   double frameBudgetMs = 16.0;        // accumulation work per frame (at least one sample)
   ExposureRequest exposure;           // the display's starting exposure, as render's (io/ToneMap.h)
   std::string viewTransform = "none";  // and view transform; the panel changes both
+  EnvironmentRequest environment;     // --environment and its intensity and rotation
 };
 
 // Returns the exit code; throws InputError for bad input (files, cameras, options) and

@@ -1,0 +1,236 @@
+#include "io/EnvironmentFile.h"
+
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/AtomicFile.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Bump when the prefiltering or this file's layout changes: older entries are then stale.
+constexpr int kCacheVersion = 1;
+constexpr char kMagic[8] = {'L', 'E', 'N', 'S', 'E', 'N', 'V', '1'};
+
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  return s;
+}
+
+std::string lowerExtension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// FNV-1a, 64 bits: enough to tell files and entries apart, not a defence against forgery.
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 0xcbf29ce484222325ull) {
+  for (const unsigned char c : bytes) {
+    h ^= c;
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+std::string hex(std::uint64_t v) {
+  std::ostringstream s;
+  s << std::hex << std::setw(16) << std::setfill('0') << v;
+  return s.str();
+}
+
+std::string readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(cat(path.string(), ": cannot read it: ", std::strerror(errno)));
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+template <class T>
+void put(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+template <class T>
+bool take(std::string_view& in, T& v) {
+  if (in.size() < sizeof v) return false;
+  std::memcpy(&v, in.data(), sizeof v);
+  in.remove_prefix(sizeof v);
+  return true;
+}
+
+void putImage(std::string& out, const EnvironmentImage& image) {
+  put(out, static_cast<std::int32_t>(image.width));
+  put(out, static_cast<std::int32_t>(image.height));
+  out.append(reinterpret_cast<const char*>(image.rgb.data()), image.rgb.size() * sizeof(glm::vec3));
+}
+
+bool takeImage(std::string_view& in, EnvironmentImage& image) {
+  std::int32_t w = 0, h = 0;
+  if (!take(in, w) || !take(in, h) || w < 1 || h < 1 || w > (1 << 16) || h > (1 << 16)) return false;
+  const std::size_t bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * sizeof(glm::vec3);
+  if (in.size() < bytes) return false;
+  image.width = w;
+  image.height = h;
+  image.rgb.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  std::memcpy(image.rgb.data(), in.data(), bytes);
+  in.remove_prefix(bytes);
+  return true;
+}
+
+}  // namespace
+
+EnvironmentImage readEnvironmentImage(const fs::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext != ".hdr" && ext != ".exr")
+    throw InputError(cat(path.string(), ": an environment is a .hdr or .exr file (equirectangular, linear radiance), not '", ext, "'"));
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(cat(path.string(), ": cannot read the environment: ", oneLine(OIIO::geterror())));
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.nchannels != 3 && spec.nchannels != 4)
+    throw InputError(cat(path.string(), ": the environment has ", spec.nchannels, " channels; it must have 3 (RGB) or 4 (RGBA)"));
+  if (spec.width != 2 * spec.height || spec.height < 2)
+    throw InputError(cat(path.string(), ": the environment is ", spec.width, " × ", spec.height,
+                         "; an equirectangular image is twice as wide as high, at least 4 × 2"));
+  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw InputError(cat(path.string(), ": cannot read the environment: ", oneLine(in->geterror())));
+  EnvironmentImage image{spec.width, spec.height, {}};
+  image.rgb.resize(static_cast<std::size_t>(spec.width) * spec.height);
+  for (int y = 0; y < spec.height; ++y)
+    for (int x = 0; x < spec.width; ++x) {
+      const float* p = &pixels[(static_cast<std::size_t>(y) * spec.width + x) * spec.nchannels];
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(p[k]) || p[k] < 0.0f)
+          throw InputError(cat(path.string(), ": pixel (", x, ", ", y, ") holds ", p[k],
+                               "; an environment's radiance is finite and ≥ 0"));
+      image.at(x, y) = {p[0], p[1], p[2]};
+    }
+  return image;
+}
+
+std::optional<fs::path> environmentCacheFolder() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg && fs::path(xdg).is_absolute()) return fs::path(xdg) / "lenslab";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return fs::path(home) / ".cache" / "lenslab";
+  return std::nullopt;
+}
+
+std::string environmentCacheKey(const std::string& fileBytes, const PrefilterSettings& settings) {
+  return cat("lenslab environment v", kCacheVersion, "; contents ", hex(fnv1a(fileBytes)), " (", fileBytes.size(),
+             " bytes); ", settings.key());
+}
+
+std::string encodeEnvironmentCache(const std::string& key, const PrefilteredEnvironment& maps) {
+  std::string out(kMagic, sizeof kMagic);
+  put(out, static_cast<std::uint32_t>(key.size()));
+  out += key;
+  putImage(out, maps.background);
+  putImage(out, maps.diffuse);
+  put(out, static_cast<std::int32_t>(maps.specular.size()));
+  for (const EnvironmentImage& level : maps.specular) putImage(out, level);
+  put(out, fnv1a(out));
+  return out;
+}
+
+std::optional<PrefilteredEnvironment> decodeEnvironmentCache(const std::string& key, const std::string& bytes) {
+  std::uint64_t checksum = 0;
+  if (bytes.size() < sizeof kMagic + sizeof checksum) return std::nullopt;
+  std::string_view body(bytes.data(), bytes.size() - sizeof checksum);
+  std::memcpy(&checksum, bytes.data() + body.size(), sizeof checksum);
+  if (fnv1a(body) != checksum || std::memcmp(body.data(), kMagic, sizeof kMagic) != 0) return std::nullopt;
+  body.remove_prefix(sizeof kMagic);
+  std::uint32_t keySize = 0;
+  if (!take(body, keySize) || body.size() < keySize || body.substr(0, keySize) != key) return std::nullopt;
+  body.remove_prefix(keySize);
+  PrefilteredEnvironment maps;
+  std::int32_t levels = 0;
+  if (!takeImage(body, maps.background) || !takeImage(body, maps.diffuse) || !take(body, levels) || levels < 1 || levels > 64)
+    return std::nullopt;
+  maps.specular.resize(static_cast<std::size_t>(levels));
+  for (EnvironmentImage& level : maps.specular)
+    if (!takeImage(body, level) || level.width != maps.specular.front().width || level.height != maps.specular.front().height)
+      return std::nullopt;
+  if (!body.empty()) return std::nullopt;
+  return maps;
+}
+
+LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings& settings,
+                                  const std::optional<fs::path>& cacheFolder) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  // The extension first, so that a typo fails before the file is read.
+  const std::string ext = lowerExtension(path);
+  if (ext != ".hdr" && ext != ".exr") readEnvironmentImage(path);  // throws, naming the file
+  const std::string bytes = readBytes(path);
+  const std::string key = environmentCacheKey(bytes, settings);
+  LoadedEnvironment loaded;
+  std::optional<fs::path> entry;
+  if (cacheFolder) {
+    entry = *cacheFolder / ("environment-" + hex(fnv1a(key)) + ".bin");
+    std::error_code ec;
+    if (fs::is_regular_file(*entry, ec)) {
+      try {
+        if (std::optional<PrefilteredEnvironment> maps = decodeEnvironmentCache(key, readBytes(*entry))) {
+          loaded.maps = std::make_shared<const PrefilteredEnvironment>(std::move(*maps));
+          loaded.fromCache = true;
+          loaded.seconds = elapsed();
+          return loaded;
+        }
+      } catch (const InputError& e) {
+        loaded.warning = cat("environment cache ", entry->string(), " not read: ", e.what());
+      }
+    }
+  } else {
+    loaded.warning = "environment cache: neither XDG_CACHE_HOME nor HOME is set, so the prefiltered maps are not kept";
+  }
+  loaded.maps = std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(readEnvironmentImage(path), settings));
+  if (entry) {
+    try {
+      std::error_code ec;
+      fs::create_directories(entry->parent_path(), ec);
+      if (ec) throw InputError(cat(entry->parent_path().string(), ": cannot create it: ", ec.message()));
+      writeFileAtomically(*entry, encodeEnvironmentCache(key, *loaded.maps));
+    } catch (const std::exception& e) {
+      loaded.warning = cat("environment cache not written (prefiltering again next time): ", e.what());
+    }
+  }
+  loaded.seconds = elapsed();
+  return loaded;
+}
+
+std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request, std::ostream& warnings) {
+  if (request.file.empty()) return std::nullopt;
+  if (!(request.intensity >= 0.0) || !std::isfinite(request.intensity))
+    throw InputError(cat("--environment-intensity ", request.intensity, ": give a finite number ≥ 0"));
+  const LoadedEnvironment loaded = loadEnvironment(request.file, PrefilterSettings{}, environmentCacheFolder());
+  if (!loaded.warning.empty()) warnings << "lenslab: warning: " << loaded.warning << "\n";
+  scene.environment = std::make_shared<const EnvironmentLookup>(
+      loaded.maps, EnvironmentPlacement{request.rotationDegrees, static_cast<float>(request.intensity)});
+  EnvironmentSummary s;
+  s.file = request.file;
+  s.intensity = request.intensity;
+  s.rotationDegrees = request.rotationDegrees;
+  s.widthPx = loaded.maps->background.width;
+  s.heightPx = loaded.maps->background.height;
+  s.specularLevels = loaded.maps->specularLevels();
+  s.fromCache = loaded.fromCache;
+  s.seconds = loaded.seconds;
+  return s;
+}
+
+}  // namespace lenslab

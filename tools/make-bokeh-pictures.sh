@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The aperture's shape where it shows: the bundled `bokeh` scene (lamps 5 to 30 m behind a box in
-# focus at 2 m) through a round aperture, six blades, a 2x anamorphic squeeze and a lens barrel
-# (cat's eye), and at f/8 beside f/1.4; each image cropped to the lamps and labelled with its
-# command's options. About 30 s on two cores.
+# The aperture's shape where it shows: the bundled `bokeh` scene (lamps 5 to 30 m behind a box and
+# three spheres in focus at 2 m, lit by its spot light, its sun and the bundled studio environment)
+# through a round aperture, six blades, a 2x anamorphic squeeze and a lens barrel (cat's eye), and
+# at f/8 beside f/1.4; each image cropped to the lamps and labelled with its command's options.
+# About a minute on two cores.
 # usage: tools/make-bokeh-pictures.sh [build/lenslab]
 set -euo pipefail
 lenslab=${1:-build/lenslab}
@@ -15,6 +16,7 @@ render() {  # NAME CAMERA [OPTIONS...]
   local name=$1 camera=$2
   shift 2
   "$lenslab" render assets/bokeh/bokeh.gltf --camera "assets/bokeh/$camera" --width 720 --aperture-samples 256 \
+    --environment assets/environments/studio.hdr --environment-intensity 0.4 \
     --view-transform pbr-neutral --out "$work/$name.png" -q "$@"
 }
 render round camera.json

@@ -99,9 +99,9 @@ layout(location = 48) uniform vec3 lightIntensity[8];       // colour × lux or 
 layout(location = 56) uniform vec2 lightSpot[8];            // spotScaleOffset
 layout(binding = 2) uniform sampler2D metallicRoughnessTexture;  // linear: G roughness, B metallic
 layout(binding = 3) uniform sampler2D occlusionTexture;          // linear: R
-layout(binding = 9) uniform sampler2D dfgTable;                  // RG32F, kDfgSize², texelFetch only
-
+layout(binding = 9) uniform sampler2D dfgTable;                  // RG32F, kDfgSize², bilinear, clamped
 vec2 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rg; }
+#include "../common/dfg_filtered.glsl"
 #include "../common/brdf.glsl"
 
 // Punctual lights plus the surround, as the ray caster's shadeAlong computes them.
@@ -138,7 +138,7 @@ vec3 shadeLit(vec3 base, vec3 n) {
     ambientDiffuse = environmentDiffuse(e, s.n);
     ambientSpecular = environmentSpecular(e, reflect(-s.v, s.n), s.perceptualRoughness);
   }
-  colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgLookup(dot(s.n, s.v), s.perceptualRoughness));
+  colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgFiltered(dot(s.n, s.v), s.perceptualRoughness));
   return colour;
 }
 

@@ -134,8 +134,10 @@ ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/sc
   glTextureStorage2D(dfgTable_.id(), 1, GL_RG32F, kDfgTableSize, kDfgTableSize);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(dfgTable_.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RG, GL_FLOAT, dfgTable().data());
-  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(dfgTable_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) const {

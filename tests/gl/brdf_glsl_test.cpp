@@ -27,7 +27,8 @@ constexpr int kWidth = 64, kHeight = 64;  // 4096 cases, over 1000 of them lit b
 constexpr int kFloatsPerCase = 32;
 
 // The probe: reads case i from a storage buffer and writes the punctual term (mode 0) or the
-// image-light term (mode 1).
+// image-light term with brdf.glsl's dfgLookup (mode 1) or with the filtered lookup scene.frag
+// uses (mode 2, dfg_filtered.glsl).
 const char* kProbe = R"(#version 450 core
 layout(std430, binding = 0) readonly buffer Cases { float data[]; };
 layout(binding = 9) uniform sampler2D dfgTable;
@@ -35,6 +36,7 @@ layout(location = 0) uniform int mode;
 out vec4 outColor;
 vec2 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rg; }
 #include "../common/brdf.glsl"
+#include "../common/dfg_filtered.glsl"
 vec3 at3(int i) { return vec3(data[i], data[i + 1], data[i + 2]); }
 void main() {
   int k = (int(gl_FragCoord.y) * 64 + int(gl_FragCoord.x)) * 32;  // kWidth, kFloatsPerCase
@@ -53,8 +55,8 @@ void main() {
   l.range = data[k + 25];
   l.spotScale = data[k + 26];
   l.spotOffset = data[k + 27];
-  vec3 c = mode == 0 ? punctualRadiance(s, l, at3(k + 12))
-                     : imageLightRadiance(s, at3(k + 28), vec3(data[k + 31]), dfgLookup(dot(s.n, s.v), s.perceptualRoughness));
+  vec2 dfg = mode == 1 ? dfgLookup(dot(s.n, s.v), s.perceptualRoughness) : dfgFiltered(dot(s.n, s.v), s.perceptualRoughness);
+  vec3 c = mode == 0 ? punctualRadiance(s, l, at3(k + 12)) : imageLightRadiance(s, at3(k + 28), vec3(data[k + 31]), dfg);
   outColor = vec4(c, 1.0);
 }
 )";
@@ -141,6 +143,7 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
   fs::create_directories(dir / "common");
   fs::create_directories(dir / "probe");
   fs::copy_file(source / "common/brdf.glsl", dir / "common/brdf.glsl", fs::copy_options::overwrite_existing);
+  fs::copy_file(source / "common/dfg_filtered.glsl", dir / "common/dfg_filtered.glsl", fs::copy_options::overwrite_existing);
   fs::copy_file(source / "common/fullscreen.vert", dir / "common/fullscreen.vert", fs::copy_options::overwrite_existing);
   std::ofstream(dir / "probe/brdf_probe.frag") << kProbe;
   gl::Program program;
@@ -159,8 +162,10 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
   glTextureStorage2D(table.id(), 1, GL_RG32F, kDfgTableSize, kDfgTableSize);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(table.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RG, GL_FLOAT, dfgTable().data());
-  glTextureParameteri(table.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(table.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(table.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // as ScenePass sets it (texelFetch ignores it)
+  glTextureParameteri(table.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(table.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(table.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glBindTextureUnit(9, table.id());
   glBindSampler(9, 0);
 
@@ -168,7 +173,7 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
   gl::RenderTarget target(kWidth, kHeight);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  for (int mode = 0; mode < 2; ++mode) {
+  for (int mode = 0; mode < 3; ++mode) {
     target.bind();
     glProgramUniform1i(program.id(), 0, mode);
     pass.draw(program);
@@ -195,7 +200,7 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
                                  << ", C++ " << expected[k];
         }
       }
-    std::cout << "[ measure  ] brdf.glsl GLSL vs C++, " << (mode == 0 ? "punctual" : "image light") << ": " << cases.size()
+    std::cout << "[ measure  ] brdf.glsl GLSL vs C++, " << (mode == 0 ? "punctual" : mode == 1 ? "image light" : "image light, filtered DFG") << ": " << cases.size()
               << " random cases (" << lit << " lit), worst relative difference " << worst << "\n";
     EXPECT_GE(lit, 1000) << "the cases must light something";
   }

@@ -72,12 +72,13 @@ TEST(Shader, ExpandsIncludesWithLineDirectives) {
   LENSLAB_REQUIRE_GL();
   const gl::ShaderSource source = gl::loadShaderSource("scene/scene.frag", {"VARIANT_X"});
   // The file itself, then each include in the order met (nested ones where they are included).
-  ASSERT_EQ(source.files.size(), 5u);
+  ASSERT_EQ(source.files.size(), 6u);
   EXPECT_EQ(source.files[0], "scene/scene.frag");
   EXPECT_EQ(source.files[1], "common/material_maps.glsl");
   EXPECT_EQ(source.files[2], "common/environment_textures.glsl");
   EXPECT_EQ(source.files[3], "common/environment.glsl");
-  EXPECT_EQ(source.files[4], "common/brdf.glsl");
+  EXPECT_EQ(source.files[4], "common/dfg_filtered.glsl");
+  EXPECT_EQ(source.files[5], "common/brdf.glsl");
   EXPECT_EQ(source.text.rfind("#version 450 core\n#define VARIANT_X\n", 0), 0u);
   EXPECT_NE(source.text.find("vec3 punctualRadiance("), std::string::npos);
 }

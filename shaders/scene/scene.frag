@@ -2,8 +2,11 @@
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
 // a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
 #include "../common/material_maps.glsl"
-// The environment's lookups, for the image-light term (call them where hasEnvironment is true).
+// The environment's lookups, for the image-light term: only in the ENVIRONMENT variant, built for
+// scenes that have one (ScenePass::selectPrograms), so a scene without pays nothing for them.
+#ifdef ENVIRONMENT
 #include "../common/environment_textures.glsl"
+#endif
 
 // Uniform locations and texture units, by who uses them (scene.vert uses locations 0–1):
 //   2–16      base colour, alpha, the default light, emission (below)
@@ -92,6 +95,11 @@ layout(location = 25) uniform bool hasMetallicRoughnessTexture;
 layout(location = 26) uniform bool hasOcclusionTexture;
 layout(location = 27) uniform float occlusionStrength;
 layout(location = 28) uniform int lightCount;
+// ScenePass compiles the scene's light count in (a loop of known length costs llvmpipe less);
+// other users of this shader get the uniform.
+#ifndef LIGHT_COUNT
+#define LIGHT_COUNT lightCount
+#endif
 // Up to kMaxShadingLights (scene/ShadingLights.h) lights, positions relative to the shading origin.
 layout(location = 32) uniform vec4 lightPositionRange[8];   // xyz position, w range (0: none)
 layout(location = 40) uniform vec4 lightDirectionType[8];   // xyz the way it shines, w LightType
@@ -110,16 +118,21 @@ vec3 shadeLit(vec3 base, vec3 n) {
   s.baseColor = base;
   s.metallic = metallicFactor;
   s.perceptualRoughness = roughnessFactor;
+  s.occlusion = 1.0;
+#ifdef MATERIAL_MAPS
+  // (Only materials with these maps use this variant: llvmpipe would sample them in the plain
+  // program too, for every pixel, even where no material has them.)
   if (hasMetallicRoughnessTexture) {
     vec4 mr = texture(metallicRoughnessTexture, metallicRoughnessUv(), lodBias);
     s.perceptualRoughness *= mr.g;
     s.metallic *= mr.b;
   }
-  s.occlusion = hasOcclusionTexture ? 1.0 + occlusionStrength * (texture(occlusionTexture, occlusionUv(), lodBias).r - 1.0) : 1.0;
+  if (hasOcclusionTexture) s.occlusion = 1.0 + occlusionStrength * (texture(occlusionTexture, occlusionUv(), lodBias).r - 1.0);
+#endif
   s.n = n;
   s.v = parallelView ? towardViewer : normalize(-shadingPosition);
   vec3 colour = vec3(0.0);
-  for (int i = 0; i < lightCount; ++i) {
+  for (int i = 0; i < LIGHT_COUNT; ++i) {
     Light light;
     light.type = int(lightDirectionType[i].w);
     light.intensity = lightIntensity[i];
@@ -133,11 +146,11 @@ vec3 shadeLit(vec3 base, vec3 n) {
   // Light from all around: the environment, prefiltered (environment.glsl), or the uniform surround.
   vec3 ambientDiffuse = vec3(ambient);
   vec3 ambientSpecular = vec3(ambient);
-  if (hasEnvironment) {
-    EnvironmentParams e = environmentParams();
-    ambientDiffuse = environmentDiffuse(e, s.n);
-    ambientSpecular = environmentSpecular(e, reflect(-s.v, s.n), s.perceptualRoughness);
-  }
+#ifdef ENVIRONMENT
+  EnvironmentParams e = environmentParams();
+  ambientDiffuse = environmentDiffuse(e, s.n);
+  ambientSpecular = environmentSpecular(e, reflect(-s.v, s.n), s.perceptualRoughness);
+#endif
   colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgFiltered(dot(s.n, s.v), s.perceptualRoughness));
   return colour;
 }

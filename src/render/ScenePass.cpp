@@ -114,7 +114,7 @@ const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaq
 }  // namespace
 
 bool materialMaps(const Material& m) {
-  if (m.normalTexture.present()) return true;
+  if (m.normalTexture.present() || m.metallicRoughnessTexture.present() || m.occlusionTexture.present()) return true;
   for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture, &m.metallicRoughnessTexture, &m.occlusionTexture})
     if (ref->present() && (ref->texCoord != 0 || ref->uvFromTexCoord != glm::mat3(1.0f))) return true;
   return false;
@@ -128,9 +128,11 @@ bool isNarrowField(const glm::dmat4& clipFromWorld) {
   return w > 0.0 && std::max(rowLength(0), rowLength(1)) > kNarrowFieldSlope * w;
 }
 
-ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/scene.frag")), dfgTable_(gl::Texture::create()) {
-  // The split-sum DFG table (scene/Brdf.h), read by texelFetch: brdf.glsl interpolates it itself,
-  // exactly as the ray caster does.
+// The programs are built on the first draw, for its scene's lighting (selectPrograms).
+ScenePass::ScenePass() : dfgTable_(gl::Texture::create()) {
+  // The split-sum DFG table (scene/Brdf.h), bilinear and clamped: scene.frag reads it by one
+  // filtered lookup (dfg_filtered.glsl), which weighs the texels as brdf.glsl's dfgLookup and the
+  // ray caster do.
   glTextureStorage2D(dfgTable_.id(), 1, GL_RG32F, kDfgTableSize, kDfgTableSize);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(dfgTable_.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RG, GL_FLOAT, dfgTable().data());
@@ -138,6 +140,24 @@ ScenePass::ScenePass() : program_(gl::buildProgram("scene/scene.vert", "scene/sc
   glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(dfgTable_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(dfgTable_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+std::vector<std::string> ScenePass::withVariant(std::vector<std::string> defines) const {
+  if (environmentVariant_) defines.push_back("ENVIRONMENT");
+  if (lightCountVariant_ >= 0) defines.push_back("LIGHT_COUNT " + std::to_string(lightCountVariant_));
+  return defines;
+}
+
+void ScenePass::selectPrograms(bool environment, int lightCount) const {
+  if (environment == environmentVariant_ && lightCount == lightCountVariant_) return;
+  environmentVariant_ = environment;
+  lightCountVariant_ = lightCount;
+  program_ = gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant({}));
+  narrowProgram_.reset();
+  for (auto& row : addPrograms_)
+    for (gl::Program& p : row) p = gl::Program();
+  for (auto& row : mapsPrograms_)
+    for (gl::Program& p : row) p = gl::Program();
 }
 
 void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) const {
@@ -199,8 +219,9 @@ void ScenePass::drawAddedBackground(const GpuEnvironment& env, const glm::dmat4&
 ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
   const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
     if (!slot)
-      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag", defines)
-                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", defines);
+      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
+                                                   withVariant(defines))
+                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
     return slot.id();
   };
   gl::Program* slots = addPrograms_[narrow ? 1 : 0];
@@ -213,8 +234,9 @@ ScenePass::Programs ScenePass::mapsVariant(const char* define, bool narrow, cons
   const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
     defines.push_back("MATERIAL_MAPS");
     if (!slot)
-      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag", defines)
-                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", defines);
+      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
+                                                   withVariant(defines))
+                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
     setLighting(slot.id(), scene, lodBias);
     return slot.id();
   };
@@ -238,9 +260,11 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 
+  selectPrograms(scene.environment != nullptr,
+                 static_cast<int>(std::min(shadingLights(scene, glm::dvec3(0.0)).size(), static_cast<std::size_t>(kMaxShadingLights))));
   const bool narrow = isNarrowField(clipFromWorld);
   if (narrow && !narrowProgram_)
-    narrowProgram_ = gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag");
+    narrowProgram_ = gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag", withVariant({}));
   const GLuint program = narrow ? narrowProgram_->id() : program_.id();
   placeShadingOrigin(scene, clipFromWorld);
   glBindTextureUnit(kDfgUnit, dfgTable_.id());

@@ -71,7 +71,17 @@ class ScenePass {
   void drawAddedBackground(const GpuEnvironment& environment, const glm::dmat4& clipFromWorld,
                            const gl::DrawTarget& target, const glm::vec4& weight) const;
 
-  gl::Program program_;
+  // Builds the programs for the scene's lighting: every scene program is compiled with
+  // ENVIRONMENT where the scene has one (and without its lookups where it has none: llvmpipe runs
+  // a branch's code even when no pixel takes it), and with LIGHT_COUNT, its number of punctual
+  // lights, as a constant (a loop of known length costs llvmpipe less than one bounded by a
+  // uniform). Changing either drops the programs built so far.
+  void selectPrograms(bool environment, int lightCount) const;
+  std::vector<std::string> withVariant(std::vector<std::string> defines) const;
+
+  mutable gl::Program program_;
+  mutable bool environmentVariant_ = false;  // what the programs below were built for
+  mutable int lightCountVariant_ = -1;
   gl::Texture dfgTable_;  // scene/Brdf.h's table, RG32F
   mutable glm::dvec3 shadingOrigin_{0.0};
   mutable glm::vec3 towardViewer_{0.0f, 0.0f, 1.0f};
@@ -86,9 +96,10 @@ class ScenePass {
   mutable std::shared_ptr<const EnvironmentLookup> environmentSource_;
 };
 
-// Whether a material needs scene.frag's MATERIAL_MAPS variant: a normal map, or a texture that
-// samples TEXCOORD_1 or has a uv transform. Materials without keep the plain program, which
-// carries no tangent, no second uv set and no transform (docs/materials.md).
+// Whether a material needs scene.frag's MATERIAL_MAPS variant: a normal, metallic-roughness or
+// occlusion map, or a texture that samples TEXCOORD_1 or has a uv transform. Materials without
+// keep the plain program, which carries no tangent, no second uv set, no transform and no
+// lookups of those maps (docs/materials.md).
 bool materialMaps(const Material& material);
 
 }  // namespace lenslab

@@ -6,6 +6,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Shader.h"
 #include "gl_test_context.h"
+#include "shader_dir_override.h"
 #include "scene/Brdf.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -60,21 +61,6 @@ void main() {
   outColor = vec4(c, 1.0);
 }
 )";
-
-class ShaderDirOverride {
- public:
-  explicit ShaderDirOverride(const fs::path& dir) {
-    if (const char* old = std::getenv("LENSLAB_SHADER_DIR")) old_ = old;
-    setenv("LENSLAB_SHADER_DIR", dir.c_str(), 1);
-  }
-  ~ShaderDirOverride() {
-    if (old_.empty()) unsetenv("LENSLAB_SHADER_DIR");
-    else setenv("LENSLAB_SHADER_DIR", old_.c_str(), 1);
-  }
-
- private:
-  std::string old_;
-};
 
 struct Case {
   ShadingSurface surface;

@@ -2,6 +2,7 @@
 #include "gl/EmbeddedShaders.h"
 #include "gl/Shader.h"
 #include "gl_test_context.h"
+#include "shader_dir_override.h"
 
 #include <gtest/gtest.h>
 
@@ -14,21 +15,6 @@
 namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
-
-class ShaderDirOverride {
- public:
-  explicit ShaderDirOverride(const fs::path& dir) {
-    if (const char* old = std::getenv("LENSLAB_SHADER_DIR")) old_ = old;
-    setenv("LENSLAB_SHADER_DIR", dir.c_str(), 1);
-  }
-  ~ShaderDirOverride() {
-    if (old_.empty()) unsetenv("LENSLAB_SHADER_DIR");
-    else setenv("LENSLAB_SHADER_DIR", old_.c_str(), 1);
-  }
-
- private:
-  std::string old_;
-};
 
 void write(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());

@@ -111,6 +111,20 @@ void refuseFarVertices(const Scene& scene, double seconds) {
     }
 }
 
+// A KHR_lights_punctual light follows its node: it sits at the node's origin and shines along its −Z.
+void placeLight(const Scene& scene, PunctualLight& light, const glm::dmat4& worldFromNode, const AnimatedNode& node, double seconds) {
+  light.worldPosition = glm::dvec3(worldFromNode[3]);
+  const glm::dvec3 shines(worldFromNode * glm::dvec4(0.0, 0.0, -1.0, 0.0));
+  const double length = glm::length(shines);
+  if (length > 0.0 && std::isfinite(length)) {
+    light.worldDirection = shines / length;
+  } else if (light.type != LightType::Point) {
+    // A point light shines every way; the others need a direction, as the loader required at rest.
+    throw InputError(cat(scene.source, ": at ", seconds, " s the animation scales ", nodeName(node),
+                         "'s -Z to nothing, so its light has no direction; capture a shorter time range or fix the animation"));
+  }
+}
+
 }  // namespace
 
 bool SceneAnimation::anyClipMoves() const {
@@ -176,6 +190,7 @@ void poseScene(Scene& scene, double seconds) {
                            " a world transform that is not finite; capture a shorter time range or fix the animation"));
     for (const int k : node.instances) scene.instances[toIndex(k)].worldFromModel = worldFromNode[i];
     for (const int k : node.cameras) scene.cameras[toIndex(k)].worldFromCamera = worldFromNode[i];
+    for (const int k : node.lights) placeLight(scene, scene.lights[toIndex(k)], worldFromNode[i], node, seconds);
   }
   scene.bounds = computeBounds(scene);
   refuseFarVertices(scene, seconds);

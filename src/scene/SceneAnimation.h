@@ -39,6 +39,7 @@ struct AnimatedNode {
   glm::dvec3 scale{1.0};
   std::vector<int> instances;  // indices into Scene::instances placed by this node
   std::vector<int> cameras;    // indices into Scene::cameras placed by this node
+  std::vector<int> lights;     // indices into Scene::lights placed by this node (KHR_lights_punctual)
 };
 
 enum class AnimationPath { Translation, Rotation, Scale };

@@ -305,6 +305,53 @@ TEST_F(AnimationFile, MorphWeightChannelsAreNotPlayedAndNoted) {
   EXPECT_TRUE(mentions(scene, "none of which moves a drawn node")) << testing::PrintToString(scene.notes);
 }
 
+// KHR_lights_punctual lights hang on nodes like meshes and cameras: a spot on a child of a moving,
+// turning parent is where the parent puts it and shines along the child's −Z turned with it.
+TEST_F(AnimationFile, ALightFollowsItsNodeAndItsParent) {
+  AnimatedGltf g;
+  g.gltf["extensionsUsed"] = {"KHR_lights_punctual"};
+  g.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "spot"}, {"intensity", 10.0}, {"spot", json::object()}},
+                                                           {{"type", "point"}, {"intensity", 5.0}}};
+  const int parent = g.node({{"mesh", g.triangle()}});
+  g.node({{"translation", {0, 0, 2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}, parent);
+  g.node({{"translation", {4, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});  // not animated
+  const auto s = static_cast<float>(kHalfSqrt2);
+  g.channel(parent, "translation", "LINEAR", {0, 1}, {0, 0, 0, 10, 0, 0});
+  g.channel(parent, "rotation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, s, 0, s});  // to 90 degrees about +Y
+  Scene scene = load(g);
+  ASSERT_EQ(scene.lights.size(), 2u);
+  expectNear(scene.lights[0].worldPosition, {0, 0, 2}, 1e-12, "spot at rest");
+  expectNear(scene.lights[0].worldDirection, {0, 0, -1}, 1e-12, "spot's direction at rest");
+  poseScene(scene, 1.0);
+  // 90 degrees about +Y takes +Z to +X and −Z to −X: the child's (0, 0, 2) lands at 10 + 2 along x.
+  expectNear(scene.lights[0].worldPosition, {12, 0, 0}, 1e-9, "spot posed");
+  expectNear(scene.lights[0].worldDirection, {-1, 0, 0}, 1e-9, "spot's direction posed");
+  expectNear(scene.lights[1].worldPosition, {4, 0, 0}, 1e-12, "the still point light");
+  poseScene(scene, 0.0);
+  expectNear(scene.lights[0].worldPosition, {0, 0, 2}, 1e-12, "spot back at rest");
+}
+
+TEST_F(AnimationFile, ALightWhoseNodeIsScaledToNothingIsRefusedNamingNodeAndTime) {
+  AnimatedGltf g;
+  g.gltf["extensionsUsed"] = {"KHR_lights_punctual"};
+  g.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}}};
+  g.node({{"mesh", g.triangle()}});
+  const int sun = g.node({{"name", "sun"}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  g.channel(sun, "scale", "LINEAR", {0, 1}, {1, 1, 1, 0, 0, 0});
+  Scene scene = load(g);
+  poseScene(scene, 0.5);
+  EXPECT_NEAR(glm::length(scene.lights[0].worldDirection), 1.0, 1e-12);
+  try {
+    poseScene(scene, 1.0);
+    FAIL() << "a directional light with no direction was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("node 1 (sun)"), std::string::npos) << message;
+    EXPECT_NE(message.find("at 1 s"), std::string::npos) << message;
+    EXPECT_NE(message.find("no direction"), std::string::npos) << message;
+  }
+}
+
 TEST_F(AnimationFile, KeyTimesThatDoNotIncreaseAreRefused) {
   AnimatedGltf g;
   const int node = g.node({{"mesh", g.triangle()}});

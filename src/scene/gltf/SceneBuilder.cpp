@@ -98,7 +98,7 @@ class SceneBuilder {
 
   // Depth first, without recursion (a hierarchy may be deeper than the stack): the checks made
   // it a forest, so each node is met once. Each placed node is also listed in scene.animation.nodes
-  // (parents first), with the instances and cameras it places, for poseScene.
+  // (parents first), with the instances, cameras and lights it places, for poseScene.
   void placeNodes(const std::vector<int>& roots) {
     std::vector<std::tuple<int, glm::dmat4, int>> pending;  // node, worldFromParent, the parent's slot
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.emplace_back(*it, glm::dmat4(1.0), -1);
@@ -134,16 +134,18 @@ class SceneBuilder {
       scene_.cameras.back().gltfNode = placed.gltfNode;
     }
     if (node.skin >= 0) noteOnce(scene_.notes, "skins are ignored: skinned meshes are drawn in their bind pose");
-    placeLight(node, worldFromNode, placed.gltfNode);
+    placeLight(node, worldFromNode, placed);
   }
 
-  // KHR_lights_punctual: a light at its node's rest placement (animation moves no light).
-  void placeLight(const tinygltf::Node& node, const glm::dmat4& worldFromNode, int nodeIndex) {
+  // KHR_lights_punctual: a light at its node's rest placement (poseScene moves it with its node).
+  void placeLight(const tinygltf::Node& node, const glm::dmat4& worldFromNode, AnimatedNode& placed) {
+    const int nodeIndex = placed.gltfNode;
     std::optional<PunctualLight> light = placedLight(model_, node, nodeIndex, worldFromNode);
     if (!light) return;
     if (scene_.lights.size() >= static_cast<std::size_t>(kMaxShadingLights))
       refuse("node ", nodeIndex, " places a KHR_lights_punctual light beyond the ", kMaxShadingLights,
              " lenslab shades; place at most ", kMaxShadingLights, " lights in the drawn scene");
+    placed.lights.push_back(static_cast<int>(scene_.lights.size()));
     scene_.lights.push_back(std::move(*light));
   }
 

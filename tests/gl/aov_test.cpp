@@ -4,6 +4,7 @@
 // shaded; the glTF node indices of two triangles over the pixels whose centre rays meet them,
 // found here by intersecting those rays with the triangles; the base colour factor as the albedo.
 #include "../common/animated_gltf.h"
+#include "../common/looking_at.h"
 #include "../common/temp_dir_test.h"
 #include "camera/PhysicalCamera.h"
 #include "core/Error.h"
@@ -20,36 +21,10 @@
 
 namespace lenslab {
 namespace {
-
-struct Frame {
-  glm::dvec3 forward, right, up;
-};
-Frame frameOf(const PhysicalCamera& c) {
-  Frame f;
-  f.forward = glm::normalize(c.target - c.eye);
-  f.right = glm::normalize(glm::cross(f.forward, c.up));
-  f.up = glm::cross(f.right, f.forward);
-  return f;
-}
-
-PhysicalCamera lookingAt(const glm::dvec3& eye, const glm::dvec3& target) {
-  PhysicalCamera c;
-  c.eye = eye;
-  c.target = target;
-  c.fNumber = 2.0;  // a thin lens: the AOVs are still taken along the lens centre's ray
-  c.focusDistance = std::numeric_limits<double>::infinity();
-  return c;
-}
-
-// The direction through pixel centre (x, y) of a camera focused at infinity (the window is the
-// sensor seen at the focal length), in world space.
-glm::dvec3 pixelDirection(const PhysicalCamera& c, int x, int y, ImageSize size) {
-  const Frame f = frameOf(c);
-  const double fx = c.focalLengthMm / c.sensorMm.x * size.widthPx;
-  const double fy = c.focalLengthMm / c.sensorMm.y * size.heightPx;
-  const double nx = (x + 0.5 - 0.5 * size.widthPx) / fx, ny = (y + 0.5 - 0.5 * size.heightPx) / fy;
-  return f.forward + nx * f.right - ny * f.up;
-}
+using test::Frame;
+using test::frameOf;
+using test::lookingAt;
+using test::pixelDirection;
 
 // A double-sided unlit quad 200 × 200 through `point` with unit normal `normal` (its front side).
 Scene planeScene(const glm::dvec3& point, const glm::dvec3& normal) {

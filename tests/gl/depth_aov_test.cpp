@@ -2,6 +2,7 @@
 // distance along the optical axis from the lens centre to where each pixel's centre ray meets the
 // plane. The expected rays are built here from the physical camera alone (sensor, focal length,
 // pixel grid; OpenCV's projection for distortion), not from lenslab's camera code.
+#include "../common/looking_at.h"
 #include "camera/PhysicalCamera.h"
 #include "raycast/RayCaster.h"
 #include "scene/ProceduralScenes.h"
@@ -14,6 +15,10 @@
 
 namespace lenslab {
 namespace {
+using test::Frame;
+using test::frameOf;
+using test::lookingAt;
+using test::normalisedCentre;
 
 struct Plane {
   glm::dvec3 point;
@@ -33,40 +38,11 @@ Scene planeScene(const Plane& plane, double half, const glm::dvec3& sideways = g
   return scene;
 }
 
-struct Frame {
-  glm::dvec3 forward, right, up;
-};
-Frame frameOf(const PhysicalCamera& c) {
-  Frame f;
-  f.forward = glm::normalize(c.target - c.eye);
-  f.right = glm::normalize(glm::cross(f.forward, c.up));
-  f.up = glm::cross(f.right, f.forward);
-  return f;
-}
-
-// The direction through pixel centre (x, y) of a width × height image, for a camera focused at
-// infinity (the window is the sensor seen at the focal length), in normalised image coordinates
-// (x right, y down, OpenCV's) before any distortion.
-glm::dvec2 normalisedCentre(const PhysicalCamera& c, int x, int y, int width, int height) {
-  const double fx = c.focalLengthMm / c.sensorMm.x * width;
-  const double fy = c.focalLengthMm / c.sensorMm.y * height;
-  return {(x + 0.5 - 0.5 * width) / fx, (y + 0.5 - 0.5 * height) / fy};
-}
-
 double analyticDepth(const PhysicalCamera& c, const Plane& plane, glm::dvec2 normalised) {
   const Frame f = frameOf(c);
   const glm::dvec3 direction = f.forward + normalised.x * f.right - normalised.y * f.up;
   const double t = glm::dot(plane.point - c.eye, plane.normal) / glm::dot(direction, plane.normal);
   return glm::dot(t * direction, f.forward);
-}
-
-PhysicalCamera lookingAt(const glm::dvec3& eye, const glm::dvec3& target) {
-  PhysicalCamera c;
-  c.eye = eye;
-  c.target = target;
-  c.fNumber = 2.0;  // a thin lens: depth is still taken from the lens centre
-  c.focusDistance = std::numeric_limits<double>::infinity();
-  return c;
 }
 
 constexpr int kWidth = 96;

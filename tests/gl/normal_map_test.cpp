@@ -2,6 +2,7 @@
 // constant tilted normal map is shaded (and its normal AOV reads) like a plane actually tilted
 // that way; a texture with KHR_texture_transform (offset, rotation, scale) on TEXCOORD_1 shows,
 // at each pixel, the texel the transform's formula picks.
+#include "../common/looking_at.h"
 #include "camera/PhysicalCamera.h"
 #include "camera/Projection.h"
 #include "gl_test_context.h"
@@ -24,35 +25,10 @@
 
 namespace lenslab {
 namespace {
-
-PhysicalCamera lookingAt(const glm::dvec3& eye, const glm::dvec3& target) {
-  PhysicalCamera c;
-  c.eye = eye;
-  c.target = target;
-  c.fNumber = 2.0;
-  c.focusDistance = std::numeric_limits<double>::infinity();
-  return c;
-}
-
-struct Frame {
-  glm::dvec3 forward, right, up;
-};
-Frame frameOf(const PhysicalCamera& c) {
-  Frame f;
-  f.forward = glm::normalize(c.target - c.eye);
-  f.right = glm::normalize(glm::cross(f.forward, c.up));
-  f.up = glm::cross(f.right, f.forward);
-  return f;
-}
-
-// The direction through pixel centre (x, y) of a camera focused at infinity, in world space.
-glm::dvec3 pixelDirection(const PhysicalCamera& c, int x, int y, ImageSize size) {
-  const Frame f = frameOf(c);
-  const double fx = c.focalLengthMm / c.sensorMm.x * size.widthPx;
-  const double fy = c.focalLengthMm / c.sensorMm.y * size.heightPx;
-  const double nx = (x + 0.5 - 0.5 * size.widthPx) / fx, ny = (y + 0.5 - 0.5 * size.heightPx) / fy;
-  return f.forward + nx * f.right - ny * f.up;
-}
+using test::Frame;
+using test::frameOf;
+using test::lookingAt;
+using test::pixelDirection;
 
 // The raster image of a pinhole camera, `views` sub-pixel-jittered views.
 Image raster(const Scene& scene, Camera camera, ImageSize size, int views) {

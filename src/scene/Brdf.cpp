@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 
 namespace lenslab {
 
@@ -56,20 +57,25 @@ glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
 }
 
 const std::vector<glm::vec2>& table() {
+  static constexpr float kValues[] = {
+#include "scene/DfgTableValues.inc"
+  };
+  static_assert(std::size(kValues) == 2 * kDfgTableSize * kDfgTableSize);
   static const std::vector<glm::vec2> t = [] {
     std::vector<glm::vec2> values(static_cast<std::size_t>(kDfgTableSize * kDfgTableSize));
-    for (int y = 0; y < kDfgTableSize; ++y)
-      for (int x = 0; x < kDfgTableSize; ++x) {
-        const float nv = (static_cast<float>(x) + 0.5f) / kDfgTableSize;
-        const float roughness = (static_cast<float>(y) + 0.5f) / kDfgTableSize;
-        values[static_cast<std::size_t>(y * kDfgTableSize + x)] = dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples);
-      }
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = {kValues[2 * i], kValues[2 * i + 1]};
     return values;
   }();
   return t;
 }
 
 }  // namespace
+
+glm::vec2 dfgTexelIntegral(int x, int y) {
+  const float nv = (static_cast<float>(x) + 0.5f) / kDfgTableSize;
+  const float roughness = (static_cast<float>(y) + 0.5f) / kDfgTableSize;
+  return dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples);
+}
 
 glm::vec2 dfgIntegral(float nv, float alpha, int samples) {
   // n = +z, v in the xz plane. Half vectors drawn from D(h)·(n·h), so that the sample weight of

@@ -41,7 +41,8 @@ glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadia
 // The split-sum DFG table: kDfgTableSize² texels (x: n·v, y: perceptual roughness, at texel
 // centres (i + ½)/size), each (A, B) with directional albedo E = F0·A + B of the GGX specular lobe
 // with height-correlated Smith visibility. Importance-sampled (GGX half vectors at a fixed
-// Hammersley set of kDfgSamples points), computed once on first use; deterministic.
+// Hammersley set of kDfgSamples points): dfgTexelIntegral, baked into the source by
+// tools/update-dfg-table.sh (src/scene/DfgTableValues.inc), so no run computes it.
 constexpr int kDfgTableSize = 32;
 constexpr int kDfgSamples = 1024;
 const std::vector<glm::vec2>& dfgTable();  // row by row: index y · size + x
@@ -50,5 +51,7 @@ glm::vec2 dfgLookup(float nv, float perceptualRoughness);
 // The table's integral computed directly at (n·v, α) with `samples` samples (tests measure the
 // table's interpolation error against it).
 glm::vec2 dfgIntegral(float nv, float alpha, int samples);
+// What texel (x, y) of the table stands for: dfgIntegral at its centre with kDfgSamples samples.
+glm::vec2 dfgTexelIntegral(int x, int y);
 
 }  // namespace lenslab

@@ -8,7 +8,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 namespace lenslab {
 namespace {
@@ -109,6 +112,25 @@ TEST(Brdf, DfgTableMatchesTheBrdfItSummarises) {
       EXPECT_NEAR(looked.x, direct.x, 0.01f) << roughness << " " << nv;
       EXPECT_NEAR(looked.y, direct.y, 0.01f) << roughness << " " << nv;
     }
+}
+
+// The table is baked into the source (src/scene/DfgTableValues.inc). Each texel must still be the
+// integral it stands for, with the BRDF as it is now: after a change to brdf.glsl's visibility or
+// Fresnel this fails until tools/update-dfg-table.sh is run. (1e-6: libm's last bits may differ
+// between CPUs; a change to the BRDF moves the integral by far more.)
+TEST(DfgTable, BakedValuesAreTheIntegralTheyStandFor) {
+  const std::vector<glm::vec2>& baked = dfgTable();
+  ASSERT_EQ(baked.size(), static_cast<std::size_t>(kDfgTableSize * kDfgTableSize));
+  double worst = 0.0;
+  for (int y = 0; y < kDfgTableSize; ++y)
+    for (int x = 0; x < kDfgTableSize; ++x) {
+      const glm::vec2 integral = dfgTexelIntegral(x, y);
+      const glm::vec2 value = baked[static_cast<std::size_t>(y * kDfgTableSize + x)];
+      worst = std::max({worst, double(std::abs(value.x - integral.x)), double(std::abs(value.y - integral.y))});
+      ASSERT_NEAR(value.x, integral.x, 1e-6) << "texel (" << x << ", " << y << "): run tools/update-dfg-table.sh";
+      ASSERT_NEAR(value.y, integral.y, 1e-6) << "texel (" << x << ", " << y << "): run tools/update-dfg-table.sh";
+    }
+  std::printf("baked DFG table vs its integral: worst difference %.2g\n", worst);
 }
 
 // Appendix B's closed form, computed here in double, independently of brdf.glsl.

@@ -4,6 +4,7 @@
 #include "core/ParseNumber.h"
 #include "core/Text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -44,6 +45,29 @@ class RowReader {
   int line_;
   int row_;
 };
+
+// The axial offset of a surface at height r from its vertex (0 for a plane or the stop).
+double sagMm(const LensSurface& s, double r) {
+  if (s.isStop() || s.isPlane()) return 0.0;
+  const double radius = s.radiusMm;
+  return radius - std::copysign(std::sqrt(std::max(0.0, radius * radius - r * r)), radius);
+}
+
+// Two neighbouring surfaces must not cross within the smaller clear aperture: an element (or an
+// air gap) cannot be thinner than nothing at its edge. A file whose second column holds each
+// surface's distance from the one before (a shifted column) is refused on its first row already.
+void refuseCrossingSurfaces(const LensPrescription& lens) {
+  for (std::size_t i = 0; i + 1 < lens.surfaces.size(); ++i) {
+    const LensSurface& a = lens.surfaces[i];
+    const LensSurface& b = lens.surfaces[i + 1];
+    const double r = 0.5 * std::min(a.apertureMm, b.apertureMm);
+    const double edge = a.thicknessMm + sagMm(b, r) - sagMm(a, r);
+    if (edge < -1e-9 * std::max(1.0, r))
+      throw InputError(cat(lens.source, ": rows ", i + 1, " and ", i + 2, " (lines ", a.line, " and ", b.line,
+                           ") cross inside their clear aperture: ", a.thicknessMm, " mm apart on the axis but ", edge,
+                           " mm at a height of ", r, " mm; column 2 (thickness_mm) is the distance from each surface to the next"));
+  }
+}
 
 }  // namespace
 
@@ -107,6 +131,9 @@ LensPrescription parseLensPrescription(std::string_view text, const std::string&
     s.apertureMm = r.number(f[3], 3);
     s.abbeAfter = f.size() == 5 ? r.number(f[4], 4) : 0.0;
     if (s.thicknessMm < 0.0) r.refuse(1, cat(s.thicknessMm, " is negative; give the axial distance to the next surface, >= 0"));
+    // (A file whose second column is each surface's distance from the one before starts so.)
+    if (s.thicknessMm == 0.0 && r.number(f[2], 2) > 1.0)
+      r.refuse(1, "0 for a glass: an element needs a centre thickness > 0 (the column is the distance to the next surface)");
     if (s.indexAfter == 0.0) s.indexAfter = 1.0;  // pbrt's files: 0 on the stop row, meaning air
     if (!(s.indexAfter >= 1.0 && s.indexAfter <= 4.0))
       r.refuse(2, cat(s.indexAfter, " is not a refractive index; give n_d in [1, 4], or 0 or 1 for air"));
@@ -133,6 +160,7 @@ LensPrescription parseLensPrescription(std::string_view text, const std::string&
   if (lens.surfaces.back().indexAfter != 1.0)
     throw InputError(cat(source, ": row ", lens.surfaces.size(), " (line ", lens.surfaces.back().line,
                          "), column 3 (index): the last surface must leave the light in air (0 or 1), toward the film"));
+  refuseCrossingSurfaces(lens);
   if (withAbbe != 0 && withAbbe != glassRows)
     throw InputError(cat(source, ": ", withAbbe, " of ", glassRows,
                          " glass rows give an Abbe number (column 5); give one on every glass row, or on none"));

@@ -75,11 +75,12 @@ std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ra
     if (!hit) return std::nullopt;
     r.origin = hit->point;
     if (s.isStop()) {
+      if (options.endAtStop) return r;
       const double diameter = options.stopDiameterMm.value_or(s.apertureMm);
       if (hit->point.x * hit->point.x + hit->point.y * hit->point.y > 0.25 * diameter * diameter) return std::nullopt;
       continue;
     }
-    if (!hit->withinAperture) return std::nullopt;
+    if (!hit->withinAperture && !options.ignoreRims) return std::nullopt;
     const double before = index(lens.indexBefore(i), i == 0 ? 0.0 : lens.surfaces[i - 1].abbeAfter);
     const double after = index(s.indexAfter, s.abbeAfter);
     const std::optional<glm::dvec3> d = refract(r.direction, hit->normal, toScene ? after : before, toScene ? before : after);

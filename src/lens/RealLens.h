@@ -46,6 +46,10 @@ std::optional<glm::dvec3> refract(const glm::dvec3& incident, const glm::dvec3& 
 struct LensTrace {
   std::optional<double> stopDiameterMm;
   double wavelengthNm = kLineDNm;
+  // Analysis only: no rim stops the ray (the stop still does unless `endAtStop`).
+  bool ignoreRims = false;
+  // Analysis only: end at the stop's plane, returning where the ray meets it (unclipped).
+  bool endAtStop = false;
 };
 std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ray, bool toScene, const LensTrace& options = {});
 

@@ -93,7 +93,7 @@ LENSLAB_PROGRESS_SECONDS=soon expect_refusal "bad progress interval" "LENSLAB_PR
 
 # ---- B1. a mistyped command or option: the nearest name ----
 expect_refusal "unknown command" 'unknown command "rendr"; did you mean "render"? (see --help)' -- rendr --out "$work/out.png"
-expect_refusal "unknown command, nothing near" 'unknown command "paint"; the commands are render, raycast, capture, sweep, info, view' -- paint
+expect_refusal "unknown command, nothing near" 'unknown command "paint"; the commands are render, raycast, capture, sweep, info, lens, view' -- paint
 expect_refusal "unknown option" 'render: unknown option --widht; did you mean --width? (see lenslab render --help)' -- render --widht 64 --out "$work/out.png"
 expect_refusal "unknown option with a value" 'unknown option --focus-distanse; did you mean --focus-distance?' -- view --focus-distanse=3
 expect_refusal "another command's option" 'render: unknown option --spp: raycast takes it, render does not' -- render --spp 4 --out "$work/out.png"

@@ -38,7 +38,7 @@ ThickLens thickLens(double r1, double r2, double t, double n) {
 
 TEST(LensPrescription, ReadsRowsCommentsAndPbrtsStopRow) {
   const LensPrescription lens = parseLensPrescription(
-      "# Test design\n#   radius thickness index aperture\n29.475\t3.76\t1.67\t25.2\n84.83 0.12 1 25.2 # air gap\n\n"
+      "# Test design\n#   radius thickness index aperture\n29.475\t3.76\t1.67\t25.2\n84.83 2 1 25.2 # air gap\n\n"
       "0 4.5 0 17.1\n-14.495 1.18 1.603 17\n-40 0 1 17\n",
       "test.dat");
   ASSERT_EQ(lens.surfaces.size(), 5u);
@@ -46,7 +46,7 @@ TEST(LensPrescription, ReadsRowsCommentsAndPbrtsStopRow) {
   EXPECT_EQ(lens.stopIndex(), 2u);
   EXPECT_EQ(lens.surfaces[2].indexAfter, 1.0);  // pbrt's 0 on the stop row is air
   EXPECT_EQ(lens.surfaces[3].line, 7);
-  EXPECT_DOUBLE_EQ(lens.vertexMm(3), 3.76 + 0.12 + 4.5);
+  EXPECT_DOUBLE_EQ(lens.vertexMm(3), 3.76 + 2.0 + 4.5);
   EXPECT_FALSE(lens.hasDispersion());
 }
 
@@ -63,12 +63,25 @@ TEST(LensPrescription, BadRowsAreRefusedNamingRowLineAndColumn) {
   EXPECT_NE(refusal("0 2 0 10\n5 5 1.5 20\n-50 0 1 20\n").find("row 2 (line 2), column 1 (radius_mm)"), std::string::npos);
   EXPECT_NE(refusal("50 5 1.5 20\n-50 0 1 20\n").find("0 rows have radius 0"), std::string::npos);
   EXPECT_NE(refusal("0 1 0 10\n0 2 0 10\n50 5 1.5 20\n-50 0 1 20\n").find("2 rows have radius 0"), std::string::npos);
-  EXPECT_NE(refusal("0 2 0 10\n50 5 1.5 20\n-50 0 1.5 20\n").find("the last surface must leave the light in air"),
+  EXPECT_NE(refusal("0 2 0 10\n50 5 1.5 20\n-50 1 1.5 20\n").find("the last surface must leave the light in air"),
             std::string::npos);
   EXPECT_NE(refusal("0 2 0 10\n50 5 1.5 20 64\n-50 2 1.6 20\n-80 0 1 20\n").find("1 of 2 glass rows give an Abbe number"),
             std::string::npos);
   EXPECT_NE(refusal("0 2 0 10\n50 5 1 20 64\n-50 0 1 20\n").find("column 5 (abbe): air has no Abbe number"), std::string::npos);
   EXPECT_NE(refusal("0 2 0 10 3\n").find("column 5 (abbe)"), std::string::npos);
+}
+
+// A file whose second column is each surface's distance from the one before (a shifted column)
+// gives its first glass no thickness; surfaces that cross within the aperture are refused too.
+TEST(LensPrescription, ElementsOfNoThicknessOrCrossingSurfacesAreRefused) {
+  EXPECT_EQ(refusalOf([] { parseLensPrescription("163.579 0 1.540 107.8\n53.169 5.529 1.0 81.8\n0 10 0 39.8\n-54.424 0 1.0 81.8\n", "shifted.dat"); }),
+            "shifted.dat: row 1 (line 1), column 2 (thickness_mm): 0 for a glass: an element needs a centre thickness > 0 (the column is "
+            "the distance to the next surface)");
+  const std::string crossing = refusalOf([] { parseLensPrescription("50 1 1.5 40\n-50 3 1 40\n0 0 0 10\n", "crossing.dat"); });
+  EXPECT_NE(crossing.find("crossing.dat: rows 1 and 2 (lines 1 and 2) cross inside their clear aperture: 1 mm apart on the axis but"),
+            std::string::npos) << crossing;
+  EXPECT_EQ(refusalOf([] { parseLensPrescription("163.579 5.529 1.540 107.8\n53.169 10 1.0 81.8\n0 10 0 39.8\n-54.424 0 1.0 81.8\n", "ok"); }),
+            "accepted");
 }
 
 TEST(ParaxialLens, ThickSingletFollowsTheLensmakersEquation) {

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# `lenslab lens` as a user meets it (docs/lenses.md): each bundled prescription described, as text
+# and as JSON whose numbers agree with the design; bad files and options refused in one line.
+# usage: lens_test.sh path/to/lenslab source-dir
+set -u
+lenslab=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/test_lib.sh"
+python=/usr/bin/python3
+lenses=$src/assets/lenses
+holds() { $python -c "import json,sys,math; j=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1"; }
+check() { if "$@"; then pass; else fail "$*"; fi; }
+refused() { if one_line_error "$@"; then pass; fi; }
+
+# --- every bundled lens, text and JSON ---
+for lens in double-gauss-50mm telephoto-250mm wide-angle-28mm fisheye-10mm; do
+  sensor=36x24
+  [ "$lens" = fisheye-10mm ] && sensor=18x18
+  if "$lenslab" lens "$lenses/$lens.lens" --sensor "$sensor" >"$work/$lens.txt" 2>"$work/err"; then
+    check grep -q '^focal length' "$work/$lens.txt"
+    check grep -q '^field of view' "$work/$lens.txt"
+  else
+    fail "$lens: $(cat "$work/err")"
+  fi
+  if "$lenslab" lens "$lenses/$lens.lens" --sensor "$sensor" --json >"$work/$lens.json" 2>"$work/err"; then
+    focal=${lens##*-}
+    focal=${focal%mm}
+    check holds "$work/$lens.json" "abs(j['focal_length_mm'] / $focal - 1) < 0.015 and len(j['field']) == 11 and j['field'][0]['relative_illumination'] == 1"
+  else
+    fail "$lens --json: $(cat "$work/err")"
+  fi
+done
+check holds "$work/fisheye-10mm.json" "'equidistant_fit' in j and j['equidistant_fit']['rms_error_percent'] < 1"
+check holds "$work/double-gauss-50mm.json" "'equidistant_fit' not in j and 2.0 < j['f_number'] < 2.1"
+
+# Stopped down and focused close: the working f-number grows with the magnification.
+if "$lenslab" lens "$lenses/double-gauss-50mm.lens" --f-number 8 --focus-mm 500 --json >"$work/close.json" 2>"$work/err"; then
+  check holds "$work/close.json" "abs(j['f_number'] - 8) < 1e-6 and j['working_f_number'] > 8.5 and j['magnification'] < 0"
+else
+  fail "close focus: $(cat "$work/err")"
+fi
+
+# --- refusals ---
+printf '0 2 0 10\n50 x 1.5 20\n-50 0 1 20\n' >"$work/bad.lens"
+refused "bad number" "bad.lens: row 2 (line 2), column 2 (thickness_mm): 'x' is not a number" -- lens "$work/bad.lens"
+refused "missing file" "no-such.lens" -- lens "$work/no-such.lens"
+refused "beyond the image circle" "the lens covers a circle of" -- lens "$lenses/fisheye-10mm.lens"
+refused "f-number too fast" "f/1 needs a stop of" -- lens "$lenses/double-gauss-50mm.lens" --f-number 1
+refused "bad sensor" "--sensor" -- lens "$lenses/double-gauss-50mm.lens" --sensor 36
+refused "focus too close" "no real image" -- lens "$lenses/double-gauss-50mm.lens" --focus-mm 100
+
+echo "lens: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

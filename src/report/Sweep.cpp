@@ -78,8 +78,9 @@ void addLight(Hash& h, const PunctualLight& l) {
 // The environment both renderers light with and show: every map's pixels (the source image is
 // the background, so its contents; the prefiltered levels, so the prefilter settings too), the
 // intensity and the rotation. The pixels, not the file's name or bytes: the scene holds the maps,
-// and the same pixels light alike whatever file they came from. (studio.hdr, 1024 × 512, hashes
-// in a few milliseconds, nothing beside the reference's seconds.)
+// and the same pixels light alike whatever file they came from. (studio.hdr's maps, 8.3 MB, take
+// 60–80 ms of byte-wise FNV-1a on the shared 2-core machine, once a sweep: small beside the
+// reference, which takes seconds to minutes.)
 void addEnvironment(Hash& h, const EnvironmentLookup* environment) {
   const int present = environment != nullptr;
   h.add(&present, sizeof present);

@@ -1,6 +1,7 @@
 // lenslab sweep: error against run time for every method, against the ray-cast reference.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "app/EnvironmentOptions.h"
 #include "core/Clock.h"
 #include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
@@ -41,6 +42,7 @@ struct SweepCommandOptions {
   LensOptions lens;
   CameraOptions camera;  // the lens, pose and glTF camera; no clip (a sweep draws the rest pose)
   std::optional<glm::vec3> background;
+  EnvironmentRequest environment;
   SweepOptions sweep;
   bool quiet = false;
 };
@@ -69,6 +71,7 @@ int runSweepCommand(SweepCommandOptions& o) {
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera-dof.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
+  const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
   const Camera camera =
       withDepthRangeFitted(applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens).camera, scene.bounds);
   // About 320 wide unless a side is given (the reference is costly); a height alone sets the
@@ -117,6 +120,9 @@ int runSweepCommand(SweepCommandOptions& o) {
   const std::string header = cat(
       "# Error against run time: ", scenePath.filename().string(), "\n\n",
       "- scene `", scenePath.string(), "`, camera ", camera.source, ", ", size.widthPx, "x", size.heightPx, "\n",
+      environment ? cat("- environment `", environment->file, "`, intensity ", environment->intensity, ", rotation ",
+                        environment->rotationDegrees, "°\n")
+                  : std::string(),
       "- renderer: ", context->renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
       "- reference: ray cast at ", o.sweep.referenceSpp, " spp",
       result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"),
@@ -181,6 +187,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
       ->check(CLI::IsMember(sweepSeriesNames()))
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
+  addEnvironmentOptions(*cmd, o->environment);
   addCameraOptions(*cmd, o->camera, /*withPose=*/true, /*withAnimation=*/false);
   cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)")
       ->check(numberOrInfinity({.unit = "world units"}));

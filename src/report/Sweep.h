@@ -88,7 +88,8 @@ struct SweepResult {
 SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& options);
 
 // The key a cached ray-cast reference is stored under: a hash of everything the reference
-// depends on (geometry, materials, textures, lights, camera, size, samples), so that a cached
+// depends on (geometry, materials, textures, lights, the environment's maps, intensity and
+// rotation, camera, size, samples), so that a cached
 // reference is never reused for another scene.
 std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& options);
 

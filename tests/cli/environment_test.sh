@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The environment as a user meets it (docs/environment.md): --environment, --environment-intensity
-# and --environment-rotation on render, raycast and capture; bad files and values refused in one
+# and --environment-rotation on render, raycast, capture and sweep; bad files and values refused in one
 # line naming the file or option, with no output written; the prefiltered maps cached under
 # $XDG_CACHE_HOME/lenslab (a second run a hit, a corrupt entry recomputed, an unwritable folder a
 # warning only); --stats reporting it; no environment, no change.
@@ -82,6 +82,28 @@ check test -f "$work/cap/frame_0000.exr"
 check $python -c "import json,sys; l=json.loads(open(sys.argv[1]).readline()); sys.exit(0 if l['environment']['file'].endswith('studio.hdr') else 1)" "$work/cap/manifest.jsonl"
 "$lenslab" render --width 64 -q --out "$work/plain.exr" --stats "$work/plain.json" 2>/dev/null
 check holds "$work/plain.json" '"environment" not in j'
+
+# --- sweep takes it: the report names it, and its reference cache is kept apart per environment ---
+sweep_args=(sweep --camera "$src/assets/rows/camera-dof.json" --width 24 --reference-spp 2 --max-views 2 --methods concentric -q)
+expect_refusal "sweep intensity" "--environment-intensity" -- \
+  "${sweep_args[@]}" --environment "$studio" --environment-intensity -1 --out "$work/out.sweep"
+expect_refusal "sweep square" "square.exr: the environment is 16 × 16" -- \
+  "${sweep_args[@]}" --environment "$work/square.exr" --out "$work/out.sweep"
+if "$lenslab" "${sweep_args[@]}" --environment "$studio" --environment-intensity 2 --environment-rotation 90 --out "$work/sw" 2>/dev/null &&
+  [ -s "$work/sw/sweep.csv" ] && grep -q "^raster,concentric," "$work/sw/sweep.csv" &&
+  grep -q "environment .*studio.hdr.*intensity 2, rotation 90" "$work/sw/sweep.md" && ! grep -q "from the cache" "$work/sw/sweep.md"; then
+  pass
+else
+  fail "sweep --environment: $(ls "$work/sw" 2>&1)"
+fi
+# The same environment again: the cached reference; another rotation or none: a new one.
+"$lenslab" "${sweep_args[@]}" --environment "$studio" --environment-intensity 2 --environment-rotation 90 --out "$work/sw" 2>/dev/null
+check grep -q "from the cache" "$work/sw/sweep.md"
+"$lenslab" "${sweep_args[@]}" --environment "$studio" --environment-intensity 2 --environment-rotation 91 --out "$work/sw" 2>/dev/null
+if ! grep -q "from the cache" "$work/sw/sweep.md"; then pass; else fail "sweep: another rotation reused the reference"; fi
+"$lenslab" "${sweep_args[@]}" --out "$work/sw" 2>/dev/null
+if ! grep -q "from the cache" "$work/sw/sweep.md" && ! grep -q "environment" "$work/sw/sweep.md"; then pass
+else fail "sweep without an environment reused the reference or named one"; fi
 
 echo "environment cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

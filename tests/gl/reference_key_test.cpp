@@ -3,6 +3,7 @@
 // another key. (No GL needed; it lives beside the sweep, in the GL tests' executable.)
 #include "io/CameraJson.h"
 #include "report/Sweep.h"
+#include "scene/EnvironmentPrefilter.h"
 #include "scene/GltfLoader.h"
 
 #include <gtest/gtest.h>
@@ -52,6 +53,50 @@ TEST(ReferenceKey, ChangesWithEveryShadingInput) {
     keys.insert(key);
   }
   EXPECT_EQ(keys.size(), std::size(changes) + 1) << "every change its own key";
+}
+
+// A small environment, prefiltered quickly: `tint` scales one texel, so that two differ in one pixel.
+std::shared_ptr<const PrefilteredEnvironment> smallEnvironment(float tint) {
+  EnvironmentImage image{16, 8, std::vector<glm::vec3>(16 * 8, glm::vec3(0.5f, 0.6f, 0.7f))};
+  image.at(3, 2) *= tint;
+  PrefilterSettings settings;
+  settings.diffuseWidth = 8;
+  settings.specularWidth = 8;
+  settings.specularLevels = 3;
+  settings.samplesPerTexel = 16;
+  return std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(image, settings));
+}
+
+// --environment on sweep: the reference depends on the environment's contents, intensity and
+// rotation, so each gives another key; without one the key does not change.
+TEST(ReferenceKey, ChangesWithTheEnvironment) {
+  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
+  const Scene scene = loadGltf(assets / "rows/rows.gltf");
+  const Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;
+  const ImageSize size{64, 48};
+  const SweepOptions options;
+  const std::string none = referenceKey(scene, camera, size, options);
+  Scene copy = scene;
+  copy.environment = nullptr;
+  EXPECT_EQ(referenceKey(copy, camera, size, options), none) << "no environment: the key stays";
+
+  const auto with = [&](std::shared_ptr<const PrefilteredEnvironment> maps, EnvironmentPlacement placement) {
+    Scene s = scene;
+    s.environment = std::make_shared<const EnvironmentLookup>(std::move(maps), placement);
+    return referenceKey(s, camera, size, options);
+  };
+  const auto maps = smallEnvironment(1.0f);
+  const std::string base = with(maps, {0.0, 1.0f});
+  EXPECT_NE(base, none) << "an environment";
+  EXPECT_EQ(with(maps, {0.0, 1.0f}), base) << "the same environment, the same key";
+  EXPECT_EQ(with(smallEnvironment(1.0f), {0.0, 1.0f}), base) << "the same pixels prefiltered again, the same key";
+  const std::string contents = with(smallEnvironment(2.0f), {0.0, 1.0f});
+  const std::string intensity = with(maps, {0.0, 2.0f});
+  const std::string rotation = with(maps, {90.0, 1.0f});
+  EXPECT_NE(contents, base) << "one texel brighter";
+  EXPECT_NE(intensity, base) << "--environment-intensity";
+  EXPECT_NE(rotation, base) << "--environment-rotation";
+  EXPECT_EQ((std::set<std::string>{none, base, contents, intensity, rotation}).size(), 5u) << "every change its own key";
 }
 
 }  // namespace

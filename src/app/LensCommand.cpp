@@ -1,6 +1,9 @@
 // lenslab lens: what a lens prescription amounts to, for a sensor and a focus distance.
 #include "app/CliOptions.h"
 #include "app/Commands.h"
+#include "app/LensPlot.h"
+#include "io/AtomicFile.h"
+#include "io/OutputPath.h"
 #include "core/Error.h"
 #include "core/NumberInput.h"
 #include "core/Text.h"
@@ -13,6 +16,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -20,6 +24,7 @@
 
 namespace lenslab {
 namespace {
+namespace fs = std::filesystem;
 
 std::string fixed(double value, int digits) {
   char text[64];
@@ -33,6 +38,7 @@ struct LensCommandOptions {
   std::string focus = "infinity";
   std::optional<double> fNumber;
   bool json = false;
+  std::string plot;
 };
 
 nlohmann::json reportJson(const LensPrescription& lens, const LensReport& r, const LensAnalysisOptions& o) {
@@ -106,6 +112,13 @@ void printReport(std::ostream& out, const LensPrescription& lens, const LensRepo
 }
 
 int runLens(const LensCommandOptions& c) {
+  if (!c.plot.empty()) {
+    // Checked before any work, as every output is (io/OutputPath.h).
+    if (fs::path(c.plot).extension() != ".svg")
+      throw InputError(cat("--plot ", c.plot, ": the plot is drawn as SVG; give a file name ending in .svg"));
+    checkOutputPath(c.plot, OutputKind::Any, "--plot");
+    checkNotInput(c.plot, "--plot", c.file, "the lens file");
+  }
   const LensPrescription lens = parseLensPrescription(readTextFile(c.file, "lens file"), c.file);
   LensAnalysisOptions o;
   o.sensorMm = parseSensorMm(c.sensor);
@@ -114,6 +127,11 @@ int runLens(const LensCommandOptions& c) {
   }
   o.fNumber = c.fNumber;
   const LensReport report = analyseLens(lens, o);
+  if (!c.plot.empty()) {
+    OutputSet outputs;
+    outputs.add(c.plot, lensPlotSvg(lens, report, o));
+    outputs.commit();
+  }
   if (c.json) std::cout << reportJson(lens, report, o).dump(2) << "\n";
   else printReport(std::cout, lens, report, o);
   return 0;
@@ -134,6 +152,8 @@ std::function<int()> addLensCommand(CLI::App& app) {
       ->check(numberIn({.min = 0.1, .max = 1e4, .unit = ""}))
       ->type_name("N");
   cmd->add_flag("--json", o->json, "print the report as JSON");
+  cmd->add_option("--plot", o->plot, "also draw the lens in section with rays from three field points, and its distortion and "
+                                     "relative illumination against field, into this SVG file")->type_name("FILE.svg");
   return [cmd, o]() { return cmd->parsed() ? runLens(*o) : -1; };
 }
 

@@ -74,6 +74,7 @@ std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ra
     const std::optional<SurfaceHit> hit = intersectSurface(lens, i, r);
     if (!hit) return std::nullopt;
     r.origin = hit->point;
+    if (options.path) options.path->push_back(hit->point);
     if (s.isStop()) {
       if (options.endAtStop) return r;
       const double diameter = options.stopDiameterMm.value_or(s.apertureMm);

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <vector>
 
 namespace lenslab {
 
@@ -50,6 +51,8 @@ struct LensTrace {
   bool ignoreRims = false;
   // Analysis only: end at the stop's plane, returning where the ray meets it (unclipped).
   bool endAtStop = false;
+  // Pictures: when given, each point where the ray meets a surface is appended.
+  std::vector<glm::dvec3>* path = nullptr;
 };
 std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ray, bool toScene, const LensTrace& options = {});
 

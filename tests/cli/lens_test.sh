@@ -42,6 +42,19 @@ else
   fail "close focus: $(cat "$work/err")"
 fi
 
+# --plot: an SVG with the lens and its two charts; nothing written when refused.
+if "$lenslab" lens "$lenses/double-gauss-50mm.lens" --plot "$work/gauss.svg" >/dev/null 2>"$work/err"; then
+  check grep -q '^<svg ' "$work/gauss.svg"
+  check grep -q 'distortion (%)' "$work/gauss.svg"
+  check test "$(grep -c '<polyline' "$work/gauss.svg")" -gt 20
+else
+  fail "--plot: $(cat "$work/err")"
+fi
+refused "plot not svg" "give a file name ending in .svg" -- lens "$lenses/double-gauss-50mm.lens" --plot "$work/plot.png"
+check test ! -e "$work/plot.png"
+refused "plot beyond the image circle" "the lens covers a circle of" -- lens "$lenses/fisheye-10mm.lens" --plot "$work/fish.svg"
+check test ! -e "$work/fish.svg"
+
 # --- refusals ---
 printf '0 2 0 10\n50 x 1.5 20\n-50 0 1 20\n' >"$work/bad.lens"
 refused "bad number" "bad.lens: row 2 (line 2), column 2 (thickness_mm): 'x' is not a number" -- lens "$work/bad.lens"

@@ -115,6 +115,54 @@ INSTANTIATE_TEST_SUITE_P(Lenses, CatsEyeThroughALens,
                          ::testing::Values(WallCase{"barrel distortion", -0.25, 0.02}, WallCase{"pincushion", 0.3, 0.02}),
                          [](const ::testing::TestParamInfo<WallCase>& param) { return param.param.k1 < 0.0 ? "Barrel" : "Pincushion"; });
 
+// Field curvature focuses each radius r at 1/z_f + κr²: the ray from p toward the curved surface
+// crosses the opening at p·(1 − L·(1/z_f + κr²)) + L·n. The raster draws flat-focused views and
+// shows at x what a view has at x − shift·r²; that flat ray is the same line from p, so the mask
+// must be tested there (accumulate.frag without distortion, gather_lens.frag with it). On the
+// white wall the pixel's value is then the overlap for the curved focus at its undistorted position.
+class CatsEyeOnACurvedFocus : public ::testing::TestWithParam<double> {};
+
+TEST_P(CatsEyeOnACurvedFocus, APixelSeesTheOverlapForItsRadiusFocus) {
+  LENSLAB_REQUIRE_GL();
+  const Scene scene = whiteWall();
+  Camera camera = wallCamera(GetParam(), 0.0);
+  camera.effects.fieldCurvature.inverseFocusPerRadius2 = 1.0;  // the corners (r² = 0.5) focus at 1 m
+  // An opening far out (0.6 in front, radius 0.4), where the focus moves the aperture's image in
+  // its plane most: radius 0.1·(1 − 0.6·(0.5 + r²)), 0.07 flat; clipped past r ≈ 0.55. At r = 0.7
+  // the overlap is 0.19 for the curved focus, 0.31 for the flat one.
+  camera.barrel = LensBarrel{0.6, 0.4};
+  const ImageSize size{48, 48};
+  Renderer renderer(scene);
+  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 1024, 1024, 3});
+  ASSERT_TRUE(plan.fieldCurvature);
+  const Image raster = renderer.render(camera, plan, size);
+  const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{1024, 4});
+  double worstRaster = 0.0, worstRaycast = 0.0, flatGap = 0.0;
+  const double inverseFocus = camera.inverseFocusDistance();
+  for (int y = 0; y < size.heightPx; ++y)
+    for (int x = 0; x < size.widthPx; ++x) {
+      // The overlap changes fast across the clipped band: its mean over 4 × 4 points of the pixel.
+      double share = 0.0, flat = 0.0;
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          const ChannelSample s = undistortedSample(camera, Channel::Green, {x + (i + 0.5) / 4.0, y + (j + 0.5) / 4.0}, size);
+          share += roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, s.normalised, inverseFocus + s.inverseFocusShift) / 16.0;
+          flat += roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, s.normalised, inverseFocus) / 16.0;
+        }
+      flatGap = std::max(flatGap, std::abs(flat - share));
+      worstRaster = std::max(worstRaster, std::abs(static_cast<double>(raster.at(x, y).g) - share));
+      worstRaycast = std::max(worstRaycast, std::abs(static_cast<double>(raycast.at(x, y).g) - share));
+    }
+  std::printf("  k1 %.2f: worst |image - overlap for the curved focus| raster %.4f, ray cast %.4f; the flat focus's overlap differs by up to %.3f\n",
+              GetParam(), worstRaster, worstRaycast, flatGap);
+  EXPECT_GT(flatGap, 0.06) << "the curvature should change the cat's eye by more than the tolerance";
+  EXPECT_LT(worstRaster, 0.03);
+  EXPECT_LT(worstRaycast, 0.03);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lenses, CatsEyeOnACurvedFocus, ::testing::Values(0.0, -0.25),
+                         [](const ::testing::TestParamInfo<double>& param) { return param.param < 0.0 ? "Distorted" : "Straight"; });
+
 // (a) The bundled rows scene through a 35 mm f/2.8 lens focused at 2 m, with a barrel that clips
 // the corners, strong distortion, lateral and axial colour and field curvature: the raster (each
 // view's samples masked at their own rays as the lens gather sums them) converges to the ray

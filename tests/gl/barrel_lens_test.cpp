@@ -13,8 +13,10 @@
 #include "io/ImageCompare.h"
 #include "lens/LensBarrel.h"
 #include "plan/FramePlan.h"
+#include "plan/TilePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
+#include "render/TiledRender.h"
 #include "scene/GltfLoader.h"
 #include "scene/ProceduralScenes.h"
 
@@ -212,6 +214,32 @@ TEST_P(BarrelThroughRows, RasterConvergesToTheExactRayCastLens) {
 
 INSTANTIATE_TEST_SUITE_P(Lenses, BarrelThroughRows, ::testing::Values(-0.3, 0.25),
                          [](const ::testing::TestParamInfo<double>& param) { return param.param < 0.0 ? "Barrel" : "Pincushion"; });
+
+// Tiles build their own lens tables and overscan windows; the barrel's mask follows each tile's
+// window, so the tiled frame is the same image as one render (as tiling_test's 60 dB).
+TEST(BarrelTiles, ATiledFrameWithTheBarrelAndEveryLensEffectEqualsOneRender) {
+  LENSLAB_REQUIRE_GL();
+  const std::filesystem::path assets = LENSLAB_TEST_ASSET_DIR;
+  const Scene scene = loadGltf(assets / "rows" / "rows.gltf");
+  const Camera camera = parseCameraJson(rowsCamera(-0.3), "barrel rows camera").camera;
+  const ImageSize size = resolveImageSize(camera, 200, std::nullopt);
+  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3});
+  ASSERT_TRUE(plan.remap);
+  const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), 64);
+  ASSERT_TRUE(tiles.tiled);
+  Renderer renderer(scene);
+  const Image untiled = renderer.render(camera, plan, size);
+  const Image tiled = renderTiled(renderer, camera, plan, size, tiles);
+  Camera open = camera;
+  open.barrel = {};
+  // Its own plan: with distortion the renderer draws the plan's overscan camera, barrel included.
+  const Image withoutBarrel = renderer.render(open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3}), size);
+  const double psnr = compareImages(untiled, tiled, 0.0).psnrDb, withoutDb = compareImages(untiled, withoutBarrel, 0.0).psnrDb;
+  std::cout << "[ measure  ] rows with the barrel and every lens effect, " << tiles.tiles.size() << " tiles: tiled vs one render "
+            << psnr << " dB; without the barrel " << withoutDb << " dB\n";
+  EXPECT_GE(psnr, 60.0);
+  EXPECT_LT(withoutDb, 40.0) << "the barrel should change the image";
+}
 
 }  // namespace
 }  // namespace lenslab

@@ -46,11 +46,14 @@ vec4 catmullRom(vec2 p, int layer) {
 }
 #endif
 
-// View i's weight at this pixel: its channel weights, or nothing where the barrel hides its
-// aperture point.
-vec4 weightAt(int i) {
+// View i's weight at this pixel, whose value comes from the view's position `viewPx`: its channel
+// weights, or nothing where the barrel hides its aperture point. The barrel is tested at the
+// view's own position: a view is a perspective from its aperture point, so that position is the
+// ray (with field curvature the pixel shows the view at x − shift·r², and the flat-focused ray
+// through that position is the curved-focused ray through x: the same line from the same point).
+vec4 weightAt(int i, vec2 viewPx) {
 #ifdef BARREL
-  vec2 n = normalisedAtOrigin + gl_FragCoord.xy * normalisedPerPixel;
+  vec2 n = normalisedAtOrigin + viewPx * normalisedPerPixel;
   vec2 atOpening = barrelLens[i] + barrelReach * n;
   if (dot(atOpening, atOpening) > 1.0) return vec4(0.0);
 #endif
@@ -62,10 +65,13 @@ void main() {
 #ifdef FIELD_CURVATURE
   vec2 n = normalisedAtOrigin + gl_FragCoord.xy * normalisedPerPixel;
   float r2 = dot(n, n);
-  for (int i = 0; i < viewCount; ++i) total += weightAt(i) * catmullRom(gl_FragCoord.xy - shiftPerRadius2[i] * r2, i);
+  for (int i = 0; i < viewCount; ++i) {
+    vec2 viewPx = gl_FragCoord.xy - shiftPerRadius2[i] * r2;
+    total += weightAt(i, viewPx) * catmullRom(viewPx, i);
+  }
   total = max(total, vec4(0.0));
 #else
-  for (int i = 0; i < viewCount; ++i) total += weightAt(i) * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
+  for (int i = 0; i < viewCount; ++i) total += weightAt(i, gl_FragCoord.xy) * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
 #endif
   sum = total;
 }

@@ -29,6 +29,18 @@ layout(location = 27) uniform float reach;     // view pixels: see ForwardTable:
 layout(location = 28) uniform vec2 principalPoint;  // output pixels, GL orientation
 layout(location = 29) uniform vec2 lateralScale;    // 1 + lateral, red and blue
 #endif
+#ifdef BARREL
+// Cat's-eye vignetting (src/lens/LensBarrel.h), per sample: the ray of view i's texel t leaves
+// aperture point p toward the true perspective position t + ½ + jitter (the flat-focused view's
+// own position: a view is a perspective from p, so each of its positions is one ray, whatever
+// the lens later does with it). That ray crosses the opening's plane, in units of the opening's
+// radius, at barrelLens[i] + barrelAtOrigin + (t + ½ + jitter)·barrelPerPixel (= p·(1 − L/z_f)/R
+// + (L/R)·n); outside the unit circle the barrel stops it. The distortion and lateral colour move
+// where a sample lands, not which ray it is, so each channel's gather masks the same samples.
+layout(location = 60) uniform vec2 barrelAtOrigin;   // (L/R)·n at GL pixel corner (0, 0) of the views
+layout(location = 61) uniform vec2 barrelPerPixel;   // (L/R)·n's step per view pixel
+layout(location = 62) uniform vec2 barrelLens[8];    // 62–69: p·(1 − L/z_f)/R per view
+#endif
 layout(location = 0) out vec4 sum;
 layout(location = 1) out vec4 weight;
 
@@ -44,14 +56,25 @@ float radius2(vec2 p) {
 }
 #endif
 
+// 1 where the barrel lets view i's sample of texel t through, 0 where it stops it.
+float passes(ivec2 t, int i) {
+#ifdef BARREL
+  vec2 atOpening = barrelLens[i] + barrelAtOrigin + (vec2(t) + 0.5 + jitter[i]) * barrelPerPixel;
+  return dot(atOpening, atOpening) > 1.0 ? 0.0 : 1.0;
+#else
+  return 1.0;
+#endif
+}
+
 // One sample: view `i`'s texel t, landing at `landed` in the output. Adds it when it lands inside
-// this pixel (a sample exactly on an edge: measure zero), and remembers the nearest.
+// this pixel (a sample exactly on an edge: measure zero), and remembers the nearest. A sample the
+// barrel stops still counts in the weight: it is a ray that brings no light (as the ray caster's).
 void visit(ivec2 t, int i, float area, vec2 landed, inout vec4 s, inout vec4 w, inout float nearest,
            inout ivec3 nearestSample) {
   vec2 d = landed - gl_FragCoord.xy;
   if (max(abs(d.x), abs(d.y)) < 0.5) {
     vec4 share = weights[i] * area;
-    s += share * texelFetch(views, ivec3(t, i), 0);
+    s += share * passes(t, i) * texelFetch(views, ivec3(t, i), 0);
     w += share;
   }
   float d2 = dot(d, d);
@@ -117,7 +140,8 @@ void gather(vec2 centre, float scale, int channel, out vec4 s, out vec4 w) {
     }
 #endif
   if (nearest < 1e30) {
-    s += 1e-6 * weights[nearestSample.z] * texelFetch(views, ivec3(nearestSample.xy, nearestSample.z), 0);
+    s += 1e-6 * weights[nearestSample.z] * passes(nearestSample.xy, nearestSample.z) *
+         texelFetch(views, ivec3(nearestSample.xy, nearestSample.z), 0);
     w += 1e-6 * weights[nearestSample.z];
   }
 }

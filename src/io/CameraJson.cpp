@@ -493,8 +493,6 @@ void parseCommon(const Reader& r, CameraFile& file) {
     const double distance = o.number("distance_mm"), diameter = o.number("diameter_mm");
     if (const std::optional<BarrelProblem> problem = barrelProblem(distance, diameter)) o.fail(problem->field, problem->message);
     if (camera.view.projection != Projection::Perspective) r.fail("barrel", "needs a perspective projection");
-    if (e.needsRemap())
-      r.fail("barrel", "with distortion or lateral colour is not drawn yet; give one or the other");
     camera.barrel = barrelFromMillimetres(distance, diameter);
   }
   validateLensEffects(camera, r.where(), file.physical ? std::optional(file.physical->focalLengthMm * kMetresPerMillimetre) : std::nullopt);

@@ -129,7 +129,9 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
         plan.samplesWhy = cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)", 
                               plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
                               " (", range, ")");
-      if (barrelClipsFrame(camera) && plan.apertureSamples < std::min(kBarrelMinSamples, options.maxSamples)) {
+      // With distortion the barrel clips at the undistorted field, which the overscan's window holds.
+      const bool barrelClips = barrelClipsFrame(camera.effects.needsRemap() ? overscanFor(camera, size).camera : camera);
+      if (barrelClips && plan.apertureSamples < std::min(kBarrelMinSamples, options.maxSamples)) {
         plan.apertureSamples = std::min(kBarrelMinSamples, options.maxSamples);
         plan.samplesWhy = cat(plan.apertureSamples, ": the lens barrel hides part of the aperture toward the corners (cat's-eye "
                               "vignetting), a share resolved by that many aperture points (", range, ")");

@@ -211,6 +211,14 @@ struct RayCaster::Impl {
     Ray ray = lensRay(camera, lensOffset, pixel, size, inverseFocusShift);
     ray.origin -= origin;
     // The barrel's opening (cat's-eye vignetting): a ray it stops brings no light, background included.
+    // With lens effects `pixel` is already the true perspective position (render's
+    // undistortedSample: the distorted film point taken back through the inverse lens model, per
+    // channel) and `inverseFocusShift` that channel's and that radius's plane of focus. The
+    // lecture's thin lens deflects the ray from aperture point p toward the point of the plane of
+    // focus seen in the undistorted direction n; that ray is the one the barrel may stop, at
+    // p·(1 − L/z_f) + L·n. Distortion and lateral colour only move where on the film that ray
+    // lands, so the test takes n of the undistorted position, never the distorted film point, and
+    // z_f with the channel's and the curvature's shift (the same ray lensRay casts).
     if (camera.hasBarrel()) {
       const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
       const glm::dvec2 normalised = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;

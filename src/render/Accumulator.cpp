@@ -36,8 +36,7 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   curvature_ = curvature ? std::optional<Curvature>(*curvature) : std::nullopt;
   lens_ = lens ? std::optional<LensGather>(*lens) : std::nullopt;
   barrel_ = barrel ? std::optional<Barrel>(*barrel) : std::nullopt;
-  if (barrel_ && lens_) throw std::logic_error("accumulator: the barrel with the lens gather is not supported (refused with the camera)");
-  if (barrel_) {
+  if (barrel_ && !lens_) {
     gl::Program& program = accumulateBarrel_[curvature_ ? 1 : 0];
     if (!program) {
       std::vector<std::string> defines{"BARREL"};
@@ -48,11 +47,12 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
   if (curvature_ && !accumulateCurved_)
     accumulateCurved_ = gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag", {"FIELD_CURVATURE"});
   if (lens_) {
-    gl::Program& gather = gatherLens_[(curvature_ ? 2 : 0) + (lens_->lateral ? 1 : 0)];
+    gl::Program& gather = gatherLens_[gatherVariant()];
     if (!gather) {
       std::vector<std::string> defines;
       if (curvature_) defines.push_back("FIELD_CURVATURE");
       if (lens_->lateral) defines.push_back("LATERAL_COLOUR");
+      if (barrel_) defines.push_back("BARREL");
       gather = gl::buildProgram("common/fullscreen.vert", "accumulate/gather_lens.frag", defines);
     }
     if (!resolvePerPixel_)
@@ -252,7 +252,7 @@ void Accumulator::flushLayers() {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  const GLuint program = lens_      ? gatherLens_[(curvature_ ? 2 : 0) + (lens_->lateral ? 1 : 0)].id()
+  const GLuint program = lens_      ? gatherLens_[gatherVariant()].id()
                        : barrel_    ? accumulateBarrel_[curvature_ ? 1 : 0].id()
                        : curvature_ ? accumulateCurved_.id()
                                     : accumulate_.id();
@@ -263,7 +263,15 @@ void Accumulator::flushLayers() {
     glProgramUniform2fv(program, 17, 1, &curvature_->normalisedAtOrigin.x);
     glProgramUniform2fv(program, 18, 1, &curvature_->normalisedPerPixel.x);
   }
-  if (barrel_) {
+  if (barrel_ && lens_) {
+    // The lens gather masks each sample at its own ray (gather_lens.frag): the opening's
+    // coordinates of the views' pixel grid, in units of its radius.
+    const glm::vec2 atOrigin = barrel_->reach * barrel_->normalisedAtOrigin, perPixel = barrel_->reach * barrel_->normalisedPerPixel;
+    glProgramUniform2fv(program, 60, 1, &atOrigin.x);
+    glProgramUniform2fv(program, 61, 1, &perPixel.x);
+    glProgramUniform2fv(program, 62, pending_, &pendingBarrelLens_[0].x);
+  }
+  if (barrel_ && !lens_) {
     glProgramUniform2fv(program, 17, 1, &barrel_->normalisedAtOrigin.x);
     glProgramUniform2fv(program, 18, 1, &barrel_->normalisedPerPixel.x);
     glProgramUniform2fv(program, 30, pending_, &pendingBarrelLens_[0].x);

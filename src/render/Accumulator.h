@@ -55,7 +55,9 @@ class Accumulator {
   // Cat's-eye vignetting (lens/LensBarrel.h), applied per pixel as the views are summed: a view
   // adds nothing (background included) where the barrel's opening hides its aperture point from
   // the pixel's direction n. The mapping to n as Curvature's; `reach` = barrel distance / radius.
-  // Views are then layers (an added view has no per-pixel weight).
+  // Views are then layers (an added view has no per-pixel weight). With the lens gather, each
+  // view sample is masked at its own undistorted position (the views' grid: the overscan's), and
+  // a stopped sample still counts in the pixel's weight, as a ray that brings no light.
   struct Barrel {
     glm::vec2 normalisedAtOrigin;
     glm::vec2 normalisedPerPixel;
@@ -133,7 +135,9 @@ class Accumulator {
   gl::Program accumulate_;
   gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
   gl::Program accumulateBarrel_[2];  // with the barrel: [field curvature], built on first use
-  gl::Program gatherLens_[4];     // the lens gather: [field curvature · 2 + lateral colour], built on first use
+  gl::Program gatherLens_[8];     // the lens gather: [gatherVariant()], built on first use
+  // The lens gather's variant for start's effects: barrel · 4 + field curvature · 2 + lateral colour.
+  int gatherVariant() const { return (barrel_ ? 4 : 0) + (curvature_ ? 2 : 0) + (lens_ && lens_->lateral ? 1 : 0); }
   gl::Program resolve_;
   gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
   gl::Program addBatch_;          // added views: a batch's partial sum and background into the sum

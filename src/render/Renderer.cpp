@@ -75,9 +75,10 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
   for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue})
     channelFocusShifts_[static_cast<std::size_t>(c)] = camera_.effects.chromatic.inverseFocusShift(c);
-  if (camera.hasBarrel() && (plan.remap || camera.view.projection != Projection::Perspective))
-    throw InputError(cat(camera.source, ": the lens barrel (cat's-eye vignetting) is drawn for a perspective camera without "
-                                        "distortion or lateral colour; remove \"barrel\" or those effects"));
+  // With distortion or lateral colour the lens gather masks each view's samples at their own
+  // undistorted rays (gather_lens.frag, BARREL); a parallel projection has no directions to clip.
+  if (camera.hasBarrel() && camera.view.projection != Projection::Perspective)
+    throw InputError(cat(camera.source, ": the lens barrel (cat's-eye vignetting) needs a perspective projection; remove \"barrel\""));
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1, tables);

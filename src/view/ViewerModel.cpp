@@ -159,8 +159,6 @@ void ViewerModel::editLensEffects(const LensEffects& effects) {
   c.effects = effects;
   try {
     validateLensEffects(c, "the panel's lens");
-    if (c.barrel.present() && c.effects.needsRemap())
-      throw InputError("the panel's lens: distortion or lateral colour with the camera's lens barrel is not drawn yet");
     cam_.camera = c;
     dirty_ = true;
   } catch (const InputError& e) {

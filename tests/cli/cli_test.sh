@@ -228,6 +228,17 @@ else
 fi
 if "$lenslab" render --camera "$src/assets/rows/camera-lens.json" --width 96 --aperture-samples 4 --out "$work/lens.png" --stats "$work/lens.json" -q &&
    grep -qF '"channel-focus"' "$work/lens.json" && grep -qF '"lateral-colour"' "$work/lens.json" && grep -qF '"views_per_sample": 3' "$work/lens.json"; then pass; else fail "lens camera stats"; fi
+# The lens barrel with every lens effect: both renderers take it; a parallel projection refuses it.
+sed 's/"near": 0.05,/"near": 0.05, "barrel": {"distance_mm": 40, "diameter_mm": 44},/' "$src/assets/rows/camera-lens.json" >"$work/barrel-lens.json"
+if "$lenslab" render --camera "$work/barrel-lens.json" --width 96 --aperture-samples 4 --out "$work/barrel-lens.png" --stats "$work/barrel-stats.json" -q &&
+   grep -qF '"barrel"' "$work/barrel-stats.json" && grep -qF '"lateral-colour"' "$work/barrel-stats.json" &&
+   "$lenslab" raycast --camera "$work/barrel-lens.json" --width 48 --spp 1 --out "$work/barrel-lens-rc.png" -q && [ -s "$work/barrel-lens-rc.png" ]; then
+  pass
+else
+  fail "barrel with lens effects"
+fi
+echo '{ "projection": "parallel", "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-1,-1,1,1], "far": 10, "barrel": {"distance_mm": 40, "diameter_mm": 30} }' >"$work/barrel-parallel.json"
+expect_refusal "barrel on a parallel projection" '"barrel" needs a perspective projection' -- render --camera "$work/barrel-parallel.json" --out "$work/out.png"
 echo '{ "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-1,-1,1,1], "distortion": {"k1": 0, "k2": 0}, "chromatic": {"lateral_red": 0} }' >"$work/zero-lens.json"
 if "$lenslab" render --camera "$work/zero-lens.json" "$src/assets/grid/grid.gltf" --width 64 --out "$work/zero.png" --stats "$work/zero.json" -q &&
    ! grep -qF '"name": "lens"' "$work/zero.json" && grep -qF '"render_size": [' "$work/zero.json"; then pass; else fail "zero-strength effects added a pass"; fi

@@ -183,8 +183,21 @@ TEST(CameraJson, ReadsAndWritesTheLensBarrel) {
   const std::string head = R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2, )";
   expectRefused(head + R"("barrel": {"distance_mm": 40}})", "\"barrel.diameter_mm\" is missing");
   expectRefused(head + R"("barrel": {"distance_mm": -4, "diameter_mm": 30}})", "\"barrel.distance_mm\" is -4");
-  expectRefused(head + R"("barrel": {"distance_mm": 40, "diameter_mm": 30}, "distortion": {"k1": 0.1}})",
-                "\"barrel\" with distortion or lateral colour is not drawn yet");
+}
+
+TEST(CameraJson, TakesTheLensBarrelWithDistortionAndLateralColourButNotWithAParallelProjection) {
+  const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
+      "barrel": {"distance_mm": 40, "diameter_mm": 30}, "distortion": {"k1": -0.2, "k2": 0.03},
+      "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})", "cam.json");
+  EXPECT_DOUBLE_EQ(f.camera.barrel.radius, 0.015);
+  EXPECT_DOUBLE_EQ(f.camera.effects.distortion.k1, -0.2);
+  EXPECT_TRUE(f.camera.effects.needsRemap());
+  const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
+  EXPECT_NEAR(back.camera.barrel.distance, 0.04, 1e-15);
+  EXPECT_NEAR(back.camera.effects.chromatic.lateralRed, 0.004, 1e-15);
+  expectRefused(R"({"projection": "parallel", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 5],
+      "window": [-2, -1, 2, 1], "far": 20, "barrel": {"distance_mm": 40, "diameter_mm": 30}})",
+                "\"barrel\" needs a perspective projection");
 }
 
 }  // namespace

@@ -244,6 +244,21 @@ TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
   EXPECT_EQ(makeFramePlan(planeAt(10.0), lens, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1}).apertureSamples, 17);
 }
 
+// The barrel clips at the undistorted field: a barrel distortion pushes the corners' rays farther
+// off-axis than the window's corners. Seen in the opening's plane the aperture has radius
+// 0.1·(1 − 0.2/5) = 0.096 about 0.2·n; the window's corner (|n| = 0.283) reaches 0.153, inside the
+// opening's 0.155, while the undistorted corner with k1 = −0.8 (|n| ≈ 0.306) reaches 0.157.
+TEST(FramePlan, TheBarrelClipsAtTheUndistortedCorners) {
+  Camera lens = cameraFocusedOnViewPlane(viewFiveAway(), 0.1, "test");
+  lens.barrel = LensBarrel{0.2, 0.155};
+  const FramePlan straight = makeFramePlan(planeAt(5.0), lens, {100, 100});
+  EXPECT_EQ(straight.apertureSamples, 1) << "the window's corners see the whole aperture: " << straight.samplesWhy;
+  lens.effects.distortion.k1 = -0.8;
+  const FramePlan distorted = makeFramePlan(planeAt(5.0), lens, {100, 100});
+  EXPECT_EQ(distorted.apertureSamples, 64) << distorted.samplesWhy;
+  EXPECT_NE(distorted.samplesWhy.find("barrel"), std::string::npos) << distorted.samplesWhy;
+}
+
 // An explicit count with a pinhole is honoured: N sub-pixel-jittered views of the same PRP (the
 // box-filtered pixel integral, i.e. anti-aliasing); auto stays one view. (It used to be ignored.)
 TEST(FramePlan, AnExplicitCountWithAPinholeGivesJitteredViews) {

@@ -105,6 +105,27 @@ TEST(ViewerModel, EditsCheckedOnTheSpotAreRefusedWithoutARestart) {
   }
 }
 
+TEST(ViewerModel, TakesDistortionAndLateralColourWithTheLensBarrel) {
+  Scene scene = boxes();
+  std::ostringstream log;
+  EditableCamera camera = fromPhysical(rowsDof(), "test");
+  camera.camera.barrel = LensBarrel{0.04, 0.02};
+  ViewerModel model{scene, camera, ImageSize{160, 107}, PlanOptions{}, 16.0, log};
+  model.restart();
+  ASSERT_TRUE(model.error().empty()) << model.error();
+  LensEffects effects;
+  effects.distortion.k1 = -0.2;
+  effects.chromatic.lateralRed = 0.004;
+  effects.chromatic.lateralBlue = -0.004;
+  model.editLensEffects(effects);
+  EXPECT_TRUE(model.error().empty()) << model.error();
+  model.restart();
+  EXPECT_TRUE(model.error().empty()) << model.error();
+  EXPECT_DOUBLE_EQ(model.camera().camera.effects.distortion.k1, -0.2);
+  EXPECT_DOUBLE_EQ(model.camera().camera.effects.chromatic.lateralRed, 0.004);
+  EXPECT_EQ(model.camera().camera.barrel, (LensBarrel{0.04, 0.02})) << "the barrel stays with the lens effects";
+}
+
 TEST(SampleBudget, FollowsTheMeasuredCostAndTheTimeBudgetAndNeverDropsBelowOne) {
   SampleBudget budget(16.0);
   EXPECT_EQ(budget.samplesForFrame(100), 1) << "nothing measured: one sample tells the cost";

@@ -1,6 +1,7 @@
 #version 450 core
 // Variants (render/ScenePass.h): none, a plain view; DEPTH_ONLY (+ ALPHA_MASK), the depth pass of
-// a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL.
+// a view added into a sum; ADD_TO_SUM, its colour pass, which adds where depth is EQUAL;
+// ALPHA_BLEND, the surfaces of alphaMode BLEND, blended `over` a plain view (ScenePass::drawBlended).
 #include "../common/material_maps.glsl"
 // The environment's lookups, for the image-light term: only in the ENVIRONMENT variant, built for
 // scenes that have one (ScenePass::selectPrograms), so a scene without pays nothing for them.
@@ -17,6 +18,10 @@
 
 #ifdef ADD_TO_SUM
 // Depth and stencil decide which fragment adds before it is shaded (the pass has no discard).
+layout(early_fragment_tests) in;
+#endif
+#ifdef ALPHA_BLEND
+// Depth is tested, not written, and a blend material has no discard: test before shading.
 layout(early_fragment_tests) in;
 #endif
 
@@ -189,6 +194,12 @@ void main() {
   colour += hasEmissiveTexture ? emissive * texture(emissiveTexture, emissiveUv(), lodBias).rgb : emissive;
 #ifdef ADD_TO_SUM
   outColor = addWeight * vec4(colour - background, 1.0);
+#elif defined(ALPHA_BLEND)
+  // Straight alpha (factor × texture × vertex colour), blended SRC_ALPHA, ONE_MINUS_SRC_ALPHA:
+  // the whole shaded colour, emission included, as the Khronos Sample Viewer. Alpha blends ONE,
+  // ONE_MINUS_SRC_ALPHA, so the view's alpha stays its coverage. Clamped: a float target's blend
+  // factors are not.
+  outColor = vec4(colour, clamp(base.a, 0.0, 1.0));
 #else
   outColor = vec4(colour, 1.0);
 #endif

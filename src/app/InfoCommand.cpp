@@ -89,7 +89,7 @@ int runInfo(const std::string& path, const std::string& cameraFile, const Camera
         << (m.unlit ? std::string() : cat(", metallic ", m.metallicFactor, ", roughness ", m.roughnessFactor))
         << (m.metallicRoughnessTexture.present() ? ", metallic-roughness map" : "") << (m.occlusionTexture.present() ? ", occlusion map" : "")
         << (m.normalTexture.present() ? ", normal map" : "")
-        << (m.alphaMode == AlphaMode::Mask ? ", alpha mask" : m.alphaMode == AlphaMode::Blend ? ", alpha blend (drawn opaque)" : "")
+        << (m.alphaMode == AlphaMode::Mask ? ", alpha mask" : m.alphaMode == AlphaMode::Blend ? ", alpha blend" : "")
         << (m.doubleSided ? ", double-sided" : "") << "\n";
   }
   out << "textures    " << scene.textures.size() << " (" << scene.images.size() << " images)\n";

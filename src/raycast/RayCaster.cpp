@@ -31,6 +31,12 @@ namespace {
 
 const Material kDefaultMaterial{};
 
+// alphaMode BLEND surfaces composited along one ray at most; ones beyond are passed through.
+constexpr int kMaxBlendLayers = 16;
+// The AOVs describe the nearest surface at least this opaque (Cycles' pass alpha threshold):
+// a faint blend surface leaves the AOVs to what lies behind it.
+constexpr float kAovAlphaThreshold = 0.5f;
+
 // Where a ray meets a triangle's plane, as barycentric (b1, b2) of its vertices p0, p1, p2.
 glm::dvec2 barycentricOnPlane(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
   const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
@@ -172,7 +178,10 @@ struct RayCaster::Impl {
 
   struct Hit {
     glm::vec3 color{0.0f};
-    bool surface = false;  // false: the background
+    // Whether the AOVs see a surface (false: the background): the nearest one with alpha ≥
+    // kAovAlphaThreshold, every opaque or masked surface counting as alpha 1. t, normal, albedo
+    // and gltfNode are that surface's.
+    bool surface = false;
     double t = std::numeric_limits<double>::infinity();  // along the unit ray direction
     Ray ray;
     // What the surface is, for the AOVs (unset on a miss): the normal it was shaded with (world,
@@ -180,6 +189,9 @@ struct RayCaster::Impl {
     glm::vec3 normal{0.0f};
     glm::vec3 albedo{0.0f};
     int gltfNode = -1;
+    // How much of the ray the surfaces cover (the image's alpha): 1 at an opaque surface, 0 on
+    // the background, 1 − Π(1 − alpha) through blend surfaces onto the background.
+    float coverage = 0.0f;
   };
 
   // The normal the surface is shaded with at barycentric (b0, b1, b2): the interpolated vertex
@@ -201,10 +213,14 @@ struct RayCaster::Impl {
   }
 
   // First visible surface along `ray` (single-sided back faces and masked-out texels are passed
-  // through, as the rasterizer culls and discards them), shaded. Textures are filtered over
-  // `footprintPx` pixels: the part of the pixel this sample stands for (see render), not the
-  // whole pixel, so that the mean of the samples converges to the pixel integral of the
-  // unfiltered texture instead of to a pixel-blurred one. The returned ray is relative to `origin`.
+  // through, as the rasterizer culls and discards them), shaded. Surfaces of alphaMode BLEND in
+  // front of it are composited over it front to back (docs/materials.md): each adds
+  // transmittance · alpha · its shaded colour (emission included, so premultiplied by alpha as the
+  // Khronos Sample Viewer blends it) and leaves transmittance · (1 − alpha) to what is behind; the
+  // ray goes on from just past the blend surface (the skip masked texels take), kMaxBlendLayers
+  // of them at most. Textures are filtered over `footprintPx` pixels: the part of the pixel this
+  // sample stands for (see render), not the whole pixel, so that the mean of the samples converges
+  // to the pixel integral of the unfiltered texture instead of to a pixel-blurred one. The returned ray is relative to `origin`.
   // `inverseFocusShift` focuses the ray for one colour or one radius (viewThroughLens).
   Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double footprintPx,
                  double inverseFocusShift = 0.0) const {
@@ -243,6 +259,22 @@ struct RayCaster::Impl {
     const double tStart = std::max(ray.tNear, enter);
     const glm::dvec3 start = (ray.origin + tStart * ray.direction) / scale;  // in Embree's units
     double tNear = ray.tNear;
+    glm::vec3 blended(0.0f);     // Σ transmittance · alpha · colour over the blend surfaces so far
+    float transmittance = 1.0f;  // Π (1 − alpha) over them
+    int blendLayers = 0;
+    std::optional<Hit> aovSurface;  // the nearest blend surface with alpha ≥ kAovAlphaThreshold
+    // What lies behind the blend surfaces (an opaque surface, or the background) under them.
+    const auto behind = [&](Hit last, bool opaque) {
+      if (blendLayers == 0) {
+        last.coverage = opaque ? 1.0f : 0.0f;
+        return last;
+      }
+      const glm::vec3 color = blended + transmittance * last.color;
+      Hit out = aovSurface ? *aovSurface : last;
+      out.color = color;
+      out.coverage = opaque ? 1.0f : 1.0f - transmittance;
+      return out;
+    };
     for (int layer = 0; layer < 64; ++layer) {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
@@ -255,14 +287,14 @@ struct RayCaster::Impl {
       rh.ray.dir_z = static_cast<float>(ray.direction.z);
       rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart) / scale);
       rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>((tEnd - tStart) / scale);
-      if (!(rh.ray.tnear <= rh.ray.tfar)) return miss;
+      if (!(rh.ray.tnear <= rh.ray.tfar)) return behind(miss, false);
       // Embree asserts (aborts) on a ray it cannot take: every float finite and below 1.8e18.
       if (!embreeTakes(rh.ray)) throw unfiniteRay(camera, pixel);
       rh.ray.mask = 0xFFFFFFFFu;
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(rtcScene, &context, &rh);
-      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return miss;
+      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return behind(miss, false);
 
       const Geometry& g = geometries[rh.hit.geomID];
       const Instance& instance = scene->instances[static_cast<std::size_t>(g.instance)];
@@ -319,6 +351,11 @@ struct RayCaster::Impl {
         tNear = skipTo;
         continue;
       }
+      const bool blend = material.alphaMode == AlphaMode::Blend;
+      if (blend && blendLayers >= kMaxBlendLayers) {
+        tNear = skipTo;
+        continue;
+      }
       const bool normalMapped = material.normalTexture.present() && mesh.hasTangents;
       const glm::vec3 normalTexel = normalMapped ? glm::vec3(sampleTexture(material.normalTexture, true)) : glm::vec3(0.0f);
       const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2, normalMapped ? &normalTexel : nullptr);
@@ -356,9 +393,22 @@ struct RayCaster::Impl {
         if (material.emissiveTexture.present()) emitted *= glm::vec3(sampleTexture(material.emissiveTexture));
         colour += emitted;
       }
-      return {colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};
+      const Hit here{colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};
+      if (blend) {
+        // Straight alpha, as scene.frag's ALPHA_BLEND writes it (clamped: GL does not clamp a
+        // float target's blend factors).
+        const float alpha = std::clamp(base.a, 0.0f, 1.0f);
+        blended += transmittance * alpha * colour;
+        transmittance *= 1.0f - alpha;
+        ++blendLayers;
+        if (!aovSurface && alpha >= kAovAlphaThreshold) aovSurface = here;
+        if (transmittance <= 0.0f) return behind(Hit{glm::vec3(0.0f), false, tHit, ray}, true);  // nothing behind shows
+        tNear = skipTo;
+        continue;
+      }
+      return behind(here, true);
     }
-    return miss;
+    return behind(miss, false);
   }
 };
 
@@ -487,7 +537,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
           const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * size.widthPx + x) * 40503u;
           const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
           glm::dvec3 sum(0.0);
-          double covered = 0.0;  // rays that met a surface: alpha is the pixel's coverage
+          double covered = 0.0;  // Σ coverage of the rays (Hit::coverage): alpha is the pixel's coverage
           if (lensEffects) {
             // Exactly, per sample: each channel's ray goes through the true perspective position
             // that the inverse lens model gives for this sample's point of the distorted image,
@@ -503,7 +553,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
                     m.shadeAlong(focused, camera.lensOffset(s.lens), cs.pixel, size, footprintPx, cs.inverseFocusShift);
                 if (channels == 3) sum[c] += hit.color[c];
                 else sum += glm::dvec3(hit.color);
-                covered += hit.surface ? 1.0 / channels : 0.0;
+                covered += static_cast<double>(hit.coverage) / channels;
               }
             }
           } else {
@@ -511,7 +561,7 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
               const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
               const Impl::Hit hit = m.shadeAlong(camera, camera.lensOffset(s.lens), pixel, size, footprintPx);
               sum += glm::dvec3(hit.color);
-              covered += hit.surface ? 1.0 : 0.0;
+              covered += hit.coverage;
             }
           }
           const double n = static_cast<double>(samples.size());

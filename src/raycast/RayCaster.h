@@ -3,7 +3,8 @@
 // VRP + u·udir + v·vdir; P = Intersect(R, World); Image[u, v] = Color(P)", through the thin lens
 // ("rays from every lens surface point toward the in-focus point, averaged"). It uses the same
 // Camera (lensRay), the same Scene and the same shading as the rasterizer, so any difference
-// between the two images is the rasterizer's method error. Embree finds the hits; TBB spreads
+// between the two images is the rasterizer's method error. Surfaces of alphaMode BLEND are
+// composited along each ray, front to back, exactly per ray (shadeAlong; docs/materials.md). Embree finds the hits; TBB spreads
 // rows over the cores.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
@@ -55,7 +56,9 @@ class RayCaster {
   std::vector<float> depthImage(const Camera& camera, ImageSize size) const;
 
   // The selected AOVs (core/Aovs.h) of the same ray per pixel as depthImage: the first surface
-  // seen through each pixel centre from the lens centre. The normal is the one that surface is
+  // seen through each pixel centre from the lens centre. A surface of alphaMode BLEND counts when
+  // its alpha is at least 0.5 (as Blender Cycles' pass alpha threshold); a fainter one is seen
+  // through, to what lies behind it. depthAt and depthImage see the same surface. The normal is the one that surface is
   // shaded with, in camera space (u, v, n: right, up, toward the viewer); the albedo its base
   // colour (factor × texture over one pixel × vertex colour, linear); the instance its glTF node.
   AovImages aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const;

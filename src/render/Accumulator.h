@@ -66,6 +66,7 @@ class Accumulator {
   // Views from the next one on go into layers even where they could be added straight into the
   // sum: an added view draws the scene twice (depth, then colour), so where vertices cost more
   // than pixels (a big scene at a small size) layers are cheaper. Tests and benchmarks compare too.
+  // Renderer sets it for every view of a scene with alphaMode BLEND (ScenePass.h says why).
   void setLayered(bool layered) { forceLayers_ = layered; }
   // Whether layers cost less than added views for a scene pass of `triangles` into `pixels`: an
   // added view pays a second pass over the geometry, a layered one a write and a read of the

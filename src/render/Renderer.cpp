@@ -6,6 +6,7 @@
 #include "core/Text.h"
 #include "gl/Shader.h"
 #include "lens/SobolSequence.h"
+#include "scene/BlendOrder.h"
 
 #include <cmath>
 
@@ -125,7 +126,10 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   double triangles = 0.0;
   for (const Instance& instance : gpuScene_.scene().instances)
     triangles += static_cast<double>(gpuScene_.scene().meshes[static_cast<std::size_t>(instance.mesh)].indices.size() / 3);
-  sum.setLayered(Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
+  // A scene with alphaMode BLEND always: an added view keeps one fragment per pixel, and blend
+  // surfaces need every one over what lies behind (ScenePass::drawBlended).
+  sum.setLayered(anyBlended(gpuScene_.scene()) ||
+                 Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
   const glm::dvec2 lensOffset = camera_.lensOffset(first.lens);
   for (int c = 0; c < plan_.viewsPerSample; ++c) {
     glm::vec3 mask(1.0f);

@@ -2,6 +2,7 @@
 
 #include "camera/ProjectionCentre.h"
 #include "gl/Shader.h"
+#include "scene/BlendOrder.h"
 #include "scene/Brdf.h"
 #include "scene/ShadingLights.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -158,6 +160,8 @@ void ScenePass::selectPrograms(bool environment, int lightCount) const {
     for (gl::Program& p : row) p = gl::Program();
   for (auto& row : mapsPrograms_)
     for (gl::Program& p : row) p = gl::Program();
+  for (auto& row : blendPrograms_)
+    for (gl::Program& p : row) p = gl::Program();
 }
 
 void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) const {
@@ -272,6 +276,15 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   if (!addWeight) setLighting(program, scene, lodBias);
   const bool anyMaps = std::any_of(scene.materials.begin(), scene.materials.end(), materialMaps);
   const Programs plainMaps = anyMaps && !addWeight ? mapsVariant(nullptr, narrow, scene, lodBias) : Programs{};
+  // Blending does not fit an added view (one fragment per pixel adds); Renderer layers such scenes.
+  const bool blended = anyBlended(scene);
+  if (addWeight && blended)
+    throw std::logic_error("ScenePass: a view of a scene with alphaMode BLEND cannot be added into a sum");
+  std::vector<std::size_t> backToFront;
+  if (blended) {
+    const ProjectionCentre centre = projectionCentre(clipFromWorld);
+    backToFront = blendBackToFront(scene, centre.atInfinity ? nullptr : &centre.point, centre.towardViewer);
+  }
   if (addWeight) {
     for (const char* define : {"DEPTH_ONLY", "ADD_TO_SUM"}) {
       const Programs p = variant(define, narrow);
@@ -303,6 +316,7 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
     drawInstances({program, program}, plainMaps, narrow, gpuScene, clipFromWorld);
     if (const GpuEnvironment* env = environment(scene))
       env->drawBackground(clipFromWorld, target.width, target.height, glm::vec3(1.0f), false);
+    if (!backToFront.empty()) drawBlended(gpuScene, clipFromWorld, narrow, lodBias, backToFront);
   }
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
@@ -345,10 +359,42 @@ void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWo
   glDepthFunc(GL_GREATER);
 }
 
-void ScenePass::drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& gpuScene,
-                              const glm::dmat4& clipFromWorld) const {
+void ScenePass::drawBlended(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow, float lodBias,
+                            const std::vector<std::size_t>& backToFront) const {
   const Scene& scene = gpuScene.scene();
-  for (const Instance& instance : scene.instances) {
+  const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
+    if (!slot)
+      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
+                                                   withVariant(defines))
+                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
+    setLighting(slot.id(), scene, lodBias);
+    return slot.id();
+  };
+  gl::Program* slots = blendPrograms_[narrow ? 1 : 0];
+  const GLuint plain = build(slots[0], {"ALPHA_BLEND"});
+  bool anyMaps = false;
+  for (const std::size_t i : backToFront) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(scene.instances[i].mesh)];
+    anyMaps = anyMaps || materialMaps(scene.materials[static_cast<std::size_t>(mesh.material)]);
+  }
+  const GLuint maps = anyMaps ? build(slots[1], {"ALPHA_BLEND", "MATERIAL_MAPS"}) : 0;
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  drawInstances({plain, plain}, {maps, maps}, narrow, gpuScene, clipFromWorld, &backToFront);
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+}
+
+void ScenePass::drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& gpuScene,
+                              const glm::dmat4& clipFromWorld, const std::vector<std::size_t>* only) const {
+  const Scene& scene = gpuScene.scene();
+  const std::size_t count = only ? only->size() : scene.instances.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    const Instance& instance = scene.instances[only ? (*only)[k] : k];
+    if (!only && isBlended(scene, instance)) continue;
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const Material& material =
         mesh.material >= 0 ? scene.materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;

@@ -7,6 +7,11 @@
 // to twice the image before GL's float takes over. In float alone a vertex 1e8 window widths
 // off-axis has no digit left for where its triangle crosses the image (a sky stripe across a
 // uniform floor at 1e-7 rad).
+//
+// Surfaces of alphaMode BLEND are drawn after the opaque ones and the background, back to front
+// (scene/BlendOrder.h), depth tested but not written, blended `over` (drawBlended). They are
+// drawn only into a view of its own: a scene with any is never added into a sum (addWeight;
+// Renderer draws its views into layers).
 #include "gl/Framebuffer.h"
 #include "gl/Object.h"
 #include "plan/TileBudget.h"
@@ -35,6 +40,7 @@ class ScenePass {
   // budgets: later views only where tiles still need them), one scissored pass each.
   // `addWeight`: when given, the view is added into the target's colour (a running sum,
   // render/Accumulator) with this weight per channel and alpha, instead of replacing it; see drawAdded.
+  // A scene with alphaMode BLEND materials takes no addWeight (std::logic_error).
   void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
             float lodBias = 0.0f, const std::vector<PixelBox>* boxes = nullptr,
             const glm::vec4* addWeight = nullptr) const;
@@ -54,7 +60,16 @@ class ScenePass {
   void drawAdded(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight, float lodBias) const;
   // `withMaps`: the same programs in their MATERIAL_MAPS variant, for materials that need it
   // (materialMaps below); unbuilt (0) when no material of the scene does.
-  void drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld) const;
+  // `only`: these instances (indices into the scene's), in this order; null: every instance
+  // whose material is not alphaMode BLEND, in the scene's order.
+  void drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld,
+                     const std::vector<std::size_t>* only = nullptr) const;
+  // The BLEND instances `backToFront` over what the view has drawn: depth GREATER without writes,
+  // colour SRC_ALPHA, ONE_MINUS_SRC_ALPHA and alpha ONE, ONE_MINUS_SRC_ALPHA, so that alpha stays
+  // the coverage (1 − Π(1 − alpha) over the background, as the ray caster's). Programs: the
+  // ALPHA_BLEND variant (and its MATERIAL_MAPS one), built on first use.
+  void drawBlended(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, float lodBias,
+                   const std::vector<std::size_t>& backToFront) const;
   // The variant with `define` (DEPTH_ONLY, ADD_TO_SUM), built on first use.
   Programs variant(const char* define, bool narrow) const;
   // The MATERIAL_MAPS variant (normal map, TEXCOORD_1, uv transforms) of the plain program
@@ -91,6 +106,8 @@ class ScenePass {
   mutable gl::Program addPrograms_[2][3];
   // MATERIAL_MAPS programs, built on first use: [narrow][plain, DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program mapsPrograms_[2][4];
+  // ALPHA_BLEND programs, built on first use: [narrow][plain, MATERIAL_MAPS].
+  mutable gl::Program blendPrograms_[2][2];
   mutable std::unique_ptr<GpuEnvironment> environment_;
   // What environment_ was made from, held so that its address cannot be reused by another.
   mutable std::shared_ptr<const EnvironmentLookup> environmentSource_;

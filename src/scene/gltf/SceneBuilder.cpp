@@ -185,7 +185,6 @@ class SceneBuilder {
     material.baseColorFactor = glm::vec4(f[0], f[1], f[2], f[3]);
     material.unlit = m.extensions.count("KHR_materials_unlit") > 0;
     material.alphaMode = m.alphaMode == "MASK" ? AlphaMode::Mask : m.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
-    if (material.alphaMode == AlphaMode::Blend) noteOnce(scene_.notes, "alphaMode BLEND is drawn opaque (lenslab sorts no transparency)");
     material.alphaCutoff = static_cast<float>(m.alphaCutoff);
     material.doubleSided = m.doubleSided;
     material.baseColorTexture = textureRefFor(m.pbrMetallicRoughness.baseColorTexture, gltfIndex, "baseColorTexture");

@@ -10,6 +10,7 @@
 #include "camera/DepthRange.h"
 #include "camera/FocusOnPixel.h"
 #include "camera/ImageSize.h"
+#include "camera/ViewSpec.h"
 #include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -19,7 +20,10 @@
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
 #include "io/StripImageWriter.h"
+#include "io/TextFile.h"
 #include "io/Progress.h"
+#include "lens/LensCamera.h"
+#include "lens/LensPrescription.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/RasterDepth.h"
@@ -66,6 +70,7 @@ struct RenderOptions {
   std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
   ExposureOptions exposure;           // PNG output only
   EnvironmentRequest environment;
+  std::string lensFile;  // raycast --lens: a prescription (lens/LensPrescription.h)
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -167,6 +172,36 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   return image;
 }
 
+// The camera with a real lens for `raycast --lens`: placed where the camera's lens centre is, looking
+// along its axis, with its sensor (a physical camera's, else 36 mm wide at the window's aspect),
+// f-number (the design's full opening where the camera has none) and focus distance.
+LensCamera lensCameraFor(const std::string& file, const SelectedCamera& selected, const Camera& camera) {
+  const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };
+  if (camera.view.projection != Projection::Perspective) refuse("a real lens needs a perspective camera");
+  if (!camera.effects.isZero())
+    refuse("the camera's lens effects (distortion, chromatic, field_curvature) stand for a lens; the prescription has its own: "
+           "remove them from the camera");
+  if (camera.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
+  if (!camera.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
+  const Window& w = camera.view.window;
+  const double centreU = 0.5 * (w.umin + w.umax) - camera.view.prp.x, centreV = 0.5 * (w.vmin + w.vmax) - camera.view.prp.y;
+  if (std::abs(centreU) > 1e-9 * w.width() || std::abs(centreV) > 1e-9 * w.height())
+    refuse("the camera's window is shifted off its axis (a shift lens); a prescription's sensor is centred on the axis");
+  auto lens = std::make_shared<LensPrescription>(parseLensPrescription(readTextFile(file, "lens file"), file));
+  LensCameraSettings settings;
+  settings.sensorMm = selected.physical ? selected.physical->sensorMm : glm::dvec2(36.0, 36.0 * w.height() / w.width());
+  if (selected.physical && std::isfinite(selected.physical->fNumber)) settings.fNumber = selected.physical->fNumber;
+  settings.focusDistance = camera.focusDistance();
+  const ViewBasis basis = viewBasis(camera.view);
+  LensCameraPose pose;
+  pose.eye = prpWorld(camera.view);
+  pose.right = basis.u;
+  pose.up = basis.v;
+  pose.forward = -basis.n;
+  pose.worldPerMm = kMetresPerMillimetre;
+  return LensCamera(std::move(lens), settings, pose);
+}
+
 Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats,
               ProgressReporter& progress, const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues) {
   Camera camera = selected.camera;
@@ -188,6 +223,19 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
     stats.setCamera(focused);
   }
   stats.camera = camera.source;
+  if (!o.lensFile.empty()) {
+    const LensCamera lens = lensCameraFor(o.lensFile, selected, camera);
+    stats.plan.apertureSamples = o.samplesPerPixel;
+    stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified film x exit-pupil samples per pixel (--spp)");
+    stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel traced through every surface of ", o.lensFile,
+                                          lens.dispersion() ? ", per channel at 610, 550 and 465 nm" : ""), {}}};
+    t = std::chrono::steady_clock::now();
+    Image image = caster.render(lens, camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed},
+                                [&](int done, int rows) { progress.update(done, rows); });
+    stats.renderSeconds = secondsSince(t);
+    aovChannelValues = aovsOf(caster, camera, size, aovs);
+    return image;
+  }
   stats.plan.apertureSamples = o.samplesPerPixel;
   stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
   stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.isPinhole() ? "the PRP" : "the thin lens",
@@ -321,6 +369,11 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
     cmd->add_option("--spp", options->samplesPerPixel, "samples per pixel (stratified pixel x lens)")
         ->check(CLI::Range(1, 1 << 20))
         ->capture_default_str();
+    cmd->add_option("--lens", options->lensFile,
+                    "trace every ray through this lens prescription (assets/lenses/; docs/lenses.md) instead of the thin lens: "
+                    "the camera's pose, sensor, f-number and focus distance, the lens's own focal length, distortion and "
+                    "vignetting")
+        ->type_name("FILE");
   }
   addColmapOptions(*cmd, options->camera);
   if (method == Method::Raster) addSamplingOptions(*cmd, options->lens);

@@ -90,4 +90,14 @@ double filmDistanceForFocusMm(const LensPrescription& lens, double focusDistance
                        4.0 * -1.0 / m.c, " mm, at least)"));
 }
 
+double filmDistanceForObjectMm(const LensPrescription& lens, double objectMm) {
+  const RayTransfer m = lensTransfer(lens);
+  if (std::isinf(objectMm)) return -m.a / m.c;
+  const double d = -(m.a * objectMm + m.b) / (m.c * objectMm + m.d);
+  if (!(objectMm > 0.0) || !(d > 0.0) || !std::isfinite(d))
+    throw InputError(cat(lens.source, ": no real image of a point ", objectMm, " mm in front of the lens forms behind it; focus farther ",
+                         "(about 4 focal lengths, ", 4.0 * -1.0 / m.c, " mm, at least)"));
+  return d;
+}
+
 }  // namespace lenslab

@@ -47,4 +47,8 @@ FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDi
 // behind the lens, e.g. closer than about four focal lengths.
 double filmDistanceForFocusMm(const LensPrescription& lens, double focusDistanceMm);
 
+// The same for an object `objectMm` in front of the first vertex (a camera focused at a distance
+// from its entrance pupil knows this one): last vertex → film. Refused where no real image forms.
+double filmDistanceForObjectMm(const LensPrescription& lens, double objectMm);
+
 }  // namespace lenslab

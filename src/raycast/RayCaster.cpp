@@ -241,6 +241,21 @@ struct RayCaster::Impl {
       if (!throughBarrel(camera.barrel, lensOffset, normalised, camera.inverseFocusDistance() + inverseFocusShift))
         return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
     }
+    // The texture's ray differentials: the same lens point, the pixel one footprint over.
+    const auto rayAt = [&](glm::dvec2 offset) {
+      Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
+      r.origin -= origin;
+      return r;
+    };
+    return shadeRay(ray, rayAt, footprintPx, camera, pixel);
+  }
+
+  // What `ray` (relative to `origin`) sees: the surfaces it meets shaded, blend ones composited
+  // front to back, or the background. `rayAt(offset)` is the same sample's ray from the pixel
+  // `offset` over (relative to `origin`): textures filter over the footprint those rays span.
+  // `camera` and `pixel` name the ray in messages.
+  template <class RayAt>
+  Hit shadeRay(const Ray& ray, const RayAt& rayAt, double footprintPx, const Camera& camera, glm::dvec2 pixel) const {
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
     // Checked here, not left to Embree's assertions: no input may reach an abort.
     // A direction that normalised to zero (its length overflowed) counts as not finite.
@@ -331,8 +346,7 @@ struct RayCaster::Impl {
       // widens the footprint as GL's derivatives of the transformed uv do.
       const auto sampleTexture = [&](const TextureRef& ref, bool data = false) {
         auto uvAt = [&](glm::dvec2 offset) {
-          Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
-          r.origin -= origin;
+          const Ray r = rayAt(offset);
           const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
           const auto at = [&](glm::vec2 Vertex::*set) {
             return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.*set) + b.x * glm::dvec2(v1.*set) + b.y * glm::dvec2(v2.*set));
@@ -566,6 +580,62 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
           }
           const double n = static_cast<double>(samples.size());
           image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(covered / n)));
+        }
+    });
+    if (progress) progress(end, size.heightPx);
+  }
+  return image;
+}
+
+Image RayCaster::render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
+                        const std::function<void(int, int)>& progress) const {
+  Image image(size.widthPx, size.heightPx);
+  const int spp = std::max(1, options.samplesPerPixel);
+  impl_->rebase(impl_->originFor(camera, size));
+  const Impl& m = *impl_;
+  const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
+  const int channels = lens.dispersion() ? 3 : 1;
+  const auto toRay = [&](const LensCamera::WorldRay& w) {
+    Ray r{w.origin - m.origin, w.direction, 0.0, std::numeric_limits<double>::infinity()};
+    return r;
+  };
+  constexpr int kBand = 16;
+  for (int band = 0; band < size.heightPx; band += kBand) {
+    const int end = std::min(band + kBand, size.heightPx);
+    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& rows) {
+      for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int x = 0; x < size.widthPx; ++x) {
+          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * size.widthPx + x) * 40503u;
+          // Pixel positions stratified as the thin lens's; pupil points from the R2 sequence with
+          // a random rotation per pixel (Cranley-Patterson): evenly spread over the pupil's box
+          // for any count, and unbiased.
+          const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
+          const glm::dvec2 rotation = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
+          constexpr double kPlastic = 1.32471795724474602596;
+          const glm::dvec2 step(1.0 / kPlastic, 1.0 / (kPlastic * kPlastic));
+          glm::dvec3 sum(0.0);
+          double covered = 0.0, weights = 0.0;
+          for (std::size_t i = 0; i < samples.size(); ++i) {
+            const glm::dvec2 pixel(x + 0.5 + samples[i].pixel.x, y + 0.5 + samples[i].pixel.y);
+            const glm::dvec2 u = glm::fract(rotation + static_cast<double>(i + 1) * step);
+            for (int c = 0; c < channels; ++c) {
+              const int channel = channels == 3 ? c : 1;
+              const std::optional<LensCamera::WorldRay> w = lens.ray(pixel, size.widthPx, size.heightPx, u, channel);
+              if (!w) continue;  // stopped by a rim or the stop: no light, still a sample
+              const Ray ray = toRay(*w);
+              const auto rayAt = [&](glm::dvec2 offset) {
+                const std::optional<LensCamera::WorldRay> n = lens.ray(pixel + offset, size.widthPx, size.heightPx, u, channel);
+                return n ? toRay(*n) : ray;  // a neighbour the lens stops: no footprint that way
+              };
+              const Impl::Hit hit = m.shadeRay(ray, rayAt, footprintPx, camera, pixel);
+              if (channels == 3) sum[c] += w->weight * hit.color[c];
+              else sum += w->weight * glm::dvec3(hit.color);
+              covered += w->weight * hit.coverage / channels;
+              weights += w->weight / channels;
+            }
+          }
+          const double n = static_cast<double>(samples.size());
+          image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
         }
     });
     if (progress) progress(end, size.heightPx);

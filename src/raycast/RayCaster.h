@@ -10,6 +10,7 @@
 #include "camera/ImageSize.h"
 #include "core/Aovs.h"
 #include "core/Image.h"
+#include "lens/LensCamera.h"
 #include "scene/Scene.h"
 
 #include <cstdint>
@@ -36,6 +37,15 @@ class RayCaster {
 
   // `progress(rowsDone, rows)` is called from the calling thread between bands of rows.
   Image render(const Camera& camera, ImageSize size, const RaycastOptions& options,
+               const std::function<void(int, int)>& progress = {}) const;
+
+  // The reference image through a real lens (lens/LensCamera, `raycast --lens`): each sample is a
+  // film point in the pixel and a point of the exit pupil seen from it, traced through every
+  // surface of the prescription (per channel when it has Abbe numbers) and weighted by its
+  // projected solid angle, so the corners darken as the lens's relative illumination says.
+  // `camera` is the one the lens camera was placed from: it sets where the scene's geometry is
+  // kept relative to, and names messages.
+  Image render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
                const std::function<void(int, int)>& progress = {}) const;
 
   // The shaded colour seen along one ray through continuous pixel position `pixel` from aperture

@@ -64,5 +64,21 @@ refused "f-number too fast" "f/1 needs a stop of" -- lens "$lenses/double-gauss-
 refused "bad sensor" "--sensor" -- lens "$lenses/double-gauss-50mm.lens" --sensor 36
 refused "focus too close" "no real image" -- lens "$lenses/double-gauss-50mm.lens" --focus-mm 100
 
+# --- raycast --lens: the reference image through a prescription ---
+dof=$src/assets/rows/camera-dof.json
+if "$lenslab" raycast --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 48 --spp 4 \
+     --out "$work/gauss.exr" --stats "$work/gauss.json" -q 2>"$work/err"; then
+  check test -s "$work/gauss.exr"
+  check holds "$work/gauss.json" "'double-gauss-50mm.lens' in j['plan']['passes'][0]['why']"
+else
+  fail "raycast --lens: $(cat "$work/err")"
+fi
+refused "lens faster than the design" "faster than the design's full opening" -- raycast --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --width 16 --spp 1 --out "$work/fast.png"
+check test ! -e "$work/fast.png"
+refused "lens with blades" "remove --blades and --squeeze" -- raycast --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --blades 6 --width 16 --spp 1 --out "$work/blades.png"
+refused "lens with the camera's effects" "the prescription has its own" -- raycast --camera "$src/assets/rows/camera-lens.json" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 16 --spp 1 --out "$work/effects.png"
+refused "missing lens file" "no-such.lens" -- raycast --camera "$dof" --lens "$work/no-such.lens" --width 16 --spp 1 --out "$work/none.png"
+check test ! -e "$work/none.png"
+
 echo "lens: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -124,3 +124,53 @@ TEST(LensRaycast, AMarkerLandsWhereItsChiefRayDoesTheRightWayUp) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Focusing: a point on the axis at the focus distance images as the lens's own spot (the
+// analysis's RMS radius at that focus), not as a defocused disc.
+TEST(LensRaycast, APointAtTheFocusDistanceImagesAsTheLensesSpot) {
+  for (const char* file : {"double-gauss-50mm.lens", "telephoto-250mm.lens"}) {
+    const auto lens = bundled(file);
+    const double distance = 5.0;
+    Scene scene = markerScene({{glm::dvec3(0.0, 0.0, -distance), 2e-4, glm::vec3(1.0f)}});
+    const PhysicalCamera physical = looking(distance);
+    const Camera camera = toCamera(physical, "test");
+    LensCameraSettings settings;
+    settings.focusDistance = distance;
+    settings.fNumber = 5.6;
+    settings.sensorMm = {1.2, 1.2};  // 0.01 mm per pixel
+    const LensCamera lensCamera(lens, settings, poseOf(physical));
+    const ImageSize size{120, 120};
+    const Image image = RayCaster(scene).render(lensCamera, camera, size, RaycastOptions{64, 5});
+    glm::dvec2 mean(0.0);
+    double total = 0.0, second = 0.0;
+    for (int y = 0; y < size.heightPx; ++y)
+      for (int x = 0; x < size.widthPx; ++x) {
+        const double v = image.at(x, y).g;
+        mean += v * glm::dvec2(x + 0.5, y + 0.5);
+        total += v;
+      }
+    ASSERT_GT(total, 0.0) << file;
+    mean /= total;
+    for (int y = 0; y < size.heightPx; ++y)
+      for (int x = 0; x < size.widthPx; ++x) {
+        const glm::dvec2 d = glm::dvec2(x + 0.5, y + 0.5) - mean;
+        second += image.at(x, y).g * glm::dot(d, d);
+      }
+    const double rmsMm = 0.01 * std::sqrt(second / total);
+    LensAnalysisOptions o;
+    o.sensorMm = {1.2, 1.2};
+    o.fNumber = 5.6;
+    o.fieldSamples = 2;
+    o.pupilSamples = 64;
+    o.focusDistanceMm = 1000.0 * distance - firstOrder(*lens).entrancePupilMm + lens->lengthMm() + lensCamera.filmDistanceMm();
+    const double spot = analyseLens(*lens, o).rmsSpotMm.x;
+    std::printf("%s at %.1f m: image RMS radius %.4f mm, analysis's spot %.4f mm\n", file, distance, rmsMm, spot);
+    EXPECT_NEAR(rmsMm, spot, 0.25 * spot + 0.01) << file;
+  }
+}
+
+}  // namespace
+}  // namespace lenslab

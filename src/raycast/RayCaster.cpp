@@ -525,6 +525,27 @@ AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSe
   return out;
 }
 
+namespace {
+
+// Rows in bands of 16, each band's rows spread over the cores by TBB; `progress` between bands,
+// from the calling thread.
+template <class Rows>
+void inBands(ImageSize size, const std::function<void(int, int)>& progress, const Rows& rows) {
+  constexpr int kBand = 16;
+  for (int band = 0; band < size.heightPx; band += kBand) {
+    const int end = std::min(band + kBand, size.heightPx);
+    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& r) { rows(r.begin(), r.end()); });
+    if (progress) progress(end, size.heightPx);
+  }
+}
+
+// A different stratified set per pixel, so that the noise does not repeat across pixels.
+std::uint32_t pixelSeed(std::uint32_t seed, int x, int y, int widthPx) {
+  return seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * widthPx + x) * 40503u;
+}
+
+}  // namespace
+
 Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,
                         const std::function<void(int, int)>& progress) const {
   Image image(size.widthPx, size.heightPx);
@@ -537,53 +558,47 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
   const bool lensEffects = !camera.effects.isZero();
   // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
   const int channels = camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1;
-  constexpr int kBand = 16;
-  for (int band = 0; band < size.heightPx; band += kBand) {
-    const int end = std::min(band + kBand, size.heightPx);
-    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& rows) {
-      // The camera each channel's rays are cast with: the lens effects are applied here, per ray.
-      Camera focused = camera;
-      focused.effects = {};
-      focused.source.clear();
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < size.widthPx; ++x) {
-          // A different stratified set per pixel, so that the noise does not repeat across pixels.
-          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * size.widthPx + x) * 40503u;
-          const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
-          glm::dvec3 sum(0.0);
-          double covered = 0.0;  // Σ coverage of the rays (Hit::coverage): alpha is the pixel's coverage
-          if (lensEffects) {
-            // Exactly, per sample: each channel's ray goes through the true perspective position
-            // that the inverse lens model gives for this sample's point of the distorted image,
-            // focused on that channel's (and that radius's) plane of focus.
-            glm::dvec2 guess[3];
-            for (int c = 0; c < channels; ++c)
-              guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5}, size).normalised;
-            for (const LensSample& s : samples) {
-              const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-              for (int c = 0; c < channels; ++c) {
-                const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
-                const Impl::Hit hit =
-                    m.shadeAlong(focused, camera.lensOffset(s.lens), cs.pixel, size, footprintPx, cs.inverseFocusShift);
-                if (channels == 3) sum[c] += hit.color[c];
-                else sum += glm::dvec3(hit.color);
-                covered += static_cast<double>(hit.coverage) / channels;
-              }
-            }
-          } else {
-            for (const LensSample& s : samples) {
-              const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-              const Impl::Hit hit = m.shadeAlong(camera, camera.lensOffset(s.lens), pixel, size, footprintPx);
-              sum += glm::dvec3(hit.color);
-              covered += hit.coverage;
+  inBands(size, progress, [&](int yBegin, int yEnd) {
+    // The camera each channel's rays are cast with: the lens effects are applied here, per ray.
+    Camera focused = camera;
+    focused.effects = {};
+    focused.source.clear();
+    for (int y = yBegin; y < yEnd; ++y)
+      for (int x = 0; x < size.widthPx; ++x) {
+        const std::uint32_t seed = pixelSeed(options.seed, x, y, size.widthPx);
+        const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
+        glm::dvec3 sum(0.0);
+        double covered = 0.0;  // Σ coverage of the rays (Hit::coverage): alpha is the pixel's coverage
+        if (lensEffects) {
+          // Exactly, per sample: each channel's ray goes through the true perspective position
+          // that the inverse lens model gives for this sample's point of the distorted image,
+          // focused on that channel's (and that radius's) plane of focus.
+          glm::dvec2 guess[3];
+          for (int c = 0; c < channels; ++c)
+            guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5}, size).normalised;
+          for (const LensSample& s : samples) {
+            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
+            for (int c = 0; c < channels; ++c) {
+              const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
+              const Impl::Hit hit =
+                  m.shadeAlong(focused, camera.lensOffset(s.lens), cs.pixel, size, footprintPx, cs.inverseFocusShift);
+              if (channels == 3) sum[c] += hit.color[c];
+              else sum += glm::dvec3(hit.color);
+              covered += static_cast<double>(hit.coverage) / channels;
             }
           }
-          const double n = static_cast<double>(samples.size());
-          image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(covered / n)));
+        } else {
+          for (const LensSample& s : samples) {
+            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
+            const Impl::Hit hit = m.shadeAlong(camera, camera.lensOffset(s.lens), pixel, size, footprintPx);
+            sum += glm::dvec3(hit.color);
+            covered += hit.coverage;
+          }
         }
-    });
-    if (progress) progress(end, size.heightPx);
-  }
+        const double n = static_cast<double>(samples.size());
+        image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(covered / n)));
+      }
+  });
   return image;
 }
 
@@ -599,47 +614,42 @@ Image RayCaster::render(const LensCamera& lens, const Camera& camera, ImageSize 
     Ray r{w.origin - m.origin, w.direction, 0.0, std::numeric_limits<double>::infinity()};
     return r;
   };
-  constexpr int kBand = 16;
-  for (int band = 0; band < size.heightPx; band += kBand) {
-    const int end = std::min(band + kBand, size.heightPx);
-    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < size.widthPx; ++x) {
-          const std::uint32_t seed = options.seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * size.widthPx + x) * 40503u;
-          // Pixel positions stratified as the thin lens's; pupil points from the R2 sequence with
-          // a random rotation per pixel (Cranley-Patterson): evenly spread over the pupil's box
-          // for any count, and unbiased.
-          const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
-          const glm::dvec2 rotation = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
-          constexpr double kPlastic = 1.32471795724474602596;
-          const glm::dvec2 step(1.0 / kPlastic, 1.0 / (kPlastic * kPlastic));
-          glm::dvec3 sum(0.0);
-          double covered = 0.0, weights = 0.0;
-          for (std::size_t i = 0; i < samples.size(); ++i) {
-            const glm::dvec2 pixel(x + 0.5 + samples[i].pixel.x, y + 0.5 + samples[i].pixel.y);
-            const glm::dvec2 u = glm::fract(rotation + static_cast<double>(i + 1) * step);
-            for (int c = 0; c < channels; ++c) {
-              const int channel = channels == 3 ? c : 1;
-              const std::optional<LensCamera::WorldRay> w = lens.ray(pixel, size.widthPx, size.heightPx, u, channel);
-              if (!w) continue;  // stopped by a rim or the stop: no light, still a sample
-              const Ray ray = toRay(*w);
-              const auto rayAt = [&](glm::dvec2 offset) {
-                const std::optional<LensCamera::WorldRay> n = lens.ray(pixel + offset, size.widthPx, size.heightPx, u, channel);
-                return n ? toRay(*n) : ray;  // a neighbour the lens stops: no footprint that way
-              };
-              const Impl::Hit hit = m.shadeRay(ray, rayAt, footprintPx, camera, pixel);
-              if (channels == 3) sum[c] += w->weight * hit.color[c];
-              else sum += w->weight * glm::dvec3(hit.color);
-              covered += w->weight * hit.coverage / channels;
-              weights += w->weight / channels;
-            }
+  inBands(size, progress, [&](int yBegin, int yEnd) {
+    for (int y = yBegin; y < yEnd; ++y)
+      for (int x = 0; x < size.widthPx; ++x) {
+        const std::uint32_t seed = pixelSeed(options.seed, x, y, size.widthPx);
+        // Pixel positions stratified as the thin lens's; pupil points from the R2 sequence with
+        // a random rotation per pixel (Cranley-Patterson): evenly spread over the pupil's box
+        // for any count, and unbiased.
+        const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
+        const glm::dvec2 rotation = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
+        constexpr double kPlastic = 1.32471795724474602596;
+        const glm::dvec2 step(1.0 / kPlastic, 1.0 / (kPlastic * kPlastic));
+        glm::dvec3 sum(0.0);
+        double covered = 0.0, weights = 0.0;
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+          const glm::dvec2 pixel(x + 0.5 + samples[i].pixel.x, y + 0.5 + samples[i].pixel.y);
+          const glm::dvec2 u = glm::fract(rotation + static_cast<double>(i + 1) * step);
+          for (int c = 0; c < channels; ++c) {
+            const int channel = channels == 3 ? c : 1;
+            const std::optional<LensCamera::WorldRay> w = lens.ray(pixel, size.widthPx, size.heightPx, u, channel);
+            if (!w) continue;  // stopped by a rim or the stop: no light, still a sample
+            const Ray ray = toRay(*w);
+            const auto rayAt = [&](glm::dvec2 offset) {
+              const std::optional<LensCamera::WorldRay> n = lens.ray(pixel + offset, size.widthPx, size.heightPx, u, channel);
+              return n ? toRay(*n) : ray;  // a neighbour the lens stops: no footprint that way
+            };
+            const Impl::Hit hit = m.shadeRay(ray, rayAt, footprintPx, camera, pixel);
+            if (channels == 3) sum[c] += w->weight * hit.color[c];
+            else sum += w->weight * glm::dvec3(hit.color);
+            covered += w->weight * hit.coverage / channels;
+            weights += w->weight / channels;
           }
-          const double n = static_cast<double>(samples.size());
-          image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
         }
-    });
-    if (progress) progress(end, size.heightPx);
-  }
+        const double n = static_cast<double>(samples.size());
+        image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
+      }
+  });
   return image;
 }
 

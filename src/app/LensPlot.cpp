@@ -29,11 +29,6 @@ struct Frame {
   double y(double h) const { return y0 + 0.5 * height - h * scale(); }
 };
 
-double sag(const LensSurface& s, double r) {
-  if (s.isStop() || s.isPlane()) return 0.0;
-  return s.radiusMm - std::copysign(std::sqrt(std::max(0.0, s.radiusMm * s.radiusMm - r * r)), s.radiusMm);
-}
-
 void polyline(std::ostringstream& out, const std::vector<glm::dvec2>& points, const char* colour, double width, double opacity = 1.0) {
   out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << width << "\" stroke-opacity=\"" << opacity << "\" points=\"";
   for (const glm::dvec2& p : points) out << number(p.x) << "," << number(p.y) << " ";
@@ -60,7 +55,7 @@ void drawLayout(std::ostringstream& out, const LensPrescription& lens, const Len
     std::vector<glm::dvec2> profile;
     for (int k = 0; k <= 40; ++k) {
       const double h = -half + s.apertureMm * k / 40.0;
-      profile.push_back({f.x(z + sag(s, std::abs(h))), f.y(h)});
+      profile.push_back({f.x(z + s.sagMm(std::abs(h))), f.y(h)});
     }
     polyline(out, profile, "#333", 1.2);
     // A glass's edge: from this surface's rim to the next one's, at the smaller of the two rims.
@@ -68,7 +63,7 @@ void drawLayout(std::ostringstream& out, const LensPrescription& lens, const Len
       const LensSurface& next = lens.surfaces[i + 1];
       const double rim = std::min(half, 0.5 * next.apertureMm);
       for (double sign : {-1.0, 1.0})
-        polyline(out, {{f.x(z + sag(s, rim)), f.y(sign * rim)}, {f.x(lens.vertexMm(i + 1) + sag(next, rim)), f.y(sign * rim)}}, "#333", 1.2);
+        polyline(out, {{f.x(z + s.sagMm(rim)), f.y(sign * rim)}, {f.x(lens.vertexMm(i + 1) + next.sagMm(rim)), f.y(sign * rim)}}, "#333", 1.2);
     }
   }
   const double halfDiagonal = 0.5 * glm::length(o.sensorMm);

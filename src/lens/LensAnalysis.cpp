@@ -144,9 +144,7 @@ double rmsSpot(const Setup& s, double h, double focusDistanceMm, int n) {
   if (!chief) return NAN;
   const LensSurface& first = s.lens.surfaces.front();
   // In front of the first surface's rim (a surface concave toward the scene reaches forward).
-  const double rim = 0.5 * first.apertureMm;
-  const double sag = first.isStop() || first.isPlane() ? 0.0 : first.radiusMm - std::copysign(std::sqrt(std::max(0.0, first.radiusMm * first.radiusMm - rim * rim)), first.radiusMm);
-  const double startZ = std::min(0.0, sag) - 1.0;
+  const double startZ = std::min(0.0, first.sagMm(0.5 * first.apertureMm)) - 1.0;
   const bool atInfinity = !(focusDistanceMm > 0.0) || std::isinf(focusDistanceMm);
   // The object point on the chief ray's scene-side line, focusDistance in front of the film.
   const double objectZ = s.filmZ - focusDistanceMm;

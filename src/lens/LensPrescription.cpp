@@ -46,13 +46,6 @@ class RowReader {
   int row_;
 };
 
-// The axial offset of a surface at height r from its vertex (0 for a plane or the stop).
-double sagMm(const LensSurface& s, double r) {
-  if (s.isStop() || s.isPlane()) return 0.0;
-  const double radius = s.radiusMm;
-  return radius - std::copysign(std::sqrt(std::max(0.0, radius * radius - r * r)), radius);
-}
-
 // Two neighbouring surfaces must not cross within the smaller clear aperture: an element (or an
 // air gap) cannot be thinner than nothing at its edge. A file whose second column holds each
 // surface's distance from the one before (a shifted column) is refused on its first row already.
@@ -61,7 +54,7 @@ void refuseCrossingSurfaces(const LensPrescription& lens) {
     const LensSurface& a = lens.surfaces[i];
     const LensSurface& b = lens.surfaces[i + 1];
     const double r = 0.5 * std::min(a.apertureMm, b.apertureMm);
-    const double edge = a.thicknessMm + sagMm(b, r) - sagMm(a, r);
+    const double edge = a.thicknessMm + b.sagMm(r) - a.sagMm(r);
     if (edge < -1e-9 * std::max(1.0, r))
       throw InputError(cat(lens.source, ": rows ", i + 1, " and ", i + 2, " (lines ", a.line, " and ", b.line,
                            ") cross inside their clear aperture: ", a.thicknessMm, " mm apart on the axis but ", edge,
@@ -74,6 +67,11 @@ void refuseCrossingSurfaces(const LensPrescription& lens) {
 bool LensSurface::isPlane() const { return std::isinf(radiusMm); }
 
 double LensSurface::curvaturePerMm() const { return isStop() || isPlane() ? 0.0 : 1.0 / radiusMm; }
+
+double LensSurface::sagMm(double r) const {
+  if (isStop() || isPlane()) return 0.0;
+  return radiusMm - std::copysign(std::sqrt(std::max(0.0, radiusMm * radiusMm - r * r)), radiusMm);
+}
 
 std::size_t LensPrescription::stopIndex() const {
   for (std::size_t i = 0; i < surfaces.size(); ++i)

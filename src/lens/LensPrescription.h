@@ -32,6 +32,8 @@ struct LensSurface {
   bool isPlane() const;
   // 1 / radius (0 for a plane or the stop), in 1/mm.
   double curvaturePerMm() const;
+  // The surface's axial offset from its vertex at height r (mm; 0 for a plane or the stop).
+  double sagMm(double r) const;
 };
 
 struct LensPrescription {

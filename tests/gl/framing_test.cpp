@@ -89,7 +89,9 @@ TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
     // (`render --f-number 2`; a pinhole's framing refuses an f-number).
     for (const char* fNumber : {"", "2"}) {
       if (*fNumber && !chooseCamera(scene, std::nullopt, {}, 0.0).physical) continue;
-      const Camera camera = withDepthRangeFitted(chooseCamera(scene, std::nullopt, {.fNumber = fNumber}, 0.0).camera, scene.bounds);
+      CameraOptions options;
+      options.fNumber = fNumber;
+      const Camera camera = withDepthRangeFitted(chooseCamera(scene, std::nullopt, options, 0.0).camera, scene.bounds);
       const ImageSize size{72, 48};
       Renderer renderer(scene);
       const Image raster = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);

@@ -4,7 +4,8 @@
 // to what both languages read: float literals with an f suffix, no swizzles, no `out` parameters,
 // no struct constructors (callers build the structs), no GLSL-only built-ins.
 // The includer defines `vec2 dfgTexel(int x, int y)` first: texel (x, y) of the DFG table
-// (kDfgSize² texels; x: n·v, y: perceptual roughness; see src/scene/Brdf.h).
+// (kDfgSize² texels; x: n·v = x / (kDfgSize − 1), y: perceptual roughness y / (kDfgSize − 1);
+// see src/scene/Brdf.h).
 
 const float kPi = 3.14159265358979f;
 // Roughness is clamped from below: at α = 0 the GGX distribution is a delta (a mirror) that
@@ -131,12 +132,13 @@ vec3 punctualRadiance(Surface s, Light light, vec3 p) {
   return (diffuse + specular) * illuminanceFacingLight(light, p) * nl;
 }
 
-// The DFG table (split-sum directional albedo: F0 · x + y) at n·v and perceptual roughness,
-// bilinear between texel centres, clamped at the edges.
+// The DFG table (split-sum directional albedo: F0 · x + y) at n·v and perceptual
+// roughness, bilinear between texels. The texels sit on the edges of the domain (texel i at
+// i / (size − 1)), so n·v 1 and roughness 1 read their own values rather than a clamped neighbour's.
 vec2 dfgLookup(float nv, float perceptualRoughness) {
   float last = float(kDfgSize - 1);
-  float x = clamp(clamp(nv, 0.0f, 1.0f) * float(kDfgSize) - 0.5f, 0.0f, last);
-  float y = clamp(clamp(perceptualRoughness, 0.0f, 1.0f) * float(kDfgSize) - 0.5f, 0.0f, last);
+  float x = clamp(nv, 0.0f, 1.0f) * last;
+  float y = clamp(perceptualRoughness, 0.0f, 1.0f) * last;
   int x0 = min(int(x), kDfgSize - 2);
   int y0 = min(int(y), kDfgSize - 2);
   float fx = x - float(x0);

@@ -2,6 +2,7 @@
 
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -72,8 +73,13 @@ const std::vector<glm::vec2>& table() {
 }  // namespace
 
 glm::vec2 dfgTexelIntegral(int x, int y) {
-  const float nv = (static_cast<float>(x) + 0.5f) / kDfgTableSize;
-  const float roughness = (static_cast<float>(y) + 0.5f) / kDfgTableSize;
+  // Edge-aligned: texel i at i / (size − 1). At n·v = 0 the view lies in the tangent plane, which
+  // no shaded point is seen from (a silhouette's n·v ≤ 0 is clamped to 0 as the grazing limit), and
+  // half of the importance samples' reflected directions fall on or below the horizon; the texel
+  // holds the limit from above, taken at kDfgMinNv.
+  const float last = static_cast<float>(kDfgTableSize - 1);
+  const float nv = std::max(static_cast<float>(x) / last, kDfgMinNv);
+  const float roughness = static_cast<float>(y) / last;
   return dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples);
 }
 

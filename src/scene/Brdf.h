@@ -38,20 +38,22 @@ glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRa
 // KHR_lights_punctual's cone factors (scale, offset): attenuation clamp(cos θ·scale + offset, 0, 1)².
 glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadians);
 
-// The split-sum DFG table: kDfgTableSize² texels (x: n·v, y: perceptual roughness, at texel
-// centres (i + ½)/size), each (A, B) with directional albedo E = F0·A + B of the GGX specular lobe
-// with height-correlated Smith visibility. Importance-sampled (GGX half vectors at a fixed
-// Hammersley set of kDfgSamples points): dfgTexelIntegral, baked into the source by
-// tools/update-dfg-table.sh (src/scene/DfgTableValues.inc), so no run computes it.
+// The split-sum DFG table: kDfgTableSize² texels (x: n·v, y: perceptual roughness; texel i holds
+// the value at i / (size − 1), so the table reaches both ends of each axis; n·v 0 at kDfgMinNv),
+// each (A, B) with directional albedo E = F0·A + B of the GGX specular lobe with height-correlated
+// Smith visibility. Importance-sampled (GGX half vectors at a fixed Hammersley set of kDfgSamples
+// points): dfgTexelIntegral, baked into the source by tools/update-dfg-table.sh
+// (src/scene/DfgTableValues.inc), so no run computes it.
 constexpr int kDfgTableSize = 32;
 constexpr int kDfgSamples = 1024;
+constexpr float kDfgMinNv = 1e-4f;  // the n·v that column 0 is integrated at
 const std::vector<glm::vec2>& dfgTable();  // row by row: index y · size + x
 // The table bilinear at (n·v, perceptual roughness), as brdf.glsl's dfgLookup.
 glm::vec2 dfgLookup(float nv, float perceptualRoughness);
 // The table's integral computed directly at (n·v, α) with `samples` samples (tests measure the
 // table's interpolation error against it).
 glm::vec2 dfgIntegral(float nv, float alpha, int samples);
-// What texel (x, y) of the table stands for: dfgIntegral at its centre with kDfgSamples samples.
+// What texel (x, y) of the table stands for: dfgIntegral at its (n·v, roughness) with kDfgSamples samples.
 glm::vec2 dfgTexelIntegral(int x, int y);
 
 }  // namespace lenslab

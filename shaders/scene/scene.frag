@@ -107,8 +107,8 @@ layout(location = 48) uniform vec3 lightIntensity[8];       // colour × lux or 
 layout(location = 56) uniform vec2 lightSpot[8];            // spotScaleOffset
 layout(binding = 2) uniform sampler2D metallicRoughnessTexture;  // linear: G roughness, B metallic
 layout(binding = 3) uniform sampler2D occlusionTexture;          // linear: R
-layout(binding = 9) uniform sampler2D dfgTable;                  // RG32F, kDfgSize², bilinear, clamped
-vec2 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rg; }
+layout(binding = 9) uniform sampler2D dfgTable;                  // RGB32F, kDfgSize², bilinear, clamped
+vec3 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rgb; }
 #include "../common/dfg_filtered.glsl"
 #include "../common/brdf.glsl"
 

@@ -340,7 +340,7 @@ struct RayCaster::Impl {
           ambientDiffuse = scene->environment->diffuse(surface.n);
           ambientSpecular = scene->environment->specular(glm::reflect(-surface.v, surface.n), surface.perceptualRoughness);
         }
-        const glm::vec2 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
+        const glm::vec3 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
         colour += imageLightRadiance(surface, ambientDiffuse, ambientSpecular, dfg);
       }
       if (material.emits()) {

@@ -174,6 +174,31 @@ TEST(SplitSumError, SmallOnASmoothEnvironmentAwayFromGrazing) {
               worst, worstNoise);
 }
 
+// Dielectrics at grazing views (n·v 0.3 and 0.1) on the smooth environment: the image light's
+// diffuse is the integral of the glTF diffuse lobe (1 − F(v·h)) c_diff/π, as the punctual lights
+// have it, so these stay close too (docs/environment.md's table: within 5 %; a diffuse weighted by
+// 1 − E(n·v) instead is 13 % and 35 % too dark here). Bound 7 %: smaller maps, as above.
+TEST(SplitSumError, DielectricsCloseAtGrazingViewsOnASmoothEnvironment) {
+  const EnvironmentImage sky = analyticEnvironment(64, smoothSky);
+  PrefilterSettings settings;
+  settings.diffuseWidth = 32;
+  settings.diffuseSourceWidth = 64;
+  settings.specularWidth = 64;
+  const EnvironmentLookup lookup(std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(sky, settings)), {});
+  const EnvironmentIntegral integral(sky);
+  double worst = 0.0;
+  std::uint64_t seed = 1;
+  for (const glm::dvec3& n : kNormals)
+    for (const float roughness : kRoughness)
+      for (const float nv : {0.3f, 0.1f}) {
+        const Comparison c = compare(lookup, integral, surfaceAt(n, nv, roughness, 0.0f), 24000, seed++);
+        EXPECT_LT(std::abs(c.relativeError), 0.07)
+            << "n (" << n.x << ", " << n.y << ", " << n.z << "), roughness " << roughness << ", n·v " << nv;
+        worst = std::max(worst, std::abs(c.relativeError));
+      }
+  std::printf("split sum on the smooth environment, dielectrics at n·v ≤ 0.3: worst |relative error| %.4f\n", worst);
+}
+
 // --- the table (docs/environment.md) ---
 
 struct GridRow {

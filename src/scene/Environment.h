@@ -53,7 +53,7 @@ inline double environmentLevelRoughness(int level, int levels) {
 
 // The environment prefiltered for image-based lighting (scene/EnvironmentPrefilter.h makes it).
 struct PrefilteredEnvironment {
-  EnvironmentImage background;             // the source: seen straight, and the mirror (level 0)
+  EnvironmentImage background;             // the source: seen straight, and level 0 (roughness ≤ 0.045)
   std::vector<EnvironmentImage> specular;  // roughness levels 1 … n − 1, all of one size
   EnvironmentImage diffuse;                // irradiance / π
   int specularLevels() const { return static_cast<int>(specular.size()) + 1; }

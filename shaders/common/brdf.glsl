@@ -148,6 +148,18 @@ vec3 dfgLookup(float nv, float perceptualRoughness) {
   return mix(bottom, top, fy);
 }
 
+// The direction to read the prefiltered specular radiance along: the reflected direction, leaned
+// towards the normal as roughness grows. The prefiltered lobe is centred on its direction with the
+// view along the normal; the true GGX lobe at an oblique view leans towards the normal (its
+// off-specular peak). The lean is Frostbite's fit (Lagarde and de Rousiers 2014, "Moving Frostbite
+// to PBR", the specular dominant direction): lerp(n, r, s(√s + α)), s = 1 − α.
+vec3 specularDominantDirection(vec3 n, vec3 v, float perceptualRoughness) {
+  vec3 r = 2.0f * dot(n, v) * n - v;  // reflect(−v, n)
+  float alpha = alphaFromPerceptual(perceptualRoughness);
+  float smoothness = 1.0f - alpha;
+  return normalize(mix(n, r, smoothness * (sqrt(smoothness) + alpha)));
+}
+
 // Radiance toward v from light all around (the uniform ambient, or an environment): the split
 // sum. `diffuseRadiance` is the cosine-weighted mean radiance about n; `specularRadiance` the
 // radiance prefiltered for this roughness about the reflected direction; `dfg` = dfgLookup(n·v,

@@ -149,7 +149,7 @@ vec3 shadeLit(vec3 base, vec3 n) {
 #ifdef ENVIRONMENT
   EnvironmentParams e = environmentParams();
   ambientDiffuse = environmentDiffuse(e, s.n);
-  ambientSpecular = environmentSpecular(e, reflect(-s.v, s.n), s.perceptualRoughness);
+  ambientSpecular = environmentSpecular(e, specularDominantDirection(s.n, s.v, s.perceptualRoughness), s.perceptualRoughness);
 #endif
   colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgFiltered(dot(s.n, s.v), s.perceptualRoughness));
   return colour;

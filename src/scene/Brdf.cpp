@@ -22,6 +22,7 @@ using glm::length;
 using glm::max;
 using glm::min;
 using glm::mix;
+using glm::normalize;
 using glm::vec2;
 using glm::vec3;
 using std::cos;
@@ -135,6 +136,10 @@ glm::vec3 punctualRadiance(const ShadingSurface& s, const ShadingLight& light, c
 glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance, const glm::vec3& specularRadiance,
                              glm::vec3 dfg) {
   return glsl::imageLightRadiance(toGlsl(s), diffuseRadiance, specularRadiance, dfg);
+}
+
+glm::vec3 specularDominantDirection(const glm::vec3& n, const glm::vec3& v, float perceptualRoughness) {
+  return glsl::specularDominantDirection(n, v, perceptualRoughness);
 }
 
 glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadians) {

@@ -35,6 +35,9 @@ glm::vec3 punctualRadiance(const ShadingSurface& s, const ShadingLight& light, c
 // terms; times the occlusion.
 glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance, const glm::vec3& specularRadiance,
                              glm::vec3 dfg);
+// Unit direction to read the prefiltered specular along: the reflection of v about n, leaned toward
+// n as roughness grows (brdf.glsl's specularDominantDirection).
+glm::vec3 specularDominantDirection(const glm::vec3& n, const glm::vec3& v, float perceptualRoughness);
 // KHR_lights_punctual's cone factors (scale, offset): attenuation clamp(cos θ·scale + offset, 0, 1)².
 glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadians);
 

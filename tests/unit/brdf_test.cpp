@@ -236,6 +236,26 @@ TEST(Brdf, NoNanAtSilhouettesOrDegenerateVectors) {
   EXPECT_TRUE(std::isfinite(punctualRadiance(s, directional(glm::normalize(glm::vec3(1, 0, -1)), 1.0f), glm::vec3(0.0f)).g));
 }
 
+// The specular dominant direction: unit, the reflected direction for a near-mirror, the normal at
+// roughness 1, and in between (in the plane of n and v, leaning from r toward n) as roughness grows.
+TEST(Brdf, SpecularDominantDirectionLeansFromTheReflectionTowardTheNormal) {
+  const glm::vec3 n(0.0f, 0.0f, 1.0f);
+  for (float nv : {0.1f, 0.5f, 0.9f}) {
+    const glm::vec3 v = unitAt(nv);
+    const glm::vec3 r = glm::reflect(-v, n);
+    EXPECT_NEAR(glm::dot(specularDominantDirection(n, v, 0.0f), r), 1.0f, 1e-4f) << nv;
+    EXPECT_NEAR(glm::dot(specularDominantDirection(n, v, 1.0f), n), 1.0f, 1e-6f) << nv;
+    float previous = glm::dot(r, n);
+    for (float roughness : {0.25f, 0.5f, 0.75f}) {
+      const glm::vec3 d = specularDominantDirection(n, v, roughness);
+      EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);
+      EXPECT_NEAR(d.y, 0.0f, 1e-6f) << "in the plane of n and v";
+      EXPECT_GT(glm::dot(d, n), previous) << "rougher leans further toward n";
+      previous = glm::dot(d, n);
+    }
+  }
+}
+
 TEST(Brdf, OcclusionDimsTheSurroundOnly) {
   ShadingSurface s = surface(glm::vec3(0.5f), 0.0f, 0.5f);
   const glm::vec3 dfg = dfgLookup(1.0f, 0.5f);

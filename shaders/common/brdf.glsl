@@ -3,8 +3,9 @@
 // compiles it as C++ with glm (which spells vec2, vec3, dot, cross, mix, clamp as GLSL does). So it keeps
 // to what both languages read: float literals with an f suffix, no swizzles, no `out` parameters,
 // no struct constructors (callers build the structs), no GLSL-only built-ins.
-// The includer defines `vec2 dfgTexel(int x, int y)` first: texel (x, y) of the DFG table
-// (kDfgSize² texels; x: n·v, y: perceptual roughness; see src/scene/Brdf.h).
+// The includer defines `vec3 dfgTexel(int x, int y)` first: texel (x, y) of the DFG table
+// (kDfgSize² texels; x: n·v = x / (kDfgSize − 1), y: perceptual roughness y / (kDfgSize − 1);
+// see src/scene/Brdf.h).
 
 const float kPi = 3.14159265358979f;
 // Roughness is clamped from below: at α = 0 the GGX distribution is a delta (a mirror) that
@@ -131,29 +132,46 @@ vec3 punctualRadiance(Surface s, Light light, vec3 p) {
   return (diffuse + specular) * illuminanceFacingLight(light, p) * nl;
 }
 
-// The DFG table (split-sum directional albedo: F0 · x + y) at n·v and perceptual roughness,
-// bilinear between texel centres, clamped at the edges.
-vec2 dfgLookup(float nv, float perceptualRoughness) {
+// The DFG table (split sum: specular albedo F0 · x + y, diffuse weight z) at n·v and perceptual
+// roughness, bilinear between texels. The texels sit on the edges of the domain (texel i at
+// i / (size − 1)), so n·v 1 and roughness 1 read their own values rather than a clamped neighbour's.
+vec3 dfgLookup(float nv, float perceptualRoughness) {
   float last = float(kDfgSize - 1);
-  float x = clamp(clamp(nv, 0.0f, 1.0f) * float(kDfgSize) - 0.5f, 0.0f, last);
-  float y = clamp(clamp(perceptualRoughness, 0.0f, 1.0f) * float(kDfgSize) - 0.5f, 0.0f, last);
+  float x = clamp(nv, 0.0f, 1.0f) * last;
+  float y = clamp(perceptualRoughness, 0.0f, 1.0f) * last;
   int x0 = min(int(x), kDfgSize - 2);
   int y0 = min(int(y), kDfgSize - 2);
   float fx = x - float(x0);
   float fy = y - float(y0);
-  vec2 bottom = mix(dfgTexel(x0, y0), dfgTexel(x0 + 1, y0), fx);
-  vec2 top = mix(dfgTexel(x0, y0 + 1), dfgTexel(x0 + 1, y0 + 1), fx);
+  vec3 bottom = mix(dfgTexel(x0, y0), dfgTexel(x0 + 1, y0), fx);
+  vec3 top = mix(dfgTexel(x0, y0 + 1), dfgTexel(x0 + 1, y0 + 1), fx);
   return mix(bottom, top, fy);
+}
+
+// The direction to read the prefiltered specular radiance along: the reflected direction, leaned
+// towards the normal as roughness grows. The prefiltered lobe is centred on its direction with the
+// view along the normal; the true GGX lobe at an oblique view leans towards the normal (its
+// off-specular peak). The lean is Frostbite's fit (Lagarde and de Rousiers 2014, "Moving Frostbite
+// to PBR", the specular dominant direction): lerp(n, r, s(√s + α)), s = 1 − α.
+vec3 specularDominantDirection(vec3 n, vec3 v, float perceptualRoughness) {
+  vec3 r = 2.0f * dot(n, v) * n - v;  // reflect(−v, n)
+  float alpha = alphaFromPerceptual(perceptualRoughness);
+  float smoothness = 1.0f - alpha;
+  return normalize(mix(n, r, smoothness * (sqrt(smoothness) + alpha)));
 }
 
 // Radiance toward v from light all around (the uniform ambient, or an environment): the split
 // sum. `diffuseRadiance` is the cosine-weighted mean radiance about n; `specularRadiance` the
 // radiance prefiltered for this roughness about the reflected direction; `dfg` = dfgLookup(n·v,
-// roughness). The specular albedo E = F0·dfg.x + dfg.y reflects; the diffuse gets what it leaves,
-// (1 − E) c_diff, so that a white dielectric under uniform radiance L returns exactly L. Times the
-// occlusion.
-vec3 imageLightRadiance(Surface s, vec3 diffuseRadiance, vec3 specularRadiance, vec2 dfg) {
-  vec3 specularAlbedo = specularF0(s) * dfg.x + vec3(dfg.y);
-  vec3 diffuse = (vec3(1.0f) - specularAlbedo) * diffuseColor(s) * diffuseRadiance;
+// roughness). Each lobe is the integral of punctualRadiance's own lobe under uniform light: the
+// specular albedo E = F0·dfg.x + dfg.y; the diffuse lobe (1 − F(v·h)) c_diff / π, with
+// 1 − F = (1 − F0)(1 − (1 − v·h)⁵), integrates to (1 − F0) c_diff · dfg.z. The sum is not 1 for
+// a white dielectric: glTF's BRDF does not conserve energy (it loses light at grazing angles and
+// gains some on rough surfaces), and the image light shows what its punctual lights show. Times
+// the occlusion.
+vec3 imageLightRadiance(Surface s, vec3 diffuseRadiance, vec3 specularRadiance, vec3 dfg) {
+  vec3 f0 = specularF0(s);
+  vec3 specularAlbedo = f0 * dfg.x + vec3(dfg.y);
+  vec3 diffuse = (vec3(1.0f) - f0) * dfg.z * diffuseColor(s) * diffuseRadiance;
   return s.occlusion * (diffuse + specularAlbedo * specularRadiance);
 }

@@ -19,6 +19,10 @@ const int kEnvironmentBackground = 0;
 const int kEnvironmentSpecular = 1;
 const int kEnvironmentDiffuse = 2;
 const float kEnvironmentPi = 3.14159265358979f;
+// The smallest perceptual roughness the shading uses (brdf.glsl's kMinPerceptualRoughness): level 0,
+// the source image, stands for it, and the levels are spaced from it to 1, so that a near-mirror
+// reads level 0 alone instead of a blend with a rough level.
+const float kEnvironmentMinRoughness = 0.045f;
 
 struct EnvironmentParams {
   vec2 rotation;       // cos, sin of the environment's rotation about world +Y
@@ -81,10 +85,12 @@ vec3 environmentLevel(EnvironmentParams p, int level, vec2 uv) {
 }
 
 // Radiance around the reflected direction `r` prefiltered by GGX of this perceptual roughness
-// (0 the mirror … 1), × intensity: linear between the two nearest levels.
+// (up to kEnvironmentMinRoughness the mirror … 1), × intensity: linear between the two nearest
+// levels. Level l has roughness r_min + (1 − r_min)·l / (levels − 1).
 vec3 environmentSpecular(EnvironmentParams p, vec3 r, float perceptualRoughness) {
   vec2 uv = environmentUv(p, r);
-  float level = clamp(perceptualRoughness, 0.0f, 1.0f) * float(p.specularLevels - 1);
+  float spaced = (perceptualRoughness - kEnvironmentMinRoughness) / (1.0f - kEnvironmentMinRoughness);
+  float level = clamp(spaced, 0.0f, 1.0f) * float(p.specularLevels - 1);
   int l0 = min(int(floor(level)), p.specularLevels - 2);
   float t = level - float(l0);
   return p.intensity * mix(environmentLevel(p, l0, uv), environmentLevel(p, l0 + 1, uv), t);

@@ -112,8 +112,8 @@ layout(location = 48) uniform vec3 lightIntensity[8];       // colour × lux or 
 layout(location = 56) uniform vec2 lightSpot[8];            // spotScaleOffset
 layout(binding = 2) uniform sampler2D metallicRoughnessTexture;  // linear: G roughness, B metallic
 layout(binding = 3) uniform sampler2D occlusionTexture;          // linear: R
-layout(binding = 9) uniform sampler2D dfgTable;                  // RG32F, kDfgSize², bilinear, clamped
-vec2 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rg; }
+layout(binding = 9) uniform sampler2D dfgTable;                  // RGB32F, kDfgSize², bilinear, clamped
+vec3 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rgb; }
 #include "../common/dfg_filtered.glsl"
 #include "../common/brdf.glsl"
 
@@ -154,7 +154,7 @@ vec3 shadeLit(vec3 base, vec3 n) {
 #ifdef ENVIRONMENT
   EnvironmentParams e = environmentParams();
   ambientDiffuse = environmentDiffuse(e, s.n);
-  ambientSpecular = environmentSpecular(e, reflect(-s.v, s.n), s.perceptualRoughness);
+  ambientSpecular = environmentSpecular(e, specularDominantDirection(s.n, s.v, s.perceptualRoughness), s.perceptualRoughness);
 #endif
   colour += imageLightRadiance(s, ambientDiffuse, ambientSpecular, dfgFiltered(dot(s.n, s.v), s.perceptualRoughness));
   return colour;

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bump when the prefiltering or this file's layout changes: older entries are then stale.
-constexpr int kCacheVersion = 1;
+constexpr int kCacheVersion = 2;  // 2: specular levels spaced from roughness 0.045
 constexpr char kMagic[8] = {'L', 'E', 'N', 'S', 'E', 'N', 'V', '1'};
 
 std::string oneLine(std::string s) {

@@ -397,9 +397,9 @@ struct RayCaster::Impl {
         glm::vec3 ambientDiffuse(scene->lighting.ambient), ambientSpecular(scene->lighting.ambient);
         if (scene->environment) {
           ambientDiffuse = scene->environment->diffuse(surface.n);
-          ambientSpecular = scene->environment->specular(glm::reflect(-surface.v, surface.n), surface.perceptualRoughness);
+          ambientSpecular = scene->environment->specular(specularDominantDirection(surface.n, surface.v, surface.perceptualRoughness), surface.perceptualRoughness);
         }
-        const glm::vec2 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
+        const glm::vec3 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
         colour += imageLightRadiance(surface, ambientDiffuse, ambientSpecular, dfg);
       }
       if (material.emits()) {

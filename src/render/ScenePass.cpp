@@ -135,9 +135,9 @@ ScenePass::ScenePass() : dfgTable_(gl::Texture::create()) {
   // The split-sum DFG table (scene/Brdf.h), bilinear and clamped: scene.frag reads it by one
   // filtered lookup (dfg_filtered.glsl), which weighs the texels as brdf.glsl's dfgLookup and the
   // ray caster do.
-  glTextureStorage2D(dfgTable_.id(), 1, GL_RG32F, kDfgTableSize, kDfgTableSize);
+  glTextureStorage2D(dfgTable_.id(), 1, GL_RGB32F, kDfgTableSize, kDfgTableSize);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(dfgTable_.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RG, GL_FLOAT, dfgTable().data());
+  glTextureSubImage2D(dfgTable_.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RGB, GL_FLOAT, dfgTable().data());
   glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(dfgTable_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(dfgTable_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -97,7 +97,7 @@ class ScenePass {
   mutable gl::Program program_;
   mutable bool environmentVariant_ = false;  // what the programs below were built for
   mutable int lightCountVariant_ = -1;
-  gl::Texture dfgTable_;  // scene/Brdf.h's table, RG32F
+  gl::Texture dfgTable_;  // scene/Brdf.h's table, RGB32F
   mutable glm::dvec3 shadingOrigin_{0.0};
   mutable glm::vec3 towardViewer_{0.0f, 0.0f, 1.0f};
   mutable bool parallelView_ = false;

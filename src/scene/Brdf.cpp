@@ -2,6 +2,7 @@
 
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -9,7 +10,7 @@
 namespace lenslab {
 
 namespace {
-const std::vector<glm::vec2>& table();
+const std::vector<glm::vec3>& table();
 }
 
 // The GLSL, as C++: glm's names are GLSL's.
@@ -21,12 +22,13 @@ using glm::length;
 using glm::max;
 using glm::min;
 using glm::mix;
+using glm::normalize;
 using glm::vec2;
 using glm::vec3;
 using std::cos;
 using std::sqrt;
 // brdf.glsl's one input from its includer: a texel of the DFG table.
-vec2 dfgTexel(int x, int y) { return table()[static_cast<std::size_t>(y * 32 + x)]; }  // 32: kDfgSize, asserted below
+vec3 dfgTexel(int x, int y) { return table()[static_cast<std::size_t>(y * 32 + x)]; }  // 32: kDfgSize, asserted below
 #include "../../shaders/common/brdf.glsl"
 }  // namespace glsl
 
@@ -56,14 +58,14 @@ glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
   return {static_cast<float>(i) / static_cast<float>(n), static_cast<float>(bits) * 2.3283064365386963e-10f};
 }
 
-const std::vector<glm::vec2>& table() {
+const std::vector<glm::vec3>& table() {
   static constexpr float kValues[] = {
 #include "scene/DfgTableValues.inc"
   };
-  static_assert(std::size(kValues) == 2 * kDfgTableSize * kDfgTableSize);
-  static const std::vector<glm::vec2> t = [] {
-    std::vector<glm::vec2> values(static_cast<std::size_t>(kDfgTableSize * kDfgTableSize));
-    for (std::size_t i = 0; i < values.size(); ++i) values[i] = {kValues[2 * i], kValues[2 * i + 1]};
+  static_assert(std::size(kValues) == 3 * kDfgTableSize * kDfgTableSize);
+  static const std::vector<glm::vec3> t = [] {
+    std::vector<glm::vec3> values(static_cast<std::size_t>(kDfgTableSize * kDfgTableSize));
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = {kValues[3 * i], kValues[3 * i + 1], kValues[3 * i + 2]};
     return values;
   }();
   return t;
@@ -71,10 +73,36 @@ const std::vector<glm::vec2>& table() {
 
 }  // namespace
 
-glm::vec2 dfgTexelIntegral(int x, int y) {
-  const float nv = (static_cast<float>(x) + 0.5f) / kDfgTableSize;
-  const float roughness = (static_cast<float>(y) + 0.5f) / kDfgTableSize;
-  return dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples);
+glm::vec3 dfgTexelIntegral(int x, int y) {
+  // Edge-aligned: texel i at i / (size − 1). At n·v = 0 the view lies in the tangent plane, which
+  // no shaded point is seen from (a silhouette's n·v ≤ 0 is clamped to 0 as the grazing limit), and
+  // half of the importance samples' reflected directions fall on or below the horizon; the texel
+  // holds the limit from above, taken at kDfgMinNv.
+  const float last = static_cast<float>(kDfgTableSize - 1);
+  const float nv = std::max(static_cast<float>(x) / last, kDfgMinNv);
+  const float roughness = static_cast<float>(y) / last;
+  return glm::vec3(dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples), dfgDiffuseIntegral(nv, kDfgDiffuseSteps));
+}
+
+float dfgDiffuseIntegral(float nv, int steps) {
+  // Cosine-distributed l: with u = sin²θ_l uniform on [0, 1] and φ uniform, (n·l)/π dl = du dφ / (2π),
+  // so K is the mean of 1 − (1 − v·h)⁵ over the (u, φ) rectangle. Midpoints: the integrand is
+  // smooth, and a fixed rule gives the same value on every CPU up to libm's last bits.
+  const glm::dvec3 v(std::sqrt(std::max(0.0, 1.0 - double(nv) * nv)), 0.0, nv);
+  double sum = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    const double u = (i + 0.5) / steps;
+    const double sinTheta = std::sqrt(u), cosTheta = std::sqrt(1.0 - u);
+    for (int j = 0; j < 2 * steps; ++j) {
+      const double phi = (j + 0.5) / (2 * steps) * 2.0 * glsl::kPi;
+      const glm::dvec3 l(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+      const glm::dvec3 halfway = l + v;
+      const double halfwayLength = glm::length(halfway);
+      const double vh = halfwayLength > 0.0 ? std::clamp(glm::dot(v, halfway) / halfwayLength, 0.0, 1.0) : 0.0;
+      sum += 1.0 - std::pow(1.0 - vh, 5.0);
+    }
+  }
+  return static_cast<float>(sum / (2.0 * steps * steps));
 }
 
 glm::vec2 dfgIntegral(float nv, float alpha, int samples) {
@@ -106,16 +134,20 @@ glm::vec3 punctualRadiance(const ShadingSurface& s, const ShadingLight& light, c
 }
 
 glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance, const glm::vec3& specularRadiance,
-                             glm::vec2 dfg) {
+                             glm::vec3 dfg) {
   return glsl::imageLightRadiance(toGlsl(s), diffuseRadiance, specularRadiance, dfg);
+}
+
+glm::vec3 specularDominantDirection(const glm::vec3& n, const glm::vec3& v, float perceptualRoughness) {
+  return glsl::specularDominantDirection(n, v, perceptualRoughness);
 }
 
 glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadians) {
   return glsl::spotScaleOffset(innerConeAngleRadians, outerConeAngleRadians);
 }
 
-const std::vector<glm::vec2>& dfgTable() { return table(); }
+const std::vector<glm::vec3>& dfgTable() { return table(); }
 
-glm::vec2 dfgLookup(float nv, float perceptualRoughness) { return glsl::dfgLookup(nv, perceptualRoughness); }
+glm::vec3 dfgLookup(float nv, float perceptualRoughness) { return glsl::dfgLookup(nv, perceptualRoughness); }
 
 }  // namespace lenslab

@@ -43,14 +43,23 @@ glm::vec3 sampleBilinear(const EnvironmentImage& image, const glm::vec2& uv);
 // The solid angle (steradians) of a texel of row y of an equirectangular W × H image.
 double texelSolidAngle(int y, int width, int height);
 
+// The smallest perceptual roughness the shading uses (brdf.glsl's kMinPerceptualRoughness, asserted
+// equal to environment.glsl's kEnvironmentMinRoughness in Environment.cpp).
+constexpr double kEnvironmentMinRoughness = 0.045;
+// Perceptual roughness of specular level `level` of `levels`: kEnvironmentMinRoughness … 1, evenly.
+inline double environmentLevelRoughness(int level, int levels) {
+  return kEnvironmentMinRoughness + (1.0 - kEnvironmentMinRoughness) * static_cast<double>(level) / (levels - 1);
+}
+
 // The environment prefiltered for image-based lighting (scene/EnvironmentPrefilter.h makes it).
 struct PrefilteredEnvironment {
-  EnvironmentImage background;             // the source: seen straight, and the mirror (level 0)
+  EnvironmentImage background;             // the source: seen straight, and level 0 (roughness ≤ 0.045)
   std::vector<EnvironmentImage> specular;  // roughness levels 1 … n − 1, all of one size
   EnvironmentImage diffuse;                // irradiance / π
   int specularLevels() const { return static_cast<int>(specular.size()) + 1; }
-  // Perceptual roughness of level l (0 = the mirror, the last = 1): evenly spaced.
-  double levelRoughness(int level) const { return static_cast<double>(level) / (specularLevels() - 1); }
+  // Perceptual roughness of level l: evenly spaced from kEnvironmentMinRoughness (level 0, the
+  // source image standing for the smoothest surface the shading draws) to 1 (the last).
+  double levelRoughness(int level) const { return environmentLevelRoughness(level, specularLevels()); }
 };
 
 // The three lookups both renderers use (shaders/common/environment.glsl, compiled here as C++),

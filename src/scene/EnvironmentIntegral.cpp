@@ -186,8 +186,8 @@ RadianceEstimate EnvironmentIntegral::outgoingRadiance(const ShadingSurface& s, 
 
 glm::vec3 splitSumRadiance(const EnvironmentLookup& lookup, const ShadingSurface& s) {
   const glm::vec3 diffuse = lookup.diffuse(s.n);
-  const glm::vec3 specular = lookup.specular(glm::reflect(-s.v, s.n), s.perceptualRoughness);
-  const glm::vec2 dfg = dfgLookup(glm::dot(s.n, s.v), s.perceptualRoughness);
+  const glm::vec3 specular = lookup.specular(specularDominantDirection(s.n, s.v, s.perceptualRoughness), s.perceptualRoughness);
+  const glm::vec3 dfg = dfgLookup(glm::dot(s.n, s.v), s.perceptualRoughness);
   return imageLightRadiance(s, diffuse, specular, dfg);
 }
 

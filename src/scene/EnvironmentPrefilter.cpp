@@ -145,7 +145,8 @@ EnvironmentImage prefilterDiffuse(const std::vector<EnvironmentImage>& pyramid, 
 
 std::string PrefilterSettings::key() const {
   return "diffuse " + std::to_string(diffuseWidth) + " from " + std::to_string(diffuseSourceWidth) + ", specular " +
-         std::to_string(specularWidth) + " × " + std::to_string(specularLevels) + " levels, " +
+         std::to_string(specularWidth) + " × " + std::to_string(specularLevels) + " levels from roughness " +
+         std::to_string(kEnvironmentMinRoughness) + ", " +
          std::to_string(samplesPerTexel) + " samples";
 }
 
@@ -177,7 +178,7 @@ PrefilteredEnvironment prefilterEnvironment(EnvironmentImage source, const Prefi
   PrefilteredEnvironment out;
   out.diffuse = prefilterDiffuse(pyramid, settings);
   for (int level = 1; level < settings.specularLevels; ++level)
-    out.specular.push_back(prefilterSpecular(pyramid, static_cast<double>(level) / (settings.specularLevels - 1), settings));
+    out.specular.push_back(prefilterSpecular(pyramid, environmentLevelRoughness(level, settings.specularLevels), settings));
   out.background = std::move(source);
   return out;
 }

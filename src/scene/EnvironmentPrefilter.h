@@ -12,12 +12,14 @@
 // other maps. The discrete cosine weights are divided by their own sum (≈ π), so a constant
 // environment gives back exactly its constant.
 //
-// Specular: levels 1 … n − 1 (perceptual roughness l / (n − 1), GGX α its square), each
+// Specular: levels 1 … n − 1 (perceptual roughness r_min + (1 − r_min)·l / (n − 1), r_min =
+// kEnvironmentMinRoughness, GGX α its square), each
 // specularWidth × specularWidth/2, each texel the NdotL-weighted mean of samplesPerTexel GGX
 // importance samples (Hammersley) around its direction, each sample read from the source's
 // pyramid at the level whose texels match the solid angle the sample stands for (filtered
 // importance sampling, Colbert and Křivánek 2007): no fireflies from a small bright light.
-// Level 0 is the source itself (the mirror).
+// Level 0 is the source itself: it stands for roughness r_min, whose lobe (α ≈ 0.002) is narrower
+// than a texel of any source we load.
 #include "scene/Environment.h"
 
 #include <cstdint>
@@ -29,7 +31,7 @@ struct PrefilterSettings {
   int diffuseWidth = 64;          // the diffuse map's columns (rows: half)
   int diffuseSourceWidth = 256;   // the diffuse sum reads the source's pyramid at most this wide
   int specularWidth = 256;        // each specular level's columns (rows: half)
-  int specularLevels = 6;         // including level 0: roughness 0, 0.2, … 1
+  int specularLevels = 6;         // including level 0: roughness 0.045, 0.236, … 1
   int samplesPerTexel = 256;      // GGX samples per specular texel
   // Everything that changes the result, for the cache's key.
   std::string key() const;

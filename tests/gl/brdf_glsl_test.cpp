@@ -35,7 +35,7 @@ layout(std430, binding = 0) readonly buffer Cases { float data[]; };
 layout(binding = 9) uniform sampler2D dfgTable;
 layout(location = 0) uniform int mode;
 out vec4 outColor;
-vec2 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rg; }
+vec3 dfgTexel(int x, int y) { return texelFetch(dfgTable, ivec2(x, y), 0).rgb; }
 #include "../common/brdf.glsl"
 #include "../common/dfg_filtered.glsl"
 vec3 at3(int i) { return vec3(data[i], data[i + 1], data[i + 2]); }
@@ -56,7 +56,7 @@ void main() {
   l.range = data[k + 25];
   l.spotScale = data[k + 26];
   l.spotOffset = data[k + 27];
-  vec2 dfg = mode == 1 ? dfgLookup(dot(s.n, s.v), s.perceptualRoughness) : dfgFiltered(dot(s.n, s.v), s.perceptualRoughness);
+  vec3 dfg = mode == 1 ? dfgLookup(dot(s.n, s.v), s.perceptualRoughness) : dfgFiltered(dot(s.n, s.v), s.perceptualRoughness);
   vec3 c = mode == 0 ? punctualRadiance(s, l, at3(k + 12)) : imageLightRadiance(s, at3(k + 28), vec3(data[k + 31]), dfg);
   outColor = vec4(c, 1.0);
 }
@@ -145,9 +145,9 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
   glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
   gl::Texture table = gl::Texture::create();
-  glTextureStorage2D(table.id(), 1, GL_RG32F, kDfgTableSize, kDfgTableSize);
+  glTextureStorage2D(table.id(), 1, GL_RGB32F, kDfgTableSize, kDfgTableSize);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(table.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RG, GL_FLOAT, dfgTable().data());
+  glTextureSubImage2D(table.id(), 0, 0, 0, kDfgTableSize, kDfgTableSize, GL_RGB, GL_FLOAT, dfgTable().data());
   glTextureParameteri(table.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // as ScenePass sets it (texelFetch ignores it)
   glTextureParameteri(table.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(table.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

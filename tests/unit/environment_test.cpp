@@ -150,6 +150,28 @@ TEST(Environment, RoughnessSpreadsABrightTexelWithoutLosingIt) {
   }
 }
 
+// The levels are spaced from the smallest roughness the shading uses: a near-mirror (roughness
+// ≤ 0.045, the floor) reads the source alone, with nothing of a rough level blended in; each
+// level's own roughness reads that level alone; the levels end at roughness 1.
+TEST(Environment, NearMirrorsReadTheSourceAloneAndEachLevelItsOwnRoughness) {
+  EnvironmentImage image = constantImage(128, glm::vec3(0.1f));
+  image.at(64, 32) = glm::vec3(1000.0f);
+  const auto maps = std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(image, smallSettings()));
+  const EnvironmentLookup lookup(maps, {});
+  EXPECT_DOUBLE_EQ(maps->levelRoughness(0), 0.045);
+  EXPECT_DOUBLE_EQ(maps->levelRoughness(maps->specularLevels() - 1), 1.0);
+  for (const glm::vec3 d : {directionFromUv({64.5f / 128.0f, 32.5f / 64.0f}), directionFromUv({0.3f, 0.6f})}) {
+    for (const float roughness : {0.0f, 0.03f, 0.045f})
+      EXPECT_EQ(lookup.specular(d, roughness), lookup.background(d)) << "roughness " << roughness;
+    for (int level = 1; level < maps->specularLevels(); ++level) {
+      const glm::vec2 uv = uvFromDirection(d);
+      const glm::vec3 own = sampleBilinear(maps->specular[static_cast<std::size_t>(level - 1)], uv);
+      const glm::vec3 looked = lookup.specular(d, static_cast<float>(maps->levelRoughness(level)));
+      EXPECT_NEAR(looked.r, own.r, 1e-4f * own.r) << "level " << level;
+    }
+  }
+}
+
 TEST(Environment, FilteredImportanceSamplingLeavesNoFireflies) {
   // A bright texel seen through a rough level: with a fixed set of samples read at full
   // resolution it would show as scattered dots (the texels whose samples happen to hit it);
@@ -167,7 +189,9 @@ TEST(Environment, FilteredImportanceSamplingLeavesNoFireflies) {
       if (level.at(x, y).r > level.at(peak, y).r) peak = x;
     // (At roughness 1 the lobe's top is flat over tens of degrees: its maximum wanders with the samples.)
     const double roughness = maps.levelRoughness(static_cast<int>(&level - &maps.specular[0]) + 1);
-    if (roughness < 1.0) EXPECT_NEAR(peak, level.width / 2, 2) << "level of roughness " << roughness;
+    if (roughness < 1.0) {
+      EXPECT_NEAR(peak, level.width / 2, 2) << "level of roughness " << roughness;
+    }
     // Where the source shows (above 5 % of its peak over the background), within 2 % of it.
     const float excess = level.at(peak, y).r - 0.1f;
     for (int x = 1; x < level.width; ++x) {

@@ -143,8 +143,8 @@ TEST(EnvironmentIntegral, EnvironmentDensityIsNormalised) {
 
 // The renderers' split sum against the integral on the smooth environment where it is meant to be
 // good: the view within about 45° of the normal (n·v ≥ 0.7), dielectrics of every roughness and
-// metals up to roughness 0.25, six normals: within 5 % (docs/environment.md's table shows at most
-// 3.2 % there). Rougher metals and grazing views are outside this bound, by far (the table).
+// metals up to roughness 0.25, six normals: within 2 % (docs/environment.md's table shows at most
+// 0.7 % there). Rougher metals are outside this bound (the table).
 // The prefiltered maps are smaller than the renderers' (64 columns, not 256), which on a linear
 // environment changes the lookups by far less than the bound, and keeps this test fast.
 TEST(SplitSumError, SmallOnASmoothEnvironmentAwayFromGrazing) {
@@ -163,7 +163,7 @@ TEST(SplitSumError, SmallOnASmoothEnvironmentAwayFromGrazing) {
         for (const float nv : {1.0f, 0.7f}) {
           if (metallic > 0.0f && roughness > 0.25f) continue;
           const Comparison c = compare(lookup, integral, surfaceAt(n, nv, roughness, metallic), 48000, seed++);
-          EXPECT_LT(std::abs(c.relativeError), 0.05)
+          EXPECT_LT(std::abs(c.relativeError), 0.02)
               << "n (" << n.x << ", " << n.y << ", " << n.z << "), roughness " << roughness << ", metallic " << metallic
               << ", n·v " << nv;
           worst = std::max(worst, std::abs(c.relativeError));
@@ -172,6 +172,31 @@ TEST(SplitSumError, SmallOnASmoothEnvironmentAwayFromGrazing) {
   EXPECT_LT(worstNoise, 0.01) << "the integral's own noise is well below the bound";
   std::printf("split sum on the smooth environment, n·v ≥ 0.7: worst |relative error| %.4f, worst estimate noise %.5f\n",
               worst, worstNoise);
+}
+
+// Dielectrics at grazing views (n·v 0.3 and 0.1) on the smooth environment: the image light's
+// diffuse is the integral of the glTF diffuse lobe (1 − F(v·h)) c_diff/π, as the punctual lights
+// have it, so these stay close too (docs/environment.md's table: within 2.3 %; a diffuse weighted by
+// 1 − E(n·v) instead is 13 % and 35 % too dark here). Bound 5 %: smaller maps, as above.
+TEST(SplitSumError, DielectricsCloseAtGrazingViewsOnASmoothEnvironment) {
+  const EnvironmentImage sky = analyticEnvironment(64, smoothSky);
+  PrefilterSettings settings;
+  settings.diffuseWidth = 32;
+  settings.diffuseSourceWidth = 64;
+  settings.specularWidth = 64;
+  const EnvironmentLookup lookup(std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(sky, settings)), {});
+  const EnvironmentIntegral integral(sky);
+  double worst = 0.0;
+  std::uint64_t seed = 1;
+  for (const glm::dvec3& n : kNormals)
+    for (const float roughness : kRoughness)
+      for (const float nv : {0.3f, 0.1f}) {
+        const Comparison c = compare(lookup, integral, surfaceAt(n, nv, roughness, 0.0f), 24000, seed++);
+        EXPECT_LT(std::abs(c.relativeError), 0.05)
+            << "n (" << n.x << ", " << n.y << ", " << n.z << "), roughness " << roughness << ", n·v " << nv;
+        worst = std::max(worst, std::abs(c.relativeError));
+      }
+  std::printf("split sum on the smooth environment, dielectrics at n·v ≤ 0.3: worst |relative error| %.4f\n", worst);
 }
 
 // --- the table (docs/environment.md) ---

@@ -9,6 +9,8 @@
 #include "core/Text.h"
 #include "io/TextFile.h"
 #include "lens/LensAnalysis.h"
+#include "lens/LensFit.h"
+#include "lens/ParaxialLens.h"
 #include "lens/LensPrescription.h"
 #include "plan/CameraOptions.h"
 
@@ -16,6 +18,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -40,6 +43,55 @@ struct LensCommandOptions {
   bool json = false;
   std::string plot;
 };
+
+// The focus distance from the entrance pupil (LensFit's, the renderers') for the report's from the film.
+double focusFromEntrancePupilMm(const LensPrescription& lens, const LensReport& r, const LensAnalysisOptions& o) {
+  if (!(o.focusDistanceMm > 0.0) || std::isinf(o.focusDistanceMm)) return INFINITY;
+  return o.focusDistanceMm - (lens.lengthMm() + r.filmDistanceMm - r.firstOrder.entrancePupilMm);
+}
+
+nlohmann::json fitJson(const FittedLens& fit) {
+  if (!fit.usable) return {{"usable", false}, {"why", fit.why}};
+  const LensFitError& e = fit.error;
+  return {
+      {"usable", true},
+      {"focal_length_mm", fit.focalLengthMm},
+      {"entrance_pupil_diameter_mm", fit.entrancePupilDiameterMm},
+      {"focus_distance_mm", fit.inverseFocusPerMm > 0.0 ? nlohmann::json(1.0 / fit.inverseFocusPerMm) : nlohmann::json("infinity")},
+      {"distortion", {{"k1", fit.distortion.k1}, {"k2", fit.distortion.k2}, {"k3", fit.distortion.k3}}},
+      {"field_curvature_per_mm", fit.fieldCurvaturePerMm},
+      {"chromatic", {{"lateral_red", fit.lateralRed}, {"lateral_blue", fit.lateralBlue},
+                     {"inverse_focus_shift_red_per_mm", fit.inverseFocusShiftRedPerMm},
+                     {"inverse_focus_shift_blue_per_mm", fit.inverseFocusShiftBluePerMm}}},
+      {"barrel", {{"distance_mm", fit.barrelDistanceMm}, {"diameter_mm", 2.0 * fit.barrelRadiusMm}}},
+      {"vignetting", {{"a1", fit.illuminationGain.x}, {"a2", fit.illuminationGain.y}, {"a3", fit.illuminationGain.z}}},
+      {"error", {{"position_um", e.positionUm}, {"lateral_colour_um", e.lateralColourUm}, {"focus_blur_um", e.focusBlurUm},
+                 {"illumination", e.illumination}, {"aberration_blur_um", e.aberrationBlurUm}, {"worst_um", e.worstUm()}}},
+  };
+}
+
+void printFit(std::ostream& out, const FittedLens& fit, const std::function<void(const char*, const std::string&)>& line) {
+  if (!fit.usable) {
+    line("real-time fit", cat("none: ", fit.why));
+    return;
+  }
+  const LensFitError& e = fit.error;
+  line("real-time fit", cat("thin lens F ", fixed(fit.focalLengthMm, 3), " mm, pupil ", fixed(fit.entrancePupilDiameterMm, 3), " mm, focus ",
+                            fit.inverseFocusPerMm > 0.0 ? cat(fixed(1.0 / fit.inverseFocusPerMm, 1), " mm") : std::string("infinity"),
+                            " from the entrance pupil"));
+  line("", cat("k1 ", fixed(fit.distortion.k1, 5), "  k2 ", fixed(fit.distortion.k2, 5), "  k3 ", fixed(fit.distortion.k3, 5),
+               ", field curvature ", fixed(fit.fieldCurvaturePerMm * 1e3, 4), " /m per r^2"));
+  line("", cat("barrel ", fit.barrelRadiusMm > 0.0 ? cat(fixed(2.0 * fit.barrelRadiusMm, 2), " mm across, ", fixed(fit.barrelDistanceMm, 2), " mm in front")
+                                                   : std::string("none"),
+               ", vignetting a1 ", fixed(fit.illuminationGain.x, 4), " a2 ", fixed(fit.illuminationGain.y, 4), " a3 ",
+               fixed(fit.illuminationGain.z, 4)));
+  if (fit.lateralRed != 0.0 || fit.lateralBlue != 0.0)
+    line("", cat("lateral colour R ", fixed(fit.lateralRed, 5), " B ", fixed(fit.lateralBlue, 5), ", axial 1/z shift R ",
+                 fixed(fit.inverseFocusShiftRedPerMm * 1e3, 4), " B ", fixed(fit.inverseFocusShiftBluePerMm * 1e3, 4), " /m"));
+  line("fit error", cat("position ", fixed(e.positionUm, 2), " um, lateral colour ", fixed(e.lateralColourUm, 2), " um, focus blur ",
+                        fixed(e.focusBlurUm, 2), " um, illumination ", fixed(e.illumination, 4)));
+  line("", cat("aberration blur ", fixed(e.aberrationBlurUm, 2), " um RMS (no thin lens has it); worst ", fixed(e.worstUm(), 2), " um"));
+}
 
 nlohmann::json reportJson(const LensPrescription& lens, const LensReport& r, const LensAnalysisOptions& o) {
   const FirstOrder& f = r.firstOrder;
@@ -74,9 +126,11 @@ nlohmann::json reportJson(const LensPrescription& lens, const LensReport& r, con
   return j;
 }
 
-void printReport(std::ostream& out, const LensPrescription& lens, const LensReport& r, const LensAnalysisOptions& o) {
+void printReport(std::ostream& out, const LensPrescription& lens, const LensReport& r, const LensAnalysisOptions& o, const FittedLens& fit) {
   const FirstOrder& f = r.firstOrder;
-  const auto line = [&](const char* name, const std::string& value) { out << name << std::string(22 - std::string(name).size(), ' ') << value << "\n"; };
+  const std::function<void(const char*, const std::string&)> line = [&](const char* name, const std::string& value) {
+    out << name << std::string(22 - std::string(name).size(), ' ') << value << "\n";
+  };
   const auto mm = [](double v) { return cat(fixed(v, 3), " mm"); };
   line("lens", lens.source);
   if (!lens.comments.empty()) line("design", lens.comments.front());
@@ -102,6 +156,7 @@ void printReport(std::ostream& out, const LensPrescription& lens, const LensRepo
   else line("colour", "no Abbe numbers in the file: one wavelength");
   line("rms spot", cat(fixed(1000.0 * r.rmsSpotMm.x, 2), " / ", fixed(1000.0 * r.rmsSpotMm.y, 2), " / ", fixed(1000.0 * r.rmsSpotMm.z, 2),
                        " um at 0 / 0.5 / 1.0 of the half diagonal"));
+  printFit(out, fit, line);
   out << "\nfield   height_mm   angle_deg   distortion_%   relative_illumination\n";
   for (const FieldSample& s : r.field) {
     char row[128];
@@ -127,13 +182,23 @@ int runLens(const LensCommandOptions& c) {
   }
   o.fNumber = c.fNumber;
   const LensReport report = analyseLens(lens, o);
+  LensFitSettings fitSettings;
+  fitSettings.sensorMm = o.sensorMm;
+  fitSettings.fNumber = o.fNumber;
+  fitSettings.focusDistanceMm = focusFromEntrancePupilMm(lens, report, o);
+  const FittedLens fit = fitLens(lens, fitSettings);
   if (!c.plot.empty()) {
     OutputSet outputs;
     outputs.add(c.plot, lensPlotSvg(lens, report, o));
     outputs.commit();
   }
-  if (c.json) std::cout << reportJson(lens, report, o).dump(2) << "\n";
-  else printReport(std::cout, lens, report, o);
+  if (c.json) {
+    nlohmann::json j = reportJson(lens, report, o);
+    j["fit"] = fitJson(fit);
+    std::cout << j.dump(2) << "\n";
+  } else {
+    printReport(std::cout, lens, report, o, fit);
+  }
   return 0;
 }
 

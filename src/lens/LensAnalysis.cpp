@@ -195,18 +195,8 @@ glm::dvec3 fitBrown(const std::vector<double>& x, const std::vector<double>& y) 
 LensReport analyseLens(const LensPrescription& lens, const LensAnalysisOptions& o) {
   LensReport report;
   report.firstOrder = firstOrder(lens);
-  const FirstOrder& fo = report.firstOrder;
-  const double openStop = lens.surfaces[lens.stopIndex()].apertureMm;
-  report.stopDiameterMm = openStop;
-  if (o.fNumber) {
-    // The stop scales the entrance pupil in proportion (the front group's magnification).
-    report.stopDiameterMm = openStop * (fo.focalLengthMm / *o.fNumber) / fo.entrancePupilDiameterMm;
-    if (report.stopDiameterMm > openStop * (1.0 + 1e-9))
-      throw InputError(cat(lens.source, ": f/", *o.fNumber, " needs a stop of ", mmText(report.stopDiameterMm), "; the design's opens to ",
-                           mmText(openStop), ", f/", std::ceil(fo.fNumber * 100.0) / 100.0, "; give --f-number ",
-                           std::ceil(fo.fNumber * 100.0) / 100.0, " or more"));
-    report.firstOrder = firstOrder(lens, report.stopDiameterMm);
-  }
+  report.stopDiameterMm = stopDiameterForFNumber(lens, o.fNumber);
+  if (o.fNumber) report.firstOrder = firstOrder(lens, report.stopDiameterMm);
   const bool atInfinity = !(o.focusDistanceMm > 0.0) || std::isinf(o.focusDistanceMm);
   report.filmDistanceMm = filmDistanceForFocusMm(lens, atInfinity ? INFINITY : o.focusDistanceMm);
 

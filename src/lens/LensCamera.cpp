@@ -10,17 +10,8 @@ namespace lenslab {
 
 LensCamera::LensCamera(std::shared_ptr<const LensPrescription> lens, const LensCameraSettings& settings, const LensCameraPose& pose)
     : lens_(std::move(lens)), settings_(settings), pose_(pose) {
-  const FirstOrder open = firstOrder(*lens_);
-  const double openStop = lens_->surfaces[lens_->stopIndex()].apertureMm;
-  stopDiameterMm_ = openStop;
-  if (settings.fNumber) {
-    stopDiameterMm_ = openStop * (open.focalLengthMm / *settings.fNumber) / open.entrancePupilDiameterMm;
-    if (stopDiameterMm_ > openStop * (1.0 + 1e-9))
-      throw InputError(cat(lens_->source, ": f/", *settings.fNumber, " is faster than the design's full opening, f/",
-                           std::ceil(open.fNumber * 100.0) / 100.0, "; give --f-number ", std::ceil(open.fNumber * 100.0) / 100.0,
-                           " or more"));
-  }
-  entrancePupilMm_ = open.entrancePupilMm;
+  stopDiameterMm_ = stopDiameterForFNumber(*lens_, settings.fNumber);
+  entrancePupilMm_ = firstOrder(*lens_).entrancePupilMm;
   // Focusing moves the film: the object lies focusDistance in front of the entrance pupil.
   const double focusMm = settings.focusDistance / pose.worldPerMm;
   filmDistanceMm_ = std::isinf(focusMm) ? filmDistanceForFocusMm(*lens_, INFINITY) : filmDistanceForObjectMm(*lens_, focusMm - entrancePupilMm_);

@@ -66,6 +66,20 @@ FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDi
   return f;
 }
 
+double stopDiameterForFNumber(const LensPrescription& lens, std::optional<double> fNumber) {
+  const double openStop = lens.surfaces[lens.stopIndex()].apertureMm;
+  if (!fNumber) return openStop;
+  const FirstOrder open = firstOrder(lens);
+  const double stop = openStop * (open.focalLengthMm / *fNumber) / open.entrancePupilDiameterMm;
+  if (stop > openStop * (1.0 + 1e-9)) {
+    const double fastest = std::ceil(open.fNumber * 100.0) / 100.0;
+    throw InputError(cat(lens.source, ": f/", *fNumber, " is faster than the design's full opening, f/", fastest, " (it needs a stop of ",
+                         std::round(stop * 1000.0) / 1000.0, " mm; the design's opens to ", openStop, " mm); give --f-number ", fastest,
+                         " or more"));
+  }
+  return stop;
+}
+
 double filmDistanceForFocusMm(const LensPrescription& lens, double focusDistanceMm) {
   const RayTransfer m = lensTransfer(lens);
   if (std::isinf(focusDistanceMm)) return -m.a / m.c;

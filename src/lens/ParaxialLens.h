@@ -41,6 +41,11 @@ struct FirstOrder {
 // A lens of no power (a flat plate) is refused: it has no focal length to render with.
 FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDiameterMm = std::nullopt);
 
+// The stop's diameter that gives paraxial f-number `fNumber` (the stop row's own when not given):
+// the stop scales the entrance pupil in proportion (the front group's magnification). Refused
+// (naming the lens and the fastest f-number) where that is wider than the design's stop.
+double stopDiameterForFNumber(const LensPrescription& lens, std::optional<double> fNumber);
+
 // Where the film goes to focus at `focusDistanceMm`, measured from the film (as a camera's
 // distance scale is): the distance from the last vertex to the film, paraxially. Infinity gives
 // the back focal distance. Refused (naming the lens) where no real image of that distance forms

@@ -60,7 +60,7 @@ printf '0 2 0 10\n50 x 1.5 20\n-50 0 1 20\n' >"$work/bad.lens"
 refused "bad number" "bad.lens: row 2 (line 2), column 2 (thickness_mm): 'x' is not a number" -- lens "$work/bad.lens"
 refused "missing file" "no-such.lens" -- lens "$work/no-such.lens"
 refused "beyond the image circle" "the lens covers a circle of" -- lens "$lenses/fisheye-10mm.lens"
-refused "f-number too fast" "f/1 needs a stop of" -- lens "$lenses/double-gauss-50mm.lens" --f-number 1
+refused "f-number too fast" "f/1 is faster than the design's full opening" -- lens "$lenses/double-gauss-50mm.lens" --f-number 1
 refused "bad sensor" "--sensor" -- lens "$lenses/double-gauss-50mm.lens" --sensor 36
 refused "focus too close" "no real image" -- lens "$lenses/double-gauss-50mm.lens" --focus-mm 100
 

@@ -4,6 +4,7 @@
 #include "app/CliOptions.h"
 #include "app/ExposureOptions.h"
 #include "app/FrameRender.h"
+#include "app/LensRequest.h"
 #include "app/Commands.h"
 #include "app/EnvironmentOptions.h"
 #include "app/Stats.h"
@@ -22,8 +23,6 @@
 #include "io/StripImageWriter.h"
 #include "io/TextFile.h"
 #include "io/Progress.h"
-#include "lens/LensCamera.h"
-#include "lens/LensPrescription.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/RasterDepth.h"
@@ -32,6 +31,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/SceneAnimation.h"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -70,7 +70,8 @@ struct RenderOptions {
   std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
   ExposureOptions exposure;           // PNG output only
   EnvironmentRequest environment;
-  std::string lensFile;  // raycast --lens: a prescription (lens/LensPrescription.h)
+  std::string lensFile;  // --lens: a prescription (lens/LensPrescription.h)
+  double lensTolerancePx = 2.0;  // render --lens: the fitted camera's largest error for the real-time path
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
@@ -84,13 +85,14 @@ std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, 
   return aovChannels(caster.aovImages(camera, size, aovs));
 }
 
+
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
 // `out`'s temporary file in `outputs`. `aovChannelValues` gets the selected AOVs (`aovs`) of the
 // camera rendered with (refused for a tiled image).
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
                                const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
                                ProgressReporter& progress, const DisplayEncoding& display, const AovSelection& aovs,
-                               std::vector<ImageChannel>& aovChannelValues) {
+                               std::vector<ImageChannel>& aovChannelValues, const std::optional<FittedLens>& fitted) {
   Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
@@ -105,6 +107,14 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer), "--focus-at");
     camera = withDepthRangeFitted(focused.camera, scene.bounds);
     stats.setCamera(focused);
+  }
+  if (!o.lensFile.empty()) {
+    // Fitted for the focus as it now is: the field curvature and the pupil's place follow focus.
+    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
+    SelectedCamera lensCamera;
+    lensCamera.camera = fittedCameraFor(request, fitted && !o.lens.focusAt ? *fitted : fitFor(request), camera, o.lensFile);
+    camera = withDepthRangeFitted(lensCamera.camera, scene.bounds);
+    stats.setCamera(lensCamera);
   }
   const auto renderStart = std::chrono::steady_clock::now();
   const FramePlan plan = planFrame(renderer, scene, camera, size, planOptions, stats);
@@ -172,36 +182,6 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   return image;
 }
 
-// The camera with a real lens for `raycast --lens`: placed where the camera's lens centre is, looking
-// along its axis, with its sensor (a physical camera's, else 36 mm wide at the window's aspect),
-// f-number (the design's full opening where the camera has none) and focus distance.
-LensCamera lensCameraFor(const std::string& file, const SelectedCamera& selected, const Camera& camera) {
-  const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };
-  if (camera.view.projection != Projection::Perspective) refuse("a real lens needs a perspective camera");
-  if (!camera.effects.isZero())
-    refuse("the camera's lens effects (distortion, chromatic, field_curvature) stand for a lens; the prescription has its own: "
-           "remove them from the camera");
-  if (camera.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
-  if (!camera.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
-  const Window& w = camera.view.window;
-  const double centreU = 0.5 * (w.umin + w.umax) - camera.view.prp.x, centreV = 0.5 * (w.vmin + w.vmax) - camera.view.prp.y;
-  if (std::abs(centreU) > 1e-9 * w.width() || std::abs(centreV) > 1e-9 * w.height())
-    refuse("the camera's window is shifted off its axis (a shift lens); a prescription's sensor is centred on the axis");
-  auto lens = std::make_shared<LensPrescription>(parseLensPrescription(readTextFile(file, "lens file"), file));
-  LensCameraSettings settings;
-  settings.sensorMm = selected.physical ? selected.physical->sensorMm : glm::dvec2(36.0, 36.0 * w.height() / w.width());
-  if (selected.physical && std::isfinite(selected.physical->fNumber)) settings.fNumber = selected.physical->fNumber;
-  settings.focusDistance = camera.focusDistance();
-  const ViewBasis basis = viewBasis(camera.view);
-  LensCameraPose pose;
-  pose.eye = prpWorld(camera.view);
-  pose.right = basis.u;
-  pose.up = basis.v;
-  pose.forward = -basis.n;
-  pose.worldPerMm = kMetresPerMillimetre;
-  return LensCamera(std::move(lens), settings, pose);
-}
-
 Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats,
               ProgressReporter& progress, const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues) {
   Camera camera = selected.camera;
@@ -224,7 +204,7 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   }
   stats.camera = camera.source;
   if (!o.lensFile.empty()) {
-    const LensCamera lens = lensCameraFor(o.lensFile, selected, camera);
+    const LensCamera lens = lensCameraFor(lensRequestFor(o.lensFile, selected, camera));
     stats.plan.apertureSamples = o.samplesPerPixel;
     stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified film x exit-pupil samples per pixel (--spp)");
     stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel traced through every surface of ", o.lensFile,
@@ -301,11 +281,36 @@ int runRender(const RenderOptions& o) {
   std::vector<ImageChannel> aovChannelValues;  // --aov, beside the image in its EXR
   // One reporter for the whole run: its last line comes after the file is written.
   ProgressReporter progress(stats.command, o.method == Method::Raster ? "samples" : "rows", o.quiet);
-  if (o.method == Method::Raster) {
+  // render --lens: the fitted thin lens where its worst error is within --lens-tolerance pixels,
+  // else the lens traced exactly (as raycast --lens), the aperture samples as rays per pixel.
+  std::optional<FittedLens> fitted;
+  RenderOptions exact = o;
+  bool traceExactly = o.method == Method::Raycast;
+  if (o.method == Method::Raster && !o.lensFile.empty()) {
+    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
+    fitted = fitFor(request);
+    const double errorPx = fitErrorPx(*fitted, request, size.widthPx);
+    if (!(errorPx <= o.lensTolerancePx)) {
+      traceExactly = true;
+      exact.samplesPerPixel = std::all_of(o.lens.apertureSamples.begin(), o.lens.apertureSamples.end(), ::isdigit) && !o.lens.apertureSamples.empty()
+                                  ? std::stoi(o.lens.apertureSamples)
+                                  : 64;
+      if (!o.quiet)
+        std::cerr << "lenslab: note: --lens " << o.lensFile << ": "
+                  << (fitted->usable ? cat("the fitted thin lens is off by up to ", std::round(errorPx * 100.0) / 100.0, " px at this size")
+                                     : cat("no thin lens fits (", fitted->why, ")"))
+                  << ", above --lens-tolerance " << o.lensTolerancePx << ": tracing the lens exactly, " << exact.samplesPerPixel
+                  << " rays per pixel\n";
+    } else if (!o.quiet) {
+      std::cerr << "lenslab: note: --lens " << o.lensFile << ": the fitted thin lens, off by up to " << std::round(errorPx * 100.0) / 100.0
+                << " px at this size (lenslab lens " << o.lensFile << " shows each effect's error)\n";
+    }
+  }
+  if (!traceExactly) {
     image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display.encoding, aovs,
-                      aovChannelValues);
+                      aovChannelValues, fitted);
   } else {
-    image = raycast(o, scene, selected, size, stats, progress, aovs, aovChannelValues);
+    image = raycast(exact, scene, selected, size, stats, progress, aovs, aovChannelValues);
   }
 
   auto t = std::chrono::steady_clock::now();
@@ -364,6 +369,16 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
         ->type_name("PX");
     cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
         ->check(CLI::IsMember({"osmesa", "egl"}))
+        ->capture_default_str();
+    cmd->add_option("--lens", options->lensFile,
+                    "render through the real-time camera fitted to this lens prescription (assets/lenses/; docs/lenses.md): "
+                    "the thin lens at its entrance pupil with the distortion, colour, field curvature and vignetting its rays "
+                    "show; where that fit is off by more than --lens-tolerance, the lens is traced exactly instead")
+        ->type_name("FILE");
+    cmd->add_option("--lens-tolerance", options->lensTolerancePx,
+                    "with --lens: the largest error of the fitted lens, in pixels of this image, for the real-time path")
+        ->check(CLI::Range(0.0, 1e6))
+        ->type_name("PX")
         ->capture_default_str();
   } else {
     cmd->add_option("--spp", options->samplesPerPixel, "samples per pixel (stratified pixel x lens)")

@@ -2,6 +2,7 @@
 #include "app/CliOptions.h"
 #include "app/Commands.h"
 #include "app/EnvironmentOptions.h"
+#include "app/LensRequest.h"
 #include "core/Clock.h"
 #include "camera/DepthRange.h"
 #include "camera/ImageSize.h"
@@ -44,6 +45,7 @@ struct SweepCommandOptions {
   std::optional<glm::vec3> background;
   EnvironmentRequest environment;
   SweepOptions sweep;
+  std::string lensFile;  // --lens: the exact lens is the reference, its fitted thin lens is swept
   bool quiet = false;
 };
 
@@ -72,8 +74,26 @@ int runSweepCommand(SweepCommandOptions& o) {
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
-  const Camera camera =
-      withDepthRangeFitted(applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens).camera, scene.bounds);
+  const SelectedCamera selected = applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens);
+  Camera camera = withDepthRangeFitted(selected.camera, scene.bounds);
+  // --lens: the reference traces the lens; the swept camera is the thin lens fitted to it.
+  std::optional<LensCamera> exactLens;
+  if (!o.lensFile.empty()) {
+    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
+    const FittedLens fit = fitFor(request);
+    camera = withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds);
+    exactLens.emplace(lensCameraFor(request));
+    o.sweep.exactLens = &*exactLens;
+    std::string key;
+    for (const LensSurface& surface : request.lens->surfaces)
+      for (const double v : {surface.radiusMm, surface.thicknessMm, surface.indexAfter, surface.apertureMm, surface.abbeAfter})
+        key += shortestText(v) + " ";
+    for (const double v : {request.settings.sensorMm.x, request.settings.sensorMm.y, request.settings.fNumber.value_or(0.0),
+                           request.settings.focusDistance})
+      key += "| " + shortestText(v);
+    o.sweep.lensKey = key;
+    o.sweep.lensAblations = fittedCameraAblations(camera);
+  }
   // About 320 wide unless a side is given (the reference is costly); a height alone sets the
   // width from the window.
   const ImageSize size = resolveImageSize(camera, o.width, o.height, 320);
@@ -124,6 +144,9 @@ int runSweepCommand(SweepCommandOptions& o) {
                         environment->rotationDegrees, "°\n")
                   : std::string(),
       "- renderer: ", context->renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
+      o.lensFile.empty() ? std::string()
+                         : cat("- lens `", o.lensFile, "`: the reference and the ray-cast rows trace it exactly; the raster rows are the "
+                               "thin lens fitted to it (`lenslab lens` gives the fit)\n"),
       "- reference: ray cast at ", o.sweep.referenceSpp, " spp",
       result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"),
       " (the pixel integral: each sample's texture filtered over its own stratum); its own noise, from its two ",
@@ -169,6 +192,10 @@ std::function<int()> addSweepCommand(CLI::App& app) {
                   "image width in pixels (default about 320 here, the nearest that keeps pixels square: the reference is costly)");
   cmd->add_option("--height", o->height, "image height in pixels");
   cmd->add_option("--backend", o->backend, "osmesa or egl")->check(CLI::IsMember({"osmesa", "egl"}))->capture_default_str();
+  cmd->add_option("--lens", o->lensFile,
+                  "sweep the real-time camera fitted to this lens prescription against the lens traced exactly (the reference "
+                  "and the raycast rows), with each fitted effect also left out in turn (docs/lenses.md)")
+      ->type_name("FILE");
   cmd->add_option("--reference-spp", o->sweep.referenceSpp, "samples per pixel of the reference")->check(CLI::Range(1, 1 << 20))->capture_default_str();
   cmd->add_option("--max-views", o->sweep.maxViews, "largest raster budget (views)")->check(CLI::Range(1, 65536))->capture_default_str();
   cmd->add_option("--max-spp", o->sweep.maxSpp, "largest ray-cast budget (spp)")->check(CLI::Range(1, 1 << 20))->capture_default_str();

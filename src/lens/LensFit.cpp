@@ -203,8 +203,8 @@ FittedLens fitLens(const LensPrescription& lens, const LensFitSettings& s) {
       const Bundle b = traceBundle(*pupils[static_cast<std::size_t>(c)], glm::dvec2(0.0, -h), epZ, s.pupilSamples);
       if (!(b.share > 0.0))
         throw InputError(cat(lens.source, ": no ray through the lens reaches the film ", std::round(h * 1000.0) / 1000.0,
-                             " mm off the axis; give a smaller --sensor (its half diagonal is ", std::round(halfDiagonal * 1000.0) / 1000.0,
-                             " mm)"));
+                             " mm off the axis; give a smaller sensor (--sensor, or the camera's sensor_mm; its half diagonal is ",
+                             std::round(halfDiagonal * 1000.0) / 1000.0, " mm)"));
       bundles[static_cast<std::size_t>(c)].push_back(b);
     }
     const Bundle free = traceBundle(stopOnly, glm::dvec2(0.0, -h), epZ, s.pupilSamples);

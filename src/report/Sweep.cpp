@@ -146,6 +146,9 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
     h.add(fields, sizeof fields);
   }
   addEnvironment(h, scene.environment.get());
+  // The real lens (sweep --lens) when the reference traces one; nothing otherwise, so that the
+  // thin lens's keys stay as they were.
+  if (!o.lensKey.empty()) h.addString("lens " + o.lensKey);
   const Lighting& l = scene.lighting;
   const float lighting[] = {l.toLight.x, l.toLight.y, l.toLight.z, l.ambient, l.diffuse, l.background.r, l.background.g, l.background.b};
   h.add(lighting, sizeof lighting);
@@ -241,10 +244,11 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     say(o, cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp / 2, " spp (half ", k + 1,
                " of 2", cached.empty() ? std::string() : cat(", cached as ", cached.filename().string()), ")"));
     const auto t = std::chrono::steady_clock::now();
-    halves[k] = caster.render(camera, size, RaycastOptions{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)},
-                              [&](int rows, int height) {
-                                if (o.progress) o.progress("reference rows", std::int64_t{k} * height + rows, 2 * std::int64_t{height});
-                              });
+    const RaycastOptions half{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)};
+    const auto rowsDone = [&](int rows, int height) {
+      if (o.progress) o.progress("reference rows", std::int64_t{k} * height + rows, 2 * std::int64_t{height});
+    };
+    halves[k] = o.exactLens ? caster.render(*o.exactLens, camera, size, half, rowsDone) : caster.render(camera, size, half, rowsDone);
     result.referenceSeconds += secondsSince(t);
     if (!cached.empty()) writeImage(*o.outputs, cached, halves[k]);
   }
@@ -309,6 +313,7 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   };
   std::int64_t imagesPlanned = wanted("adaptive") ? static_cast<std::int64_t>(o.targetsDb.size()) : 0;
   for (const std::string& series : sweepSeriesNames()) imagesPlanned += static_cast<std::int64_t>(budgetsOf(series).size());
+  imagesPlanned += static_cast<std::int64_t>(o.lensAblations.size());
   std::set<std::string> imageNames;
   // `target`: the adaptive row's target PSNR (its image's name), 0 for the others.
   auto record = [&](const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image,
@@ -367,9 +372,17 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
     }
     say(o, "adaptive: done");
   }
+  for (const auto& [effect, without] : o.lensAblations) {
+    const FramePlan plan = makeFramePlan(scene, without, size, PlanOptions{AperturePattern::Sobol, o.maxViews, o.maxViews, o.seed});
+    Image image;
+    const double seconds = medianOf3([&] { return renderer.render(without, plan, size); }, image);
+    record("fitted-without", effect, o.maxViews, seconds, image);
+  }
+  if (!o.lensAblations.empty()) say(o, "fitted lens, each effect left out: done");
   for (int spp : budgetsOf("raycast")) {
     const auto t = std::chrono::steady_clock::now();
-    const Image image = caster.render(camera, size, RaycastOptions{spp, o.seed});
+    const Image image = o.exactLens ? caster.render(*o.exactLens, camera, size, RaycastOptions{spp, o.seed})
+                                    : caster.render(camera, size, RaycastOptions{spp, o.seed});
     record("raycast", "stratified", spp, secondsSince(t), image);
   }
   if (wanted("raycast")) say(o, "raycast: done");
@@ -517,6 +530,26 @@ std::string sweepMarkdown(const SweepResult& r, const std::string& header) {
       s << "| " << std::setprecision(1) << row->targetPsnr << " dB | " << std::setprecision(2) << row->estimatePsnr << " dB | "
         << row->psnr << " dB | " << corrected << " dB | " << std::showpos << row->estimatePsnr - corrected << std::noshowpos
         << " dB | " << std::setprecision(1) << row->meanSamples << " (" << row->maxTileSamples << ") |\n";
+    }
+  }
+  if (!series.empty()) {
+    // sweep --lens: the fit with everything against the fit with each effect left out, at the
+    // largest raster budget, both against the exact lens.
+    const SweepRow* full = nullptr;
+    std::vector<const SweepRow*> without;
+    for (const SweepRow& row : r.rows) {
+      if (row.method == "fitted-without") without.push_back(&row);
+    }
+    for (const SweepRow& row : r.rows)
+      if (!without.empty() && row.method == "raster" && row.pattern == "sobol" && row.samples == without.front()->samples) full = &row;
+    if (full) {
+      s << "\n## The fitted lens, effect by effect\n\nThe real-time camera fitted to the lens, against the lens traced exactly, "
+           "with all its effects and with each left out in turn (" << full->samples << " views, sobol): the drop is what the fitted "
+           "effect buys.\n\n| fitted camera | PSNR (dB) | RMSE | drop (dB) |\n|---|---|---|---|\n";
+      s << "| all effects | " << std::setprecision(2) << full->psnr << " | " << std::setprecision(5) << full->rmse << " | — |\n";
+      for (const SweepRow* row : without)
+        s << "| without " << row->pattern << " | " << std::setprecision(2) << row->psnr << " | " << std::setprecision(5) << row->rmse
+          << " | " << std::setprecision(2) << full->psnr - row->psnr << " |\n";
     }
   }
   s << "\n## All rows\n\n| method | pattern | samples | seconds | RMSE | PSNR (dB) | max error | edge RMSE |\n|---|---|---|---|---|---|---|---|\n";

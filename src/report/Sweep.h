@@ -16,6 +16,7 @@
 // post-process frames (one run for the ray caster); context creation is measured apart by the
 // caller and reported in sweep.md; shader compilation happens before the rows (a warm-up frame).
 #include "camera/Camera.h"
+#include "lens/LensCamera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
 #include "scene/Scene.h"
@@ -41,6 +42,14 @@ struct SweepOptions {
   // Which series run: lecture17, concentric, r2, random, sobol, adaptive, raycast, postprocess.
   std::vector<std::string> series = sweepSeriesNames();
   std::uint32_t seed = 1;
+  // sweep --lens: the reference and the ray-cast series trace this real lens exactly
+  // (lens/LensCamera.h); the camera swept is the thin lens fitted to it, and each of
+  // `lensAblations` (that camera with one effect left out, named) is rendered once at maxViews
+  // views (sobol): what each fitted effect is worth against the truth. `lensKey` (the lens
+  // file's text and settings) goes into the reference's key.
+  const LensCamera* exactLens = nullptr;
+  std::string lensKey;
+  std::vector<std::pair<std::string, Camera>> lensAblations;
   std::filesystem::path outDir;       // empty: write nothing
   OutputSet* outputs = nullptr;       // with outDir: its files go into this set (io/AtomicFile.h),
                                       // to appear with the report when the caller commits it

@@ -132,7 +132,7 @@ TEST(LensFit, BundledRectilinearLensesFitWithinMicrometres) {
 TEST(LensFit, RefusesASensorTheLensDoesNotCover) {
   LensFitSettings s;
   s.sensorMm = {60.0, 60.0};
-  EXPECT_NE(refusalOf([&] { fitLens(bundled("fisheye-10mm.lens"), s); }).find("give a smaller --sensor"), std::string::npos);
+  EXPECT_NE(refusalOf([&] { fitLens(bundled("fisheye-10mm.lens"), s); }).find("give a smaller sensor"), std::string::npos);
 }
 
 }  // namespace

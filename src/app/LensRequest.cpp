@@ -1,0 +1,72 @@
+#include "app/LensRequest.h"
+
+#include "camera/LensFitCamera.h"
+#include "camera/ViewSpec.h"
+#include "core/Error.h"
+#include "core/Text.h"
+#include "io/TextFile.h"
+
+#include <cmath>
+
+namespace lenslab {
+
+LensRequest lensRequestFor(const std::string& file, const SelectedCamera& selected, const Camera& camera) {
+  const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };
+  if (camera.view.projection != Projection::Perspective) refuse("a real lens needs a perspective camera");
+  if (!camera.effects.isZero())
+    refuse("the camera's lens effects (distortion, chromatic, field_curvature) stand for a lens; the prescription has its own: "
+           "remove them from the camera");
+  if (camera.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
+  if (!camera.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
+  const Window& w = camera.view.window;
+  const double centreU = 0.5 * (w.umin + w.umax) - camera.view.prp.x, centreV = 0.5 * (w.vmin + w.vmax) - camera.view.prp.y;
+  if (std::abs(centreU) > 1e-9 * w.width() || std::abs(centreV) > 1e-9 * w.height())
+    refuse("the camera's window is shifted off its axis (a shift lens); a prescription's sensor is centred on the axis");
+  LensRequest r;
+  r.lens = std::make_shared<LensPrescription>(parseLensPrescription(readTextFile(file, "lens file"), file));
+  r.settings.sensorMm = selected.physical ? selected.physical->sensorMm : glm::dvec2(36.0, 36.0 * w.height() / w.width());
+  if (selected.physical && std::isfinite(selected.physical->fNumber)) r.settings.fNumber = selected.physical->fNumber;
+  r.settings.focusDistance = camera.focusDistance();
+  const ViewBasis basis = viewBasis(camera.view);
+  r.pose.eye = prpWorld(camera.view);
+  r.pose.right = basis.u;
+  r.pose.up = basis.v;
+  r.pose.forward = -basis.n;
+  r.pose.worldPerMm = kMetresPerMillimetre;
+  return r;
+}
+
+LensCamera lensCameraFor(const LensRequest& r) { return LensCamera(r.lens, r.settings, r.pose); }
+
+FittedLens fitFor(const LensRequest& r) {
+  LensFitSettings s;
+  s.sensorMm = r.settings.sensorMm;
+  s.fNumber = r.settings.fNumber;
+  s.focusDistanceMm = r.settings.focusDistance / r.pose.worldPerMm;
+  return fitLens(*r.lens, s);
+}
+
+double fitErrorPx(const FittedLens& fit, const LensRequest& r, int widthPx) {
+  return fit.usable ? fit.error.worstUm() * 1e-3 / (r.settings.sensorMm.x / widthPx) : INFINITY;
+}
+
+Camera fittedCameraFor(const LensRequest& r, const FittedLens& fit, const Camera& camera, const std::string& file) {
+  return cameraForFittedLens(camera, fit, r.settings.sensorMm, r.pose.worldPerMm, cat(camera.source, " through ", file, " (fitted)"));
+}
+
+std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& fitted) {
+  std::vector<std::pair<std::string, Camera>> out;
+  const auto without = [&](const std::string& name, bool present, auto leaveOut) {
+    if (!present) return;
+    Camera c = fitted;
+    leaveOut(c);
+    out.emplace_back(name, c);
+  };
+  without("distortion", !fitted.effects.distortion.isZero(), [](Camera& c) { c.effects.distortion = {}; });
+  without("colour", fitted.effects.chromatic.hasLateral() || fitted.effects.chromatic.hasAxial(), [](Camera& c) { c.effects.chromatic = {}; });
+  without("field-curvature", !fitted.effects.fieldCurvature.isZero(), [](Camera& c) { c.effects.fieldCurvature = {}; });
+  without("barrel", fitted.barrel.present(), [](Camera& c) { c.barrel = {}; });
+  return out;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,45 @@
+#pragma once
+// A real lens as the image commands take it (--lens FILE): the prescription placed where the
+// camera's lens centre is, looking along its axis, with the camera's sensor (a physical camera's,
+// else 36 mm wide at the window's aspect), f-number (the design's full opening where the camera
+// has none) and focus distance; and the real-time thin lens fitted to it (lens/LensFit.h).
+#include "camera/Camera.h"
+#include "camera/PhysicalCamera.h"
+#include "lens/LensCamera.h"
+#include "lens/LensFit.h"
+#include "lens/LensPrescription.h"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lenslab {
+
+struct LensRequest {
+  std::shared_ptr<const LensPrescription> lens;
+  LensCameraSettings settings;
+  LensCameraPose pose;
+};
+
+// Refuses, in one line naming --lens and the file, a camera that cannot take a prescription: a
+// parallel projection, lens effects or a barrel of its own (the lens has its own), a shaped
+// aperture, a window shifted off the axis.
+LensRequest lensRequestFor(const std::string& file, const SelectedCamera& selected, const Camera& camera);
+
+LensCamera lensCameraFor(const LensRequest& request);
+FittedLens fitFor(const LensRequest& request);
+
+// The fit's worst error (LensFitError::worstUm) in pixels of an image `widthPx` wide; infinite
+// where no thin lens fits.
+double fitErrorPx(const FittedLens& fit, const LensRequest& request, int widthPx);
+
+// The thin-lens camera fitted to the lens, at `camera`'s pose (camera/LensFitCamera.h).
+Camera fittedCameraFor(const LensRequest& request, const FittedLens& fit, const Camera& camera, const std::string& file);
+
+// The fitted camera with each of its effects left out in turn, named ("distortion", "barrel",
+// ...): what each effect of the fit is worth against the exact lens (sweep --lens). Effects the
+// fit left at zero are not listed.
+std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& fitted);
+
+}  // namespace lenslab

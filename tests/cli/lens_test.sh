@@ -80,5 +80,40 @@ refused "lens with the camera's effects" "the prescription has its own" -- rayca
 refused "missing lens file" "no-such.lens" -- raycast --camera "$dof" --lens "$work/no-such.lens" --width 16 --spp 1 --out "$work/none.png"
 check test ! -e "$work/none.png"
 
+# --- render --lens: the fitted real-time lens, or the exact trace past --lens-tolerance ---
+if "$lenslab" lens "$lenses/double-gauss-50mm.lens" --json >"$work/fit-report.json" 2>"$work/err"; then
+  check holds "$work/fit-report.json" "j['fit']['usable'] and j['fit']['error']['position_um'] < 3 and j['fit']['barrel']['diameter_mm'] > 0"
+else
+  fail "lens --json fit: $(cat "$work/err")"
+fi
+if "$lenslab" render --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 48 --aperture-samples 8 \
+     --out "$work/fitted.exr" --stats "$work/fitted.json" 2>"$work/err"; then
+  check grep -q "the fitted thin lens, off by up to" "$work/err"
+  check holds "$work/fitted.json" "'(fitted)' in j['camera'] and j['lens']['barrel'] and j['renderer'] != 'lenslab ray caster (Embree, TBB)'"
+else
+  fail "render --lens: $(cat "$work/err")"
+fi
+if "$lenslab" render --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 48 --aperture-samples 2 \
+     --lens-tolerance 0 --out "$work/traced.exr" --stats "$work/traced.json" 2>"$work/err"; then
+  check grep -q "above --lens-tolerance 0: tracing the lens exactly, 2 rays per pixel" "$work/err"
+  check holds "$work/traced.json" "j['renderer'] == 'lenslab ray caster (Embree, TBB)' and j['command'] == 'render'"
+else
+  fail "render --lens --lens-tolerance 0: $(cat "$work/err")"
+fi
+refused "render --lens beyond the image circle" "give a smaller sensor" -- render --camera "$dof" --lens "$lenses/fisheye-10mm.lens" --f-number 5.6 --width 18 --out "$work/fisheye.png"
+check test ! -e "$work/fisheye.png"
+refused "render --lens with the camera's effects" "the prescription has its own" -- render --camera "$src/assets/rows/camera-lens.json" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 16 --out "$work/effects.png"
+check test ! -e "$work/effects.png"
+
+# --- sweep --lens: the fit against the exact lens, effect by effect ---
+if "$lenslab" sweep --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 32 --reference-spp 8 --max-views 4 \
+     --max-spp 2 --methods sobol,raycast --out "$work/sweep" -q 2>"$work/err"; then
+  check grep -q "## The fitted lens, effect by effect" "$work/sweep/sweep.md"
+  check grep -q "| without distortion |" "$work/sweep/sweep.md"
+  check grep -q "the reference and the ray-cast rows trace it exactly" "$work/sweep/sweep.md"
+else
+  fail "sweep --lens: $(cat "$work/err")"
+fi
+
 echo "lens: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,6 +1,7 @@
 // Prints src/scene/DfgTableValues.inc: the split-sum DFG table (scene/Brdf.h) as C++ float
 // literals, computed by dfgTexelIntegral at each texel. Run by tools/update-dfg-table.sh after
-// a change to the BRDF (the unit test DfgTable.BakedValuesAreTheIntegralTheyStandFor says when).
+// a change to the BRDF (the unit test DfgTable.BakedValuesAreTheIntegralTheyStandFor says when)
+// or to kDfgTableSize; built with its own copy of scene/Brdf.cpp that holds no baked values.
 // Baked rather than computed at start-up: 1024 texels × 1024 samples cost every command about
 // 0.06 s, and hexadecimal literals make the table the same on every CPU, whatever libm's paths.
 #include "scene/Brdf.h"

@@ -1,6 +1,8 @@
 #!/bin/bash
-# Regenerates src/scene/DfgTableValues.inc, the baked split-sum DFG table (scene/Brdf.h), after a
-# change to the BRDF. Usage: tools/update-dfg-table.sh [build-dir]   (default: build)
+# Regenerates src/scene/DfgTableValues.inc, the baked split-sum DFG table (scene/Brdf.h), whole,
+# after a change to the BRDF or to the table's size (kDfgTableSize in src/scene/Brdf.h with
+# kDfgSize in shaders/common/brdf.glsl; the generator builds without the values it replaces).
+# Usage: tools/update-dfg-table.sh [build-dir]   (default: build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}

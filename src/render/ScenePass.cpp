@@ -154,8 +154,8 @@ void ScenePass::selectPrograms(bool environment, int lightCount) const {
   if (environment == environmentVariant_ && lightCount == lightCountVariant_) return;
   environmentVariant_ = environment;
   lightCountVariant_ = lightCount;
-  program_ = gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant({}));
-  narrowProgram_.reset();
+  program_ = gl::Program();
+  narrowProgram_ = gl::Program();
   for (auto& row : addPrograms_)
     for (gl::Program& p : row) p = gl::Program();
   for (auto& row : mapsPrograms_)
@@ -220,14 +220,16 @@ void ScenePass::drawAddedBackground(const GpuEnvironment& env, const glm::dmat4&
   glDisable(GL_STENCIL_TEST);
 }
 
+GLuint ScenePass::buildSceneProgram(gl::Program& slot, bool narrow, const std::vector<std::string>& defines) const {
+  if (!slot)
+    slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
+                                                 withVariant(defines))
+                  : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
+  return slot.id();
+}
+
 ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
-  const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
-    if (!slot)
-      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
-                                                   withVariant(defines))
-                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
-    return slot.id();
-  };
+  const auto build = [&](gl::Program& slot, const std::vector<std::string>& defines) { return buildSceneProgram(slot, narrow, defines); };
   gl::Program* slots = addPrograms_[narrow ? 1 : 0];
   if (std::string(define) == "DEPTH_ONLY") return {build(slots[0], {"DEPTH_ONLY"}), build(slots[1], {"DEPTH_ONLY", "ALPHA_MASK"})};
   const GLuint addProgram = build(slots[2], {define});
@@ -237,12 +239,9 @@ ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
 ScenePass::Programs ScenePass::mapsVariant(const char* define, bool narrow, const Scene& scene, float lodBias) const {
   const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
     defines.push_back("MATERIAL_MAPS");
-    if (!slot)
-      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
-                                                   withVariant(defines))
-                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
-    setLighting(slot.id(), scene, lodBias);
-    return slot.id();
+    const GLuint id = buildSceneProgram(slot, narrow, defines);
+    setLighting(id, scene, lodBias);
+    return id;
   };
   gl::Program* slots = mapsPrograms_[narrow ? 1 : 0];
   if (!define) {
@@ -267,9 +266,7 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   selectPrograms(scene.environment != nullptr,
                  static_cast<int>(std::min(shadingLights(scene, glm::dvec3(0.0)).size(), static_cast<std::size_t>(kMaxShadingLights))));
   const bool narrow = isNarrowField(clipFromWorld);
-  if (narrow && !narrowProgram_)
-    narrowProgram_ = gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag", withVariant({}));
-  const GLuint program = narrow ? narrowProgram_->id() : program_.id();
+  const GLuint program = buildSceneProgram(narrow ? narrowProgram_ : program_, narrow, {});
   placeShadingOrigin(scene, clipFromWorld);
   glBindTextureUnit(kDfgUnit, dfgTable_.id());
   glBindSampler(kDfgUnit, 0);
@@ -362,13 +359,10 @@ void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWo
 void ScenePass::drawBlended(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow, float lodBias,
                             const std::vector<std::size_t>& backToFront) const {
   const Scene& scene = gpuScene.scene();
-  const auto build = [&](gl::Program& slot, std::vector<std::string> defines) {
-    if (!slot)
-      slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
-                                                   withVariant(defines))
-                    : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
-    setLighting(slot.id(), scene, lodBias);
-    return slot.id();
+  const auto build = [&](gl::Program& slot, const std::vector<std::string>& defines) {
+    const GLuint id = buildSceneProgram(slot, narrow, defines);
+    setLighting(id, scene, lodBias);
+    return id;
   };
   gl::Program* slots = blendPrograms_[narrow ? 1 : 0];
   const GLuint plain = build(slots[0], {"ALPHA_BLEND"});

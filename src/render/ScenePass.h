@@ -70,6 +70,9 @@ class ScenePass {
   // ALPHA_BLEND variant (and its MATERIAL_MAPS one), built on first use.
   void drawBlended(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, float lodBias,
                    const std::vector<std::size_t>& backToFront) const;
+  // `slot`'s program, built first if empty: scene.vert for a wide field, narrow_field.vert and
+  // .geom for a narrow one (both with scene.frag), with `defines` plus withVariant's.
+  GLuint buildSceneProgram(gl::Program& slot, bool narrow, const std::vector<std::string>& defines) const;
   // The variant with `define` (DEPTH_ONLY, ADD_TO_SUM), built on first use.
   Programs variant(const char* define, bool narrow) const;
   // The MATERIAL_MAPS variant (normal map, TEXCOORD_1, uv transforms) of the plain program
@@ -101,7 +104,7 @@ class ScenePass {
   mutable glm::dvec3 shadingOrigin_{0.0};
   mutable glm::vec3 towardViewer_{0.0f, 0.0f, 1.0f};
   mutable bool parallelView_ = false;
-  mutable std::optional<gl::Program> narrowProgram_;  // built on first use: needs fp64 shaders
+  mutable gl::Program narrowProgram_;  // built on first use: needs fp64 shaders
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];
   // MATERIAL_MAPS programs, built on first use: [narrow][plain, DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <stdexcept>
 
 namespace lenslab {
 
@@ -28,7 +29,7 @@ using glm::vec3;
 using std::cos;
 using std::sqrt;
 // brdf.glsl's one input from its includer: a texel of the DFG table.
-vec3 dfgTexel(int x, int y) { return table()[static_cast<std::size_t>(y * 32 + x)]; }  // 32: kDfgSize, asserted below
+vec3 dfgTexel(int x, int y) { return table()[static_cast<std::size_t>(y * kDfgTableSize + x)]; }  // = kDfgSize, asserted below
 #include "../../shaders/common/brdf.glsl"
 }  // namespace glsl
 
@@ -58,6 +59,11 @@ glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
   return {static_cast<float>(i) / static_cast<float>(n), static_cast<float>(bits) * 2.3283064365386963e-10f};
 }
 
+#ifdef LENSLAB_DFG_TABLE_UNBAKED
+// tools/make_dfg_table.cpp's own build of this file: it writes the values and reads none, and
+// those it replaces may be of another size (which the static_assert below refuses).
+const std::vector<glm::vec3>& table() { throw std::logic_error("this build has no baked DFG table (LENSLAB_DFG_TABLE_UNBAKED)"); }
+#else
 const std::vector<glm::vec3>& table() {
   static constexpr float kValues[] = {
 #include "scene/DfgTableValues.inc"
@@ -70,6 +76,7 @@ const std::vector<glm::vec3>& table() {
   }();
   return t;
 }
+#endif
 
 }  // namespace
 

@@ -5,29 +5,11 @@
 # focus on a clicked pixel from these options alone, glTF cameras by name and index, clips, a
 # capture that follows an animated glTF camera, warnings on a pinhole, refusals in one line.
 # usage: camera_options_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-python=/usr/bin/python3
+cli_test_setup "$@"
 
-# expect_refusal NAME EXPECTED_FRAGMENT -- ARGS...: non-zero exit, one stderr line holding the
-# fragment, nothing written to $work/out.*
-expect_refusal() {
-  rm -rf "$work"/out.* "$work"/.out.*
-  one_line_error "$@" || return
-  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
-  pass
-}
 # json FILE EXPRESSION: a value from a JSON file (j is the document).
 json() { $python -c "import json,sys; j=json.load(open(sys.argv[1])); print($2)" "$1"; }
-# holds FILE EXPRESSION: true when the Python expression over the JSON file (j) is true, e.g.
-# holds s.json 'close(j["lens"]["f_number"], 2)'.
-holds() {
-  $python -c "import json,sys; j=json.load(open(sys.argv[1])); close=lambda a,b,t=1e-9: all(abs(x-y)<=t*max(1,abs(y)) for x,y in zip(a if isinstance(a,list) else [a], b if isinstance(b,list) else [b])); sys.exit(0 if ($2) else 1)" "$1"
-}
 # near A B TOLERANCE: |A - B| <= TOLERANCE
 near() { $python -c "import sys; a,b,t=map(float,sys.argv[1:]); sys.exit(0 if abs(a-b)<=t else 1)" "$1" "$2" "$3"; }
 

@@ -4,19 +4,11 @@
 # stays valid JSON lines with every frame once; --skip-existing leaves whole frames alone; bad
 # paths and options get one line, a non-zero exit and no frame.
 # usage: capture_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-python=/usr/bin/python3
+cli_test_setup "$@"
 
 path=$src/assets/rows/rack-focus.json
 common=(--path "$path" --width 64 --aperture-samples 4 --frames 10:21 --aov depth -q)
-
-# Identical pixels in every channel (Z too; idiff counts +inf = +inf as equal).
-same_pixels() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1; }
 
 # --- one run, and three shards as parallel processes into one folder and one manifest ---
 "$lenslab" capture "${common[@]}" --out "$work/one/frame_%04d.exr" || fail "one run"

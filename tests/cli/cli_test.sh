@@ -3,21 +3,8 @@
 # (a missing file, invalid JSON, a degenerate camera, a bad extension) giving one line on stderr,
 # a non-zero exit and no output file.
 # usage: cli_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-
-# expect_refusal NAME EXPECTED_FRAGMENT -- ARGS...: non-zero exit, one stderr line holding the
-# fragment, nothing written to $work/out.*
-expect_refusal() {
-  rm -f "$work"/out.*
-  one_line_error "$@" || return
-  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
-  pass
-}
+cli_test_setup "$@"
 
 # Help.
 if "$lenslab" --help | grep -q render && "$lenslab" render --help | grep -q -- "--camera"; then pass; else fail "--help"; fi

@@ -4,16 +4,9 @@
 # a manifest line's opencv block is a camera file that gives its frame's pixels; shards writing one
 # model at once leave the files one run writes; bad models and options get one line and no image.
 # usage: colmap_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-python=/usr/bin/python3
+cli_test_setup "$@"
 
-# Identical pixels.
-same_pixels() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1; }
 # The same view from a camera built another way (COLMAP's K, R, t instead of eye and target, its
 # view plane elsewhere): the rays agree to rounding (1e-16), the float pipeline's last bits do not,
 # so a pixel may land one 8-bit step away. No channel more than one step (1/255 = 0.0039) off, and

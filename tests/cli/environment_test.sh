@@ -5,25 +5,12 @@
 # $XDG_CACHE_HOME/lenslab (a second run a hit, a corrupt entry recomputed, an unwritable folder a
 # warning only); --stats reporting it; no environment, no change.
 # usage: environment_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'chmod -R u+w "$work"; rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-python=/usr/bin/python3
+cli_test_setup "$@"
 studio=$src/assets/environments/studio.hdr
 export XDG_CACHE_HOME=$work/cache
 
-expect_refusal() {
-  rm -rf "$work"/out* "$work"/.out*
-  one_line_error "$@" || return
-  if ls "$work"/out* "$work"/.out* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
-  pass
-}
-holds() { $python -c "import json,sys,math; j=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1"; }
-check() { if "$@"; then pass; else fail "$*"; fi; }
-same_pixels() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1; }
+refused_outputs='out*'  # the refusals' outputs include folders named out
 
 # --- bad files and values ---
 oiiotool --pattern constant:color=1,1,1 16x16 3 -d float -o "$work/square.exr" >/dev/null 2>&1

@@ -4,27 +4,11 @@
 # default PNG unchanged; the EXR never exposed; --stats and the manifest recording them; bad values
 # refused in one line with no file written.
 # usage: exposure_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-python=/usr/bin/python3
+cli_test_setup "$@"
 dof=$src/assets/rows/camera-dof.json  # physical, f/1.4
 
-# expect_refusal NAME EXPECTED_FRAGMENT -- ARGS...: non-zero exit, one stderr line holding the
-# fragment, nothing written to $work/out.*
-expect_refusal() {
-  rm -rf "$work"/out* "$work"/.out*
-  one_line_error "$@" || return
-  if ls "$work"/out* "$work"/.out* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
-  pass
-}
-# holds FILE EXPRESSION: the Python expression over the JSON file (j) is true.
-holds() { $python -c "import json,sys,math; j=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1"; }
-check() { if "$@"; then pass; else fail "$*"; fi; }
-same_pixels() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null 2>&1; }
+refused_outputs='out*'  # the refusals' outputs include folders named out
 
 # --- refusals: one line naming the option or field, no file ---
 for command in render raycast; do

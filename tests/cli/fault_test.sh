@@ -6,11 +6,8 @@
 #     the file and the reason, nothing new left — for PNG, EXR, the --stats after a written image,
 #     and the sweep's reports; an older file of the same name is kept as it was.
 # usage: fault_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'chmod -R u+w "$work"; rm -rf "$work"' EXIT
+. "$(dirname "$0")/test_lib.sh"
+cli_test_setup "$@"
 . "$(dirname "$0")/fault_lib.sh"
 out=$work/out
 mkdir -p "$out"

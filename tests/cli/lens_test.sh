@@ -2,16 +2,9 @@
 # `lenslab lens` as a user meets it (docs/lenses.md): each bundled prescription described, as text
 # and as JSON whose numbers agree with the design; bad files and options refused in one line.
 # usage: lens_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
-python=/usr/bin/python3
+cli_test_setup "$@"
 lenses=$src/assets/lenses
-holds() { $python -c "import json,sys,math; j=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1"; }
-check() { if "$@"; then pass; else fail "$*"; fi; }
 refused() { if one_line_error "$@"; then pass; fi; }
 
 # --- every bundled lens, text and JSON ---

@@ -5,12 +5,8 @@
 # about 1.1 GB more: view layers, lens tables and sums at the frame's size). It reports its tiles and
 # its lens tables as it goes, and the image is whole.
 # usage: memory_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
+cli_test_setup "$@"
 export LENSLAB_ASSET_DIR="$src/assets"
 
 # Peak resident memory (kB) of one lenslab run, from the kernel's accounting of the child. The

@@ -3,23 +3,11 @@
 # options a command does not take, messages that name the option given, the sweep's file names,
 # capture's stepped frames and the warning for pixels that are not square.
 # usage: polish_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
+cli_test_setup "$@"
 unset LENSLAB_PROGRESS_SECONDS
 dof=$src/assets/rows/camera-dof.json
 lens=$src/assets/rows/camera-lens.json
-
-# expect_refusal NAME FRAGMENT -- ARGS...: one line holding FRAGMENT, non-zero exit, nothing at $work/out.*
-expect_refusal() {
-  rm -f "$work"/out.*
-  one_line_error "$@" || return
-  if ls "$work"/out.* "$work"/.out.* >/dev/null 2>&1; then fail "$1: left an output file"; return; fi
-  pass
-}
 
 # check_progress NAME FILE LABEL UNIT_REGEX: FILE's progress lines for LABEL are well formed, their
 # counts never fall, there are at least two, and the last says done = total with no time to go.

@@ -5,11 +5,8 @@
 # error line naming the file, not a silent death. Also: a target name of NAME_MAX (255) bytes is
 # written (the temporary name beside it is short).
 # usage: signal_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/test_lib.sh"
+cli_test_setup "$@"
 . "$(dirname "$0")/fault_lib.sh"
 # Background jobs of a script ignore SIGINT unless job control is on (a Ctrl-C at a terminal
 # reaches a foreground process whose SIGINT is not ignored; this is the same).

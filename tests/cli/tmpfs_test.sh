@@ -4,10 +4,8 @@
 # (not root, a container without CAP_SYS_ADMIN) it exits 77, which ctest shows as skipped; the
 # checks that need no mount are in fault_test.sh and always run.
 # usage: tmpfs_test.sh path/to/lenslab source-dir
-set -u
-lenslab=$1
-src=$2
-work=$(mktemp -d)
+. "$(dirname "$0")/test_lib.sh"
+cli_test_setup "$@"
 mounts=()
 cleanup() {
   for m in "${mounts[@]}"; do umount "$m" 2>/dev/null; done

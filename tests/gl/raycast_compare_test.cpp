@@ -26,21 +26,56 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 
+// One scene through one camera both ways: the rasterizer's image and the ray caster's.
+struct BothWays {
+  Image raster;
+  Image reference;
+  int views = 0;  // the raster's views: the plan's aperture samples, which may be fewer than asked
+};
+
+// The raster from `views` jittered (and, with an aperture, lens) samples, the ray cast with `spp`.
+BothWays renderBothWays(const Scene& scene, const Camera& camera, ImageSize size, int views, int spp) {
+  Camera planCamera = camera;
+  if (planCamera.isPinhole()) planCamera.apertureRadius = 1e-3;  // only to get a plan with `views` samples
+  const FramePlan plan = makeFramePlan(scene, planCamera, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
+  return {Renderer(scene).render(camera, plan, size), RayCaster(scene).render(camera, size, RaycastOptions{spp, 11}),
+          plan.apertureSamples};
+}
+
+// `scene` lit by the bundled studio environment too, prefiltered coarser than the default to keep
+// the tests short.
+void addStudio(Scene& scene) {
+  PrefilterSettings settings;
+  settings.specularWidth = 64;
+  settings.diffuseWidth = 32;
+  settings.samplesPerTexel = 64;
+  const LoadedEnvironment studio =
+      loadEnvironment(fs::path(LENSLAB_TEST_ASSET_DIR) / "environments/studio.hdr", settings, std::nullopt);
+  scene.environment = std::make_shared<const EnvironmentLookup>(studio.maps, EnvironmentPlacement{30.0, 0.5f});
+}
+
+// `camera` made pinhole, so that what remains is sampling: raster 256 views vs ray cast 256 spp.
+// The studio's lamps and the bokeh scene's are HDR (radiance 6), so the PSNR's peak is 1 over the
+// images clamped at 1 (the subject's range), as a display would show them.
+void expectPinholeAlike(const Scene& scene, Camera camera, ImageSize size, const std::string& what) {
+  camera.apertureRadius = 0.0;
+  BothWays both = renderBothWays(scene, camera, size, 256, 256);
+  for (Image* image : {&both.raster, &both.reference})
+    for (float& v : image->rgba) v = std::min(v, 1.0f);
+  const double psnr = compareImages(both.raster, both.reference, 0.0).psnrDb;
+  std::cout << "[ measure  ] " << what << ", pinhole: raster 256 views vs ray cast 256 spp: PSNR " << psnr << " dB\n";
+  EXPECT_GE(psnr, 45.0) << what;
+}
+
 // Raster with `views` jittered (and, with an aperture, lens) samples vs ray casting with `spp`.
 double rasterVsRaycastPsnr(const std::string& sceneName, const std::string& cameraFile, bool pinhole, int views, int spp,
                            ImageSize size) {
   const fs::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / sceneName);
   Camera camera = loadCameraJson(assets / cameraFile).camera;
-  Camera lensCamera = camera;
-  if (lensCamera.isPinhole()) lensCamera.apertureRadius = 1e-3;  // only to get a plan with `views` samples
-  const FramePlan plan = makeFramePlan(scene, lensCamera, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
   if (pinhole) camera.apertureRadius = 0.0;
-  Renderer renderer(scene);
-  const Image raster = renderer.render(camera, plan, size);
-  const RayCaster caster(scene);
-  const Image reference = caster.render(camera, size, RaycastOptions{spp, 11});
-  const double psnr = compareImages(raster, reference, 0.0).psnrDb;
+  const BothWays both = renderBothWays(scene, camera, size, views, spp);
+  const double psnr = compareImages(both.raster, both.reference, 0.0).psnrDb;
   std::cout << "[ measure  ] " << sceneName << (pinhole ? " pinhole" : " thin lens") << ": raster " << views
             << " views vs ray cast " << spp << " spp: PSNR " << psnr << " dB\n";
   return psnr;
@@ -81,12 +116,10 @@ TEST(RasterVsRaycast, EmissionIsAddedAlikeAndKeptAboveOne) {
   }
   ASSERT_GT(glowing, 0);
   const Camera camera = loadCameraJson(assets / "rows/camera.json").camera;
-  const ImageSize size{240, 160};
-  Camera jittered = camera;
-  jittered.apertureRadius = 1e-3;  // only to get a plan with 256 jittered views
-  const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 256, 256, 3});
-  const Image raster = Renderer(scene).render(camera, plan, size);
-  const Image reference = RayCaster(scene).render(camera, size, RaycastOptions{128, 11});
+  ASSERT_TRUE(camera.isPinhole());
+  const BothWays both = renderBothWays(scene, camera, {240, 160}, 256, 128);
+  const Image& raster = both.raster;
+  const Image& reference = both.reference;
   float brightest = 0.0f;
   for (std::size_t i = 0; i < raster.rgba.size(); i += 4) brightest = std::max(brightest, raster.rgba[i + 1]);
   // PSNR with the peak at the brightest value: the images are HDR.
@@ -102,24 +135,10 @@ TEST(RasterVsRaycast, EmissionIsAddedAlikeAndKeptAboveOne) {
 
 // The bundled bokeh scene's subject carries every map lenslab reads (base colour through a texture
 // transform, metallic-roughness, normal, occlusion on TEXCOORD_1) beside metal and dielectric
-// spheres, lit by a spot light, a sun and the ambient; both renderers shade it alike. Pinhole, so
-// what remains is sampling: the lamps behind are HDR (radiance 6), so the PSNR's peak is 1 over
-// the image clamped at 1 (the subject's range), as a display would show it.
+// spheres, lit by a spot light, a sun and the ambient; both renderers shade it alike, pinhole.
 void expectEveryMapAlike(const Scene& scene, const std::string& what) {
-  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
-  Camera camera = loadCameraJson(assets / "bokeh/camera.json").camera;
-  camera.apertureRadius = 0.0;
-  const ImageSize size{240, 160};
-  Camera jittered = camera;
-  jittered.apertureRadius = 1e-3;  // only to get a plan with 256 jittered views
-  const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 256, 256, 3});
-  Image raster = Renderer(scene).render(camera, plan, size);
-  Image reference = RayCaster(scene).render(camera, size, RaycastOptions{256, 11});
-  for (Image* image : {&raster, &reference})
-    for (float& v : image->rgba) v = std::min(v, 1.0f);
-  const double psnr = compareImages(raster, reference, 0.0).psnrDb;
-  std::cout << "[ measure  ] bokeh subject, every map, " << what << ": raster 256 views vs ray cast 256 spp: PSNR " << psnr << " dB\n";
-  EXPECT_GE(psnr, 45.0) << what;
+  const Camera camera = loadCameraJson(fs::path(LENSLAB_TEST_ASSET_DIR) / "bokeh/camera.json").camera;
+  expectPinholeAlike(scene, camera, {240, 160}, "bokeh subject, every map, " + what);
 }
 
 TEST(RasterVsRaycast, EveryMapAndLightOnTheBokehSubject) {
@@ -127,18 +146,12 @@ TEST(RasterVsRaycast, EveryMapAndLightOnTheBokehSubject) {
   expectEveryMapAlike(loadGltf(fs::path(LENSLAB_TEST_ASSET_DIR) / "bokeh/bokeh.gltf"), "its lights");
 }
 
-// The same lit by the bundled studio environment as well (prefiltered coarser than the default,
-// to keep the test short): its diffuse and specular light and its background, through both.
+// The same lit by the bundled studio environment as well: its diffuse and specular light and its
+// background, through both.
 TEST(RasterVsRaycast, EveryMapAndLightOnTheBokehSubjectInTheStudio) {
   LENSLAB_REQUIRE_GL();
-  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
-  Scene scene = loadGltf(assets / "bokeh/bokeh.gltf");
-  PrefilterSettings settings;
-  settings.specularWidth = 64;
-  settings.diffuseWidth = 32;
-  settings.samplesPerTexel = 64;
-  const LoadedEnvironment studio = loadEnvironment(assets / "environments/studio.hdr", settings, std::nullopt);
-  scene.environment = std::make_shared<const EnvironmentLookup>(studio.maps, EnvironmentPlacement{30.0, 0.5f});
+  Scene scene = loadGltf(fs::path(LENSLAB_TEST_ASSET_DIR) / "bokeh/bokeh.gltf");
+  addStudio(scene);
   expectEveryMapAlike(scene, "the studio");
 }
 
@@ -225,11 +238,11 @@ TEST(RasterVsRaycast, BlendedQuadsThroughTheThinLens) {
   LENSLAB_REQUIRE_GL();
   const Scene scene = blendQuads();
   const Camera camera = blendQuadsCamera();
-  const ImageSize size{120, 80};
-  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 256, 256, 3});
-  ASSERT_EQ(plan.apertureSamples, 256);
-  const Image raster = Renderer(scene).render(camera, plan, size);
-  const Image reference = RayCaster(scene).render(camera, size, RaycastOptions{256, 11});
+  ASSERT_FALSE(camera.isPinhole());
+  const BothWays both = renderBothWays(scene, camera, {120, 80}, 256, 256);
+  ASSERT_EQ(both.views, 256);
+  const Image& raster = both.raster;
+  const Image& reference = both.reference;
   const double psnr = compareImages(raster, reference, 0.0).psnrDb;
   double alphaSquared = 0.0, lowestAlpha = 1.0;
   for (std::size_t i = 3; i < raster.rgba.size(); i += 4) {
@@ -245,30 +258,11 @@ TEST(RasterVsRaycast, BlendedQuadsThroughTheThinLens) {
 }
 
 // The same quads in the studio environment: its background behind them, its light on them.
-// Pinhole, so what remains is sampling.
 TEST(RasterVsRaycast, BlendedQuadsInTheStudio) {
   LENSLAB_REQUIRE_GL();
-  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
   Scene scene = blendQuads();
-  PrefilterSettings settings;
-  settings.specularWidth = 64;
-  settings.diffuseWidth = 32;
-  settings.samplesPerTexel = 64;
-  const LoadedEnvironment studio = loadEnvironment(assets / "environments/studio.hdr", settings, std::nullopt);
-  scene.environment = std::make_shared<const EnvironmentLookup>(studio.maps, EnvironmentPlacement{30.0, 0.5f});
-  Camera camera = blendQuadsCamera();
-  camera.apertureRadius = 0.0;
-  const ImageSize size{120, 80};
-  Camera jittered = camera;
-  jittered.apertureRadius = 1e-3;  // only to get a plan with 256 jittered views
-  const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 256, 256, 3});
-  Image raster = Renderer(scene).render(camera, plan, size);
-  Image reference = RayCaster(scene).render(camera, size, RaycastOptions{256, 11});
-  for (Image* image : {&raster, &reference})
-    for (float& v : image->rgba) v = std::min(v, 1.0f);  // the studio's lamps are HDR; peak 1 as a display shows it
-  const double psnr = compareImages(raster, reference, 0.0).psnrDb;
-  std::cout << "[ measure  ] blend quads in the studio, pinhole: raster 256 views vs ray cast 256 spp: PSNR " << psnr << " dB\n";
-  EXPECT_GE(psnr, 45.0);
+  addStudio(scene);
+  expectPinholeAlike(scene, blendQuadsCamera(), {120, 80}, "blend quads in the studio");
 }
 
 }  // namespace

@@ -453,8 +453,14 @@ std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) 
 const gl::RenderTarget& Renderer::resolveOnGpu() {
   if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
   const gl::RenderTarget& out = target(output_, outSize_);
-  // With vignetting the resolve writes a target of its own, which the vignetting pass reads: each
-  // resolve then applies the gain once, however often a progressive frame is resolved.
+  const VignetteGain gain = vignetteGainFor(outCamera_, outSize_);
+  // A resolve of many views is the frame's last pass and multiplies the gain in itself.
+  if (!adaptive_ && samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed
+    accumulator_->resolve(out, plan_.vignetting ? &gain : nullptr);
+    return out;
+  }
+  // Else the vignetting pass follows, reading a target of its own: each resolve then applies the
+  // gain once, however often a progressive frame is resolved.
   const gl::RenderTarget& resolved = plan_.vignetting ? target(unvignetted_, outSize_) : out;
   if (adaptive_) {
     const gl::Program& program = streamsProgram(false);
@@ -465,12 +471,10 @@ const gl::RenderTarget& Renderer::resolveOnGpu() {
     glDisable(GL_SCISSOR_TEST);
     glProgramUniform1i(program.id(), 0, grid_.tileSizePx);
     fullScreen_.draw(program);
-  } else if (plan_.remap && samplesPlanned() == 1) {
+  } else if (plan_.remap) {
     lensPass_->apply(target(undistorted_, size_), resolved);
-  } else if (samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed
-    accumulator_->resolve(resolved);
   }  // else a single view drawn straight into `resolved` (addSamples)
-  if (plan_.vignetting) vignettePass_->apply(outCamera_, outSize_, resolved, out);
+  if (plan_.vignetting) vignettePass_->apply(gain, resolved, out);
   return out;
 }
 

@@ -134,7 +134,7 @@ std::vector<std::string> passNames(const FramePlan& plan) {
   return names;
 }
 
-TEST(VignettingPlan, ThePassRunsLastAndOnlyWhenTheGainIsNotZero) {
+TEST(VignettingPlan, TheGainIsPlannedLastAndOnlyWhenItIsNotZero) {
   const Scene scene = oneQuad();
   const ImageSize size{120, 80};
   const Camera plain = parseCameraJson("{" + kView + "}", "plain.json").camera;
@@ -152,8 +152,16 @@ TEST(VignettingPlan, ThePassRunsLastAndOnlyWhenTheGainIsNotZero) {
   // With distortion and an aperture: after the lens pass and the resolve.
   const Camera all = parseCameraJson("{" + kView + R"(, "aperture_radius": 0.05, "distortion": {"k1": -0.1},
                                           "vignetting": {"a1": -0.5}})", "all.json").camera;
+  // Many views: the resolve multiplies it in (a variant), no pass of its own.
   p = makeFramePlan(scene, all, size, PlanOptions{AperturePattern::Sobol, 16, 16, 1});
-  EXPECT_EQ(passNames(p), (std::vector<std::string>{"scene", "accumulate", "resolve", "lens", "vignetting"}));
+  EXPECT_TRUE(p.vignetting);
+  EXPECT_EQ(passNames(p), (std::vector<std::string>{"scene", "accumulate", "resolve", "lens"}));
+  EXPECT_EQ(p.passes[2].variants, std::vector<std::string>{"vignetting"});
+  // Per-tile budgets resolve two streams: the pass of its own again.
+  PlanOptions target{AperturePattern::Sobol, 0, 16, 1};
+  target.targetPsnrDb = 40.0;
+  p = makeFramePlan(scene, all, size, target);
+  EXPECT_EQ(passNames(p).back(), "vignetting");
 }
 
 }  // namespace

@@ -80,13 +80,31 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   const LensEffects& e = camera.effects;
   if (e.isZero()) return;
   if (camera.view.projection != Projection::Perspective)
-    throw InputError(cat(where, ": distortion, chromatic aberration and field curvature need a perspective "
+    throw InputError(cat(where, ": distortion, chromatic aberration, field curvature and vignetting need a perspective "
                                 "projection (they act on the angle from the optical axis); this camera is parallel"));
   const Distortion& d = e.distortion;
   for (const double v : {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed,
                          e.chromatic.lateralBlue, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue,
-                         e.fieldCurvature.inverseFocusPerRadius2})
+                         e.fieldCurvature.inverseFocusPerRadius2, e.vignetting.a1, e.vignetting.a2, e.vignetting.a3})
     if (!std::isfinite(v)) throw InputError(cat(where, ": lens effect coefficients must be finite numbers"));
+  // The gain is a polynomial in the distorted radius, the pixel's own place on the film: it must
+  // stay positive out to the window's farthest corner (a fit to a real lens can turn down past
+  // the field it was fitted over, and a pixel cannot receive negative light).
+  const double filmCorner = normalisedWindow(camera.view).cornerRadius();
+  if (const auto zero = vignettingZeroWithin(e.vignetting, filmCorner * filmCorner)) {
+    const Vignetting& g = e.vignetting;
+    throw InputError(cat(where, ": vignetting (a1 = ", g.a1, ", a2 = ", g.a2, ", a3 = ", g.a3,
+                         ") reaches gain 0 at normalised radius ", std::sqrt(*zero), ", ",
+                         std::lround(100.0 * std::sqrt(*zero) / filmCorner),
+                         "% of the way from the centre to the farthest corner (radius ", filmCorner,
+                         "); the gain 1 + a1 r^2 + a2 r^4 + a3 r^6 must stay above 0 over the whole image"));
+  }
+  if (const double largest = vignettingLargestGain(e.vignetting, filmCorner * filmCorner); !(largest <= kMaxVignettingGain)) {
+    const Vignetting& g = e.vignetting;
+    throw InputError(cat(where, ": vignetting (a1 = ", g.a1, ", a2 = ", g.a2, ", a3 = ", g.a3, ") reaches gain ", largest,
+                         " inside the image (out to normalised radius ", filmCorner, "); the gain 1 + a1 r^2 + a2 r^4 + a3 r^6 "
+                         "is relative to the centre's 1 and must stay at most ", kMaxVignettingGain));
+  }
   // Each plane of focus the effects add (a channel's, the curved surface's at the corner) must be
   // one the lens can form an image of: beyond its focal length. Without a focal length, beyond the
   // aperture radius: no lens is faster than f/0.5 (f ≥ R). A plane nearer than that is no lens's,

@@ -44,13 +44,14 @@ const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", 
 // Keys that only the OpenCV form takes: any of them selects it.
 const std::set<std::string> kOpenCvOnlyKeys = {"intrinsics", "K", "R", "t", "dist"};
 // Lens effects and the image size, in any form.
-const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture", "barrel"};
+const std::set<std::string> kCommonKeys = {"distortion", "chromatic", "field_curvature", "image_size", "aperture", "barrel", "vignetting"};
 const std::set<std::string> kBarrelKeys = {"distance_mm", "diameter_mm"};
 const std::set<std::string> kApertureKeys = {"blades", "rotation_deg", "roundness", "anamorphic_squeeze"};
 const std::set<std::string> kDistortionKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
 const std::set<std::string> kChromaticKeys = {"lateral_red", "lateral_blue", "focus_distance_red",
                                               "focus_distance_blue", "abbe_number"};
 const std::set<std::string> kFieldCurvatureKeys = {"corner_focus_distance"};
+const std::set<std::string> kVignettingKeys = {"a1", "a2", "a3"};
 const std::set<std::string> kIntrinsicsKeys = {"fx", "fy", "cx", "cy", "width", "height"};
 
 std::string joined(const std::set<std::string>& keys) {
@@ -477,6 +478,15 @@ void parseCommon(const Reader& r, CameraFile& file) {
     const double corner = normalisedWindow(camera.view).cornerRadius();
     e.fieldCurvature.inverseFocusPerRadius2 = (inverseOf(o, "corner_focus_distance") - focus) / (corner * corner);
   }
+  if (r.has("vignetting")) {
+    // Missing keys are 0; validateLensEffects below refuses a gain that reaches 0 inside the image.
+    const Reader o = r.object("vignetting", kVignettingKeys);
+    Vignetting& v = e.vignetting;
+    if (o.has("a1")) v.a1 = o.number("a1");
+    if (o.has("a2")) v.a2 = o.number("a2");
+    if (o.has("a3")) v.a3 = o.number("a3");
+    if (!v.isZero() && camera.view.projection != Projection::Perspective) r.fail("vignetting", "needs a perspective projection");
+  }
   if (r.has("aperture")) {
     const Reader o = r.object("aperture", kApertureKeys);
     ApertureShape& a = camera.aperture;
@@ -539,6 +549,12 @@ void writeEffects(const Camera& camera, json& j) {
       c["focus_distance_blue"] = distanceOf(focus + e.chromatic.inverseFocusShiftBlue, "chromatic.focus_distance_blue");
     }
     j["chromatic"] = c;
+  }
+  if (!e.vignetting.isZero()) {
+    json v = json::object();
+    for (const auto& [key, value] : {std::pair{"a1", e.vignetting.a1}, {"a2", e.vignetting.a2}, {"a3", e.vignetting.a3}})
+      if (value != 0.0) v[key] = value;
+    j["vignetting"] = v;
   }
   if (!e.fieldCurvature.isZero()) {
     const double corner = normalisedWindow(camera.view).cornerRadius();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace lenslab {
 namespace {
@@ -138,6 +139,64 @@ std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 di
     }
   }
   return nearest;
+}
+
+bool Vignetting::isZero() const { return a1 == 0.0 && a2 == 0.0 && a3 == 0.0; }
+
+double Vignetting::gain(double r2) const {
+  const double g = 1.0 + r2 * (a1 + r2 * (a2 + r2 * a3));
+  return g > 0.0 ? g : 0.0;  // also 0 for NaN: a pixel is never given a negative or undefined light
+}
+
+namespace {
+
+// The polynomial without the clamp, in t = r².
+double vignettingPolynomial(const Vignetting& v, double t) { return 1.0 + t * (v.a1 + t * (v.a2 + t * v.a3)); }
+
+// The cubic's turning points (g' = a1 + 2 a2 t + 3 a3 t² = 0) strictly inside (0, r2Max), in
+// order, then r2Max: between these the gain is monotone.
+std::vector<double> monotoneStretchEnds(const Vignetting& v, double r2Max) {
+  std::vector<double> ends;
+  const double qa = 3.0 * v.a3, qb = 2.0 * v.a2, qc = v.a1;
+  if (qa != 0.0) {
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc >= 0.0)
+      for (const double sign : {-1.0, 1.0}) ends.push_back((-qb + sign * std::sqrt(disc)) / (2.0 * qa));
+  } else if (qb != 0.0) {
+    ends.push_back(-qc / qb);
+  }
+  ends.erase(std::remove_if(ends.begin(), ends.end(), [&](double t) { return !(t > 0.0 && t < r2Max); }), ends.end());
+  std::sort(ends.begin(), ends.end());
+  ends.push_back(r2Max);
+  return ends;
+}
+
+}  // namespace
+
+std::optional<double> vignettingZeroWithin(const Vignetting& v, double r2Max) {
+  if (v.isZero() || !(r2Max > 0.0)) return std::nullopt;
+  // The first monotone stretch that ends at g ≤ 0 holds the first crossing and no other: found
+  // exactly, then pinned down by bisection.
+  double lo = 0.0;
+  for (const double end : monotoneStretchEnds(v, r2Max)) {
+    if (!(vignettingPolynomial(v, end) > 0.0)) {
+      double hi = end;
+      for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (vignettingPolynomial(v, mid) > 0.0 ? lo : hi) = mid;
+      }
+      return hi;
+    }
+    lo = end;
+  }
+  return std::nullopt;
+}
+
+double vignettingLargestGain(const Vignetting& v, double r2Max) {
+  double largest = 1.0;  // the centre's
+  if (v.isZero() || !(r2Max > 0.0)) return largest;
+  for (const double end : monotoneStretchEnds(v, r2Max)) largest = std::max(largest, vignettingPolynomial(v, end));
+  return largest;
 }
 
 double Chromatic::lateral(Channel c) const {

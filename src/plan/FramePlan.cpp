@@ -215,6 +215,20 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     if (effects.chromatic.hasLateral()) lens.variants.push_back("lateral-colour");
     plan.passes.push_back(lens);
   }
+  plan.vignetting = !effects.vignetting.isZero();
+  if (plan.vignetting) {
+    const std::string gain = cat("the lens's relative illumination 1 + a1 r^2 + a2 r^4 + a3 r^6 (a1 = ", effects.vignetting.a1,
+                                 ", a2 = ", effects.vignetting.a2, ", a3 = ", effects.vignetting.a3,
+                                 ") at each pixel's place on the film");
+    // A resolve of many views ends the frame and multiplies the gain in; else a pass of its own.
+    const auto resolve = std::find_if(plan.passes.begin(), plan.passes.end(), [](const PlannedPass& p) { return p.name == "resolve"; });
+    if (resolve != plan.passes.end() && !plan.adaptive) {
+      resolve->why += cat(", times ", gain);
+      resolve->variants.push_back("vignetting");
+    } else {
+      plan.passes.push_back({"vignetting", cat("multiplies the image by ", gain), {}});
+    }
+  }
   if (camera.isPinhole() && (effects.chromatic.hasAxial() || !effects.fieldCurvature.isZero()))
     plan.warnings.push_back("axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
                             "has none, so they change nothing here (give an aperture)");

@@ -5,7 +5,9 @@
 // lens effect adds its pass or shader variant only when its strength is not zero:
 //   distortion, lateral colour → the "lens" post pass (and an overscanned scene render);
 //   axial colour               → three views per aperture sample, one per colour channel;
-//   field curvature            → the field-curvature variant: views summed through a warp.
+//   field curvature            → the field-curvature variant: views summed through a warp;
+//   vignetting                 → the resolve's "vignetting" variant (many views), else the
+//                                "vignetting" pass: the image times its gain, once, at the end.
 // The last two change nothing through a pinhole, and are left out for one.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
@@ -78,6 +80,7 @@ struct FramePlan {
   int viewsPerSample = 1;       // 3 with axial chromatic aberration: one per colour channel
   bool fieldCurvature = false;  // the views are summed through the curved focal surface's warp
   bool remap = false;           // the lens post pass runs (distortion, lateral colour)
+  bool vignetting = false;      // the image is multiplied by the vignetting gain (lens/LensEffects.h)
   Overscan overscan;            // what the scene passes render: the image, or more for the lens pass
   std::optional<VisibleBlurSummary> visible;  // from a pinhole depth pre-pass, when one ran
   std::optional<AdaptivePlan> adaptive;       // per-tile budgets to a target error

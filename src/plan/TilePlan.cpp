@@ -139,6 +139,8 @@ std::int64_t tileMemoryBytes(const Camera& camera, const FramePlan& plan, const 
   if (gather) bytes += 2 * kRgba32f * rendered;  // forward position and Jacobian
   if (plan.remap) bytes += kRg32f * (camera.effects.chromatic.hasLateral() ? 3 : 1) * out;
   bytes += (kRgba32f + kDepth32f) * out + kRgba32f * out;  // the output target and its read-back
+  // The image before the vignetting pass, where no resolve of many views multiplies the gain in.
+  if (plan.vignetting && (!views || plan.adaptive)) bytes += (kRgba32f + kDepth32f) * out;
   if (!plan.remap && tile.rendered != tile.rect) bytes += kRgba32f * area(tile.rect);  // the crop
   return bytes;
 }

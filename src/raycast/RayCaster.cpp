@@ -539,6 +539,12 @@ void inBands(ImageSize size, const std::function<void(int, int)>& progress, cons
   }
 }
 
+// The vignetting gain of image pixel position `pixel` (continuous, origin top left).
+double vignettingGainAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) {
+  const glm::dvec2 n = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx));
+  return camera.effects.vignetting.gain(glm::dot(n, n));
+}
+
 // A different stratified set per pixel, so that the noise does not repeat across pixels.
 std::uint32_t pixelSeed(std::uint32_t seed, int x, int y, int widthPx) {
   return seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * widthPx + x) * 40503u;
@@ -555,7 +561,11 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
   // The samples' pixel positions are stratified, one stratum of 1/√spp × 1/√spp pixels each: that
   // is the area a sample stands for, so its texture lookups filter over that and no more.
   const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
-  const bool lensEffects = !camera.effects.isZero();
+  // Vignetting alone moves no ray: the plain path casts them, and the gain follows the mean.
+  const bool vignetting = !camera.effects.vignetting.isZero();
+  LensEffects rayEffects = camera.effects;
+  rayEffects.vignetting = {};
+  const bool lensEffects = !rayEffects.isZero();
   // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
   const int channels = camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1;
   inBands(size, progress, [&](int yBegin, int yEnd) {
@@ -596,7 +606,10 @@ Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptio
           }
         }
         const double n = static_cast<double>(samples.size());
-        image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(covered / n)));
+        // Vignetting scales the pixel's light by the gain at its own place on the film (its
+        // centre, distorted coordinates: the output grid is the film), after the samples' mean.
+        const double gain = vignetting ? vignettingGainAt(camera, {x + 0.5, y + 0.5}, size) : 1.0;
+        image.set(x, y, glm::vec4(glm::vec3(gain * sum / n), static_cast<float>(covered / n)));
       }
   });
   return image;

@@ -333,20 +333,31 @@ Accumulator::ViewCost Accumulator::viewCost() const {
   return {1.0, 1.0 / batch, 16.0 + 4.0 + 16.0 + 32.0 / batch};
 }
 
-void Accumulator::resolve(const gl::RenderTarget& out) {
+void Accumulator::resolve(const gl::RenderTarget& out, const VignetteGain* vignetting) {
   if (!sum_ || count_ == 0) throw std::logic_error("Accumulator::resolve with nothing added");
   flush();
   out.bind();
   glDisable(GL_BLEND);
+  GLuint program = lens_ ? resolvePerPixel_.id() : resolve_.id();
+  if (vignetting) {
+    gl::Program& v = resolveVignetted_[lens_ ? 1 : 0];
+    if (!v) {
+      std::vector<std::string> defines{"VIGNETTING"};
+      if (lens_) defines.push_back("PER_PIXEL_WEIGHT");
+      v = gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag", defines);
+    }
+    program = v.id();
+    setVignetteGain(program, *vignetting);
+  }
   if (lens_) {
     glBindTextureUnit(1, weight_->colorTexture());
     glBindSampler(1, 0);
-    drawFullScreen(fullScreen_, resolvePerPixel_.id(), sum_->colorTexture());
+    drawFullScreen(fullScreen_, program, sum_->colorTexture());
     return;
   }
   const glm::vec4 inverseWeight = glm::vec4(1.0f) / glm::max(weightSum_, glm::vec4(1e-30f));
-  glProgramUniform4fv(resolve_.id(), 0, 1, &inverseWeight.x);
-  drawFullScreen(fullScreen_, resolve_.id(), sum_->colorTexture());
+  glProgramUniform4fv(program, 0, 1, &inverseWeight.x);
+  drawFullScreen(fullScreen_, program, sum_->colorTexture());
 }
 
 }  // namespace lenslab

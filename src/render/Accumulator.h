@@ -15,6 +15,7 @@
 #include "gl/FullScreenPass.h"
 #include "gl/Object.h"
 #include "plan/TileBudget.h"
+#include "render/VignetteGain.h"
 
 #include <glm/glm.hpp>
 
@@ -118,8 +119,9 @@ class Accumulator {
     double bytesPerPixel = 0.0;
   };
   ViewCost viewCost() const;
-  // The mean so far, into `out` (the sum's size).
-  void resolve(const gl::RenderTarget& out);
+  // The mean so far, into `out` (the sum's size); times the vignetting gain when given one (the
+  // resolve is then the frame's last pass, and no pass of its own is needed for it).
+  void resolve(const gl::RenderTarget& out, const VignetteGain* vignetting = nullptr);
 
  private:
   void flush();  // adds the pending views to the sum
@@ -141,6 +143,7 @@ class Accumulator {
   int gatherVariant() const { return (barrel_ ? 4 : 0) + (curvature_ ? 2 : 0) + (lens_ && lens_->lateral ? 1 : 0); }
   gl::Program resolve_;
   gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
+  gl::Program resolveVignetted_[2];  // with VIGNETTING: [per-pixel weights], built on first use
   gl::Program addBatch_;          // added views: a batch's partial sum and background into the sum
   gl::FullScreenPass fullScreen_;
   std::unique_ptr<gl::RenderTarget> sum_;

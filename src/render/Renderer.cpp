@@ -70,6 +70,7 @@ std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
 void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables) {
   plan_ = plan;
   camera_ = plan.remap ? plan.overscan.camera : camera;
+  outCamera_ = camera;
   size_ = plan.remap ? plan.overscan.size : size;
   outSize_ = size;
   done_ = 0;
@@ -80,6 +81,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   // undistorted rays (gather_lens.frag, BARREL); a parallel projection has no directions to clip.
   if (camera.hasBarrel() && camera.view.projection != Projection::Perspective)
     throw InputError(cat(camera.source, ": the lens barrel (cat's-eye vignetting) needs a perspective projection; remove \"barrel\""));
+  if (plan.vignetting && !vignettePass_) vignettePass_ = std::make_unique<VignettePass>();
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1, tables);
@@ -159,7 +161,9 @@ int Renderer::addSamples(int count) {
   for (; added < count && done_ < samplesPlanned(); ++added, ++done_) {
     const LensSample& s = samples_[static_cast<std::size_t>(done_)];
     if (samplesPlanned() == 1) {
-      const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_) : target(output_, size_);
+      // A single view is the image itself unless a pass follows it (the lens, the vignetting).
+      const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_)
+                                    : plan_.vignetting ? target(unvignetted_, size_) : target(output_, size_);
       scenePass_.draw(gpuScene_, sampleClip(s, 0.0), out.drawTarget(), lodBias);
     } else {
       drawSample({{s, nullptr}}, *accumulator_, lodBias);
@@ -449,22 +453,28 @@ std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) 
 const gl::RenderTarget& Renderer::resolveOnGpu() {
   if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
   const gl::RenderTarget& out = target(output_, outSize_);
+  const VignetteGain gain = vignetteGainFor(outCamera_, outSize_);
+  // A resolve of many views is the frame's last pass and multiplies the gain in itself.
+  if (!adaptive_ && samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed
+    accumulator_->resolve(out, plan_.vignetting ? &gain : nullptr);
+    return out;
+  }
+  // Else the vignetting pass follows, reading a target of its own: each resolve then applies the
+  // gain once, however often a progressive frame is resolved.
+  const gl::RenderTarget& resolved = plan_.vignetting ? target(unvignetted_, outSize_) : out;
   if (adaptive_) {
     const gl::Program& program = streamsProgram(false);
     bindStreams();
-    out.bind();
+    resolved.bind();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glProgramUniform1i(program.id(), 0, grid_.tileSizePx);
     fullScreen_.draw(program);
-    return out;
-  }
-  if (plan_.remap && samplesPlanned() == 1) {
-    lensPass_->apply(target(undistorted_, size_), out);
-  } else if (samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed
-    accumulator_->resolve(out);
-  }
+  } else if (plan_.remap) {
+    lensPass_->apply(target(undistorted_, size_), resolved);
+  }  // else a single view drawn straight into `resolved` (addSamples)
+  if (plan_.vignetting) vignettePass_->apply(gain, resolved, out);
   return out;
 }
 

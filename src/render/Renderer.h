@@ -6,7 +6,7 @@
 // when the plan has them: one view per colour channel, each focused for its colour (axial
 // chromatic aberration); the views summed through the field-curvature warp; distortion and lateral
 // colour applied to each overscanned view as it is summed into the output (a single view: remapped
-// afterwards by the lens pass).
+// afterwards by the lens pass). Vignetting, last: the finished image times its gain (VignettePass).
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
@@ -19,6 +19,7 @@
 #include "render/GpuScene.h"
 #include "render/LensPass.h"
 #include "render/ScenePass.h"
+#include "render/VignettePass.h"
 
 #include <array>
 #include <functional>
@@ -124,9 +125,12 @@ class Renderer {
   std::unique_ptr<gl::RenderTarget> output_;  // the resolved image
   std::unique_ptr<gl::RenderTarget> undistorted_;  // the overscanned image the lens pass reads
   std::unique_ptr<LensPass> lensPass_;             // made on first use
+  std::unique_ptr<gl::RenderTarget> unvignetted_;  // the image before the vignetting pass, when it runs
+  std::unique_ptr<VignettePass> vignettePass_;     // made on first use
 
   FramePlan plan_;
   Camera camera_;      // the camera the scene passes use (overscanned when the lens pass runs)
+  Camera outCamera_;   // the output image's camera (a tile's own): the vignetting pass's pixel positions
   std::array<double, 3> channelFocusShifts_{};  // inverse focus shifts of red, green, blue (axial colour)
   ImageSize size_;     // the size they render at
   ImageSize outSize_;  // the image's size

@@ -32,7 +32,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 fitted=yes
-if ! "$lenslab" render --help | grep -q -- '--lens'; then
+render_help=$("$lenslab" render --help)  # not piped into grep -q: pipefail and SIGPIPE would say "absent"
+if ! grep -qE -- '^ *--lens\b' <<<"$render_help"; then
   fitted=no
   echo "make-lens-comparison: '$lenslab render' has no --lens option in this build: the fitted halves are placeholders" >&2
 fi
@@ -43,8 +44,8 @@ for scene in checker street; do
     lens=$(basename "$lens_file" .lens)
     scene_args=("assets/lens-scenes/$scene/$scene.gltf" --camera "assets/lens-scenes/$scene/camera.json"
                 --lens "$lens_file" --width "$width" -q)
-    # The telephoto's 9.9° field meets the street's lamps only from 20 m on, where a focus on
-    # the lantern at 0.8 m would blur each into a disc a third of the frame wide: it focuses there.
+    # The telephoto's 9.9° field meets the street's lamps only from about 21 m on, where a focus
+    # on the lantern at 0.8 m would blur each into a disc half the frame wide: it focuses at 20 m.
     note=""
     if [ "$scene/$lens" = street/telephoto-250mm ]; then
       scene_args+=(--focus-distance 20)

@@ -14,7 +14,7 @@ LensRequest lensRequestFor(const std::string& file, const SelectedCamera& select
   const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };
   if (camera.view.projection != Projection::Perspective) refuse("a real lens needs a perspective camera");
   if (!camera.effects.isZero())
-    refuse("the camera's lens effects (distortion, chromatic, field_curvature) stand for a lens; the prescription has its own: "
+    refuse("the camera's lens effects (distortion, chromatic, field_curvature, vignetting) stand for a lens; the prescription has its own: "
            "remove them from the camera");
   if (camera.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
   if (!camera.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
@@ -66,6 +66,7 @@ std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& 
   without("colour", fitted.effects.chromatic.hasLateral() || fitted.effects.chromatic.hasAxial(), [](Camera& c) { c.effects.chromatic = {}; });
   without("field-curvature", !fitted.effects.fieldCurvature.isZero(), [](Camera& c) { c.effects.fieldCurvature = {}; });
   without("barrel", fitted.barrel.present(), [](Camera& c) { c.barrel = {}; });
+  without("vignetting", !fitted.effects.vignetting.isZero(), [](Camera& c) { c.effects.vignetting = {}; });
   return out;
 }
 

@@ -363,6 +363,7 @@ LensEffects fittedEffects(const FittedLens& fit, double worldPerMm) {
   effects.chromatic.inverseFocusShiftRed = fit.inverseFocusShiftRedPerMm / worldPerMm;
   effects.chromatic.inverseFocusShiftBlue = fit.inverseFocusShiftBluePerMm / worldPerMm;
   effects.fieldCurvature.inverseFocusPerRadius2 = fit.fieldCurvaturePerMm / worldPerMm;
+  effects.vignetting = {fit.illuminationGain.x, fit.illuminationGain.y, fit.illuminationGain.z};
   return effects;
 }
 

@@ -252,7 +252,8 @@ int runRender(const RenderOptions& o) {
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
   // The camera as selected and refocused; rendered with its open near/far fitted to the scene.
   SelectedCamera selected = chooseCamera(scene, cameraPath, o.camera, requestedAspect);
-  const std::vector<std::string> focusNotes = focusWarnings(selected.camera, o.lens);
+  // With --lens the prescription's stop is the aperture: a camera file without one still focuses.
+  const std::vector<std::string> focusNotes = o.lensFile.empty() ? focusWarnings(selected.camera, o.lens) : std::vector<std::string>{};
   selected = applyLensOptions(selected, o.lens);
   for (const std::string& w : focusNotes) std::cerr << "lenslab: warning: " << w << "\n";
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);

@@ -201,10 +201,14 @@ FittedLens fitLens(const LensPrescription& lens, const LensFitSettings& s) {
     heights.push_back(h);
     for (int c : channels) {
       const Bundle b = traceBundle(*pupils[static_cast<std::size_t>(c)], glm::dvec2(0.0, -h), epZ, s.pupilSamples);
-      if (!(b.share > 0.0))
-        throw InputError(cat(lens.source, ": no ray through the lens reaches the film ", std::round(h * 1000.0) / 1000.0,
-                             " mm off the axis; give a smaller sensor (--sensor, or the camera's sensor_mm; its half diagonal is ",
-                             std::round(halfDiagonal * 1000.0) / 1000.0, " mm)"));
+      if (!(b.share > 0.0)) {
+        // Past the image circle (a fisheye's on a larger sensor): the exact trace renders the
+        // circle; no rectilinear camera holds it.
+        fit.why = cat("no ray through the lens reaches the film ", std::round(h * 1000.0) / 1000.0,
+                      " mm off the axis: the image circle ends inside the sensor (its half diagonal is ",
+                      std::round(halfDiagonal * 1000.0) / 1000.0, " mm)");
+        return fit;
+      }
       bundles[static_cast<std::size_t>(c)].push_back(b);
     }
     const Bundle free = traceBundle(stopOnly, glm::dvec2(0.0, -h), epZ, s.pupilSamples);

@@ -83,8 +83,9 @@ struct FittedLens {
   std::vector<FittedLensSample> samples;  // green's, centre to corner
 };
 
-// Refuses (one line naming the lens) a sensor the lens does not cover and an f-number faster
-// than the design's.
+// Refuses (one line naming the lens) an f-number faster than the design's. A sensor whose corners
+// lie past the lens's image circle gives an unusable fit (`why` says so): only the exact trace
+// renders that image.
 FittedLens fitLens(const LensPrescription& lens, const LensFitSettings& settings);
 
 // The fitted lens's effects in world units (`worldPerMm` world units per mm: metres 1e-3).

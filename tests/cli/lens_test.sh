@@ -93,8 +93,14 @@ if "$lenslab" render --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f
 else
   fail "render --lens --lens-tolerance 0: $(cat "$work/err")"
 fi
-refused "render --lens beyond the image circle" "give a smaller sensor" -- render --camera "$dof" --lens "$lenses/fisheye-10mm.lens" --f-number 5.6 --width 18 --out "$work/fisheye.png"
-check test ! -e "$work/fisheye.png"
+# Past the fisheye's image circle no thin lens fits: render traces it exactly, as raycast does.
+if "$lenslab" render --camera "$dof" --lens "$lenses/fisheye-10mm.lens" --f-number 5.6 --width 18 --aperture-samples 1 \
+     --out "$work/fisheye.png" 2>"$work/err"; then
+  check grep -q "no thin lens fits (no ray through the lens reaches the film" "$work/err"
+  check test -s "$work/fisheye.png"
+else
+  fail "render --lens fisheye: $(cat "$work/err")"
+fi
 refused "render --lens with the camera's effects" "the prescription has its own" -- render --camera "$src/assets/rows/camera-lens.json" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 16 --out "$work/effects.png"
 check test ! -e "$work/effects.png"
 

@@ -1,6 +1,5 @@
 #include "lens/LensFit.h"
 
-#include "core/Error.h"
 #include "core/Text.h"
 #include "lens/ExitPupil.h"
 #include "lens/LensCamera.h"

@@ -185,12 +185,29 @@ def top_level_parens(head):
     return groups
 
 
+OPERATOR = re.compile(r'\boperator\s*(?:<<=|>>=|<=>|->\*|<<|>>|<=|>=|->|\(\s*\)|\[\s*\]|[^\s\w(]{1,2})')
+TEMPLATE_ARGUMENTS = re.compile(r'<[^<>;{}]*>')
+
+
+def mask_templates(h):
+    """The head with operator symbols turned into identifier characters and template argument
+    lists (`function<int()>`, `map<K, vector<V>>`) blanked, keeping every offset, so that their
+    brackets and parentheses are not taken for a parameter list."""
+    h = OPERATOR.sub(lambda m: 'operator' + re.sub(r'[^\s]', '_', m.group(0)[8:]), h)
+    while True:
+        masked = TEMPLATE_ARGUMENTS.sub(lambda m: ' ' * len(m.group(0)), h)
+        if masked == h:
+            return h
+        h = masked
+
+
 def classify(head, glsl=False):
     """What an opening brace at namespace or class scope opens, from the text before it since the
     last `;`, `{` or `}` there: ('namespace', None), ('class', None), ('function', name),
     ('initializer', None) for a member's brace initialiser inside a constructor's initialiser
     list, or ('other', None) (an enum, an aggregate's initialiser)."""
-    h = remove_decorations(head, glsl)
+    original = remove_decorations(head, glsl)
+    h = mask_templates(original)
     if re.search(r'\bnamespace\b', h) or re.match(r'\s*extern\s*""\s*$', h):
         return ('namespace', None)
     lam = LAMBDA_VARIABLE.search(h)
@@ -201,12 +218,13 @@ def classify(head, glsl=False):
         first_open = groups[0][0]
         before = h[:first_open]
         name = QUALIFIED_NAME.search(before)
-        no_assignment = '=' not in re.sub(r'operator\s*[^\s(]*', '', before)
+        no_assignment = '=' not in before
         if name and no_assignment and not re.search(r'\b(?:enum|decltype|sizeof)\s*$', before):
             last_close = groups[-1][1]
             tail = h[last_close + 1:]
             if TRAILING.match(tail) or re.match(r'\s*:(?!:)', h[groups[0][1] + 1:]):
-                return ('function', re.sub(r'\s+', ' ', re.sub(r'\s*::\s*', '::', name.group(1))))
+                text = original[name.start(1):name.end(1)]
+                return ('function', re.sub(r'\s+', ' ', re.sub(r'\s*::\s*', '::', text)))
     if re.search(r'\b(?:class|struct|union)\b', h) and '=' not in h:
         return ('class', None)
     return ('other', None)
@@ -214,7 +232,7 @@ def classify(head, glsl=False):
 
 def in_initializer_list(head):
     """Whether the head is a constructor's signature followed by `:` (a member initialiser list)."""
-    h = remove_decorations(head)
+    h = mask_templates(remove_decorations(head))
     groups = top_level_parens(h)
     return bool(groups) and re.match(r'\s*:(?!:)', h[groups[0][1] + 1:]) is not None \
         and classify(h[:groups[0][1] + 1])[0] == 'function'

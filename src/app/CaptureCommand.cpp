@@ -25,7 +25,7 @@
 #include "io/AovChannels.h"
 #include "io/CameraJson.h"
 #include "io/CameraPathJson.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "io/ColmapModel.h"
 #include "io/FrameSequence.h"
 #include "io/ImageFile.h"

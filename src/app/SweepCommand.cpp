@@ -10,7 +10,7 @@
 #include "core/Text.h"
 #include "gl/GlContext.h"
 #include "io/AtomicFile.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
 #include "io/Progress.h"

@@ -5,7 +5,7 @@
 #include "core/NumberInput.h"
 #include "core/ParseNumber.h"
 #include "core/Text.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,6 +1,7 @@
 #pragma once
 // The renderable scene: what every renderer (raster and ray caster) draws, flattened out of glTF.
 // Pure data (GLM + std), no GL: src/render uploads it, src/raycast will intersect it.
+#include "core/Bounds.h"
 #include "scene/Environment.h"
 #include "scene/SceneAnimation.h"
 
@@ -114,18 +115,6 @@ struct Instance {
 // geometry relative to the scene's bounds), which holds to ~1e15; Embree loses triangles beyond
 // ~1e20 and float clip coordinates overflow near 1e38. Loaders refuse vertices beyond it.
 constexpr double kMaxWorldCoordinate = 1e15;
-
-struct Bounds {
-  glm::dvec3 min{std::numeric_limits<double>::infinity()};
-  glm::dvec3 max{-std::numeric_limits<double>::infinity()};
-  bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
-  void extend(const glm::dvec3& p) {
-    min = glm::min(min, p);
-    max = glm::max(max, p);
-  }
-  glm::dvec3 center() const { return 0.5 * (min + max); }
-  glm::dvec3 size() const { return max - min; }
-};
 
 // A camera stored in the glTF file, with its node's placement (it looks along -Z, up +Y).
 struct SceneCamera {

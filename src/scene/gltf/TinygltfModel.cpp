@@ -1,6 +1,6 @@
 #include "scene/gltf/TinygltfModel.h"
 
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "core/Error.h"
 #include "scene/gltf/Problems.h"
 

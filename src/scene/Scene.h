@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
@@ -160,6 +161,10 @@ struct PunctualLight {
 
 struct Scene {
   std::string source;  // file it came from, for messages
+  // Every file it was read from: the .gltf or .glb, then each buffer and image file its URIs name
+  // (data: URIs are in the first). Empty for a scene made in code. The sweep's cached reference
+  // is keyed on their bytes (report/ReferenceCache.h).
+  std::vector<std::filesystem::path> files;
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
   std::vector<Texture> textures;

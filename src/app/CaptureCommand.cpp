@@ -26,7 +26,7 @@
 #include "io/CameraJson.h"
 #include "io/CameraPathJson.h"
 #include "plan/CameraSelection.h"
-#include "io/ColmapModel.h"
+#include "io/ColmapExport.h"
 #include "io/FrameSequence.h"
 #include "io/ImageFile.h"
 #include "io/Interrupt.h"

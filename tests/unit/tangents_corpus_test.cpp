@@ -131,7 +131,7 @@ TEST_P(GltfSampleTangents, AgreeWithTheFilesTangents) {
 INSTANTIATE_TEST_SUITE_P(Samples, GltfSampleTangents,
                          testing::Values(TangentSample{"AlphaBlendModeTest", 0, true, 0}, TangentSample{"MultiUVTest", 1, true, 0},
                                          TangentSample{"VertexColorTest", 0, true, 6}, TangentSample{"Avocado", 0, false, 3}),
-                         [](const testing::TestParamInfo<TangentSample>& info) { return info.param.name; });
+                         [](const testing::TestParamInfo<TangentSample>& param) { return param.param.name; });
 
 }  // namespace
 }  // namespace lenslab

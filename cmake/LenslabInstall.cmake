@@ -31,10 +31,10 @@ install(FILES assets/README.md DESTINATION ${LENSLAB_INSTALL_DATADIR}/assets)
 # static library's own dependencies must be. lenslab_warnings comes along because the libraries
 # link it privately (it only adds warning flags to lenslab's own build; a consumer gets none).
 add_library(lenslab_library INTERFACE)
-target_link_libraries(lenslab_library INTERFACE lenslab_report lenslab_gl lenslab_raycast lenslab_io lenslab_core)
+target_link_libraries(lenslab_library INTERFACE lenslab_report lenslab_render lenslab_gl lenslab_raycast lenslab_plan lenslab_io lenslab_core)
 add_library(lenslab::lenslab ALIAS lenslab_library)
 set_target_properties(lenslab_library PROPERTIES EXPORT_NAME lenslab)
-set(LENSLAB_EXPORTED core io gl raycast report glad warnings)
+set(LENSLAB_EXPORTED core io plan gl render raycast report glad warnings)
 foreach(part IN LISTS LENSLAB_EXPORTED)
   set_target_properties(lenslab_${part} PROPERTIES EXPORT_NAME ${part})
 endforeach()

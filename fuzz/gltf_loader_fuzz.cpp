@@ -10,7 +10,7 @@
 // a crash, an abort, a hang (-timeout), a sanitizer report or a large allocation (-rss_limit_mb,
 // -malloc_limit_mb) is a finding. Built with LENSLAB_FUZZ (the fuzz preset); run by tools/fuzz.sh.
 #include "core/Error.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "scene/GltfLoader.h"
 
 #include <unistd.h>

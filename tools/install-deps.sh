@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenimageio-dev openimageio-tools libtinygltf-dev nlohmann-json3-dev libstb-dev
-  libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev
+  libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev libeigen3-dev
   xvfb xauth fonts-dejavu-core python3-pil python3-yaml
   strace  # tests/install/install_test.sh, where no private mount namespace can be made
 )

@@ -12,6 +12,8 @@
 #include "app/EnvironmentOptions.h"
 #include "app/ExposureOptions.h"
 #include "app/Commands.h"
+#include "app/CaptureManifest.h"
+#include "app/FrameCameras.h"
 #include "app/FrameRender.h"
 #include "camera/CameraPath.h"
 #include "camera/DepthRange.h"
@@ -25,8 +27,8 @@
 #include "io/AovChannels.h"
 #include "io/CameraJson.h"
 #include "io/CameraPathJson.h"
-#include "io/CameraSelection.h"
-#include "io/ColmapModel.h"
+#include "plan/CameraSelection.h"
+#include "io/ColmapExport.h"
 #include "io/FrameSequence.h"
 #include "io/ImageFile.h"
 #include "io/Interrupt.h"
@@ -56,164 +58,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CaptureOptions {
-  std::string scene;
-  std::string pathFile;
-  std::string out = "frames/frame_%04d.png";
-  std::string manifest;  // default: manifest.jsonl beside the frames
-  std::optional<int> width;
-  std::optional<int> height;
-  std::string backend = "osmesa";
-  std::string frames;    // "A:B"; empty = all
-  std::string shard = "0/1";
-  bool skipExisting = false;
-  std::vector<std::string> aovs;
-  bool quiet = false;
-  LensOptions lens;
-  CameraOptions camera;
-  std::optional<double> fps;  // frames per second without --path
-  std::optional<glm::vec3> background;
-  std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
-  ExposureOptions exposure;  // PNG frames only; physical settings take each frame's f-number
-  EnvironmentRequest environment;
-};
-
-// Where each frame's camera comes from: the path's keys, or (no --path) the scene's own camera —
-// a glTF camera following its node through the playing animation, or a still one (automatic
-// framing, --eye/--target) — at --fps over the animation's duration. Either way each frame's
-// camera is a physical description, which is what the frame's camera file is written from.
-class FrameCameras {
- public:
-  FrameCameras(const CaptureOptions& o, Scene& scene, double imageAspect) : o_(o), imageAspect_(imageAspect) {
-    if (!o.pathFile.empty()) {
-      if (o.camera.changesPose())
-        throw InputError(cat(o.camera.eye ? "--eye" : "--target", ": --path ", o.pathFile,
-                             " gives each frame's eye and target; leave the option out, or edit the path's keys"));
-      if (!o.camera.cameraNode.empty())
-        throw InputError(cat("--camera-node ", o.camera.cameraNode, ": --path ", o.pathFile, " gives each frame's camera; give one or the other"));
-      if (o.fps) throw InputError(cat("--fps ", *o.fps, ": --path ", o.pathFile, " gives its own fps; edit it there"));
-      path_ = loadCameraPath(o.pathFile);
-      return;
-    }
-    fps_ = o.fps.value_or(24.0);
-    // A still camera is chosen at the animation's start, whichever frames this process renders.
-    if (!scene.animation.empty()) poseScene(scene, 0.0);
-    base_ = baseCamera(scene, std::nullopt, o.camera);
-    if (base_.form != CameraForm::GltfPerspective) {
-      const SelectedCamera still = composeCamera(base_, o.camera, imageAspect_);
-      still_ = physicalOf(still);
-      stillAperture_ = still.camera.aperture;
-      stillBarrel_ = still.camera.barrel;
-    }
-  }
-
-  int frameCount(const Scene& scene) const {
-    if (path_) return path_->frameCount();
-    return frameCountFor(animationDurationSeconds(scene), fps_, cat(base_.name, " over the animation at --fps ", fps_));
-  }
-  double timeOf(int frame) const { return path_ ? path_->frameTimeSeconds(frame) : frame / fps_; }
-  std::string name() const { return path_ ? o_.pathFile : base_.name; }
-  // Near / far given by the camera (written into its file) rather than fitted to the scene.
-  bool nearGiven() const { return path_ ? !path_->nearFromScene : base_.form == CameraForm::GltfPerspective; }
-  // Whether a frame's camera depends on the scene's pose (a glTF camera following its node).
-  bool followsNode() const { return !path_ && !still_; }
-  bool farGiven() const { return path_ ? !path_->farFromScene : base_.form == CameraForm::GltfPerspective && std::isfinite(base_.gltf.zfar); }
-
-  // The frame's camera, the scene posed at `time` already; `where` names it in errors.
-  PathKey at(const Scene& scene, double time, const std::string& where) const {
-    if (path_) {
-      PathKey key = cameraAt(*path_, time);
-      validate(key.camera, where);
-      if (o_.camera.changesLens()) key.camera = withCameraOptions(key.camera, o_.camera, where);  // the command line wins
-      return key;
-    }
-    if (still_) return {time, *still_, {}, stillAperture_, stillBarrel_};
-    // A glTF camera where its node is at this time, its focus on the scene's centre then.
-    const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
-    return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}, {}, {}};
-  }
-
- private:
-  PhysicalCamera physicalOf(const SelectedCamera& selected) const {
-    if (selected.physical) return *selected.physical;
-    const std::string why = base_.form == CameraForm::GltfOrthographic ? cat(base_.name, " is orthographic")
-                                                                      : selected.camera.source;
-    throw InputError(cat(why, "; capture writes each frame's camera as a perspective lens (OpenCV intrinsics and a focus), which "
-                              "this camera is not: give --path, or a perspective camera"));
-  }
-
-  const CaptureOptions& o_;
-  double imageAspect_ = 0.0;
-  std::optional<CameraPath> path_;
-  ApertureShape stillAperture_;
-  LensBarrel stillBarrel_;
-  double fps_ = 24.0;
-  BaseCamera base_;
-  std::optional<PhysicalCamera> still_;
-};
-
-
-// The manifest's default place: beside the frames, when the pattern's folder has no frame number.
-fs::path defaultManifest(const std::string& pattern) {
-  const fs::path folder = fs::path(pattern).parent_path();
-  if (folder.string().find('%') != std::string::npos)
-    throw InputError(cat("--out ", pattern, ": the frame number is in the folder; give --manifest FILE for the manifest"));
-  return folder / "manifest.jsonl";
-}
-
-// A file named in the manifest relative to the manifest's folder when it lies there.
-std::string relativeTo(const fs::path& file, const fs::path& manifest) {
-  const fs::path folder = manifest.parent_path().empty() ? fs::path(".") : manifest.parent_path();
-  const fs::path rel = fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(folder).lexically_normal());
-  if (!rel.empty() && rel.begin()->string() != "..") return rel.string();
-  return file.string();
-}
-
-nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
-
-// K, distCoeffs, R and t of the frame's camera in OpenCV's conventions, for vision tools that read
-// the manifest rather than the camera files (distCoeffs only where the lens is all OpenCV's), with
-// the image size, focus and aperture: a camera file `render --camera` reads (docs/camera-files.md).
-nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
-  const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
-  const OpenCvPose pose = poseOf(camera.view);
-  nlohmann::json j;
-  j["K"] = {{k.fx, 0.0, k.cx}, {0.0, k.fy, k.cy}, {0.0, 0.0, 1.0}};
-  const Distortion& d = camera.effects.distortion;
-  if (d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["dist"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
-  j["R"] = nlohmann::json::array();
-  for (const glm::dvec3& row : pose.rows) j["R"].push_back({row.x, row.y, row.z});
-  j["t"] = {pose.translation.x, pose.translation.y, pose.translation.z};
-  j["width"] = size.widthPx;
-  j["height"] = size.heightPx;
-  j["focus_distance"] = distanceJson(camera.focusDistance());
-  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
-  return j;
-}
-
-// The frame's camera (the scene posed at the frame's time already) and the frame's size: what the
-// frame's camera file is written from (cheap: the lens is checked when the file is read back).
-struct FrameKey {
-  double timeSeconds = 0.0;
-  PathKey key;
-  Camera camera;  // the key's camera with its lens effects
-  ImageSize size;
-  std::string where;
-};
-
-FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const CaptureOptions& o, int frame) {
-  FrameKey k;
-  k.timeSeconds = cameras.timeOf(frame);
-  k.where = cat(cameras.name(), ": frame ", frame, " (", k.timeSeconds, " s)");
-  k.key = cameras.at(scene, k.timeSeconds, k.where);
-  k.key.aperture = withApertureOptions(k.key.aperture, o.lens);  // --blades / --squeeze over every frame's
-  k.camera = toCamera(k.key.camera, k.where);
-  k.camera.effects = k.key.effects;
-  k.camera.aperture = k.key.aperture;
-  k.camera.barrel = k.key.barrel;
-  k.size = resolveImageSize(k.camera, o.width, o.height);
-  return k;
-}
 
 // The folder COLMAP's NAMEs are relative to: --out's leading folders up to the first that holds
 // the frame number (give it to COLMAP as --image_path).
@@ -294,64 +138,11 @@ void writeColmapModel(const fs::path& dir, const ColmapFiles& files) {
   outputs.commit();
 }
 
-// The images named in the manifest's lines ("file", as relativeTo writes it). A line that is not
-// a JSON object with a "file" names no frame: its frame is rendered again.
-std::set<std::string> manifestFiles(const fs::path& manifest) {
-  std::set<std::string> files;
-  for (const std::string& text : readCompleteLines(manifest)) {
-    const nlohmann::json line = nlohmann::json::parse(text, nullptr, false);
-    if (line.is_object() && line.contains("file") && line["file"].is_string()) files.insert(line["file"].get<std::string>());
-  }
-  return files;
-}
-
-// A frame's files and its manifest line, together or not at all: the files are renamed into
-// place, then the line appended. An interruption between the two removes the files (they are in
-// io/Interrupt.h's list until the line is written); a failed line removes them here; a kill
-// leaves files without a line, which --skip-existing renders again.
-void commitFrame(OutputSet& outputs, const std::vector<fs::path>& files, const fs::path& manifest, const std::string& line) {
-  std::vector<std::uint64_t> handles;
-  {
-    const InterruptDeferral deferral;
-    outputs.commit();
-    for (const fs::path& f : files) handles.push_back(removeOnInterrupt(f, RemovalKind::File));
-  }
-  const InterruptDeferral deferral;
-  try {
-    appendLine(manifest, line);
-  } catch (...) {
-    std::error_code ignored;
-    for (const fs::path& f : files) fs::remove(f, ignored);
-    for (const std::uint64_t h : handles) forgetRemoveOnInterrupt(h);
-    throw;
-  }
-  for (const std::uint64_t h : handles) forgetRemoveOnInterrupt(h);
-}
-
-int runCapture(const CaptureOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  // Without --path the scene's animation gives the frame count: the scene is read first.
-  if (o.pathFile.empty() && o.scene.empty())
-    throw InputError("--path: give a camera path, or a SCENE whose own camera (or automatic framing) is captured over its animation");
-  const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
-  Scene scene = loadGltf(scenePath);
-  applyBackground(scene, o.background);
-  const std::optional<EnvironmentSummary> environmentSummary = applyEnvironment(scene, o.environment, std::cerr);
-  if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
-  selectAnimation(scene, o.camera.animation);
-  const FrameCameras cameras(o, scene, o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0);
-  const int frameCount = cameras.frameCount(scene);
-  const FrameRange range = o.frames.empty() ? FrameRange{0, frameCount - 1} : parseFrameRange(o.frames, frameCount);
-  const Shard shard = parseShard(o.shard);
-  const std::vector<int> frames = shardFrames(range, shard);
-  checkFramePattern(o.out, "--out");
-  const AovSelection aovs = parseAovs(o.aovs);
-  const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
-
-  // Every output checked before any work (the frames' folders made first: a cluster's shards
-  // start on an empty volume). The folders this run makes are removed again, when still empty, if
-  // it is refused or interrupted.
-  OutputSet madeFolders;
+// Every output checked before any work (the frames' folders made first: a cluster's shards start
+// on an empty volume). The folders this run makes are in `madeFolders`, removed again, when still
+// empty, if it is refused or interrupted.
+void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames, const FrameRange& range, const fs::path& manifest,
+                         const AovSelection& aovs, OutputSet& madeFolders) {
   std::set<fs::path> folders;
   for (const int f : frames) folders.insert(fs::path(formatFramePath(o.out, f)).parent_path());
   folders.insert(manifest.parent_path());
@@ -374,51 +165,43 @@ int runCapture(const CaptureOptions& o) {
     madeFolders.createFolders(o.colmapOut);
     checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
   }
-  // The frames already done, for --skip-existing: those with a line in the manifest.
-  const std::set<std::string> framesInManifest = o.skipExisting ? manifestFiles(manifest) : std::set<std::string>{};
-  // Every frame's camera checked for what COLMAP can hold before any work; written before the
-  // first frame.
-  const std::optional<ColmapFiles> colmapFiles =
-      o.colmapOut.empty() ? std::nullopt : std::optional<ColmapFiles>(colmapModel(o, cameras, scene, range));
+}
 
-  const bool animated = !scene.animation.empty();
+// A capture in progress: what every frame is rendered with and reported through.
+struct CaptureRun {
+  const CaptureOptions& o;
+  Scene& scene;
+  const FrameCameras& cameras;
+  const fs::path& manifest;
+  const AovSelection& aovs;
+  const std::optional<EnvironmentSummary>& environment;
+  Shard shard;
+  Renderer& renderer;
+  ProgressReporter& progress;
+  std::unique_ptr<RayCaster> caster = {};  // the AOVs; rebuilt each frame when the scene moves
+  RenderTargetLimits limits = queryRenderTargetLimits();
+  std::set<std::string> warned = {};
 
-  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
-  Renderer renderer(scene);
-  std::unique_ptr<RayCaster> caster;  // the AOVs; rebuilt each frame when the scene moves
-  const RenderTargetLimits limits = queryRenderTargetLimits();
+  void warnOnce(const std::string& w) {
+    if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
+  }
 
-  if (colmapFiles) writeColmapModel(o.colmapOut, *colmapFiles);
-
-  // One line a frame where nobody watches a bar (a cluster job's log), unless
-  // LENSLAB_PROGRESS_SECONDS asks for fewer.
-  ProgressReporter progress("capture", "frames", o.quiet, 0.0);
-  std::set<std::string> warned;
-  int rendered = 0, skipped = 0;
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const int frame = frames[i];
+  // Renders `frame` and commits its image, camera file and manifest line; the line.
+  nlohmann::json capture(int frame) {
     const fs::path imageFile = formatFramePath(o.out, frame);
     const fs::path cameraFile = frameCameraPath(imageFile);
-    // A frame is done when its image (whole: io/AtomicFile.h) and its manifest line both exist;
-    // an image without a line (a kill between the two) is rendered again.
-    if (o.skipExisting && fs::exists(imageFile) && framesInManifest.count(relativeTo(imageFile, manifest))) {
-      ++skipped;
-      continue;
-    }
     const auto frameStart = std::chrono::steady_clock::now();
     const double time = cameras.timeOf(frame);
+    const bool animated = !scene.animation.empty();
     if (animated) poseScene(scene, time);  // glTF node animations at the frame's time
     const FrameKey f = frameKey(cameras, scene, o, frame);
-    const std::string& where = f.where;
     const PathKey& key = f.key;
     const ImageSize size = f.size;
-    if (const std::string shape = pixelShapeWarning(f.camera, o.width, o.height, size);
-        !shape.empty() && !o.quiet && warned.insert(shape).second)
-      progress.note("lenslab: warning: " + shape);
+    if (const std::string shape = pixelShapeWarning(f.camera, o.width, o.height, size); !shape.empty()) warnOnce(shape);
     const std::string cameraText =
         toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture, key.barrel);
     // The frame's camera as `render --camera` will read it, from the very text written.
-    const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, where).camera, scene.bounds);
+    const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, f.where).camera, scene.bounds);
 
     // Each frame's own f-number for a physical exposure (a path may change it from key to key).
     const DisplaySettings display = resolveDisplay(o.exposure, SelectedCamera{camera, key.camera});
@@ -426,10 +209,8 @@ int runCapture(const CaptureOptions& o) {
     lens.seed = frameSeed(o.lens.seed, frame);
     RunStats stats;
     const FramePlan plan = planFrame(renderer, scene, camera, size, toPlanOptions(lens), stats);
-    for (const std::string& w : plan.warnings)
-      if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
-    for (const std::string& w : focusWarnings(camera, o.lens))
-      if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
+    for (const std::string& w : plan.warnings) warnOnce(w);
+    for (const std::string& w : focusWarnings(camera, o.lens)) warnOnce(w);
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
       throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
@@ -444,42 +225,67 @@ int runCapture(const CaptureOptions& o) {
     outputs.add(cameraFile, cameraText);
     applyDisplayForFile(imageFile, image, display.encoding);
     writeImage(outputs, imageFile, image, aovChannelValues);
-    const double seconds = secondsSince(frameStart);
-    ++rendered;
-    nlohmann::json line;
-    line["frame"] = frame;
-    line["time"] = time;
-    line["file"] = relativeTo(imageFile, manifest);
-    line["camera"] = relativeTo(cameraFile, manifest);
-    line["seed"] = lens.seed;
-    line["samples"] = stats.estimate ? stats.estimate->meanSamples : static_cast<double>(plan.apertureSamples);
-    if (stats.estimate) line["psnr_estimate_db"] = stats.estimate->psnrDb;
-    line["seconds"] = seconds;
-    line["width"] = size.widthPx;
-    line["height"] = size.heightPx;
-    line["focal_length_mm"] = key.camera.focalLengthMm;
-    line["f_number"] = distanceJson(key.camera.fNumber);
-    line["focus_distance"] = distanceJson(key.camera.focusDistance);
-    if (aovs.any()) {
-      line["aov"] = aovs.names();
-      // Every channel of the frame's EXR, in the order written.
-      nlohmann::json channels = {"R", "G", "B", "A"};
-      for (const std::string& c : aovChannelNames(aovs)) channels.push_back(c);
-      line["channels"] = channels;
-    }
-    if (!display.encoding.isIdentity())
-      line["display"] = {{"exposure_stops", display.exposure.stops}, {"exposure", describe(display.exposure)},
-                         {"view_transform", viewTransformName(display.encoding.transform)}};
-    if (environmentSummary)
-      line["environment"] = {{"file", environmentSummary->file}, {"intensity", environmentSummary->intensity},
-                             {"rotation_deg", environmentSummary->rotationDegrees}};
-    line["opencv"] = openCvJson(camera, size);
-    line["shard"] = cat(shard.index, "/", shard.count);
+    const ManifestFrame entry{frame, time, imageFile, cameraFile, lens.seed,
+                              stats.estimate ? stats.estimate->meanSamples : static_cast<double>(plan.apertureSamples),
+                              stats.estimate ? std::optional<double>(stats.estimate->psnrDb) : std::nullopt,
+                              secondsSince(frameStart), size, key.camera, camera, aovs, display, environment, shard};
+    const nlohmann::json line = manifestLine(entry, manifest);
     commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
+    return line;
+  }
+};
 
+int runCapture(const CaptureOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  // Without --path the scene's animation gives the frame count: the scene is read first.
+  if (o.pathFile.empty() && o.scene.empty())
+    throw InputError("--path: give a camera path, or a SCENE whose own camera (or automatic framing) is captured over its animation");
+  const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
+  Scene scene = loadGltf(scenePath);
+  applyBackground(scene, o.background);
+  const std::optional<EnvironmentSummary> environmentSummary = applyEnvironment(scene, o.environment, std::cerr);
+  if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
+  selectAnimation(scene, o.camera.animation);
+  const FrameCameras cameras(o, scene, o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0);
+  const int frameCount = cameras.frameCount(scene);
+  const FrameRange range = o.frames.empty() ? FrameRange{0, frameCount - 1} : parseFrameRange(o.frames, frameCount);
+  const Shard shard = parseShard(o.shard);
+  const std::vector<int> frames = shardFrames(range, shard);
+  checkFramePattern(o.out, "--out");
+  const AovSelection aovs = parseAovs(o.aovs);
+  const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
+  OutputSet madeFolders;
+  checkCaptureOutputs(o, frames, range, manifest, aovs, madeFolders);
+  // The frames already done, for --skip-existing: those with a line in the manifest.
+  const std::set<std::string> framesInManifest = o.skipExisting ? manifestFiles(manifest) : std::set<std::string>{};
+  // Every frame's camera checked for what COLMAP can hold before any work; written before the
+  // first frame.
+  const std::optional<ColmapFiles> colmapFiles =
+      o.colmapOut.empty() ? std::nullopt : std::optional<ColmapFiles>(colmapModel(o, cameras, scene, range));
+
+  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
+  Renderer renderer(scene);
+  if (colmapFiles) writeColmapModel(o.colmapOut, *colmapFiles);
+
+  // One line a frame where nobody watches a bar (a cluster job's log), unless
+  // LENSLAB_PROGRESS_SECONDS asks for fewer.
+  ProgressReporter progress("capture", "frames", o.quiet, 0.0);
+  CaptureRun run{o, scene, cameras, manifest, aovs, environmentSummary, shard, renderer, progress};
+  int rendered = 0, skipped = 0;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const int frame = frames[i];
+    const fs::path imageFile = formatFramePath(o.out, frame);
+    // A frame is done when its image (whole: io/AtomicFile.h) and its manifest line both exist;
+    // an image without a line (a kill between the two) is rendered again.
+    if (o.skipExisting && fs::exists(imageFile) && framesInManifest.count(relativeTo(imageFile, manifest))) {
+      ++skipped;
+      continue;
+    }
+    const nlohmann::json line = run.capture(frame);
+    ++rendered;
     progress.update(static_cast<std::int64_t>(i) + 1, static_cast<std::int64_t>(frames.size()),
                     cat("frame ", frame, ": ", std::round(line["samples"].get<double>() * 10.0) / 10.0, " samples, ",
-                        std::round(seconds * 100.0) / 100.0, " s"));
+                        std::round(line["seconds"].get<double>() * 100.0) / 100.0, " s"));
   }
   progress.finish();
   madeFolders.commit();

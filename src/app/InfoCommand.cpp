@@ -6,7 +6,7 @@
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "gl/GlContext.h"
 #include "plan/FramePlan.h"
 #include "render/Renderer.h"

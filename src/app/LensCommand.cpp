@@ -7,7 +7,7 @@
 #include "core/Error.h"
 #include "core/NumberInput.h"
 #include "core/Text.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "lens/LensAnalysis.h"
 #include "lens/LensFit.h"
 #include "lens/ParaxialLens.h"

@@ -4,7 +4,7 @@
 #include "camera/ViewSpec.h"
 #include "core/Error.h"
 #include "core/Text.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 
 #include <cmath>
 

@@ -8,6 +8,7 @@
 #include "app/Commands.h"
 #include "app/EnvironmentOptions.h"
 #include "app/Stats.h"
+#include "app/TiledFile.h"
 #include "camera/DepthRange.h"
 #include "camera/FocusOnPixel.h"
 #include "camera/ImageSize.h"
@@ -17,32 +18,25 @@
 #include "core/Text.h"
 #include "gl/GlContext.h"
 #include "io/AovChannels.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
-#include "io/StripImageWriter.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/RasterDepth.h"
 #include "render/Renderer.h"
-#include "render/TiledRender.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneAnimation.h"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdint>
 #include <iostream>
 #include <memory>
 #include <optional>
-
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 
 namespace lenslab {
 namespace fs = std::filesystem;
@@ -86,6 +80,26 @@ std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, 
 }
 
 
+// render's camera after --focus-at (focused on the raster's depth there) and --lens (the thin lens
+// fitted for the focus as it now is: the field curvature and the pupil's place follow focus).
+Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
+                     Renderer& renderer, const std::optional<FittedLens>& fitted, RunStats& stats) {
+  Camera camera = selected.camera;
+  if (o.lens.focusAt) {
+    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer), "--focus-at");
+    camera = withDepthRangeFitted(focused.camera, scene.bounds);
+    stats.setCamera(focused);
+  }
+  if (!o.lensFile.empty()) {
+    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
+    SelectedCamera lensCamera;
+    lensCamera.camera = fittedCameraFor(request, fitted && !o.lens.focusAt ? *fitted : fitFor(request), camera, o.lensFile);
+    camera = withDepthRangeFitted(lensCamera.camera, scene.bounds);
+    stats.setCamera(lensCamera);
+  }
+  return camera;
+}
+
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
 // `out`'s temporary file in `outputs`. `aovChannelValues` gets the selected AOVs (`aovs`) of the
 // camera rendered with (refused for a tiled image).
@@ -93,7 +107,6 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
                                const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
                                ProgressReporter& progress, const DisplayEncoding& display, const AovSelection& aovs,
                                std::vector<ImageChannel>& aovChannelValues, const std::optional<FittedLens>& fitted) {
-  Camera camera = selected.camera;
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   stats.contextSeconds = secondsSince(t);
@@ -103,31 +116,14 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   Renderer renderer(scene);
   stats.setupSeconds = secondsSince(t);
 
-  if (o.lens.focusAt) {
-    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer), "--focus-at");
-    camera = withDepthRangeFitted(focused.camera, scene.bounds);
-    stats.setCamera(focused);
-  }
-  if (!o.lensFile.empty()) {
-    // Fitted for the focus as it now is: the field curvature and the pupil's place follow focus.
-    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
-    SelectedCamera lensCamera;
-    lensCamera.camera = fittedCameraFor(request, fitted && !o.lens.focusAt ? *fitted : fitFor(request), camera, o.lensFile);
-    camera = withDepthRangeFitted(lensCamera.camera, scene.bounds);
-    stats.setCamera(lensCamera);
-  }
+  const Camera camera = refocusAndFit(o, scene, selected, size, renderer, fitted, stats);
   const auto renderStart = std::chrono::steady_clock::now();
   const FramePlan plan = planFrame(renderer, scene, camera, size, planOptions, stats);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
   stats.camera = camera.source;
 
-  // Memory bounded by the tile, not the frame: a frame whose render would hold more than a tile's
-  // budget is tiled, and a tile row is no taller than the writer's strip budget allows.
-  TileMemory memory;
-  std::string extension = out.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  memory.fileBytesPerPixel = extension == ".png" ? 3 : 16;  // StripImageWriter: 8-bit RGB, or float RGBA
-  const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), o.tileSizePx, &memory);
+  // Memory bounded by the tile, not the frame (app/TiledFile.h).
+  const TilePlan tiles = tilesForFile(camera, size, plan, out, o.tileSizePx);
   if (tiles.tiled && plan.adaptive)
     throw InputError(cat("--target-psnr: ", tiles.why, "; per-tile budgets are not combined with that yet: give a smaller "
                          "--width, or --aperture-samples"));
@@ -135,44 +131,7 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
     throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why, "; the AOVs are written with an image rendered in one "
                          "piece: give a smaller --width (and no --tile-size), or use raycast"));
   if (tiles.tiled) {
-#ifdef __GLIBC__
-    // The tiles' buffers (tables, targets, read-backs) are 5 to 30 MB each and differ a little in
-    // size from tile to tile; glibc's dynamic mmap threshold would put them on the heap after the
-    // first is freed, where they fragment and the resident size grows tile by tile (8000 px,
-    // camera-lens.json: 670 MB after one tile, 1080 MB after 16). Kept at 1 MiB, each is mapped
-    // and given back whole.
-    mallopt(M_MMAP_THRESHOLD, 1 << 20);
-#endif
-    stats.plan.passes.push_back({"tiles", tiles.why, {}});
-    progress.setUnit(cat("samples over ", tiles.tiles.size(), " tiles"));
-    t = std::chrono::steady_clock::now();
-    double writeSeconds = 0.0;
-    StripImageWriter writer(outputs, out, size);
-    const std::string writing = cat("writing ", out.string());
-    // None for a silent reporter (--quiet): the lens tables are then built in one parallel pass.
-    TileProgress tileProgress;
-    if (progress.style() != ProgressReporter::Style::Silent)
-      tileProgress = [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); };
-    renderTiles(renderer, camera, plan, size, tiles,
-                [&](const PixelRect& rect, const Image& pixels) {
-                  // Said at every tile: the writer takes it, and one that completes a strip of rows
-                  // has it written now (seconds for a large PNG).
-                  progress.setDetail(writing);
-                  const auto w = std::chrono::steady_clock::now();
-                  if (display.isIdentity()) {
-                    writer.add(rect.x0, rect.y0, pixels);
-                  } else {
-                    Image shown = pixels;
-                    applyDisplayForFile(out, shown, display);
-                    writer.add(rect.x0, rect.y0, shown);
-                  }
-                  writeSeconds += secondsSince(w);
-                },
-                tileProgress);
-    const auto w = std::chrono::steady_clock::now();
-    writer.finish();
-    stats.writeSeconds = writeSeconds + secondsSince(w);
-    stats.renderSeconds = secondsSince(t) - stats.writeSeconds;
+    renderTiledToFile(renderer, camera, plan, size, tiles, outputs, out, display, stats, progress);
     return std::nullopt;
   }
 
@@ -226,6 +185,48 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   stats.renderSeconds = secondsSince(t);
   aovChannelValues = aovsOf(caster, camera, size, aovs);
   return image;
+}
+
+// render --lens: the fitted thin lens where its worst error is within --lens-tolerance pixels,
+// else the lens traced exactly (as raycast --lens), the aperture samples as rays per pixel: then
+// true, with `exact` holding those rays. `fitted` gets the fit.
+bool traceLensExactly(const RenderOptions& o, const SelectedCamera& selected, ImageSize size, std::optional<FittedLens>& fitted,
+                      RenderOptions& exact) {
+  if (o.method != Method::Raster || o.lensFile.empty()) return false;
+  const LensRequest request = lensRequestFor(o.lensFile, selected, selected.camera);
+  fitted = fitFor(request);
+  const double errorPx = fitErrorPx(*fitted, request, size.widthPx);
+  if (errorPx <= o.lensTolerancePx) {
+    if (!o.quiet)
+      std::cerr << "lenslab: note: --lens " << o.lensFile << ": the fitted thin lens, off by up to " << std::round(errorPx * 100.0) / 100.0
+                << " px at this size (lenslab lens " << o.lensFile << " shows each effect's error)\n";
+    return false;
+  }
+  exact.samplesPerPixel = std::all_of(o.lens.apertureSamples.begin(), o.lens.apertureSamples.end(), ::isdigit) && !o.lens.apertureSamples.empty()
+                              ? std::stoi(o.lens.apertureSamples)
+                              : 64;
+  if (!o.quiet)
+    std::cerr << "lenslab: note: --lens " << o.lensFile << ": "
+              << (fitted->usable ? cat("the fitted thin lens is off by up to ", std::round(errorPx * 100.0) / 100.0, " px at this size")
+                                 : cat("no thin lens fits (", fitted->why, ")"))
+              << ", above --lens-tolerance " << o.lensTolerancePx << ": tracing the lens exactly, " << exact.samplesPerPixel
+              << " rays per pixel\n";
+  return true;
+}
+
+// The line that says what was written (none with --quiet).
+void reportWritten(const RenderOptions& o, const fs::path& out, ImageSize size, const RunStats& stats) {
+  if (o.quiet) return;
+  if (stats.estimate)
+    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", estimated "
+              << stats.estimate->psnrDb << " dB with " << stats.estimate->meanSamples << " samples per pixel on average ("
+              << stats.estimate->minSamples << " to " << stats.estimate->maxSamples << " per tile), " << stats.renderer
+              << ", " << stats.seconds << " s)\n";
+  else
+    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
+              << stats.plan.apertureSamples
+              << (o.method == Method::Raster ? " aperture sample" : " sample") << (stats.plan.apertureSamples == 1 ? "" : "s")
+              << (o.method == Method::Raster ? "" : " per pixel") << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
 }
 
 int runRender(const RenderOptions& o) {
@@ -282,31 +283,9 @@ int runRender(const RenderOptions& o) {
   std::vector<ImageChannel> aovChannelValues;  // --aov, beside the image in its EXR
   // One reporter for the whole run: its last line comes after the file is written.
   ProgressReporter progress(stats.command, o.method == Method::Raster ? "samples" : "rows", o.quiet);
-  // render --lens: the fitted thin lens where its worst error is within --lens-tolerance pixels,
-  // else the lens traced exactly (as raycast --lens), the aperture samples as rays per pixel.
   std::optional<FittedLens> fitted;
   RenderOptions exact = o;
-  bool traceExactly = o.method == Method::Raycast;
-  if (o.method == Method::Raster && !o.lensFile.empty()) {
-    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
-    fitted = fitFor(request);
-    const double errorPx = fitErrorPx(*fitted, request, size.widthPx);
-    if (!(errorPx <= o.lensTolerancePx)) {
-      traceExactly = true;
-      exact.samplesPerPixel = std::all_of(o.lens.apertureSamples.begin(), o.lens.apertureSamples.end(), ::isdigit) && !o.lens.apertureSamples.empty()
-                                  ? std::stoi(o.lens.apertureSamples)
-                                  : 64;
-      if (!o.quiet)
-        std::cerr << "lenslab: note: --lens " << o.lensFile << ": "
-                  << (fitted->usable ? cat("the fitted thin lens is off by up to ", std::round(errorPx * 100.0) / 100.0, " px at this size")
-                                     : cat("no thin lens fits (", fitted->why, ")"))
-                  << ", above --lens-tolerance " << o.lensTolerancePx << ": tracing the lens exactly, " << exact.samplesPerPixel
-                  << " rays per pixel\n";
-    } else if (!o.quiet) {
-      std::cerr << "lenslab: note: --lens " << o.lensFile << ": the fitted thin lens, off by up to " << std::round(errorPx * 100.0) / 100.0
-                << " px at this size (lenslab lens " << o.lensFile << " shows each effect's error)\n";
-    }
-  }
+  const bool traceExactly = o.method == Method::Raycast || traceLensExactly(o, selected, size, fitted, exact);
   if (!traceExactly) {
     image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display.encoding, aovs,
                       aovChannelValues, fitted);
@@ -326,16 +305,7 @@ int runRender(const RenderOptions& o) {
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
   outputs.commit();
-  if (!o.quiet && stats.estimate)
-    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", estimated "
-              << stats.estimate->psnrDb << " dB with " << stats.estimate->meanSamples << " samples per pixel on average ("
-              << stats.estimate->minSamples << " to " << stats.estimate->maxSamples << " per tile), " << stats.renderer
-              << ", " << stats.seconds << " s)\n";
-  else if (!o.quiet)
-    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
-              << stats.plan.apertureSamples
-              << (o.method == Method::Raster ? " aperture sample" : " sample") << (stats.plan.apertureSamples == 1 ? "" : "s")
-              << (o.method == Method::Raster ? "" : " per pixel") << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
+  reportWritten(o, out, size, stats);
   return 0;
 }
 

@@ -10,7 +10,7 @@
 #include "core/Text.h"
 #include "gl/GlContext.h"
 #include "io/AtomicFile.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
 #include "io/Progress.h"
@@ -56,11 +56,11 @@ std::string shortestText(double v) {
   return std::string(text, end);
 }
 
-int runSweepCommand(SweepCommandOptions& o) {
-  // Each adaptive image is named by its target, to 10 significant digits: two targets with one
-  // name would overwrite one image, found only after the reference and the rows before it.
+// Each adaptive image is named by its target, to 10 significant digits: two targets with one
+// name would overwrite one image, found only after the reference and the rows before it.
+void refuseTargetsSharingAName(const std::vector<double>& targetsDb) {
   std::map<std::string, double> targetNamed;
-  for (const double target : o.sweep.targetsDb) {
+  for (const double target : targetsDb) {
     const auto [named, added] = targetNamed.emplace(sweepAdaptiveImageName(target), target);
     if (added) continue;
     if (named->second == target)
@@ -69,81 +69,80 @@ int runSweepCommand(SweepCommandOptions& o) {
                          " dB both name the image ", named->first,
                          " (targets name their images to 10 significant digits); give targets that differ within them"));
   }
-  const auto [scenePath, cameraPath] =
-      resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera-dof.json");
-  Scene scene = loadGltf(scenePath);
-  applyBackground(scene, o.background);
-  const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
-  const SelectedCamera selected = applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens);
-  Camera camera = withDepthRangeFitted(selected.camera, scene.bounds);
-  // --lens: the reference traces the lens; the swept camera is the thin lens fitted to it.
-  std::optional<LensCamera> exactLens;
-  if (!o.lensFile.empty()) {
-    const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
-    const FittedLens fit = fitFor(request);
-    camera = withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds);
-    exactLens.emplace(lensCameraFor(request));
-    o.sweep.exactLens = &*exactLens;
-    std::string key;
-    for (const LensSurface& surface : request.lens->surfaces)
-      for (const double v : {surface.radiusMm, surface.thicknessMm, surface.indexAfter, surface.apertureMm, surface.abbeAfter})
-        key += shortestText(v) + " ";
-    for (const double v : {request.settings.sensorMm.x, request.settings.sensorMm.y, request.settings.fNumber.value_or(0.0),
-                           request.settings.focusDistance})
-      key += "| " + shortestText(v);
-    o.sweep.lensKey = key;
-    o.sweep.lensAblations = fittedCameraAblations(camera);
+}
+
+// --lens: the reference traces the lens; the swept camera (returned) is the thin lens fitted to it.
+Camera prepareExactLens(SweepCommandOptions& o, const SelectedCamera& selected, const Camera& camera, const Scene& scene,
+                        std::optional<LensCamera>& exactLens) {
+  const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
+  const FittedLens fit = fitFor(request);
+  exactLens.emplace(lensCameraFor(request));
+  o.sweep.exactLens = &*exactLens;
+  o.sweep.inputFiles.push_back(o.lensFile);
+  o.sweep.inputOptions.push_back(cat("lens settings ", shortestText(request.settings.sensorMm.x), " ",
+                                     shortestText(request.settings.sensorMm.y), " ", shortestText(request.settings.fNumber.value_or(0.0)),
+                                     " ", shortestText(request.settings.focusDistance)));
+  const Camera fitted = withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds);
+  o.sweep.lensAblations = fittedCameraAblations(fitted);
+  return fitted;
+}
+
+// The reference's inputs beyond the scene's own files and the camera used (report/ReferenceCache.h):
+// the files' bytes and the options that change what the ray caster computes.
+void addReferenceInputs(SweepCommandOptions& o, const std::optional<fs::path>& cameraPath) {
+  if (cameraPath) o.sweep.inputFiles.push_back(*cameraPath);
+  if (o.background)
+    o.sweep.inputOptions.push_back(cat("background ", shortestText(o.background->r), " ", shortestText(o.background->g), " ",
+                                       shortestText(o.background->b)));
+  if (!o.environment.file.empty()) {
+    o.sweep.inputFiles.push_back(o.environment.file);
+    o.sweep.inputOptions.push_back(cat("environment ", shortestText(o.environment.intensity), " ",
+                                       shortestText(o.environment.rotationDegrees)));
   }
-  // About 320 wide unless a side is given (the reference is costly); a height alone sets the
-  // width from the window.
-  const ImageSize size = resolveImageSize(camera, o.width, o.height, 320);
-  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
-    std::cerr << "lenslab: warning: " << shape << "\n";
-  requireOneTarget(size, RenderTargetLimits{}, "sweep");
-  const fs::path out = o.outDir;
-  // Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a
-  // full disk on the last image) leaves nothing new, not even the folders made here. The folders
-  // are made now, so that each file's place can be checked before the costly reference.
-  OutputSet outputs;
+}
+
+// Every file the sweep writes goes into one set, committed at the end: a failure anywhere (a full
+// disk on the last image) leaves nothing new, not even the folders made here. The folders are made
+// now, so that each file's place can be checked before the costly reference.
+void prepareOutputs(OutputSet& outputs, const fs::path& out) {
   outputs.createFolders(out / "images");
   for (const char* name : {"sweep.csv", "sweep.md"}) checkOutputPath(out / name, OutputKind::Any, "--out");
   checkOutputPath(out / "error_vs_time.png", OutputKind::Image, "--out");
   checkOutputPath(out / "reference.exr", OutputKind::Image, "--out");          // the reference's cache
   checkOutputPath(out / "images" / "raster.png", OutputKind::Image, "--out");  // the rows' images
+}
 
-  auto t = std::chrono::steady_clock::now();
-  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
-  const double contextSeconds = secondsSince(t);
-  o.sweep.outDir = out;
-  o.sweep.outputs = &outputs;
-  o.sweep.seed = o.lens.seed;
-  // One reporter a phase (the reference's rows, then the images), each with its own clock.
-  std::unique_ptr<ProgressReporter> progress;
-  const bool quiet = o.quiet;
-  o.sweep.log = [&progress, quiet](const std::string& line) {
+// One reporter a phase (the reference's rows, then the images), each with its own clock.
+void attachReporters(SweepOptions& sweep, std::unique_ptr<ProgressReporter>& progress, bool quiet) {
+  sweep.log = [&progress, quiet](const std::string& line) {
     if (quiet) return;
     if (progress) progress->note("lenslab: sweep: " + line);
     else std::cerr << "lenslab: sweep: " << line << "\n";
   };
-  o.sweep.progress = [&progress, quiet](const std::string& unit, std::int64_t done, std::int64_t total) {
+  sweep.progress = [&progress, quiet](const std::string& unit, std::int64_t done, std::int64_t total) {
     if (!progress || progress->unit() != unit) {
       if (progress) progress->finish();
       progress = std::make_unique<ProgressReporter>("sweep", unit, quiet);
     }
     progress->update(done, total);
   };
-  t = std::chrono::steady_clock::now();
-  const SweepResult result = runSweep(scene, camera, size, o.sweep);
-  if (progress) progress->finish();
-  const double sweepSeconds = secondsSince(t);
+}
 
-  const std::string header = cat(
+struct SweepTimes {
+  double contextSeconds = 0.0;
+  double sweepSeconds = 0.0;
+};
+
+std::string sweepHeader(const SweepCommandOptions& o, const fs::path& scenePath, const Camera& camera, ImageSize size,
+                        const std::optional<EnvironmentSummary>& environment, const GlContext& context, const SweepResult& result,
+                        const SweepTimes& times) {
+  return cat(
       "# Error against run time: ", scenePath.filename().string(), "\n\n",
       "- scene `", scenePath.string(), "`, camera ", camera.source, ", ", size.widthPx, "x", size.heightPx, "\n",
       environment ? cat("- environment `", environment->file, "`, intensity ", environment->intensity, ", rotation ",
                         environment->rotationDegrees, "°\n")
                   : std::string(),
-      "- renderer: ", context->renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
+      "- renderer: ", context.renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
       o.lensFile.empty() ? std::string()
                          : cat("- lens `", o.lensFile, "`: the reference and the ray-cast rows trace it exactly; the raster rows are the "
                                "thin lens fitted to it (`lenslab lens` gives the fit)\n"),
@@ -152,14 +151,14 @@ int runSweepCommand(SweepCommandOptions& o) {
       " (the pixel integral: each sample's texture filtered over its own stratum); its own noise, from its two ",
       "halves: RMSE ", result.referenceNoiseRmse, ", so no method can show more than about ",
       -20.0 * std::log10(result.referenceNoiseRmse), " dB here\n",
-      "- GL context creation ", contextSeconds, " s; scene upload, shader compilation and a warm-up frame ",
+      "- GL context creation ", times.contextSeconds, " s; scene upload, shader compilation and a warm-up frame ",
       result.setupSeconds, " s; neither is in the rows, which time each frame with the GPU finished and read back ",
       "(median of 3 for raster and post-process)\n",
       "- occlusion-edge pixels (within their circle of confusion of a depth step): ", result.edgeFraction * 100.0, " %\n",
-      "- whole sweep: ", sweepSeconds, " s\n");
-  outputs.add(out / "sweep.csv", sweepCsv(result));
-  outputs.add(out / "sweep.md", sweepMarkdown(result, header));
+      "- whole sweep: ", times.sweepSeconds, " s\n");
+}
 
+Image errorPlot(const SweepResult& result) {
   const std::map<std::string, glm::vec3> colours = {
       {"raster lecture17", {0.8f, 0.1f, 0.6f}}, {"raster concentric", {0.1f, 0.3f, 0.9f}},
       {"raster r2", {0.0f, 0.6f, 0.3f}},        {"raster random", {0.9f, 0.5f, 0.0f}},
@@ -171,7 +170,48 @@ int runSweepCommand(SweepCommandOptions& o) {
     if (series.empty() || series.back().name != key) series.push_back({key, colours.count(key) ? colours.at(key) : glm::vec3(0.0f), {}});
     series.back().points.push_back({row.seconds, row.rmse});
   }
-  writeImage(outputs, out / "error_vs_time.png", logLogPlot(series, "seconds", "RMSE", "error against run time"));
+  return logLogPlot(series, "seconds", "RMSE", "error against run time");
+}
+
+int runSweepCommand(SweepCommandOptions& o) {
+  refuseTargetsSharingAName(o.sweep.targetsDb);
+  const auto [scenePath, cameraPath] =
+      resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera-dof.json");
+  Scene scene = loadGltf(scenePath);
+  applyBackground(scene, o.background);
+  const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
+  const SelectedCamera selected = applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens);
+  Camera camera = withDepthRangeFitted(selected.camera, scene.bounds);
+  addReferenceInputs(o, cameraPath);
+  std::optional<LensCamera> exactLens;
+  if (!o.lensFile.empty()) camera = prepareExactLens(o, selected, camera, scene, exactLens);
+  // About 320 wide unless a side is given (the reference is costly); a height alone sets the
+  // width from the window.
+  const ImageSize size = resolveImageSize(camera, o.width, o.height, 320);
+  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
+    std::cerr << "lenslab: warning: " << shape << "\n";
+  requireOneTarget(size, RenderTargetLimits{}, "sweep");
+  const fs::path out = o.outDir;
+  OutputSet outputs;
+  prepareOutputs(outputs, out);
+
+  SweepTimes times;
+  auto t = std::chrono::steady_clock::now();
+  const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
+  times.contextSeconds = secondsSince(t);
+  o.sweep.outDir = out;
+  o.sweep.outputs = &outputs;
+  o.sweep.seed = o.lens.seed;
+  std::unique_ptr<ProgressReporter> progress;
+  attachReporters(o.sweep, progress, o.quiet);
+  t = std::chrono::steady_clock::now();
+  const SweepResult result = runSweep(scene, camera, size, o.sweep);
+  if (progress) progress->finish();
+  times.sweepSeconds = secondsSince(t);
+
+  outputs.add(out / "sweep.csv", sweepCsv(result));
+  outputs.add(out / "sweep.md", sweepMarkdown(result, sweepHeader(o, scenePath, camera, size, environment, *context, result, times)));
+  writeImage(outputs, out / "error_vs_time.png", errorPlot(result));
   outputs.commit();
   const auto images = std::count_if(result.rows.begin(), result.rows.end(), [](const SweepRow& r) { return !r.image.empty(); });
   if (!o.quiet)

@@ -6,7 +6,7 @@
 // its precision on the interval where the scene is. Fitting never clips the scene: the bounds are
 // conservative and a margin is added on both sides.
 #include "camera/Camera.h"
-#include "scene/Scene.h"
+#include "core/Bounds.h"
 
 namespace lenslab {
 

@@ -9,7 +9,7 @@
 #include "core/Error.h"
 #include "core/NumberInput.h"
 #include "core/Text.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 
 #include <nlohmann/json.hpp>
 

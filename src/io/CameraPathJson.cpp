@@ -6,7 +6,7 @@
 #include "core/NumberInput.h"
 #include "core/Text.h"
 #include "io/CameraJson.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
-// COLMAP's sparse model in its text format: cameras.txt and images.txt read and written,
-// points3D.txt written empty. COLMAP's conventions (its "Output Format" page and
-// src/colmap/sensor/models.h), stated once here:
+// COLMAP's sparse model in its text format: cameras.txt and images.txt read and turned into
+// lenslab cameras (writing them is io/ColmapExport.h). COLMAP's conventions (its "Output Format"
+// page and src/colmap/sensor/models.h), stated once here:
 //   - An image's pose is world → camera: X_cam = R(q)·X_world + t, q = (QW, QX, QY, QZ) a unit
 //     quaternion in the Hamilton convention (Eigen's), w first; the camera centre is −Rᵀt. The
 //     camera frame is OpenCV's: x right, y down, z forward (the optical axis).
@@ -86,20 +86,5 @@ OpenCvPose poseOf(const ColmapImage& image);
 // (pinholeFromOpenCv) whose default size is the camera's WIDTH × HEIGHT. Throws InputError for
 // a name not in the model, listing some that are.
 Camera colmapImageCamera(const ColmapModel& model, const std::string& name);
-
-// The simplest model that holds a lens exactly: PINHOLE without distortion, OPENCV for k1, k2,
-// p1, p2, FULL_OPENCV (k4 = k5 = k6 = 0) when k3 ≠ 0; the lecture's β adds to k1. Throws
-// InputError naming `where` for the lecture's odd powers α and γ, which no COLMAP model holds.
-ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& distortion, std::uint32_t id,
-                            const std::string& where);
-// Throws InputError naming `where` for a name that is empty or holds white space.
-ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_t cameraId, std::string name,
-                          const std::string& where);
-
-// The files' text, with COLMAP's header comments; numbers in the shortest form that reads back
-// to the same double.
-std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras);
-std::string colmapImagesText(const std::vector<ColmapImage>& images);
-std::string colmapPoints3DText();  // no points: the poses are known, a tool triangulates them
 
 }  // namespace lenslab

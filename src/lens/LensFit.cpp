@@ -6,6 +6,8 @@
 #include "lens/ParaxialLens.h"
 #include "lens/RealLens.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -76,42 +78,32 @@ Bundle traceBundle(const ExitPupil& pupil, glm::dvec2 filmMm, double entrancePup
   return out;
 }
 
-// Least squares of y ≈ Σ c_k·x^(p0 + k·step) for k < terms, by normal equations on columns scaled
-// to the largest |x| (a telephoto's field reaches x = 0.09, where x⁷ would leave the matrix
-// singular in double precision unscaled).
+// Weighted least squares of y ≈ Σ c_k·x^(p0 + k·step) for k < terms. The columns are scaled to
+// the largest |x| (a telephoto's field reaches x = 0.09, where x⁷ would span 17 decades unscaled),
+// and the rows by √w, and the system is solved by Householder QR with column pivoting: it works on
+// the design matrix itself, whose condition number is the square root of the normal equations',
+// so a nearly dependent basis loses half as many digits. A rank-deficient basis (all x equal) gets
+// a basic solution: zero in the columns the pivoting finds dependent.
 std::vector<double> fitPowers(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w, int firstPower, int step,
                               int terms) {
   double scale = 0.0;
   for (double v : x) scale = std::max(scale, std::abs(v));
   if (!(scale > 0.0)) scale = 1.0;
-  std::vector<double> m(static_cast<std::size_t>(terms * terms), 0.0), rhs(static_cast<std::size_t>(terms), 0.0);
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    std::vector<double> row(static_cast<std::size_t>(terms));
-    for (int k = 0; k < terms; ++k) row[static_cast<std::size_t>(k)] = std::pow(x[i] / scale, firstPower + k * step);
-    for (int r = 0; r < terms; ++r) {
-      rhs[static_cast<std::size_t>(r)] += w[i] * row[static_cast<std::size_t>(r)] * y[i];
-      for (int c = 0; c < terms; ++c) m[static_cast<std::size_t>(r * terms + c)] += w[i] * row[static_cast<std::size_t>(r)] * row[static_cast<std::size_t>(c)];
-    }
+  const auto rows = static_cast<Eigen::Index>(x.size());
+  Eigen::MatrixXd design(rows, terms);
+  Eigen::VectorXd target(rows);
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    const double rootWeight = std::sqrt(w[s]);
+    for (int k = 0; k < terms; ++k) design(i, k) = rootWeight * std::pow(x[s] / scale, firstPower + k * step);
+    target(i) = rootWeight * y[s];
   }
-  // Gaussian elimination with partial pivoting (at most 4 × 4).
-  std::vector<double> c = rhs;
-  for (int col = 0; col < terms; ++col) {
-    int pivot = col;
-    for (int r = col + 1; r < terms; ++r)
-      if (std::abs(m[static_cast<std::size_t>(r * terms + col)]) > std::abs(m[static_cast<std::size_t>(pivot * terms + col)])) pivot = r;
-    for (int k = 0; k < terms; ++k) std::swap(m[static_cast<std::size_t>(col * terms + k)], m[static_cast<std::size_t>(pivot * terms + k)]);
-    std::swap(c[static_cast<std::size_t>(col)], c[static_cast<std::size_t>(pivot)]);
-    const double p = m[static_cast<std::size_t>(col * terms + col)];
-    if (p == 0.0) return std::vector<double>(static_cast<std::size_t>(terms), 0.0);
-    for (int r = 0; r < terms; ++r) {
-      if (r == col) continue;
-      const double f = m[static_cast<std::size_t>(r * terms + col)] / p;
-      for (int k = 0; k < terms; ++k) m[static_cast<std::size_t>(r * terms + k)] -= f * m[static_cast<std::size_t>(col * terms + k)];
-      c[static_cast<std::size_t>(r)] -= f * c[static_cast<std::size_t>(col)];
-    }
+  const Eigen::VectorXd scaled = design.colPivHouseholderQr().solve(target);
+  std::vector<double> c(static_cast<std::size_t>(terms));
+  for (int k = 0; k < terms; ++k) {
+    const double ck = scaled(k) / std::pow(scale, firstPower + k * step);
+    c[static_cast<std::size_t>(k)] = std::isfinite(ck) ? ck : 0.0;
   }
-  for (int k = 0; k < terms; ++k)
-    c[static_cast<std::size_t>(k)] /= m[static_cast<std::size_t>(k * terms + k)] * std::pow(scale, firstPower + k * step);
   return c;
 }
 

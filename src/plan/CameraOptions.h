@@ -3,7 +3,7 @@
 // animation clip, and the lens and pose that override the chosen camera field by field. Pure (no
 // command-line library): src/app registers these as options; the viewer and the tests use them too.
 //
-// Composition: a base camera comes first, from one source (io/CameraSelection.h picks it: a camera
+// Composition: a base camera comes first, from one source (plan/CameraSelection.h picks it: a camera
 // file, a glTF camera, or automatic framing); the options then win field by field:
 //
 // | base                                   | --focal-length, --sensor, --f-number   | --eye, --target                    |
@@ -27,6 +27,7 @@
 // instead (only --target: the framing's view of a sphere about the target; only --eye: looking at
 // the sphere's centre). A refusal is one line naming the option, the base camera and what to do.
 #include "camera/PhysicalCamera.h"
+#include "plan/SceneChoice.h"  // which glTF camera and clip: the options name them
 #include "plan/UserOptions.h"
 #include "scene/BoundingSphere.h"
 #include "scene/Scene.h"
@@ -77,22 +78,6 @@ std::string namedSensorList();
 glm::dvec2 parseSensorMm(const std::string& text);
 // --f-number's text: a positive number, or infinity / pinhole (+infinity: no aperture).
 double parseFNumber(const std::string& text);
-
-// How a glTF camera is named in messages and `info`: its index, node name and camera name.
-std::string sceneCameraLabel(const Scene& scene, std::size_t index);
-// The index in scene.cameras of --camera-node's value: a whole number is an index (as `info` lists
-// them), else a node name, else a camera name. Throws InputError listing the cameras when none (or
-// more than one) matches.
-std::size_t findSceneCamera(const Scene& scene, const std::string& nameOrIndex);
-
-// Makes --animation's clip the one poseScene plays (a name, an index as `info` lists them, or all);
-// empty leaves the default (the first). Throws InputError listing the clips.
-void selectAnimation(Scene& scene, const std::string& nameIndexOrAll);
-
-// --animation and --time for one image (render, raycast, view): selects the clip and poses the
-// scene at the time. Returns what the user should hear: a time on a scene whose playing clip moves
-// nothing, a clip without a time (the rest pose is drawn).
-std::vector<std::string> poseForOneImage(Scene& scene, const std::string& animation, std::optional<double> timeSeconds);
 
 // Where a command's base camera came from, which decides what the options may change.
 enum class CameraForm { Physical, Lecture, Intrinsics, GltfPerspective, GltfOrthographic, AutomaticFraming };

@@ -77,10 +77,11 @@ Scene load(const fs::path& file) {
     }
   }
   const std::string_view input = !glb.empty() ? std::string_view(glb) : !escapedJson.empty() ? std::string_view(escapedJson) : std::string_view(bytes);
-  const tinygltf::Model model = parseModel(input, binary, file.parent_path());
+  Scene scene;
+  scene.files.push_back(file);
+  const tinygltf::Model model = parseModel(input, binary, file.parent_path(), scene.files);
   const AccessorReader reader(model);
   const std::vector<int> parents = checkModel(model, reader);
-  Scene scene;
   scene.source = file.string();
   buildScene(model, reader, parents, scene);
   scene.bounds = computeBounds(scene);

@@ -1,12 +1,14 @@
 #pragma once
 // The renderable scene: what every renderer (raster and ray caster) draws, flattened out of glTF.
 // Pure data (GLM + std), no GL: src/render uploads it, src/raycast will intersect it.
+#include "core/Bounds.h"
 #include "scene/Environment.h"
 #include "scene/SceneAnimation.h"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
@@ -115,18 +117,6 @@ struct Instance {
 // ~1e20 and float clip coordinates overflow near 1e38. Loaders refuse vertices beyond it.
 constexpr double kMaxWorldCoordinate = 1e15;
 
-struct Bounds {
-  glm::dvec3 min{std::numeric_limits<double>::infinity()};
-  glm::dvec3 max{-std::numeric_limits<double>::infinity()};
-  bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
-  void extend(const glm::dvec3& p) {
-    min = glm::min(min, p);
-    max = glm::max(max, p);
-  }
-  glm::dvec3 center() const { return 0.5 * (min + max); }
-  glm::dvec3 size() const { return max - min; }
-};
-
 // A camera stored in the glTF file, with its node's placement (it looks along -Z, up +Y).
 struct SceneCamera {
   std::string name;          // the camera's name in the file, may be empty
@@ -171,6 +161,10 @@ struct PunctualLight {
 
 struct Scene {
   std::string source;  // file it came from, for messages
+  // Every file it was read from: the .gltf or .glb, then each buffer and image file its URIs name
+  // (data: URIs are in the first). Empty for a scene made in code. The sweep's cached reference
+  // is keyed on their bytes (report/ReferenceCache.h).
+  std::vector<std::filesystem::path> files;
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
   std::vector<Texture> textures;

@@ -9,7 +9,7 @@
 #include "core/Error.h"
 #include "core/Text.h"
 #include "gl/GlContext.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "plan/TilePlan.h"
 #include "scene/GltfLoader.h"

@@ -9,7 +9,7 @@
 #include "camera/DepthRange.h"
 #include "core/Text.h"
 #include "gl_test_context.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"

@@ -8,7 +8,7 @@
 #include "core/Text.h"
 #include "gl_test_context.h"
 #include "io/ImageCompare.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "lens/LensCamera.h"
 #include "lens/LensFit.h"
 #include "lens/ParaxialLens.h"

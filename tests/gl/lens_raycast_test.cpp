@@ -3,7 +3,7 @@
 // pixel by pixel, with no rings; a small marker off the axis lands where the lens's chief ray for
 // its field angle lands, the right way up.
 #include "camera/PhysicalCamera.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "lens/ExitPupil.h"
 #include "lens/LensAnalysis.h"
 #include "lens/LensCamera.h"

@@ -1,14 +1,17 @@
-// The sweep's cached ray-cast reference is keyed by everything it depends on: changing any input
-// of the shading (a material's emission, metallic-roughness, occlusion, normal map; a light) gives
-// another key. (No GL needed; it lives beside the sweep, in the GL tests' executable.)
+// The sweep's cached ray-cast reference is keyed on its inputs' bytes (report/ReferenceCache.h):
+// the same inputs give the same key wherever they lie; a changed byte in the scene's glTF, its
+// buffer or an image, or in the camera, environment or lens file, gives another; so does a changed
+// option. (No GL needed; it lives beside the sweep, in the GL tests' executable.)
 #include "io/CameraJson.h"
-#include "report/Sweep.h"
-#include "scene/EnvironmentPrefilter.h"
+#include "report/ReferenceCache.h"
 #include "scene/GltfLoader.h"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <set>
 
@@ -16,87 +19,111 @@ namespace lenslab {
 namespace {
 namespace fs = std::filesystem;
 
-TEST(ReferenceKey, ChangesWithEveryShadingInput) {
-  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
-  const Scene scene = loadGltf(assets / "rows/rows.gltf");
-  const Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;
-  const ImageSize size{64, 48};
-  const SweepOptions options;
-  const std::string base = referenceKey(scene, camera, size, options);
-  EXPECT_EQ(referenceKey(scene, camera, size, options), base) << "the key is deterministic";
-  PunctualLight light;
-  light.worldPosition = glm::dvec3(0.0, 2.0, 0.0);
-  const std::pair<const char*, std::function<void(Scene&)>> changes[] = {
-      {"emissive", [](Scene& s) { s.materials[0].emissive = glm::vec3(0.5f); }},
-      {"emissiveTexture", [](Scene& s) { s.materials[0].emissiveTexture.texture = 0; }},
-      {"metallicFactor", [](Scene& s) { s.materials[0].metallicFactor = 0.5f; }},
-      {"roughnessFactor", [](Scene& s) { s.materials[0].roughnessFactor = 0.5f; }},
-      {"metallicRoughnessTexture", [](Scene& s) { s.materials[0].metallicRoughnessTexture.texture = 0; }},
-      {"occlusionTexture", [](Scene& s) { s.materials[0].occlusionTexture.texture = 0; }},
-      {"occlusionTexture.texCoord", [](Scene& s) { s.materials[0].occlusionTexture.texCoord = 1; }},
-      {"occlusionStrength", [](Scene& s) { s.materials[0].occlusionStrength = 0.5f; }},
-      {"normalTexture", [](Scene& s) { s.materials[0].normalTexture.texture = 0; }},
-      {"normalTexture uv transform", [](Scene& s) { s.materials[0].normalTexture.uvFromTexCoord[2][0] = 0.5f; }},
-      {"normalScale", [](Scene& s) { s.materials[0].normalScale = 0.5f; }},
-      {"a light", [&](Scene& s) { s.lights.push_back(light); }},
-      {"its intensity", [&](Scene& s) { s.lights.push_back(light); s.lights[0].intensity = 2.0f; }},
-      {"its position", [&](Scene& s) { s.lights.push_back(light); s.lights[0].worldPosition.x = 1e-9; }},
-      {"its cone", [&](Scene& s) { s.lights.push_back(light); s.lights[0].outerConeAngleRadians = 0.5f; }},
-      {"its type", [&](Scene& s) { s.lights.push_back(light); s.lights[0].type = LightType::Spot; }},
-  };
+// A copy of the bundled `rows` scene (a .gltf with a .bin buffer and PNG textures) in a scratch
+// folder, so that its files can be changed byte by byte.
+class ReferenceKey : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("lenslab-reference-key-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy(fs::path(LENSLAB_TEST_ASSET_DIR) / "rows", dir_ / "rows", fs::copy_options::recursive);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string keyOf(const fs::path& sceneFile, const SweepOptions& options = {}) const {
+    const Scene scene = loadGltf(sceneFile);
+    return referenceKey(scene, camera_, size_, options);
+  }
+  // Flips the lowest bit of the byte at `offset` of `file`, in place.
+  static void flipBit(const fs::path& file, std::streamoff offset) {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(offset);
+    const char c = static_cast<char>(f.get());
+    f.seekp(offset);
+    f.put(static_cast<char>(c ^ 0x01));
+  }
+  static void appendByte(const fs::path& file, char byte) { std::ofstream(file, std::ios::app | std::ios::binary) << byte; }
+
+  fs::path dir_;
+  Camera camera_ = loadCameraJson(fs::path(LENSLAB_TEST_ASSET_DIR) / "rows/camera-dof.json").camera;
+  ImageSize size_{64, 48};
+};
+
+TEST_F(ReferenceKey, SameInputsSameKey) {
+  const fs::path scene = dir_ / "rows/rows.gltf";
+  const std::string base = keyOf(scene);
+  EXPECT_EQ(base.size(), 16u);
+  EXPECT_EQ(keyOf(scene), base) << "loaded again";
+  fs::copy(dir_ / "rows", dir_ / "rows-moved", fs::copy_options::recursive);
+  EXPECT_EQ(keyOf(dir_ / "rows-moved/rows.gltf"), base) << "the same bytes in another folder";
+  EXPECT_NE(keyOf(fs::path(LENSLAB_TEST_ASSET_DIR) / "occluder/occluder.gltf"), base) << "another scene";
+}
+
+TEST_F(ReferenceKey, ChangesWithAByteOfAnyFileTheSceneReads) {
+  const fs::path scene = dir_ / "rows/rows.gltf";
+  const Scene loaded = loadGltf(scene);
+  EXPECT_EQ(loaded.files.size(), 6u) << "the .gltf, its buffer and its four images";
+  const std::string base = keyOf(scene);
   std::set<std::string> keys{base};
+  // Each change keeps the scene loadable and its pixels all but equal: the lowest bit of the first
+  // vertex's y (rows.bin bytes 4–7 are that float, little-endian), a byte after a PNG's end (which
+  // decoders ignore), a space at the end of the glTF's JSON.
+  const std::pair<const char*, std::function<void()>> changes[] = {
+      {"a bit of the buffer", [&] { flipBit(dir_ / "rows/rows.bin", 4); }},
+      {"a byte after an image's end", [&] { appendByte(dir_ / "rows/bricks.png", '\0'); }},
+      {"a space in the glTF", [&] { appendByte(scene, ' '); }},
+  };
   for (const auto& [what, change] : changes) {
-    Scene changed = scene;
-    change(changed);
-    const std::string key = referenceKey(changed, camera, size, options);
+    change();
+    const std::string after = keyOf(scene);
+    EXPECT_NE(after, base) << what;
+    keys.insert(after);
+  }
+  EXPECT_EQ(keys.size(), 4u) << "every change its own key";
+}
+
+TEST_F(ReferenceKey, ChangesWithItsOtherFiles) {
+  const fs::path scene = dir_ / "rows/rows.gltf";
+  const fs::path cameraFile = dir_ / "rows/camera-dof.json";
+  SweepOptions options;
+  options.inputFiles = {cameraFile};
+  const std::string base = keyOf(scene, options);
+  EXPECT_NE(base, keyOf(scene)) << "a camera file given";
+  std::ofstream(cameraFile, std::ios::app) << "\n";  // a byte more: the same camera, another file
+  EXPECT_NE(keyOf(scene, options), base) << "the camera file's bytes";
+}
+
+TEST_F(ReferenceKey, ChangesWithEachOption) {
+  const Scene scene = loadGltf(dir_ / "rows/rows.gltf");
+  const SweepOptions options;
+  const std::string base = referenceKey(scene, camera_, size_, options);
+  std::set<std::string> keys{base};
+  const auto differs = [&](const std::string& key, const char* what) {
     EXPECT_NE(key, base) << what;
     keys.insert(key);
-  }
-  EXPECT_EQ(keys.size(), std::size(changes) + 1) << "every change its own key";
-}
-
-// A small environment, prefiltered quickly: `tint` scales one texel, so that two differ in one pixel.
-std::shared_ptr<const PrefilteredEnvironment> smallEnvironment(float tint) {
-  EnvironmentImage image{16, 8, std::vector<glm::vec3>(16 * 8, glm::vec3(0.5f, 0.6f, 0.7f))};
-  image.at(3, 2) *= tint;
-  PrefilterSettings settings;
-  settings.diffuseWidth = 8;
-  settings.specularWidth = 8;
-  settings.specularLevels = 3;
-  settings.samplesPerTexel = 16;
-  return std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(image, settings));
-}
-
-// --environment on sweep: the reference depends on the environment's contents, intensity and
-// rotation, so each gives another key; without one the key does not change.
-TEST(ReferenceKey, ChangesWithTheEnvironment) {
-  const fs::path assets = LENSLAB_TEST_ASSET_DIR;
-  const Scene scene = loadGltf(assets / "rows/rows.gltf");
-  const Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;
-  const ImageSize size{64, 48};
-  const SweepOptions options;
-  const std::string none = referenceKey(scene, camera, size, options);
-  Scene copy = scene;
-  copy.environment = nullptr;
-  EXPECT_EQ(referenceKey(copy, camera, size, options), none) << "no environment: the key stays";
-
-  const auto with = [&](std::shared_ptr<const PrefilteredEnvironment> maps, EnvironmentPlacement placement) {
-    Scene s = scene;
-    s.environment = std::make_shared<const EnvironmentLookup>(std::move(maps), placement);
-    return referenceKey(s, camera, size, options);
   };
-  const auto maps = smallEnvironment(1.0f);
-  const std::string base = with(maps, {0.0, 1.0f});
-  EXPECT_NE(base, none) << "an environment";
-  EXPECT_EQ(with(maps, {0.0, 1.0f}), base) << "the same environment, the same key";
-  EXPECT_EQ(with(smallEnvironment(1.0f), {0.0, 1.0f}), base) << "the same pixels prefiltered again, the same key";
-  const std::string contents = with(smallEnvironment(2.0f), {0.0, 1.0f});
-  const std::string intensity = with(maps, {0.0, 2.0f});
-  const std::string rotation = with(maps, {90.0, 1.0f});
-  EXPECT_NE(contents, base) << "one texel brighter";
-  EXPECT_NE(intensity, base) << "--environment-intensity";
-  EXPECT_NE(rotation, base) << "--environment-rotation";
-  EXPECT_EQ((std::set<std::string>{none, base, contents, intensity, rotation}).size(), 5u) << "every change its own key";
+  SweepOptions withOption = options;
+  withOption.inputOptions = {"background 0 0 0"};
+  differs(referenceKey(scene, camera_, size_, withOption), "an option");
+  withOption.inputOptions = {"background 0 0 1e-9"};
+  differs(referenceKey(scene, camera_, size_, withOption), "its value");
+  withOption.inputOptions = {"background 0 0", "0"};
+  differs(referenceKey(scene, camera_, size_, withOption), "the same text cut in two");
+  SweepOptions spp = options;
+  spp.referenceSpp = options.referenceSpp + 2;
+  differs(referenceKey(scene, camera_, size_, spp), "--reference-spp");
+  SweepOptions seed = options;
+  seed.seed = options.seed + 1;
+  differs(referenceKey(scene, camera_, size_, seed), "--seed");
+  differs(referenceKey(scene, camera_, ImageSize{64, 49}, options), "the size");
+  Camera focus = camera_;
+  focus.view.vrp.z += 1e-9;
+  differs(referenceKey(scene, focus, size_, options), "the camera, by 1e-9");
+  Camera aperture = camera_;
+  aperture.apertureRadius *= 1.0 + 1e-12;
+  differs(referenceKey(scene, aperture, size_, options), "the aperture, by 1e-12 of it");
+  EXPECT_EQ(keys.size(), 9u) << "every change its own key";
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 #include "plan/CameraOptions.h"
 #include "scene/BoundingSphere.h"
 #include "scene/GltfLoader.h"

@@ -5,7 +5,7 @@
 #include "camera/ImageSize.h"
 #include "camera/Rotation.h"
 #include "core/Error.h"
-#include "io/ColmapModel.h"
+#include "io/ColmapExport.h"
 
 #include "../common/lenslab_pixel.h"
 #include "../common/refusal.h"

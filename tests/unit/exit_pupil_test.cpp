@@ -1,7 +1,7 @@
 // lens/ExitPupil: the boxes hold every ray that passes (no rings in an image), so that sampling
 // them integrates the same irradiance as a search of the whole rear element; and the weights are
 // the lens's relative illumination, 1 on the axis.
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "lens/ExitPupil.h"
 #include "lens/LensAnalysis.h"
 #include "lens/ParaxialLens.h"

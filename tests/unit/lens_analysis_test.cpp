@@ -2,7 +2,7 @@
 // illumination behind a thin lens with its stop in contact, the third-order growth of spherical
 // aberration, a thin lens's axial colour f/V, and the bundled designs' focal lengths and fits.
 #include "../common/refusal.h"
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "lens/LensAnalysis.h"
 #include "lens/LensPrescription.h"
 

@@ -2,7 +2,7 @@
 // and independent traces say it must be: the paraxial focal length and focus of a slow lens, a
 // singlet's change of power with wavelength, and the relative illumination lens/LensAnalysis
 // integrates on its own grid.
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "lens/LensAnalysis.h"
 #include "lens/LensFit.h"
 #include "lens/LensPrescription.h"

@@ -1,6 +1,6 @@
 #include "scene/gltf/Container.h"
 
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "scene/gltf/Problems.h"
 
 #include <cstdint>

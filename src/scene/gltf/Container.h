@@ -9,7 +9,7 @@
 
 namespace lenslab::gltf {
 
-// The whole file (io/TextFile's readInputFile): a regular file of at most 4 GiB, else InputError.
+// The whole file (core/TextFile.h: readInputFile): a regular file of at most 4 GiB, else InputError.
 std::string readFile(const std::filesystem::path& file);
 
 // A GLB is recognised by its magic "glTF", whatever the file's extension.

@@ -1,6 +1,6 @@
 #include "scene/gltf/TinygltfModel.h"
 
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 #include "core/Error.h"
 #include "scene/gltf/Problems.h"
 
@@ -28,10 +28,12 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
 
 // External files (.bin buffers, images) read as the scene file is: a regular file, at most 4 GiB,
 // so that a uri naming /dev/zero or a FIFO is refused instead of read until memory runs out.
-bool readWholeInputFile(std::vector<unsigned char>* out, std::string* error, const std::string& file, void*) {
+// `filesRead` (the callbacks' user data) collects the files read, for Scene::files.
+bool readWholeInputFile(std::vector<unsigned char>* out, std::string* error, const std::string& file, void* filesRead) {
   try {
     const std::string bytes = readInputFile(file, "file a uri names", kMaxGltfFileBytes);
     out->assign(bytes.begin(), bytes.end());
+    static_cast<std::vector<fs::path>*>(filesRead)->push_back(file);
     return true;
   } catch (const InputError& e) {
     if (error) *error += e.what();
@@ -41,11 +43,11 @@ bool readWholeInputFile(std::vector<unsigned char>* out, std::string* error, con
 
 }  // namespace
 
-tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& directory) {
+tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& directory, std::vector<fs::path>& filesRead) {
   if (input.size() > UINT_MAX) refuse("the file is larger than the 4 GiB that glTF allows");
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(&keepEncodedImage, nullptr);
-  gltf.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeInputFile, &tinygltf::WriteWholeFile, nullptr});
+  gltf.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeInputFile, &tinygltf::WriteWholeFile, &filesRead});
   tinygltf::Model model;
   std::string error, warning;
   bool ok = false;

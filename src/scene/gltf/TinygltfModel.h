@@ -8,14 +8,16 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lenslab::gltf {
 
 using Bytes = std::span<const unsigned char>;
 
 // `input` is the .gltf's JSON or a GLB of the JSON and BIN chunks only (glbForTinygltf); relative
-// URIs are read from `directory`.
-tinygltf::Model parseModel(std::string_view input, bool binary, const std::filesystem::path& directory);
+// URIs are read from `directory`. Each file a URI names is added to `filesRead` as it is read.
+tinygltf::Model parseModel(std::string_view input, bool binary, const std::filesystem::path& directory,
+                           std::vector<std::filesystem::path>& filesRead);
 
 // A bufferView's bytes, after checking that it lies inside its buffer; `what` names the referrer.
 Bytes viewBytes(const tinygltf::Model& model, int viewIndex, const std::string& what);

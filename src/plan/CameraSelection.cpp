@@ -1,4 +1,4 @@
-#include "io/CameraSelection.h"
+#include "plan/CameraSelection.h"
 
 #include "core/DataPaths.h"
 #include "core/Error.h"

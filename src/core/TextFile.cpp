@@ -1,4 +1,4 @@
-#include "io/TextFile.h"
+#include "core/TextFile.h"
 
 #include "core/Error.h"
 #include "core/Text.h"

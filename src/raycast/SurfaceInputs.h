@@ -14,8 +14,8 @@
 
 namespace lenslab {
 
-// The triangle a ray hit: its vertices, its corners (relative to the ray's origin's origin, as
-// the ray) and the hit's barycentric coordinates (b0, b1, b2), as Embree gives them.
+// The triangle a ray hit: its vertices, its corners (relative to the same origin as the ray) and
+// the hit's barycentric coordinates (b0, b1, b2), as Embree gives them.
 struct HitTriangle {
   std::array<const Vertex*, 3> vertices{};
   std::array<glm::dvec3, 3> corners{};

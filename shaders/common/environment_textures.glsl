@@ -4,14 +4,15 @@
 //   environmentDiffuse(environmentParams(), normal)
 //   environmentSpecular(environmentParams(), reflected, perceptualRoughness)
 // Call them only where hasEnvironment is true: without an environment no texture is bound.
-// Locations 100–119 and texture units 5–8 are the environment's (scene/scene.frag's allotment).
-layout(binding = 5) uniform sampler2D environmentBackgroundMap;
-layout(binding = 6) uniform sampler2DArray environmentSpecularMap;
-layout(binding = 7) uniform sampler2D environmentDiffuseMap;
-layout(location = 100) uniform vec2 environmentRotation;   // cos, sin of the turn about +Y
-layout(location = 101) uniform float environmentIntensity;
-layout(location = 102) uniform int environmentLevels;      // roughness levels, level 0 included
-layout(location = 103) uniform bool hasEnvironment;
+// Locations 100–119 and texture units 5–8 are the environment's (locations.glsl).
+#include "locations.glsl"
+layout(binding = UNIT_ENVIRONMENT_BACKGROUND) uniform sampler2D environmentBackgroundMap;
+layout(binding = UNIT_ENVIRONMENT_SPECULAR) uniform sampler2DArray environmentSpecularMap;
+layout(binding = UNIT_ENVIRONMENT_DIFFUSE) uniform sampler2D environmentDiffuseMap;
+layout(location = LOCATION_ENVIRONMENT_ROTATION) uniform vec2 environmentRotation;  // cos, sin of the turn about +Y
+layout(location = LOCATION_ENVIRONMENT_INTENSITY) uniform float environmentIntensity;
+layout(location = LOCATION_ENVIRONMENT_LEVELS) uniform int environmentLevels;  // roughness levels, level 0 included
+layout(location = LOCATION_HAS_ENVIRONMENT) uniform bool hasEnvironment;
 
 // Fetches only (no GPU filtering): environment.glsl interpolates, as the C++ does.
 vec3 environmentTexel(int map, int x, int y, int layer) {

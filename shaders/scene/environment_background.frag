@@ -5,11 +5,11 @@
 #include "../common/environment_textures.glsl"
 
 // World direction (not unit) of the ray through NDC (x, y): worldDirectionFromNdc · (x, y, 1).
-layout(location = 0) uniform mat3 worldDirectionFromNdc;
-layout(location = 1) uniform vec2 ndcPerPixel;  // 2 / width, 2 / height of the target
+layout(location = LOCATION_WORLD_DIRECTION_FROM_NDC) uniform mat3 worldDirectionFromNdc;
+layout(location = LOCATION_NDC_PER_PIXEL) uniform vec2 ndcPerPixel;  // 2 / width, 2 / height of the target
 // Colour weight per channel; alpha stays 0 (the background has no coverage). 1 for a plain view;
 // an added view's weight when it is blended into a sum (render/Accumulator).
-layout(location = 2) uniform vec3 weight;
+layout(location = LOCATION_BACKGROUND_WEIGHT) uniform vec3 weight;
 
 layout(location = 0) out vec4 outColor;
 

@@ -3,22 +3,23 @@
 // narrow_field.geom to clip. At a field of view of 1e-7 rad a vertex 10 units off the view axis
 // lands 1e8 window widths away, and float's 7 digits of that position (or of the products that
 // make it) leave no digit for where its edges and its interior cross the image.
+#include "../common/locations.glsl"
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inColor;
+layout(location = ATTRIBUTE_POSITION) in vec3 inPosition;
+layout(location = ATTRIBUTE_NORMAL) in vec3 inNormal;
+layout(location = ATTRIBUTE_UV) in vec2 inUv;
+layout(location = ATTRIBUTE_COLOR) in vec4 inColor;
 #ifdef MATERIAL_MAPS
-layout(location = 4) in vec4 inTangent;
-layout(location = 5) in vec2 inUv1;
+layout(location = ATTRIBUTE_TANGENT) in vec4 inTangent;
+layout(location = ATTRIBUTE_UV1) in vec2 inUv1;
 #endif
 
-layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
-layout(location = 12) uniform dmat4 clipFromModelDouble;
-layout(location = 20) uniform mat4 shadingFromModel;  // as in scene.vert
+layout(location = LOCATION_WORLD_NORMAL_FROM_MODEL) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
+layout(location = LOCATION_CLIP_FROM_MODEL_DOUBLE) uniform dmat4 clipFromModelDouble;
+layout(location = LOCATION_SHADING_FROM_MODEL) uniform mat4 shadingFromModel;  // as in scene.vert
 #ifdef MATERIAL_MAPS
-layout(location = 80) uniform mat3 worldTangentFromModel;  // as in scene.vert
-layout(location = 81) uniform float handednessFromModel;
+layout(location = LOCATION_WORLD_TANGENT_FROM_MODEL) uniform mat3 worldTangentFromModel;  // as in scene.vert
+layout(location = LOCATION_HANDEDNESS_FROM_MODEL) uniform float handednessFromModel;
 #endif
 
 out ToClip {

@@ -2,33 +2,34 @@
 // One instance of a mesh. clipFromModel is composed on the CPU in double precision
 // (clipFromWorld * worldFromModel) and only then rounded to float, so that scenes far from the
 // origin keep their precision.
+#include "../common/locations.glsl"
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inColor;
+layout(location = ATTRIBUTE_POSITION) in vec3 inPosition;
+layout(location = ATTRIBUTE_NORMAL) in vec3 inNormal;
+layout(location = ATTRIBUTE_UV) in vec2 inUv;
+layout(location = ATTRIBUTE_COLOR) in vec4 inColor;
 #ifdef MATERIAL_MAPS
 // The variant for materials with a normal map, TEXCOORD_1 or a uv transform (ScenePass): the
 // plain one carries none of this, so a scene without them costs what it did before.
-layout(location = 4) in vec4 inTangent;  // xyz, w = ±1; zero where the mesh has none
-layout(location = 5) in vec2 inUv1;      // TEXCOORD_1
+layout(location = ATTRIBUTE_TANGENT) in vec4 inTangent;  // xyz, w = ±1; zero where the mesh has none
+layout(location = ATTRIBUTE_UV1) in vec2 inUv1;      // TEXCOORD_1
 #endif
 
-layout(location = 0) uniform mat4 clipFromModel;
-layout(location = 1) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
+layout(location = LOCATION_CLIP_FROM_MODEL) uniform mat4 clipFromModel;
+layout(location = LOCATION_WORLD_NORMAL_FROM_MODEL) uniform mat3 worldNormalFromModel;  // inverse transpose of worldFromModel
 // World axes, origin at the view's shading origin (its eye): composed in double on the CPU, so
 // that a scene far from the world origin reaches the shading with the precision it has near it.
-layout(location = 20) uniform mat4 shadingFromModel;
+layout(location = LOCATION_SHADING_FROM_MODEL) uniform mat4 shadingFromModel;
 // Tangents lie in the surface, so they move with it: by worldFromModel's linear part (a direction
 // on the surface is a difference of two surface points; glTF 2.0's mesh attribute TANGENT is such
 // a direction, ∂P/∂u), not by the normal matrix, as the Khronos glTF Sample Viewer transforms them
 // (its model matrix for tangents, its normal matrix for normals). Scaled to its largest entry
 // near 1, as the normal matrix is.
 #ifdef MATERIAL_MAPS
-layout(location = 80) uniform mat3 worldTangentFromModel;
+layout(location = LOCATION_WORLD_TANGENT_FROM_MODEL) uniform mat3 worldTangentFromModel;
 // −1 where worldFromModel mirrors (negative determinant): the bitangent, w·cross(n, t), must
 // mirror with the surface, and cross() of the mirrored n and t does not.
-layout(location = 81) uniform float handednessFromModel;
+layout(location = LOCATION_HANDEDNESS_FROM_MODEL) uniform float handednessFromModel;
 #endif
 
 // Added views draw twice (depth, then colour where depth is EQUAL): both must place each vertex alike.

@@ -7,9 +7,9 @@
 #include "core/Error.h"
 #include "core/Text.h"
 #include "lens/AperturePattern.h"
+#include "raycast/SurfaceInputs.h"
 #include "raycast/TextureSampler.h"
 #include "scene/ShadingLights.h"
-#include "scene/MaterialMaps.h"
 
 #include <embree3/rtcore.h>
 #include <limits>
@@ -36,20 +36,6 @@ constexpr int kMaxBlendLayers = 16;
 // The AOVs describe the nearest surface at least this opaque (Cycles' pass alpha threshold):
 // a faint blend surface leaves the AOVs to what lies behind it.
 constexpr float kAovAlphaThreshold = 0.5f;
-
-// Where a ray meets a triangle's plane, as barycentric (b1, b2) of its vertices p0, p1, p2.
-glm::dvec2 barycentricOnPlane(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
-  const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
-  const glm::dvec3 normal = glm::cross(e1, e2);
-  const double denom = glm::dot(ray.direction, normal);
-  const double t = std::abs(denom) > 0.0 ? glm::dot(p0 - ray.origin, normal) / denom : 0.0;
-  const glm::dvec3 q = ray.origin + t * ray.direction - p0;
-  const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
-  const double d20 = glm::dot(q, e1), d21 = glm::dot(q, e2);
-  const double det = d00 * d11 - d01 * d01;
-  if (det == 0.0) return {0.0, 0.0};
-  return {(d11 * d20 - d01 * d21) / det, (d00 * d21 - d01 * d20) / det};
-}
 
 }  // namespace
 
@@ -194,24 +180,6 @@ struct RayCaster::Impl {
     float coverage = 0.0f;
   };
 
-  // The normal the surface is shaded with at barycentric (b0, b1, b2): the interpolated vertex
-  // normal (the loader gives a mesh without normals its face normals) in world space, turned to
-  // the viewer on the back of a double-sided material, as shaders/scene/scene.frag does. With a
-  // normal map (`texel`: its linear RGB at the hit), the interpolated tangent frame turns it first,
-  // by material_maps.glsl's mappedNormal as scene.frag does.
-  static glm::vec3 shadingNormal(const Geometry& g, const Material& material, bool front, const Vertex& v0,
-                                 const Vertex& v1, const Vertex& v2, float b0, float b1, float b2,
-                                 const glm::vec3* texel = nullptr) {
-    const glm::vec3 interpolated = g.normalFromModel * (b0 * v0.normal + b1 * v1.normal + b2 * v2.normal);
-    glm::vec3 normal = glm::normalize(interpolated);
-    if (texel) {
-      const glm::vec4 t = b0 * v0.tangent + b1 * v1.tangent + b2 * v2.tangent;
-      normal = mappedNormal(interpolated, g.tangentFromModel * glm::vec3(t), g.mirrored ? -t.w : t.w, *texel, material.normalScale);
-    }
-    if (material.doubleSided && !front) normal = -normal;
-    return normal;
-  }
-
   // First visible surface along `ray` (single-sided back faces and masked-out texels are passed
   // through, as the rasterizer culls and discards them), shaded. Surfaces of alphaMode BLEND in
   // front of it are composited over it front to back (docs/materials.md): each adds
@@ -248,6 +216,76 @@ struct RayCaster::Impl {
       return r;
     };
     return shadeRay(ray, rayAt, footprintPx, camera, pixel);
+  }
+
+  // The nearest hit along the ray from `start` (in Embree's units) along `direction`, between
+  // tNear and tEnd (along the caller's ray, whose tStart is `start`); none on a miss.
+  std::optional<RTCRayHit> intersect(const glm::dvec3& start, const glm::dvec3& direction, double tNear, double tStart,
+                                     double tEnd, const Camera& camera, glm::dvec2 pixel) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh{};
+    rh.ray.org_x = static_cast<float>(start.x);
+    rh.ray.org_y = static_cast<float>(start.y);
+    rh.ray.org_z = static_cast<float>(start.z);
+    rh.ray.dir_x = static_cast<float>(direction.x);
+    rh.ray.dir_y = static_cast<float>(direction.y);
+    rh.ray.dir_z = static_cast<float>(direction.z);
+    rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart) / scale);
+    rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>((tEnd - tStart) / scale);
+    if (!(rh.ray.tnear <= rh.ray.tfar)) return std::nullopt;
+    // Embree asserts (aborts) on a ray it cannot take: every float finite and below 1.8e18.
+    if (!embreeTakes(rh.ray)) throw unfiniteRay(camera, pixel);
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(rtcScene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return rh;
+  }
+
+  // The triangle `rh` hit: its vertices, its corners relative to `origin` (as the rays are) and
+  // Embree's barycentric coordinates of the hit.
+  HitTriangle hitTriangle(const Geometry& g, const Mesh& mesh, const RTCRayHit& rh) const {
+    HitTriangle t;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t i = mesh.indices[rh.hit.primID * 3 + static_cast<unsigned>(k)];
+      t.vertices[static_cast<std::size_t>(k)] = &mesh.vertices[i];
+      t.corners[static_cast<std::size_t>(k)] =
+          scale * glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
+    }
+    const float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
+    t.b = {b0, b1, b2};
+    return t;
+  }
+
+  // A hit as the shading leaves it: what it sends toward the ray's origin, its shading normal,
+  // base colour (the albedo AOV's) and blend alpha.
+  struct ShadedHit {
+    glm::vec3 radiance{0.0f};
+    glm::vec3 normal{0.0f};
+    glm::vec3 albedo{0.0f};
+    float alpha = 1.0f;
+  };
+
+  // The hit shaded as scene.frag shades a fragment (shade_surface.glsl), its textures filtered over
+  // the sample's footprint by ray differentials (the same lens point, one footprint over in x and
+  // in y; see shadeRay); nothing where alphaMode MASK cuts it out.
+  template <class RayAt>
+  std::optional<ShadedHit> shadeHit(const Geometry& g, const Mesh& mesh, const Material& material, const HitTriangle& triangle,
+                                    bool front, const Ray& ray, double tHit, const RayAt& rayAt, double footprintPx) const {
+    const SurfaceMaterial surface = surfaceMaterial(material, mesh.hasTangents);
+    const TextureFootprint footprint = readsTextures(surface) ? textureFootprint(triangle, ray, rayAt, footprintPx) : TextureFootprint{};
+    const HitFetch fetch(*scene, material, samplers, dataSamplers, triangle, footprint);
+    SurfacePoint point = surfacePoint(triangle, g.normalFromModel, g.tangentFromModel, g.mirrored, surface.normalMapped);
+    const glm::vec4 base = surfaceBaseColor(surface, point.vertexColor, fetch);
+    if (alphaCutOut(surface, base)) return std::nullopt;
+    point.frontFacing = front;
+    point.position = glm::vec3(ray.origin + tHit * ray.direction);  // relative to `origin`, as the lights are
+    point.towardViewer = -glm::vec3(ray.direction);
+    const SurfaceLighting lighting{lights, scene->lighting.ambient, scene->environment != nullptr};
+    const ShadedSurface shaded = shadeSurface(surface, base, point, lighting, fetch);
+    return ShadedHit{shaded.radiance, shaded.normal, glm::vec3(base), shaded.alpha};
   }
 
   // What `ray` (relative to `origin`) sees: the surfaces it meets shaded, blend ones composited
@@ -291,128 +329,38 @@ struct RayCaster::Impl {
       return out;
     };
     for (int layer = 0; layer < 64; ++layer) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      RTCRayHit rh{};
-      rh.ray.org_x = static_cast<float>(start.x);
-      rh.ray.org_y = static_cast<float>(start.y);
-      rh.ray.org_z = static_cast<float>(start.z);
-      rh.ray.dir_x = static_cast<float>(ray.direction.x);
-      rh.ray.dir_y = static_cast<float>(ray.direction.y);
-      rh.ray.dir_z = static_cast<float>(ray.direction.z);
-      rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart) / scale);
-      rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>((tEnd - tStart) / scale);
-      if (!(rh.ray.tnear <= rh.ray.tfar)) return behind(miss, false);
-      // Embree asserts (aborts) on a ray it cannot take: every float finite and below 1.8e18.
-      if (!embreeTakes(rh.ray)) throw unfiniteRay(camera, pixel);
-      rh.ray.mask = 0xFFFFFFFFu;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(rtcScene, &context, &rh);
-      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return behind(miss, false);
-
-      const Geometry& g = geometries[rh.hit.geomID];
+      const std::optional<RTCRayHit> rh = intersect(start, ray.direction, tNear, tStart, tEnd, camera, pixel);
+      if (!rh) return behind(miss, false);
+      const Geometry& g = geometries[rh->hit.geomID];
       const Instance& instance = scene->instances[static_cast<std::size_t>(g.instance)];
       const Mesh& mesh = scene->meshes[static_cast<std::size_t>(instance.mesh)];
       const Material& material = mesh.material >= 0 ? scene->materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
-      const std::uint32_t i0 = mesh.indices[rh.hit.primID * 3], i1 = mesh.indices[rh.hit.primID * 3 + 1],
-                          i2 = mesh.indices[rh.hit.primID * 3 + 2];
-      auto world = [&](std::uint32_t i) {  // relative to `origin`, as the ray is
-        return scale * glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
-      };
-      const glm::dvec3 p0 = world(i0), p1 = world(i1), p2 = world(i2);
+      const HitTriangle triangle = hitTriangle(g, mesh, *rh);
+      const auto& [p0, p1, p2] = triangle.corners;
       // Front-facing as GL decides it: counter-clockwise on screen, i.e. the model's winding seen
       // from the normal's side; a mirroring transform turns it around (glFrontFace(GL_CW)).
       bool front = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) < 0.0;
       if (g.mirrored) front = !front;
-      const double hitAfterStart = scale * static_cast<double>(rh.ray.tfar);
+      const double hitAfterStart = scale * static_cast<double>(rh->ray.tfar);
       const double tHit = tStart + hitAfterStart;
       // Past this surface, measured from Embree's start (a skip relative to the camera's distance
       // would jump a telephoto's whole subject).
       const double skipTo = tStart + hitAfterStart * (1.0 + 1e-6) + 1e-9 * scale;
-      if (!front && !material.doubleSided) {
-        tNear = skipTo;
-        continue;
-      }
-      const float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
-      const Vertex& v0 = mesh.vertices[i0];
-      const Vertex& v1 = mesh.vertices[i1];
-      const Vertex& v2 = mesh.vertices[i2];
-      // A texture of this surface at the hit, filtered over the sample's footprint by ray
-      // differentials: the same lens point, one footprint over in x and in y.
-      const glm::vec2 uv0 = b0 * v0.uv + b1 * v1.uv + b2 * v2.uv, uv1 = b0 * v0.uv1 + b1 * v1.uv1 + b2 * v2.uv1;
-      // Each texture reference samples its own uv set through its uv transform (slotUv, as
-      // scene.frag); the footprint's derivatives go through the same transform, so a scaled uv
-      // widens the footprint as GL's derivatives of the transformed uv do.
-      const auto sampleTexture = [&](const TextureRef& ref, bool data = false) {
-        auto uvAt = [&](glm::dvec2 offset) {
-          const Ray r = rayAt(offset);
-          const glm::dvec2 b = barycentricOnPlane(r, p0, p1, p2);
-          const auto at = [&](glm::vec2 Vertex::*set) {
-            return glm::vec2((1.0 - b.x - b.y) * glm::dvec2(v0.*set) + b.x * glm::dvec2(v1.*set) + b.y * glm::dvec2(v2.*set));
-          };
-          return slotUv(at(&Vertex::uv), at(&Vertex::uv1), ref.texCoord, ref.uvFromTexCoord);
-        };
-        const glm::vec2 uvHere = uvAt({0.0, 0.0});
-        const auto index = static_cast<std::size_t>(ref.texture);
-        const Texture& texture = scene->textures[index];
-        return (data ? dataSamplers : samplers)[index].sample(texture.sampler, slotUv(uv0, uv1, ref.texCoord, ref.uvFromTexCoord),
-                                                              uvAt({footprintPx, 0.0}) - uvHere, uvAt({0.0, footprintPx}) - uvHere);
-      };
-      glm::vec4 base = material.baseColorFactor * (b0 * v0.color + b1 * v1.color + b2 * v2.color);
-      if (material.baseColorTexture.present()) base *= sampleTexture(material.baseColorTexture);
-      if (material.alphaMode == AlphaMode::Mask && base.a < material.alphaCutoff) {
-        tNear = skipTo;
-        continue;
-      }
       const bool blend = material.alphaMode == AlphaMode::Blend;
-      if (blend && blendLayers >= kMaxBlendLayers) {
+      // Passed through: a single-sided back face (the rasterizer culls it), a blend surface beyond
+      // kMaxBlendLayers, and a texel alphaMode MASK cuts out (shadeHit).
+      std::optional<ShadedHit> shaded;
+      if ((front || material.doubleSided) && !(blend && blendLayers >= kMaxBlendLayers))
+        shaded = shadeHit(g, mesh, material, triangle, front, ray, tHit, rayAt, footprintPx);
+      if (!shaded) {
         tNear = skipTo;
         continue;
       }
-      const bool normalMapped = material.normalTexture.present() && mesh.hasTangents;
-      const glm::vec3 normalTexel = normalMapped ? glm::vec3(sampleTexture(material.normalTexture, true)) : glm::vec3(0.0f);
-      const glm::vec3 normal = shadingNormal(g, material, front, v0, v1, v2, b0, b1, b2, normalMapped ? &normalTexel : nullptr);
-      glm::vec3 colour(base);
-      if (!material.unlit) {
-        // brdf.glsl, as scene.frag evaluates it: the same inputs, v toward this ray's origin.
-        ShadingSurface surface;
-        surface.baseColor = glm::vec3(base);
-        surface.metallic = material.metallicFactor;
-        surface.perceptualRoughness = material.roughnessFactor;
-        if (material.metallicRoughnessTexture.present()) {
-          const glm::vec4 mr = sampleTexture(material.metallicRoughnessTexture, true);
-          surface.perceptualRoughness *= mr.g;
-          surface.metallic *= mr.b;
-        }
-        if (material.occlusionTexture.present())
-          surface.occlusion = 1.0f + material.occlusionStrength * (sampleTexture(material.occlusionTexture, true).r - 1.0f);
-        surface.n = normal;
-        surface.v = -glm::vec3(ray.direction);
-        const glm::vec3 position(ray.origin + tHit * ray.direction);  // relative to `origin`, as the lights are
-        colour = glm::vec3(0.0f);
-        for (const ShadingLight& light : lights) colour += punctualRadiance(surface, light, position);
-        // Light from all around: the environment, prefiltered (environment.glsl), or the uniform
-        // surround (Lighting::ambient), as scene.frag's shadeLit.
-        glm::vec3 ambientDiffuse(scene->lighting.ambient), ambientSpecular(scene->lighting.ambient);
-        if (scene->environment) {
-          ambientDiffuse = scene->environment->diffuse(surface.n);
-          ambientSpecular = scene->environment->specular(specularDominantDirection(surface.n, surface.v, surface.perceptualRoughness), surface.perceptualRoughness);
-        }
-        const glm::vec3 dfg = dfgLookup(glm::dot(surface.n, surface.v), surface.perceptualRoughness);
-        colour += imageLightRadiance(surface, ambientDiffuse, ambientSpecular, dfg);
-      }
-      if (material.emits()) {
-        glm::vec3 emitted = material.emissive;
-        if (material.emissiveTexture.present()) emitted *= glm::vec3(sampleTexture(material.emissiveTexture));
-        colour += emitted;
-      }
-      const Hit here{colour, true, tHit, ray, normal, glm::vec3(base), instance.gltfNode};
+      const Hit here{shaded->radiance, true, tHit, ray, shaded->normal, shaded->albedo, instance.gltfNode};
       if (blend) {
-        // Straight alpha, as scene.frag's ALPHA_BLEND writes it (clamped: GL does not clamp a
-        // float target's blend factors).
-        const float alpha = std::clamp(base.a, 0.0f, 1.0f);
-        blended += transmittance * alpha * colour;
+        // Straight alpha, as scene.frag's ALPHA_BLEND writes it.
+        const float alpha = shaded->alpha;
+        blended += transmittance * alpha * shaded->radiance;
         transmittance *= 1.0f - alpha;
         ++blendLayers;
         if (!aovSurface && alpha >= kAovAlphaThreshold) aovSurface = here;

@@ -2,6 +2,8 @@
 
 #include "gl/Shader.h"
 
+#include "../../shaders/common/locations.glsl"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -9,18 +11,6 @@
 
 namespace lenslab {
 namespace {
-
-// Uniform locations (shaders/common/environment_textures.glsl, scene/environment_background.frag).
-enum Location : GLint {
-  kWorldDirectionFromNdc = 0,
-  kNdcPerPixel = 1,
-  kWeight = 2,
-  kEnvironmentRotation = 100,
-  kEnvironmentIntensity = 101,
-  kEnvironmentLevels = 102,
-  kHasEnvironment = 103,
-};
-constexpr GLuint kBackgroundUnit = 5, kSpecularUnit = 6, kDiffuseUnit = 7;
 
 gl::Texture upload(const EnvironmentImage& image) {
   gl::Texture t = gl::Texture::create();
@@ -73,7 +63,7 @@ GpuEnvironment::GpuEnvironment(const EnvironmentLookup& lookup)
 }
 
 void GpuEnvironment::bind(GLuint program) const {
-  const GLuint units[] = {kBackgroundUnit, kSpecularUnit, kDiffuseUnit};
+  const GLuint units[] = {UNIT_ENVIRONMENT_BACKGROUND, UNIT_ENVIRONMENT_SPECULAR, UNIT_ENVIRONMENT_DIFFUSE};
   const GLuint textures[] = {background_.id(), specular_.id(), diffuse_.id()};
   for (int i = 0; i < 3; ++i) {
     glBindTextureUnit(units[i], textures[i]);
@@ -81,19 +71,19 @@ void GpuEnvironment::bind(GLuint program) const {
   }
   // Set only where the program uses them: a location it optimised out is no location.
   const auto used = [&](const char* name) { return glGetUniformLocation(program, name) >= 0; };
-  if (used("environmentRotation")) glProgramUniform2fv(program, kEnvironmentRotation, 1, glm::value_ptr(lookup_->rotationCosSin()));
-  if (used("environmentIntensity")) glProgramUniform1f(program, kEnvironmentIntensity, lookup_->placement().intensity);
-  if (used("environmentLevels")) glProgramUniform1i(program, kEnvironmentLevels, lookup_->maps().specularLevels());
-  if (used("hasEnvironment")) glProgramUniform1i(program, kHasEnvironment, 1);
+  if (used("environmentRotation")) glProgramUniform2fv(program, LOCATION_ENVIRONMENT_ROTATION, 1, glm::value_ptr(lookup_->rotationCosSin()));
+  if (used("environmentIntensity")) glProgramUniform1f(program, LOCATION_ENVIRONMENT_INTENSITY, lookup_->placement().intensity);
+  if (used("environmentLevels")) glProgramUniform1i(program, LOCATION_ENVIRONMENT_LEVELS, lookup_->maps().specularLevels());
+  if (used("hasEnvironment")) glProgramUniform1i(program, LOCATION_HAS_ENVIRONMENT, 1);
 }
 
 void GpuEnvironment::drawBackground(const glm::dmat4& clipFromWorld, int widthPx, int heightPx, const glm::vec3& weight,
                                     bool add) const {
   bind(program_.id());
   const glm::mat3 directionFromNdc(worldDirectionFromNdc(clipFromWorld));
-  glProgramUniformMatrix3fv(program_.id(), kWorldDirectionFromNdc, 1, GL_FALSE, glm::value_ptr(directionFromNdc));
-  glProgramUniform2f(program_.id(), kNdcPerPixel, 2.0f / static_cast<float>(widthPx), 2.0f / static_cast<float>(heightPx));
-  glProgramUniform3fv(program_.id(), kWeight, 1, glm::value_ptr(weight));
+  glProgramUniformMatrix3fv(program_.id(), LOCATION_WORLD_DIRECTION_FROM_NDC, 1, GL_FALSE, glm::value_ptr(directionFromNdc));
+  glProgramUniform2f(program_.id(), LOCATION_NDC_PER_PIXEL, 2.0f / static_cast<float>(widthPx), 2.0f / static_cast<float>(heightPx));
+  glProgramUniform3fv(program_.id(), LOCATION_BACKGROUND_WEIGHT, 1, glm::value_ptr(weight));
   GLboolean depthMask = GL_TRUE;
   GLint depthFunc = GL_GREATER;
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);

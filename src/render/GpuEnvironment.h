@@ -20,8 +20,8 @@ class GpuEnvironment {
  public:
   explicit GpuEnvironment(const EnvironmentLookup& lookup);  // uploads the maps (needs a context)
 
-  // Binds the maps to units 5–7 and sets `program`'s environment uniforms (locations 100–103,
-  // shaders/common/environment_textures.glsl). `program` may leave any of them unused.
+  // Binds the maps to their units and sets `program`'s environment uniforms (locations 100–103,
+  // shaders/common/locations.glsl). `program` may leave any of them unused.
   void bind(GLuint program) const;
   // Draws the background into the bound target (`widthPx` × `heightPx`) where depth is still far
   // (reverse-Z 0), leaving alpha, depth and stencil as they are; colour × `weight`, added to what

@@ -1,5 +1,7 @@
 #include "render/GpuScene.h"
 
+#include "../../shaders/common/locations.glsl"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -24,12 +26,12 @@ GpuScene::GpuMesh upload(const Mesh& mesh) {
   glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao, gpu.indices.id());
   struct Attribute { GLuint location; GLint size; std::size_t offset; };
-  const Attribute attributes[] = {{0, 3, offsetof(Vertex, position)},
-                                  {1, 3, offsetof(Vertex, normal)},
-                                  {2, 2, offsetof(Vertex, uv)},
-                                  {3, 4, offsetof(Vertex, color)},
-                                  {4, 4, offsetof(Vertex, tangent)},
-                                  {5, 2, offsetof(Vertex, uv1)}};
+  const Attribute attributes[] = {{ATTRIBUTE_POSITION, 3, offsetof(Vertex, position)},
+                                  {ATTRIBUTE_NORMAL, 3, offsetof(Vertex, normal)},
+                                  {ATTRIBUTE_UV, 2, offsetof(Vertex, uv)},
+                                  {ATTRIBUTE_COLOR, 4, offsetof(Vertex, color)},
+                                  {ATTRIBUTE_TANGENT, 4, offsetof(Vertex, tangent)},
+                                  {ATTRIBUTE_UV1, 2, offsetof(Vertex, uv1)}};
   for (const Attribute& a : attributes) {
     glEnableVertexArrayAttrib(vao, a.location);
     glVertexArrayAttribFormat(vao, a.location, a.size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));

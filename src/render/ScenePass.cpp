@@ -2,9 +2,12 @@
 
 #include "camera/ProjectionCentre.h"
 #include "gl/Shader.h"
+#include "render/SceneUniforms.h"
 #include "scene/BlendOrder.h"
 #include "scene/Brdf.h"
 #include "scene/ShadingLights.h"
+
+#include "../../shaders/common/locations.glsl"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -15,105 +18,6 @@
 #include <vector>
 
 namespace lenslab {
-namespace {
-
-// Uniform locations, as declared in shaders/scene/*.
-enum Location : GLint {
-  kClipFromModel = 0,
-  kWorldNormalFromModel = 1,
-  kBaseColorFactor = 2,
-  kHasBaseColorTexture = 3,
-  kUnlit = 4,
-  kAlphaMask = 5,
-  kAlphaCutoff = 6,
-  kDoubleSided = 7,
-  kAmbient = 9,
-  kLodBias = 11,
-  kClipFromModelDouble = 12,  // narrow_field.vert
-  kBackground = 13,           // ADD_TO_SUM
-  kAddWeight = 14,            // ADD_TO_SUM
-  kEmissive = 15,
-  kHasEmissiveTexture = 16,
-  // Metallic-roughness and punctual lights (scene.frag, scene.vert).
-  kShadingFromModel = 20,
-  kTowardViewer = 21,
-  kParallelView = 22,
-  kMetallicFactor = 23,
-  kRoughnessFactor = 24,
-  kHasMetallicRoughnessTexture = 25,
-  kHasOcclusionTexture = 26,
-  kOcclusionStrength = 27,
-  kLightCount = 28,
-  kLightPositionRange = 32,  // arrays of kMaxShadingLights
-  kLightDirectionType = 40,
-  kLightIntensity = 48,
-  kLightSpot = 56,
-  // Normal maps and texture coordinates (80–99).
-  kWorldTangentFromModel = 80,
-  kHandednessFromModel = 81,
-  kHasNormalTexture = 82,
-  kNormalScale = 83,
-  kNormalTexCoord = 84,  // each slot: its TEXCOORD set, then its uv transform one location on
-  kBaseColorTexCoord = 86,
-  kEmissiveTexCoord = 88,
-  kMetallicRoughnessTexCoord = 90,
-  kOcclusionTexCoord = 92,
-};
-
-// Texture units (scene.frag).
-constexpr GLuint kMetallicRoughnessUnit = 2;
-constexpr GLuint kOcclusionUnit = 3;
-constexpr GLuint kNormalTextureUnit = 4;
-constexpr GLuint kDfgUnit = 9;
-static_assert(kMaxShadingLights == 8, "scene.frag's light arrays hold 8");
-
-// A texture slot's TEXCOORD set and KHR_texture_transform, into the uniforms from `texCoordLocation`.
-void setTextureSlot(GLuint program, GLint texCoordLocation, const TextureRef& ref) {
-  glProgramUniform1i(program, texCoordLocation, ref.texCoord);
-  glProgramUniformMatrix3fv(program, texCoordLocation + 1, 1, GL_FALSE, glm::value_ptr(ref.uvFromTexCoord));
-}
-
-// worldFromModel's linear part scaled to its largest entry near 1 (tangents are normalised after,
-// and a model scaled by 1e-20 would otherwise hand the shader tangents whose squares underflow).
-glm::mat3 tangentFromModel(const glm::dmat3& linear) {
-  double largest = 0.0;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(linear[c][r]));
-  return glm::mat3(largest > 0.0 && std::isfinite(largest) ? linear * (1.0 / largest) : linear);
-}
-
-// The same projection scaled to its largest entry near 1. Clip coordinates are homogeneous, so
-// the image is unchanged, but a PRP 1e-100 from the view plane (entries of 1e100) no longer
-// overflows float, nor one 1e100 away underflows it.
-glm::dmat4 wellScaled(const glm::dmat4& m) {
-  double largest = 0.0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) largest = std::max(largest, std::abs(m[c][r]));
-  return largest > 0.0 && std::isfinite(largest) ? m * (1.0 / largest) : m;
-}
-
-// The MATERIAL_MAPS variant's uniforms: each texture slot's uv set and transform, and the normal
-// map with its tangent frame (the file's tangents or generated ones, scene/Tangents.h).
-void setMaterialMaps(GLuint program, const GpuScene& gpuScene, const Material& material, const Mesh& mesh, const glm::dmat3& linear) {
-  const std::pair<GLint, const TextureRef*> slots[] = {{kBaseColorTexCoord, &material.baseColorTexture},
-                                                       {kEmissiveTexCoord, &material.emissiveTexture},
-                                                       {kMetallicRoughnessTexCoord, &material.metallicRoughnessTexture},
-                                                       {kOcclusionTexCoord, &material.occlusionTexture}};
-  for (const auto& [location, ref] : slots)
-    if (ref->present()) setTextureSlot(program, location, *ref);
-  const bool normalMapped = material.normalTexture.present() && mesh.hasTangents;
-  glProgramUniform1i(program, kHasNormalTexture, normalMapped);
-  if (!normalMapped) return;
-  gpuScene.bindLinearTexture(material.normalTexture.texture, kNormalTextureUnit);
-  setTextureSlot(program, kNormalTexCoord, material.normalTexture);
-  glProgramUniform1f(program, kNormalScale, material.normalScale);
-  glProgramUniformMatrix3fv(program, kWorldTangentFromModel, 1, GL_FALSE, glm::value_ptr(tangentFromModel(linear)));
-  glProgramUniform1f(program, kHandednessFromModel, glm::determinant(linear) < 0.0 ? -1.0f : 1.0f);
-}
-
-const Material kDefaultMaterial{};  // glTF's default material: white, lit, opaque, single-sided
-
-}  // namespace
 
 bool materialMaps(const Material& m) {
   if (m.normalTexture.present() || m.metallicRoughnessTexture.present() || m.occlusionTexture.present()) return true;
@@ -165,30 +69,7 @@ void ScenePass::selectPrograms(bool environment, int lightCount) const {
 }
 
 void ScenePass::setLighting(GLuint program, const Scene& scene, float lodBias) const {
-  glProgramUniform1f(program, kAmbient, scene.lighting.ambient);
-  glProgramUniform1f(program, kLodBias, lodBias);
-  glProgramUniform3fv(program, kTowardViewer, 1, glm::value_ptr(towardViewer_));
-  glProgramUniform1i(program, kParallelView, parallelView_);
-  const std::vector<ShadingLight> lights = shadingLights(scene, shadingOrigin_);
-  const std::size_t count = std::min(lights.size(), static_cast<std::size_t>(kMaxShadingLights));
-  glm::vec4 positionRange[kMaxShadingLights], directionType[kMaxShadingLights];
-  glm::vec3 intensity[kMaxShadingLights];
-  glm::vec2 spot[kMaxShadingLights];
-  for (std::size_t i = 0; i < count; ++i) {
-    const ShadingLight& l = lights[i];
-    positionRange[i] = glm::vec4(l.position, l.range);
-    directionType[i] = glm::vec4(l.direction, static_cast<float>(l.type));
-    intensity[i] = l.intensity;
-    spot[i] = glm::vec2(l.spotScale, l.spotOffset);
-  }
-  const auto n = static_cast<GLsizei>(count);
-  glProgramUniform1i(program, kLightCount, n);
-  if (n > 0) {
-    glProgramUniform4fv(program, kLightPositionRange, n, glm::value_ptr(positionRange[0]));
-    glProgramUniform4fv(program, kLightDirectionType, n, glm::value_ptr(directionType[0]));
-    glProgramUniform3fv(program, kLightIntensity, n, glm::value_ptr(intensity[0]));
-    glProgramUniform2fv(program, kLightSpot, n, glm::value_ptr(spot[0]));
-  }
+  setLightingUniforms(program, scene, shadingView_, lodBias);
   if (const GpuEnvironment* env = environment(scene)) env->bind(program);
 }
 
@@ -196,9 +77,9 @@ void ScenePass::placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFro
   // The view's eye (shading positions and lights relative to it, composed in double); a parallel
   // view has none: the scene's centre serves, and v is the constant way back along its rays.
   const ProjectionCentre centre = projectionCentre(clipFromWorld);
-  parallelView_ = centre.atInfinity;
-  towardViewer_ = glm::vec3(centre.towardViewer);
-  shadingOrigin_ = !centre.atInfinity ? centre.point : scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
+  shadingView_.parallel = centre.atInfinity;
+  shadingView_.towardViewer = glm::vec3(centre.towardViewer);
+  shadingView_.origin = !centre.atInfinity ? centre.point : scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
 }
 
 const GpuEnvironment* ScenePass::environment(const Scene& scene) const {
@@ -268,8 +149,8 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   const bool narrow = isNarrowField(clipFromWorld);
   const GLuint program = buildSceneProgram(narrow ? narrowProgram_ : program_, narrow, {});
   placeShadingOrigin(scene, clipFromWorld);
-  glBindTextureUnit(kDfgUnit, dfgTable_.id());
-  glBindSampler(kDfgUnit, 0);
+  glBindTextureUnit(UNIT_DFG, dfgTable_.id());
+  glBindSampler(UNIT_DFG, 0);
   if (!addWeight) setLighting(program, scene, lodBias);
   const bool anyMaps = std::any_of(scene.materials.begin(), scene.materials.end(), materialMaps);
   const Programs plainMaps = anyMaps && !addWeight ? mapsVariant(nullptr, narrow, scene, lodBias) : Programs{};
@@ -337,8 +218,8 @@ void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWo
   const glm::vec3 bg = gpuScene.scene().environment ? glm::vec3(0.0f) : gpuScene.scene().lighting.background;
   for (const GLuint id : {add.opaque, addMaps.opaque}) {
     if (!id) continue;
-    glProgramUniform3fv(id, kBackground, 1, glm::value_ptr(bg));
-    glProgramUniform4fv(id, kAddWeight, 1, glm::value_ptr(weight));
+    glProgramUniform3fv(id, LOCATION_BACKGROUND, 1, glm::value_ptr(bg));
+    glProgramUniform4fv(id, LOCATION_ADD_WEIGHT, 1, glm::value_ptr(weight));
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
@@ -390,49 +271,12 @@ void ScenePass::drawInstances(Programs programs, Programs withMaps, bool narrow,
     const Instance& instance = scene.instances[only ? (*only)[k] : k];
     if (!only && isBlended(scene, instance)) continue;
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-    const Material& material =
-        mesh.material >= 0 ? scene.materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
+    const Material& material = materialOf(scene, mesh);
     const bool maps = withMaps.opaque != 0 && materialMaps(material);
     const Programs& chosen = maps ? withMaps : programs;
     const GLuint program = material.alphaMode == AlphaMode::Mask ? chosen.masked : chosen.opaque;
     glUseProgram(program);
-
-    // Composed in double, rounded once (see scene.vert).
-    const glm::dmat4 clipFromModel = wellScaled(clipFromWorld * instance.worldFromModel);
-    const glm::dmat3 linear(instance.worldFromModel);
-    const glm::mat3 normalFromModel(worldNormalFromModel(instance.worldFromModel));
-    if (narrow) {
-      glProgramUniformMatrix4dv(program, kClipFromModelDouble, 1, GL_FALSE, glm::value_ptr(clipFromModel));
-    } else {
-      const glm::mat4 rounded(clipFromModel);
-      glProgramUniformMatrix4fv(program, kClipFromModel, 1, GL_FALSE, glm::value_ptr(rounded));
-    }
-    glProgramUniformMatrix3fv(program, kWorldNormalFromModel, 1, GL_FALSE, glm::value_ptr(normalFromModel));
-    glm::dmat4 shadingFromWorld(1.0);
-    shadingFromWorld[3] = glm::dvec4(-shadingOrigin_, 1.0);
-    const glm::mat4 shadingFromModel(shadingFromWorld * instance.worldFromModel);
-    glProgramUniformMatrix4fv(program, kShadingFromModel, 1, GL_FALSE, glm::value_ptr(shadingFromModel));
-    glProgramUniform1f(program, kMetallicFactor, material.metallicFactor);
-    glProgramUniform1f(program, kRoughnessFactor, material.roughnessFactor);
-    glProgramUniform1f(program, kOcclusionStrength, material.occlusionStrength);
-    glProgramUniform1i(program, kHasMetallicRoughnessTexture, material.metallicRoughnessTexture.present());
-    if (material.metallicRoughnessTexture.present())
-      gpuScene.bindLinearTexture(material.metallicRoughnessTexture.texture, kMetallicRoughnessUnit);
-    glProgramUniform1i(program, kHasOcclusionTexture, material.occlusionTexture.present());
-    if (material.occlusionTexture.present()) gpuScene.bindLinearTexture(material.occlusionTexture.texture, kOcclusionUnit);
-    glProgramUniform4fv(program, kBaseColorFactor, 1, glm::value_ptr(material.baseColorFactor));
-    const bool textured = material.baseColorTexture.present();
-    glProgramUniform1i(program, kHasBaseColorTexture, textured);
-    if (textured) gpuScene.bindTexture(material.baseColorTexture.texture, 0);
-    glProgramUniform3fv(program, kEmissive, 1, glm::value_ptr(material.emissive));
-    const bool emissiveTextured = material.emissiveTexture.present();
-    glProgramUniform1i(program, kHasEmissiveTexture, emissiveTextured);
-    if (emissiveTextured) gpuScene.bindTexture(material.emissiveTexture.texture, 1);
-    if (maps) setMaterialMaps(program, gpuScene, material, mesh, linear);
-    glProgramUniform1i(program, kUnlit, material.unlit);
-    glProgramUniform1i(program, kAlphaMask, material.alphaMode == AlphaMode::Mask);
-    glProgramUniform1f(program, kAlphaCutoff, material.alphaCutoff);
-    glProgramUniform1i(program, kDoubleSided, material.doubleSided);
+    setInstanceUniforms(program, gpuScene, instance, clipFromWorld, narrow, shadingView_, maps);
 
     if (material.doubleSided) {
       glDisable(GL_CULL_FACE);
@@ -441,7 +285,7 @@ void ScenePass::drawInstances(Programs programs, Programs withMaps, bool narrow,
       glCullFace(GL_BACK);
     }
     // A mirroring transform turns counter-clockwise front faces clockwise.
-    glFrontFace(glm::determinant(linear) < 0.0 ? GL_CW : GL_CCW);
+    glFrontFace(glm::determinant(glm::dmat3(instance.worldFromModel)) < 0.0 ? GL_CW : GL_CCW);
 
     const GpuScene::GpuMesh& gpuMesh = gpuScene.mesh(instance.mesh);
     glBindVertexArray(gpuMesh.vertexArray.id());

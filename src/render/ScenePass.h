@@ -17,6 +17,7 @@
 #include "plan/TileBudget.h"
 #include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
+#include "render/SceneUniforms.h"
 
 #include <glm/glm.hpp>
 
@@ -101,9 +102,7 @@ class ScenePass {
   mutable bool environmentVariant_ = false;  // what the programs below were built for
   mutable int lightCountVariant_ = -1;
   gl::Texture dfgTable_;  // scene/Brdf.h's table, RGB32F
-  mutable glm::dvec3 shadingOrigin_{0.0};
-  mutable glm::vec3 towardViewer_{0.0f, 0.0f, 1.0f};
-  mutable bool parallelView_ = false;
+  mutable ShadingView shadingView_;  // the view drawn now (placeShadingOrigin)
   mutable gl::Program narrowProgram_;  // built on first use: needs fp64 shaders
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];

@@ -87,6 +87,8 @@ TEST(EnvironmentGlsl, LookupsMatchTheCpp) {
   std::string textures = readText(shaders / "environment_textures.glsl");
   const std::string include = "#include \"environment.glsl\"";
   textures.replace(textures.find(include), include.size(), readText(shaders / "environment.glsl"));
+  const std::string locations = "#include \"locations.glsl\"";
+  textures.replace(textures.find(locations), locations.size(), readText(shaders / "locations.glsl"));
   const std::string fragment = "#version 450 core\n" + textures + R"(
 layout(binding = 0) uniform sampler2D inputs;
 layout(location = 10) uniform int which;

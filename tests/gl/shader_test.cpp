@@ -58,13 +58,18 @@ TEST(Shader, ExpandsIncludesWithLineDirectives) {
   LENSLAB_REQUIRE_GL();
   const gl::ShaderSource source = gl::loadShaderSource("scene/scene.frag", {"VARIANT_X"});
   // The file itself, then each include in the order met (nested ones where they are included).
-  ASSERT_EQ(source.files.size(), 6u);
+  // (locations.glsl twice: environment_textures.glsl includes it for its other includer too,
+  // and its include guard empties the second copy.)
+  ASSERT_EQ(source.files.size(), 9u);
   EXPECT_EQ(source.files[0], "scene/scene.frag");
-  EXPECT_EQ(source.files[1], "common/material_maps.glsl");
-  EXPECT_EQ(source.files[2], "common/environment_textures.glsl");
-  EXPECT_EQ(source.files[3], "common/environment.glsl");
-  EXPECT_EQ(source.files[4], "common/dfg_filtered.glsl");
-  EXPECT_EQ(source.files[5], "common/brdf.glsl");
+  EXPECT_EQ(source.files[1], "common/locations.glsl");
+  EXPECT_EQ(source.files[2], "common/material_maps.glsl");
+  EXPECT_EQ(source.files[3], "common/environment_textures.glsl");
+  EXPECT_EQ(source.files[4], "common/locations.glsl");
+  EXPECT_EQ(source.files[5], "common/environment.glsl");
+  EXPECT_EQ(source.files[6], "common/dfg_filtered.glsl");
+  EXPECT_EQ(source.files[7], "common/brdf.glsl");
+  EXPECT_EQ(source.files[8], "common/shade_surface.glsl");
   EXPECT_EQ(source.text.rfind("#version 450 core\n#define VARIANT_X\n", 0), 0u);
   EXPECT_NE(source.text.find("vec3 punctualRadiance("), std::string::npos);
 }

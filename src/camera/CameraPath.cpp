@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/Text.h"
+#include "lens/effects/LensEffectRegistry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,25 +29,7 @@ double lerpDistance(double a, double b, double u) {
   return lerp(a, b, u);
 }
 
-LensEffects lerpEffects(const LensEffects& a, const LensEffects& b, double u) {
-  LensEffects e;
-  const auto mix = [u](double x, double y) { return lerp(x, y, u); };
-  e.distortion.k1 = mix(a.distortion.k1, b.distortion.k1);
-  e.distortion.k2 = mix(a.distortion.k2, b.distortion.k2);
-  e.distortion.k3 = mix(a.distortion.k3, b.distortion.k3);
-  e.distortion.p1 = mix(a.distortion.p1, b.distortion.p1);
-  e.distortion.p2 = mix(a.distortion.p2, b.distortion.p2);
-  e.distortion.alpha = mix(a.distortion.alpha, b.distortion.alpha);
-  e.distortion.beta = mix(a.distortion.beta, b.distortion.beta);
-  e.distortion.gamma = mix(a.distortion.gamma, b.distortion.gamma);
-  e.chromatic.lateralRed = mix(a.chromatic.lateralRed, b.chromatic.lateralRed);
-  e.chromatic.lateralBlue = mix(a.chromatic.lateralBlue, b.chromatic.lateralBlue);
-  // Axial colour and field curvature are carried as inverse focus shifts: linear there too.
-  e.chromatic.inverseFocusShiftRed = mix(a.chromatic.inverseFocusShiftRed, b.chromatic.inverseFocusShiftRed);
-  e.chromatic.inverseFocusShiftBlue = mix(a.chromatic.inverseFocusShiftBlue, b.chromatic.inverseFocusShiftBlue);
-  e.fieldCurvature.inverseFocusPerRadius2 = mix(a.fieldCurvature.inverseFocusPerRadius2, b.fieldCurvature.inverseFocusPerRadius2);
-  return e;
-}
+LensParts lensOf(const PathKey& key) { return {key.effects, key.aperture, key.barrel}; }
 
 // A neighbour beyond the ends: the end point reflected through its neighbour.
 glm::dvec3 pointOr(const std::vector<glm::dvec3>& p, std::ptrdiff_t i) {
@@ -189,9 +172,11 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds) {
 
   PathKey out;
   out.timeSeconds = timeSeconds;
-  out.effects = lerpEffects(keys[k].effects, keys[k + 1].effects, u);
-  out.aperture = keys[k].aperture;
-  out.barrel = keys[k].barrel;
+  // Each lens effect as its module interpolates it (lens/effects/).
+  const LensParts lens = interpolateLens(lensOf(keys[k]), lensOf(keys[k + 1]), u);
+  out.effects = lens.effects;
+  out.aperture = lens.aperture;
+  out.barrel = lens.barrel;
   PhysicalCamera& c = out.camera;
   std::vector<double> times, inverseFocus, stops;
   std::vector<glm::dvec3> eyes, targets;

@@ -2,6 +2,7 @@
 
 #include "core/Text.h"
 #include "lens/ExitPupil.h"
+#include "lens/effects/Vignetting.h"
 #include "lens/LensCamera.h"
 #include "lens/ParaxialLens.h"
 #include "lens/RealLens.h"
@@ -149,7 +150,7 @@ double polynomial(const Distortion& d, double x) {
   return x * (1.0 + x2 * (d.k1 + x2 * (d.k2 + x2 * d.k3)));
 }
 
-double gainAt(const glm::dvec3& a, double r2) { return 1.0 + r2 * (a.x + r2 * (a.y + r2 * a.z)); }
+double gainAt(const glm::dvec3& a, double r2) { return vignettingPolynomial(r2, a.x, a.y, a.z); }
 
 }  // namespace
 

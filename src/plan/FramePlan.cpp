@@ -2,6 +2,7 @@
 
 #include "camera/DepthRange.h"
 #include "core/Text.h"
+#include "lens/effects/LensEffectRegistry.h"
 #include "plan/TileBudget.h"
 
 #include <algorithm>
@@ -34,23 +35,20 @@ void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
     plan.depthMax = std::numeric_limits<double>::infinity();
 }
 
-// Whether the barrel hides part of the aperture from some pixel: from the window's farthest corner
-// the aperture, seen in the opening's plane (radius R·|1 − L/z_f| about L·n), reaches past it.
-bool barrelClipsFrame(const Camera& camera) {
-  if (!camera.hasBarrel()) return false;
+LensParts lensOf(const Camera& camera) { return {camera.effects, camera.aperture, camera.barrel}; }
+
+// What the lens-effect modules are told of `camera` (lens/effects/LensEffectModule.h).
+PlanView planViewOf(const Camera& camera) {
   const ViewSpec& v = camera.view;
-  const LensBarrel& b = camera.barrel;
-  const double seen = camera.apertureRadius * apertureReach(camera.aperture) * std::abs(1.0 - b.distance * camera.inverseFocusDistance());
-  double farthest = 0.0;
+  PlanView view;
+  view.pinhole = camera.isPinhole();
+  view.apertureRadius = camera.apertureRadius;
+  view.inverseFocus = camera.inverseFocusDistance();
   for (const double u : {v.window.umin, v.window.umax})
     for (const double w : {v.window.vmin, v.window.vmax})
-      farthest = std::max(farthest, glm::length(glm::dvec2(u - v.prp.x, w - v.prp.y)) / v.prp.z);
-  return b.distance * farthest + seen > b.radius;
+      view.farthestCornerSlope = std::max(view.farthestCornerSlope, glm::length(glm::dvec2(u - v.prp.x, w - v.prp.y)) / v.prp.z);
+  return view;
 }
-
-// Views a frame takes at least where the barrel clips it: the cat's eye is a share of the
-// aperture, resolved to about 1/64 by as many aperture points, however sharp the scene is.
-constexpr int kBarrelMinSamples = 64;
 
 }  // namespace
 
@@ -129,12 +127,13 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
         plan.samplesWhy = cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)", 
                               plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
                               " (", range, ")");
-      // With distortion the barrel clips at the undistorted field, which the overscan's window holds.
-      const bool barrelClips = barrelClipsFrame(camera.effects.needsRemap() ? overscanFor(camera, size).camera : camera);
-      if (barrelClips && plan.apertureSamples < std::min(kBarrelMinSamples, options.maxSamples)) {
-        plan.apertureSamples = std::min(kBarrelMinSamples, options.maxSamples);
-        plan.samplesWhy = cat(plan.apertureSamples, ": the lens barrel hides part of the aperture toward the corners (cat's-eye "
-                              "vignetting), a share resolved by that many aperture points (", range, ")");
+      // An effect may need more views however sharp the scene is (the barrel's cat's eye). With
+      // distortion the barrel clips at the undistorted field, which the overscan's window holds.
+      const EffectNeeds least =
+          effectNeeds(lensOf(camera), planViewOf(camera.effects.needsRemap() ? overscanFor(camera, size).camera : camera));
+      if (plan.apertureSamples < std::min(least.minApertureSamples, options.maxSamples)) {
+        plan.apertureSamples = std::min(least.minApertureSamples, options.maxSamples);
+        plan.samplesWhy = cat(plan.apertureSamples, ": ", least.minSamplesWhy, " (", range, ")");
       }
     }
   }
@@ -168,12 +167,17 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     plan.adaptive = std::move(a);
   }
 
-  const LensEffects& effects = camera.effects;
+  // What each lens effect asks of the frame (lens/effects/); per-view effects only with many views
+  // through an aperture.
+  const EffectNeeds needs = effectNeeds(lensOf(camera), planViewOf(camera));
+  std::vector<std::string> sceneVariants;
   if (plan.apertureSamples > 1 && !camera.isPinhole()) {
-    plan.viewsPerSample = effects.chromatic.hasAxial() ? 3 : 1;
-    plan.fieldCurvature = !effects.fieldCurvature.isZero();
+    plan.viewsPerSample = needs.viewsPerSample;
+    plan.fieldCurvature = needs.fieldCurvatureWarp;
+    sceneVariants = needs.sceneVariants;
   }
-  plan.remap = effects.needsRemap();
+  plan.remap = !needs.lensVariants.empty();
+  plan.remapTables = needs.remapTables;
   if (plan.remap) validateForwardLinearisation(camera, size);
   plan.overscan = overscanFor(camera, size);
   const ImageSize rendered = plan.overscan.size;
@@ -186,8 +190,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     PlannedPass scenePass{"scene", cat("up to ", plan.apertureSamples * plan.viewsPerSample, " views per tile of ", triangles,
                                        " triangles, in rounds of ", plan.adaptive->samplesPerRound,
                                        " samples drawn only into the tiles that still need them (scissor rectangles)", where), {}};
-    if (plan.fieldCurvature) scenePass.variants.push_back("field-curvature");
-    if (plan.viewsPerSample == 3) scenePass.variants.push_back("channel-focus");
+    scenePass.variants = sceneVariants;
     plan.passes.push_back(scenePass);
     plan.passes.push_back({"accumulate", "adds each view into one of two float sums (even samples, odd samples: two independent streams)", {}});
     plan.passes.push_back({"estimate", "after each round, each tile's squared error from the difference of its two streams' means", {}});
@@ -197,8 +200,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
                                        plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "
                                                                 : "one from each ",
                                        patternName(plan.pattern), camera.isPinhole() ? " sample" : " aperture point", ", with sub-pixel jitter", where), {}};
-    if (plan.fieldCurvature) scenePass.variants.push_back("field-curvature");
-    if (plan.viewsPerSample == 3) scenePass.variants.push_back("channel-focus");
+    scenePass.variants = sceneVariants;
     plan.passes.push_back(scenePass);
     plan.passes.push_back({"accumulate", cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"), {}});
     plan.passes.push_back({"resolve", plan.viewsPerSample == 3 ? "divides each channel's sum by its view count"
@@ -207,19 +209,16 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   if (plan.remap) {
     PlannedPass lens{"lens", plan.apertureSamples > 1
         ? cat("carries each view's samples to where the lens puts them as the views are summed (forward table with "
-              "Jacobian; inverse table per ", effects.chromatic.hasLateral() ? "colour channel" : "image",
+              "Jacobian; inverse table per ", plan.remapTables == 3 ? "colour channel" : "image",
               "); each pixel the mean of the samples landing in it")
         : cat("remaps the image through the inverse lens model (a lookup table per ",
-              effects.chromatic.hasLateral() ? "colour channel" : "image", ", bilinear)"), {}};
-    if (!effects.distortion.isZero()) lens.variants.push_back("distortion");
-    if (effects.chromatic.hasLateral()) lens.variants.push_back("lateral-colour");
+              plan.remapTables == 3 ? "colour channel" : "image", ", bilinear)"), {}};
+    lens.variants = needs.lensVariants;
     plan.passes.push_back(lens);
   }
-  plan.vignetting = !effects.vignetting.isZero();
+  plan.vignetting = !needs.finalGain.empty();
   if (plan.vignetting) {
-    const std::string gain = cat("the lens's relative illumination 1 + a1 r^2 + a2 r^4 + a3 r^6 (a1 = ", effects.vignetting.a1,
-                                 ", a2 = ", effects.vignetting.a2, ", a3 = ", effects.vignetting.a3,
-                                 ") at each pixel's place on the film");
+    const std::string& gain = needs.finalGain;
     // A resolve of many views ends the frame and multiplies the gain in; else a pass of its own.
     const auto resolve = std::find_if(plan.passes.begin(), plan.passes.end(), [](const PlannedPass& p) { return p.name == "resolve"; });
     if (resolve != plan.passes.end() && !plan.adaptive) {
@@ -229,7 +228,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
       plan.passes.push_back({"vignetting", cat("multiplies the image by ", gain), {}});
     }
   }
-  if (camera.isPinhole() && (effects.chromatic.hasAxial() || !effects.fieldCurvature.isZero()))
+  if (camera.isPinhole() && needs.idleThroughPinhole)
     plan.warnings.push_back("axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
                             "has none, so they change nothing here (give an aperture)");
   return plan;

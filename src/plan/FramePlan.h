@@ -1,5 +1,7 @@
 #pragma once
 // The frame plan: per scene and camera, which passes run and how many aperture samples.
+// The lens effects' part comes from their modules (lens/effects/LensEffectModule.h, EffectNeeds):
+// the plan asks each, and names none.
 // Nothing a scene does not need: a pinhole camera with no lens effects is one plain scene pass,
 // and so is a scene wholly inside the depth of field (every circle of confusion ≤ 1 pixel). Each
 // lens effect adds its pass or shader variant only when its strength is not zero:
@@ -80,6 +82,7 @@ struct FramePlan {
   int viewsPerSample = 1;       // 3 with axial chromatic aberration: one per colour channel
   bool fieldCurvature = false;  // the views are summed through the curved focal surface's warp
   bool remap = false;           // the lens post pass runs (distortion, lateral colour)
+  int remapTables = 0;          // its inverse lookup tables: 1, or 3 with lateral colour (one per channel)
   bool vignetting = false;      // the image is multiplied by the vignetting gain (lens/LensEffects.h)
   Overscan overscan;            // what the scene passes render: the image, or more for the lens pass
   std::optional<VisibleBlurSummary> visible;  // from a pinhole depth pre-pass, when one ran

@@ -17,8 +17,8 @@ bool fits(const PixelRect& r, const RenderTargetLimits& limits) {
          std::int64_t{r.width()} * r.height() <= limits.maxPixels;
 }
 
-bool fits(const Camera& camera, const FramePlan& plan, const Tile& tile, const RenderTargetLimits& limits, const TileMemory* memory) {
-  return fits(tile.rendered, limits) && (!memory || tileMemoryBytes(camera, plan, tile) <= memory->tileBytes);
+bool fits(const FramePlan& plan, const Tile& tile, const RenderTargetLimits& limits, const TileMemory* memory) {
+  return fits(tile.rendered, limits) && (!memory || tileMemoryBytes(plan, tile) <= memory->tileBytes);
 }
 
 std::int64_t area(const PixelRect& r) { return std::int64_t{r.width()} * r.height(); }
@@ -95,7 +95,7 @@ std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& 
       // With the lens pass: the tile's pre-image (where its pixels' samples come from), else the tile.
       const PixelRect source = plan.remap ? preImage(camera, size, rect) : rect;
       const Tile tile{rect, quadAligned(intersect(grown(source, curvature, curvature), frame), frame)};
-      if (!fits(camera, plan, tile, limits, memory)) return {};
+      if (!fits(plan, tile, limits, memory)) return {};
       tiles.push_back(tile);
     }
   return tiles;
@@ -121,7 +121,7 @@ void requireOneTarget(ImageSize size, const RenderTargetLimits& limits, const st
                        " a side; give a smaller size (render draws larger images in tiles)"));
 }
 
-std::int64_t tileMemoryBytes(const Camera& camera, const FramePlan& plan, const Tile& tile) {
+std::int64_t tileMemoryBytes(const FramePlan& plan, const Tile& tile) {
   constexpr std::int64_t kRgba32f = 16, kDepth32f = 4, kRg32f = 8;
   constexpr std::int64_t kViewLayers = 8, kViewLayerBytes = std::int64_t{256} << 20;  // Accumulator.cpp's batch
   const std::int64_t rendered = area(tile.rendered);
@@ -137,7 +137,7 @@ std::int64_t tileMemoryBytes(const Camera& camera, const FramePlan& plan, const 
     bytes += (kRgba32f + kDepth32f) * rendered;  // the one view the lens pass remaps
   }
   if (gather) bytes += 2 * kRgba32f * rendered;  // forward position and Jacobian
-  if (plan.remap) bytes += kRg32f * (camera.effects.chromatic.hasLateral() ? 3 : 1) * out;
+  if (plan.remap) bytes += kRg32f * plan.remapTables * out;
   bytes += (kRgba32f + kDepth32f) * out + kRgba32f * out;  // the output target and its read-back
   // The image before the vignetting pass, where no resolve of many views multiplies the gain in.
   if (plan.vignetting && (!views || plan.adaptive)) bytes += (kRgba32f + kDepth32f) * out;
@@ -150,8 +150,8 @@ TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, 
   TilePlan out;
   const PixelRect frame = fullRender(size, plan);
   const Tile whole{{0, 0, size.widthPx, size.heightPx}, frame};
-  const std::int64_t wholeBytes = tileMemoryBytes(camera, plan, whole);
-  if (forcedTileSidePx <= 0 && fits(camera, plan, whole, limits, memory)) {
+  const std::int64_t wholeBytes = tileMemoryBytes(plan, whole);
+  if (forcedTileSidePx <= 0 && fits(plan, whole, limits, memory)) {
     out.tileWidthPx = size.widthPx;
     out.tileHeightPx = size.heightPx;
     out.tiles = {Tile{{0, 0, size.widthPx, size.heightPx}, frame}};

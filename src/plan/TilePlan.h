@@ -72,7 +72,7 @@ TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, 
 // read-back at the tile's; with the lens gather the forward tables (2 × RGBA32F) at the rendered
 // size and the inverse tables (RG32F per remapped channel) at the tile's. What it leaves out (the
 // scene, the programs, a table band) does not grow with the tile.
-std::int64_t tileMemoryBytes(const Camera& camera, const FramePlan& plan, const Tile& tile);
+std::int64_t tileMemoryBytes(const FramePlan& plan, const Tile& tile);
 
 // For the commands that render the whole image into one target (sweep, view): refuses, in one
 // line naming `command`, an image that only tiles could hold (render tiles; they do not).

@@ -180,13 +180,13 @@ TEST(TilePlan, ALensFrameOverTheMemoryBudgetIsTiledWithinIt) {
   const Tile whole{{0, 0, size.widthPx, size.heightPx}, {0, 0, plan.overscan.size.widthPx, plan.overscan.size.heightPx}};
   // The whole frame: ~1.1 Mpx rendered, each pixel with its view layers (8 × 16 bytes), the forward
   // tables (32), the inverse tables (24), sums and read-back: over 200 bytes a pixel.
-  EXPECT_GT(tileMemoryBytes(camera, plan, whole), std::int64_t{200} * size.pixelCount());
+  EXPECT_GT(tileMemoryBytes(plan, whole), std::int64_t{200} * size.pixelCount());
   const TilePlan tiles = planTiles(camera, size, plan, RenderTargetLimits{}, 0, &memory);
   EXPECT_TRUE(tiles.tiled);
   EXPECT_NE(tiles.why.find("a tile may hold"), std::string::npos) << tiles.why;
   expectCovers(tiles, size, RenderTargetLimits{});
   for (const Tile& t : tiles.tiles) {
-    EXPECT_LE(tileMemoryBytes(camera, plan, t), memory.tileBytes);
+    EXPECT_LE(tileMemoryBytes(plan, t), memory.tileBytes);
     EXPECT_LE(std::int64_t{size.widthPx} * t.rect.height() * memory.fileBytesPerPixel, memory.stripBytes);
   }
   // A PNG's strip is 3 bytes a pixel: the same strip budget allows taller tile rows.

@@ -1,0 +1,95 @@
+// Camera files written: the lecture form of any camera, and the OpenCV-intrinsics form of a
+// physical one (io/CameraJson.h). The lens-effect keys are each module's (lens/effects/).
+#include "io/CameraJson.h"
+
+#include "camera/Intrinsics.h"
+#include "camera/LensMap.h"
+#include "lens/effects/LensEffectRegistry.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+namespace lenslab {
+namespace {
+
+using nlohmann::json;
+
+// The KeyWriter the lens-effect modules write through, on one JSON object.
+class JsonKeyWriter final : public KeyWriter {
+ public:
+  explicit JsonKeyWriter(json& object) : object_(object) {}
+  void number(const std::string& key, double value) override { object_[key] = value; }
+  void integer(const std::string& key, int value) override { object_[key] = value; }
+  void distance(const std::string& key, double value) override {
+    object_[key] = std::isinf(value) ? json("infinity") : json(value);
+  }
+  KeyWriter& object(const std::string& key) override {
+    object_[key] = json::object();
+    children_.push_back(std::make_unique<JsonKeyWriter>(object_[key]));
+    return *children_.back();
+  }
+
+ private:
+  json& object_;
+  std::vector<std::unique_ptr<JsonKeyWriter>> children_;
+};
+
+// Every lens effect of `camera` into `j`, as parseCommon reads them.
+void writeEffects(const Camera& camera, json& j) {
+  LensFrame frame;
+  frame.where = camera.source;
+  frame.inverseFocus = camera.inverseFocusDistance();
+  frame.cornerRadius = normalisedWindow(camera.view).cornerRadius();
+  frame.perspective = camera.view.projection == Projection::Perspective;
+  const LensParts lens{camera.effects, camera.aperture, camera.barrel};
+  JsonKeyWriter writer(j);
+  for (const LensEffectModule* module : lensEffectModules()) module->write(lens, frame, writer);
+}
+
+}  // namespace
+
+std::string toCameraJson(const Camera& camera) {
+  const ViewSpec& s = camera.view;
+  json j;
+  j["projection"] = s.projection == Projection::Perspective ? "perspective" : "parallel";
+  j["vrp"] = {s.vrp.x, s.vrp.y, s.vrp.z};
+  j["vpn"] = {s.vpn.x, s.vpn.y, s.vpn.z};
+  j["vup"] = {s.vup.x, s.vup.y, s.vup.z};
+  j["prp"] = {s.prp.x, s.prp.y, s.prp.z};
+  j["window"] = {s.window.umin, s.window.vmin, s.window.umax, s.window.vmax};
+  j["near"] = s.nearDistance;
+  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (camera.inverseFocusOffPlane) j["focus_distance"] = camera.focusAtInfinity() ? json("infinity") : json(camera.focusDistance());
+  if (std::isinf(s.farDistance)) j["far"] = "infinity";
+  else j["far"] = s.farDistance;
+  if (camera.calibratedSize) j["image_size"] = {camera.calibratedSize->widthPx, camera.calibratedSize->heightPx};
+  writeEffects(camera, j);
+  return j.dump(2) + "\n";
+}
+
+std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEffects& effects, ImageSize size,
+                                   bool writeNear, bool writeFar, const ApertureShape& aperture, const LensBarrel& barrel) {
+  Camera camera = toCamera(physical, "the frame's camera");
+  camera.effects = effects;
+  camera.aperture = aperture;
+  camera.barrel = barrel;
+  const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
+  json j;
+  j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};
+  j["target"] = {physical.target.x, physical.target.y, physical.target.z};
+  j["up"] = {physical.up.x, physical.up.y, physical.up.z};
+  j["intrinsics"] = {{"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}, {"width", k.widthPx}, {"height", k.heightPx}};
+  j["focus_distance"] = std::isinf(physical.focusDistance) ? json("infinity") : json(physical.focusDistance);
+  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (writeNear) j["near"] = physical.nearDistance;
+  if (writeFar) j["far"] = std::isinf(physical.farDistance) ? json("infinity") : json(physical.farDistance);
+  writeEffects(camera, j);
+  // OpenCV's distCoeffs as an array where the lens is all OpenCV's (the lecture's series is not).
+  const Distortion& d = effects.distortion;
+  if (!d.isZero() && d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  return j.dump(2) + "\n";
+}
+
+
+}  // namespace lenslab

@@ -1,0 +1,229 @@
+// Distortion: the model (Brown–Conrady in OpenCV's convention with the lecture's series) and its
+// module (LensEffectModule.h).
+//
+// Camera file: "distortion": {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"} (missing
+// keys 0), or OpenCV's distCoeffs array as "distortion" or, in the OpenCV form, "dist".
+// Path: each coefficient linear. Plan: the lens remap pass ("distortion" variant).
+#include "lens/effects/Distortion.h"
+
+#include "core/NumberInput.h"
+#include "core/Text.h"
+#include "lens/effects/LensEffectModule.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace lenslab {
+namespace {
+
+// lenslab's normalised frame has y up, OpenCV's y down: the same point is (x, −y) there.
+glm::dvec2 flipY(glm::dvec2 p) { return {p.x, -p.y}; }
+
+struct Radial {
+  double g;  // 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶
+  double h;  // g'(r) / r, so that ∂g/∂x = h·x (0 at the centre, where the α term has no derivative)
+};
+
+Radial radial(const Distortion& d, double r) {
+  const double r2 = r * r;
+  const double k1 = d.k1 + d.beta;
+  Radial out;
+  out.g = 1.0 + r * (d.alpha + r * (k1 + r * d.gamma)) + r2 * r2 * (d.k2 + r2 * d.k3);
+  out.h = 2.0 * k1 + 3.0 * d.gamma * r + 4.0 * d.k2 * r2 + 6.0 * d.k3 * r2 * r2 + (r > 0.0 ? d.alpha / r : 0.0);
+  return out;
+}
+
+}  // namespace
+
+bool Distortion::isZero() const {
+  return k1 == 0.0 && k2 == 0.0 && p1 == 0.0 && p2 == 0.0 && k3 == 0.0 && alpha == 0.0 && beta == 0.0 &&
+         gamma == 0.0;
+}
+
+glm::dvec2 Distortion::distort(glm::dvec2 undistorted) const {
+  const glm::dvec2 p = flipY(undistorted);  // OpenCV's frame from here on
+  const double x = p.x, y = p.y;
+  const double r2 = x * x + y * y;
+  const double g = radial(*this, std::sqrt(r2)).g;
+  const glm::dvec2 d(x * g + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
+                     y * g + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y);
+  return flipY(d);
+}
+
+glm::dmat2 Distortion::jacobian(glm::dvec2 undistorted) const {
+  const glm::dvec2 p = flipY(undistorted);
+  const double x = p.x, y = p.y;
+  const Radial rad = radial(*this, std::sqrt(x * x + y * y));
+  // OpenCV's frame: J = [[∂xd/∂x, ∂xd/∂y], [∂yd/∂x, ∂yd/∂y]].
+  const double dxdx = rad.g + rad.h * x * x + 2.0 * p1 * y + 6.0 * p2 * x;
+  const double dxdy = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y;
+  const double dydx = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y;
+  const double dydy = rad.g + rad.h * y * y + 6.0 * p1 * y + 2.0 * p2 * x;
+  // Back to y up: F·J·F with F = diag(1, −1) flips the off-diagonal signs. glm is column-major.
+  return glm::dmat2(glm::dvec2(dxdx, -dydx), glm::dvec2(-dxdy, dydy));
+}
+
+namespace {
+
+// Newton's method in double from `guess`; empty when it does not settle on the branch that
+// contains the centre (where the Jacobian's determinant is positive).
+std::optional<glm::dvec2> newton(const Distortion& d, glm::dvec2 distorted, glm::dvec2 guess) {
+  glm::dvec2 x = guess;
+  for (int i = 0; i < 64; ++i) {
+    const glm::dmat2 j = d.jacobian(x);
+    const double det = glm::determinant(j);
+    if (!(std::abs(det) > 1e-300)) return std::nullopt;
+    const glm::dvec2 step = glm::inverse(j) * (d.distort(x) - distorted);
+    x -= step;
+    if (!std::isfinite(x.x) || !std::isfinite(x.y)) return std::nullopt;
+    if (glm::length(step) <= 1e-13 * std::max(1.0, glm::length(x))) {
+      // Only the branch that contains the centre is the lens's: beyond a fold lies its mirror
+      // (det J < 0), beyond the radial factor's zero a point reflection (det J > 0 again, but the
+      // point lands on the other side of the centre), and a polynomial that turns back up has an
+      // outer branch (det J > 0, same side). The segment from the centre must not cross a fold.
+      for (int k = 1; k <= 8; ++k)
+        if (!(glm::determinant(d.jacobian(x * (k / 8.0))) > 0.0)) return std::nullopt;
+      if (!(glm::dot(d.distort(x), x) >= 0.0)) return std::nullopt;
+      return x;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<glm::dvec2> Distortion::undistort(glm::dvec2 distorted, glm::dvec2 guess) const {
+  if (isZero()) return distorted;
+  if (const auto x = newton(*this, distorted, guess)) return x;
+  // Strong distortion can throw Newton off its branch from a poor guess. Continuation from the
+  // centre then: the target slides from (0, 0) to `distorted` along the segment, each step solved
+  // from the last solution, so the path never leaves the branch that contains the centre and stops
+  // only at a real fold (a singular Jacobian on the way).
+  for (int steps = 8; steps <= 2048; steps *= 4) {
+    glm::dvec2 x(0.0);
+    bool reached = true;
+    for (int i = 1; i <= steps && reached; ++i) {
+      const auto next = newton(*this, distorted * (static_cast<double>(i) / steps), x);
+      reached = next.has_value();
+      if (next) x = *next;
+    }
+    if (reached) return x;
+  }
+  return std::nullopt;
+}
+
+std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 distortedMin, glm::dvec2 distortedMax) {
+  if (distortion.isZero()) return std::nullopt;
+  const auto inside = [&](glm::dvec2 p) {
+    return p.x >= distortedMin.x && p.x <= distortedMax.x && p.y >= distortedMin.y && p.y <= distortedMax.y;
+  };
+  double extent = 0.0;  // the farthest corner of the region from the principal point
+  for (const glm::dvec2 c : {distortedMin, distortedMax, glm::dvec2(distortedMin.x, distortedMax.y),
+                             glm::dvec2(distortedMax.x, distortedMin.y)})
+    extent = std::max(extent, glm::length(c));
+  // Walk outward along rays from the centre, over the branch of the map that the inverse uses
+  // (the one that contains the centre): up to the first point where the Jacobian's determinant
+  // stops being positive. That point folds the image if its distorted position is inside the
+  // region; beyond it the polynomial may come back into the region (a mirrored ring, outside any
+  // real lens's field stop), which the inverse never uses.
+  constexpr int kAngles = 360;
+  constexpr int kSteps = 1000;
+  const double step = extent / kSteps;
+  const double giveUp = 16.0 * extent;
+  std::optional<FoldOver> nearest;
+  for (int a = 0; a < kAngles; ++a) {
+    const double angle = 2.0 * M_PI * (a + 0.5) / kAngles;
+    const glm::dvec2 direction(std::cos(angle), std::sin(angle));
+    for (double t = 0.0;; t += step) {
+      const glm::dvec2 p = t * direction;
+      const glm::dvec2 d = distortion.distort(p);
+      const bool folded = !(glm::determinant(distortion.jacobian(p)) > 0.0);
+      // A polynomial that never carries this ray out of the region (it stalls) folds it too.
+      const bool stalled = t + step >= giveUp;
+      if (folded || stalled) {
+        if (inside(d) && (!nearest || glm::length(p) < glm::length(nearest->undistorted))) nearest = FoldOver{p, d};
+        break;
+      }
+      if (glm::length(d) > 2.0 * extent) break;
+    }
+  }
+  return nearest;
+}
+
+
+namespace {
+
+const std::set<std::string> kKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
+
+// OpenCV's distCoeffs as a calibration prints them: [k1, k2, p1, p2] or [k1, k2, p1, p2, k3]; the
+// 8-, 12- and 14-element forms too when what lenslab's model lacks is zero (k4, k5, k6 of the rational
+// model, s1..s4 of the thin prism, τx, τy of a tilted sensor).
+Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
+  const std::size_t n = r.arraySize(key);
+  if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
+    r.fail(key, cat("as an array is OpenCV's distCoeffs [k1, k2, p1, p2] or [k1, k2, p1, p2, k3] (or the 8, 12 or 14 "
+                    "of the fuller models), not ", excerpt(r.text(key))));
+  std::vector<double> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::optional<double> value = r.element(key, i);
+    if (!value) r.fail(key, "must hold finite numbers");
+    c[i] = *value;
+  }
+  static const char* const kBeyond[] = {"k4", "k5", "k6", "s1", "s2", "s3", "s4", "tauX", "tauY"};
+  for (std::size_t i = 5; i < n; ++i)
+    if (c[i] != 0.0)
+      r.fail(key, cat("has ", kBeyond[i - 5], " = ", c[i], " (element ", i, "); lenslab's lens model is OpenCV's k1, k2, p1, "
+                      "p2, k3: the rational, thin-prism and tilt terms must be 0"));
+  Distortion d;
+  d.k1 = c[0], d.k2 = c[1], d.p1 = c[2], d.p2 = c[3], d.k3 = n > 4 ? c[4] : 0.0;
+  return d;
+}
+
+void read(const KeyReader& r, const LensFrame&, LensParts& lens) {
+  Distortion& d = lens.effects.distortion;
+  if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
+  if (r.has("dist")) {
+    if (!r.isArray("dist")) r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3], not ", r.text("dist")));
+    d = distCoeffsOf(r, "dist");
+  }
+  if (!r.has("distortion")) return;
+  if (r.isArray("distortion")) {
+    d = distCoeffsOf(r, "distortion");
+    return;
+  }
+  const std::unique_ptr<KeyReader> o = r.object("distortion", kKeys);
+  const auto get = [&](const char* key, double& out) { if (o->has(key)) out = o->number(key); };
+  get("k1", d.k1), get("k2", d.k2), get("p1", d.p1), get("p2", d.p2), get("k3", d.k3);
+  get("alpha", d.alpha), get("beta", d.beta), get("gamma", d.gamma);
+}
+
+void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
+  const Distortion& k = lens.effects.distortion;
+  if (k.isZero()) return;
+  KeyWriter& d = camera.object("distortion");
+  for (const auto& [key, value] : {std::pair{"k1", k.k1}, {"k2", k.k2}, {"p1", k.p1}, {"p2", k.p2}, {"k3", k.k3},
+                                   {"alpha", k.alpha}, {"beta", k.beta}, {"gamma", k.gamma}})
+    if (value != 0.0) d.number(key, value);
+}
+
+void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& out) {
+  const Distortion &x = a.effects.distortion, &y = b.effects.distortion;
+  Distortion& d = out.effects.distortion;
+  d.k1 = lerpValue(x.k1, y.k1, u), d.k2 = lerpValue(x.k2, y.k2, u), d.k3 = lerpValue(x.k3, y.k3, u);
+  d.p1 = lerpValue(x.p1, y.p1, u), d.p2 = lerpValue(x.p2, y.p2, u);
+  d.alpha = lerpValue(x.alpha, y.alpha, u), d.beta = lerpValue(x.beta, y.beta, u), d.gamma = lerpValue(x.gamma, y.gamma, u);
+}
+
+void plan(const LensParts& lens, const PlanView&, EffectNeeds& needs) {
+  if (lens.effects.distortion.isZero()) return;
+  needs.lensVariants.push_back("distortion");
+  needs.remapTables = std::max(needs.remapTables, 1);
+}
+
+}  // namespace
+
+extern const LensEffectModule kDistortionModule;
+const LensEffectModule kDistortionModule{"distortion", "lens/remap.frag", read, write, interpolate, plan};
+
+}  // namespace lenslab

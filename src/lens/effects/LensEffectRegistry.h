@@ -1,0 +1,23 @@
+#pragma once
+// Every lens effect's module, listed once (LensEffectModule.h). The order is the order in which a
+// camera file's effect keys are read and in which the plan lists their variants.
+#include "lens/effects/LensEffectModule.h"
+
+#include "lens/effects/Vignetting.h"
+
+#include <array>
+
+namespace lenslab {
+
+const std::array<const LensEffectModule*, 6>& lensEffectModules();
+
+// Every module's camera-file key.
+std::set<std::string> lensEffectKeys();
+
+// Each module's interpolation between `a` (u = 0) and `b` (u = 1).
+LensParts interpolateLens(const LensParts& a, const LensParts& b, double u);
+
+// What a frame needs for every effect of `lens`.
+EffectNeeds effectNeeds(const LensParts& lens, const PlanView& view);
+
+}  // namespace lenslab

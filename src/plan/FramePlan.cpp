@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace lenslab {
@@ -57,6 +58,13 @@ constexpr int kBarrelMinSamples = 64;
 FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options,
                         const VisibleBlur* visible) {
   FramePlan plan;
+  // The frame's image map: built once, overscanned for the lens pass once it is needed.
+  const ThinLensMap map(camera, size);
+  std::optional<ThinLensMap> overscanned;
+  const auto renderMap = [&]() -> const ThinLensMap& {
+    if (!overscanned) overscanned = map.overscanned();
+    return *overscanned;
+  };
   plan.pattern = options.pattern;
   plan.seed = options.seed;
   const std::size_t triangles = scene.triangleCount();
@@ -130,7 +138,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
                               plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
                               " (", range, ")");
       // With distortion the barrel clips at the undistorted field, which the overscan's window holds.
-      const bool barrelClips = barrelClipsFrame(camera.effects.needsRemap() ? overscanFor(camera, size).camera : camera);
+      const bool barrelClips = barrelClipsFrame(renderMap().overscan().camera);
       if (barrelClips && plan.apertureSamples < std::min(kBarrelMinSamples, options.maxSamples)) {
         plan.apertureSamples = std::min(kBarrelMinSamples, options.maxSamples);
         plan.samplesWhy = cat(plan.apertureSamples, ": the lens barrel hides part of the aperture toward the corners (cat's-eye "
@@ -174,8 +182,8 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
     plan.fieldCurvature = !effects.fieldCurvature.isZero();
   }
   plan.remap = effects.needsRemap();
-  if (plan.remap) validateForwardLinearisation(camera, size);
-  plan.overscan = overscanFor(camera, size);
+  if (plan.remap) map.validateForwardLinearisation();
+  plan.overscan = renderMap().overscan();
   const ImageSize rendered = plan.overscan.size;
   const std::string where = plan.remap ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,
                                              "+", plan.overscan.padPx.y, " px overscan for the lens pass)")

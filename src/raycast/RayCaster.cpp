@@ -1,7 +1,6 @@
 #include "raycast/RayCaster.h"
 
-#include "camera/LensMap.h"
-
+#include "camera/ImageMap.h"
 #include "camera/Projection.h"
 #include "camera/Ray.h"
 #include "core/Error.h"
@@ -477,6 +476,28 @@ std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) c
   return aovImages(camera, size, depth).depth;
 }
 
+namespace {
+
+// What the ray of `map` through film point `pixel` from the lens centre (green's) sees first: the
+// AOVs' surface. Textures filtered over one pixel. (A template over the caster's Impl, which is
+// private to RayCaster.)
+template <class Impl>
+auto firstHit(const Impl& m, const ImageMap& map, glm::dvec2 pixel) {
+  using Hit = typename Impl::Hit;
+  const std::optional<CameraRay> r = map.ray(pixel, {0.0, 0.0}, 1);
+  Ray ray = r ? r->ray : Ray{};
+  ray.origin -= m.origin;
+  if (!r || r->blocked) return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
+  const auto rayAt = [&](glm::dvec2 offset) {
+    Ray n = map.footprintRay(*r, offset);
+    n.origin -= m.origin;
+    return n;
+  };
+  return m.shadeRay(ray, rayAt, 1.0, map.camera(), r->pixel);
+}
+
+}  // namespace
+
 AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const {
   AovImages out;
   out.widthPx = size.widthPx;
@@ -497,15 +518,12 @@ AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSe
   const Impl& m = *impl_;
   const ViewBasis basis = viewBasis(camera.view);
   const glm::dvec3 axis = -basis.n;
-  const bool lensEffects = !camera.effects.isZero();
-  Camera focused = camera;
-  focused.effects = {};
+  // Green's ray from the lens centre: through the inverse lens model, so depth lines up with the image.
+  const ThinLensMap map(camera, size);
   tbb::parallel_for(tbb::blocked_range<int>(0, size.heightPx), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = 0; x < size.widthPx; ++x) {
-        glm::dvec2 pixel(x + 0.5, y + 0.5);
-        if (lensEffects) pixel = undistortedSample(camera, Channel::Green, pixel, size).pixel;
-        const Impl::Hit hit = m.shadeAlong(focused, {0.0, 0.0}, pixel, size, 1.0);
+        const Impl::Hit hit = firstHit(m, map, {x + 0.5, y + 0.5});
         const std::size_t i = static_cast<std::size_t>(y) * size.widthPx + x;
         if (selection.depth)
           out.depth[i] = std::isinf(hit.t) ? std::numeric_limits<float>::infinity()
@@ -539,11 +557,26 @@ void inBands(ImageSize size, const std::function<void(int, int)>& progress, cons
   }
 }
 
-// The vignetting gain of image pixel position `pixel` (continuous, origin top left).
-double vignettingGainAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) {
-  const glm::dvec2 n = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx));
-  return camera.effects.vignetting.gain(glm::dot(n, n));
-}
+// The lens points of a pixel's samples in the map's domain: the stratified sample's point of the
+// unit disk (Shirley–Chiu concentric), or for a box around a real lens's exit pupil points of the
+// R2 sequence with a random rotation per pixel (Cranley–Patterson): evenly spread over the box for
+// any count, and unbiased.
+class LensPoints {
+ public:
+  LensPoints(LensDomain domain, std::uint32_t seed) : square_(domain == LensDomain::Square) {
+    if (square_) rotation_ = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
+  }
+  glm::dvec2 at(const LensSample& s, std::size_t i) const {
+    if (!square_) return s.lens;
+    constexpr double kPlastic = 1.32471795724474602596;
+    const glm::dvec2 step(1.0 / kPlastic, 1.0 / (kPlastic * kPlastic));
+    return glm::fract(rotation_ + static_cast<double>(i + 1) * step);
+  }
+
+ private:
+  bool square_;
+  glm::dvec2 rotation_{0.0};
+};
 
 // A different stratified set per pixel, so that the noise does not repeat across pixels.
 std::uint32_t pixelSeed(std::uint32_t seed, int x, int y, int widthPx) {
@@ -554,113 +587,60 @@ std::uint32_t pixelSeed(std::uint32_t seed, int x, int y, int widthPx) {
 
 Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,
                         const std::function<void(int, int)>& progress) const {
-  Image image(size.widthPx, size.heightPx);
-  const int spp = std::max(1, options.samplesPerPixel);
-  impl_->rebase(impl_->originFor(camera, size));
-  const Impl& m = *impl_;
-  // The samples' pixel positions are stratified, one stratum of 1/√spp × 1/√spp pixels each: that
-  // is the area a sample stands for, so its texture lookups filter over that and no more.
-  const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
-  // Vignetting alone moves no ray: the plain path casts them, and the gain follows the mean.
-  const bool vignetting = !camera.effects.vignetting.isZero();
-  LensEffects rayEffects = camera.effects;
-  rayEffects.vignetting = {};
-  const bool lensEffects = !rayEffects.isZero();
-  // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
-  const int channels = camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1;
-  inBands(size, progress, [&](int yBegin, int yEnd) {
-    // The camera each channel's rays are cast with: the lens effects are applied here, per ray.
-    Camera focused = camera;
-    focused.effects = {};
-    focused.source.clear();
-    for (int y = yBegin; y < yEnd; ++y)
-      for (int x = 0; x < size.widthPx; ++x) {
-        const std::uint32_t seed = pixelSeed(options.seed, x, y, size.widthPx);
-        const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
-        glm::dvec3 sum(0.0);
-        double covered = 0.0;  // Σ coverage of the rays (Hit::coverage): alpha is the pixel's coverage
-        if (lensEffects) {
-          // Exactly, per sample: each channel's ray goes through the true perspective position
-          // that the inverse lens model gives for this sample's point of the distorted image,
-          // focused on that channel's (and that radius's) plane of focus.
-          glm::dvec2 guess[3];
-          for (int c = 0; c < channels; ++c)
-            guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5}, size).normalised;
-          for (const LensSample& s : samples) {
-            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-            for (int c = 0; c < channels; ++c) {
-              const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
-              const Impl::Hit hit =
-                  m.shadeAlong(focused, camera.lensOffset(s.lens), cs.pixel, size, footprintPx, cs.inverseFocusShift);
-              if (channels == 3) sum[c] += hit.color[c];
-              else sum += glm::dvec3(hit.color);
-              covered += static_cast<double>(hit.coverage) / channels;
-            }
-          }
-        } else {
-          for (const LensSample& s : samples) {
-            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-            const Impl::Hit hit = m.shadeAlong(camera, camera.lensOffset(s.lens), pixel, size, footprintPx);
-            sum += glm::dvec3(hit.color);
-            covered += hit.coverage;
-          }
-        }
-        const double n = static_cast<double>(samples.size());
-        // Vignetting scales the pixel's light by the gain at its own place on the film (its
-        // centre, distorted coordinates: the output grid is the film), after the samples' mean.
-        const double gain = vignetting ? vignettingGainAt(camera, {x + 0.5, y + 0.5}, size) : 1.0;
-        image.set(x, y, glm::vec4(glm::vec3(gain * sum / n), static_cast<float>(covered / n)));
-      }
-  });
-  return image;
+  return render(ThinLensMap(camera, size), options, progress);
 }
 
 Image RayCaster::render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
                         const std::function<void(int, int)>& progress) const {
+  return render(RealLensMap(lens, camera, size), options, progress);
+}
+
+Image RayCaster::render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress) const {
+  const ImageSize size = map.size();
   Image image(size.widthPx, size.heightPx);
   const int spp = std::max(1, options.samplesPerPixel);
-  impl_->rebase(impl_->originFor(camera, size));
+  impl_->rebase(impl_->originFor(map.camera(), size));
   const Impl& m = *impl_;
+  // The samples' pixel positions are stratified, one stratum of 1/√spp × 1/√spp pixels each: that
+  // is the area a sample stands for, so its texture lookups filter over that and no more.
   const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
-  const int channels = lens.dispersion() ? 3 : 1;
-  const auto toRay = [&](const LensCamera::WorldRay& w) {
-    Ray r{w.origin - m.origin, w.direction, 0.0, std::numeric_limits<double>::infinity()};
-    return r;
-  };
+  const int channels = map.rayChannels();
   inBands(size, progress, [&](int yBegin, int yEnd) {
     for (int y = yBegin; y < yEnd; ++y)
       for (int x = 0; x < size.widthPx; ++x) {
         const std::uint32_t seed = pixelSeed(options.seed, x, y, size.widthPx);
-        // Pixel positions stratified as the thin lens's; pupil points from the R2 sequence with
-        // a random rotation per pixel (Cranley-Patterson): evenly spread over the pupil's box
-        // for any count, and unbiased.
         const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
-        const glm::dvec2 rotation = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
-        constexpr double kPlastic = 1.32471795724474602596;
-        const glm::dvec2 step(1.0 / kPlastic, 1.0 / (kPlastic * kPlastic));
+        const LensPoints lens(map.lensDomain(), seed);
+        // A map that solves an inverse per film point starts each sample's from the pixel centre's.
+        std::optional<CameraRay> centre[3];
+        if (map.startsFromCentre())
+          for (int c = 0; c < channels; ++c) centre[c] = map.ray({x + 0.5, y + 0.5}, {0.0, 0.0}, channels == 3 ? c : 1);
         glm::dvec3 sum(0.0);
-        double covered = 0.0, weights = 0.0;
+        double covered = 0.0, weights = 0.0;  // Σ coverage (Hit::coverage) and Σ weight of the rays: alpha is their ratio
         for (std::size_t i = 0; i < samples.size(); ++i) {
           const glm::dvec2 pixel(x + 0.5 + samples[i].pixel.x, y + 0.5 + samples[i].pixel.y);
-          const glm::dvec2 u = glm::fract(rotation + static_cast<double>(i + 1) * step);
           for (int c = 0; c < channels; ++c) {
-            const int channel = channels == 3 ? c : 1;
-            const std::optional<LensCamera::WorldRay> w = lens.ray(pixel, size.widthPx, size.heightPx, u, channel);
-            if (!w) continue;  // stopped by a rim or the stop: no light, still a sample
-            const Ray ray = toRay(*w);
+            const std::optional<CameraRay> r = map.ray(pixel, lens.at(samples[i], i), channels == 3 ? c : 1, centre[c] ? &*centre[c] : nullptr);
+            if (!r) continue;  // outside what the lens passes: no light, and no part of the pixel's coverage
+            weights += r->weight / channels;
+            if (r->blocked) continue;  // the barrel stops it: no light, background included
+            Ray ray = r->ray;
+            ray.origin -= m.origin;
+            // The texture's ray differentials: the same lens point, the film point one footprint over.
             const auto rayAt = [&](glm::dvec2 offset) {
-              const std::optional<LensCamera::WorldRay> n = lens.ray(pixel + offset, size.widthPx, size.heightPx, u, channel);
-              return n ? toRay(*n) : ray;  // a neighbour the lens stops: no footprint that way
+              Ray n = map.footprintRay(*r, offset);
+              n.origin -= m.origin;
+              return n;
             };
-            const Impl::Hit hit = m.shadeRay(ray, rayAt, footprintPx, camera, pixel);
-            if (channels == 3) sum[c] += w->weight * hit.color[c];
-            else sum += w->weight * glm::dvec3(hit.color);
-            covered += w->weight * hit.coverage / channels;
-            weights += w->weight / channels;
+            const Impl::Hit hit = m.shadeRay(ray, rayAt, footprintPx, map.camera(), r->pixel);
+            if (channels == 3) sum[c] += r->weight * hit.color[c];
+            else sum += r->weight * glm::dvec3(hit.color);
+            covered += r->weight * hit.coverage / channels;
           }
         }
         const double n = static_cast<double>(samples.size());
-        image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
+        image.set(x, y, glm::vec4(glm::vec3(map.gainAt({x + 0.5, y + 0.5}) * sum / n),
+                                  static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
       }
   });
   return image;

@@ -7,6 +7,7 @@
 // composited along each ray, front to back, exactly per ray (shadeAlong; docs/materials.md). Embree finds the hits; TBB spreads
 // rows over the cores.
 #include "camera/Camera.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "core/Aovs.h"
 #include "core/Image.h"
@@ -38,6 +39,12 @@ class RayCaster {
   // `progress(rowsDone, rows)` is called from the calling thread between bands of rows.
   Image render(const Camera& camera, ImageSize size, const RaycastOptions& options,
                const std::function<void(int, int)>& progress = {}) const;
+
+  // The one ray-casting loop, for every lens: each pixel's stratified samples (pixel position ×
+  // lens point, in the map's lens domain), each channel's ray asked of the map, shaded, weighted by
+  // the ray's weight, averaged, times the map's gain at the pixel. The two overloads below build
+  // the map for a thin lens and for a real one.
+  Image render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress = {}) const;
 
   // The reference image through a real lens (lens/LensCamera, `raycast --lens`): each sample is a
   // film point in the pixel and a point of the exit pupil seen from it, traced through every

@@ -1,6 +1,5 @@
 #include "render/Renderer.h"
 
-#include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -49,17 +48,14 @@ const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot
 }
 
 Accumulator::Curvature Renderer::normalisedPixels() const {
-  const Window& w = camera_.view.window;
-  const glm::dvec2 origin = normalisedFromWindow(camera_.view, {w.umin, w.vmin});
-  const glm::dvec2 step = glm::dvec2(w.width() / size_.widthPx, w.height() / size_.heightPx) / camera_.view.prp.z;
-  return Accumulator::Curvature{glm::vec2(origin), glm::vec2(step)};
+  return Accumulator::Curvature{glm::vec2(map_->normalisedAtRenderCorner()), glm::vec2(map_->normalisedPerRenderPixel())};
 }
 
 std::optional<Accumulator::Barrel> Renderer::barrelMask() const {
-  if (!camera_.hasBarrel()) return std::nullopt;
+  if (!viewCamera().hasBarrel()) return std::nullopt;
   const Accumulator::Curvature pixels = normalisedPixels();
   return Accumulator::Barrel{pixels.normalisedAtOrigin, pixels.normalisedPerPixel,
-                             static_cast<float>(camera_.barrel.distance / camera_.barrel.radius)};
+                             static_cast<float>(viewCamera().barrel.distance / viewCamera().barrel.radius)};
 }
 
 std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
@@ -69,14 +65,12 @@ std::optional<Accumulator::Curvature> Renderer::curvatureWarp() const {
 
 void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables) {
   plan_ = plan;
-  camera_ = plan.remap ? plan.overscan.camera : camera;
-  outCamera_ = camera;
-  size_ = plan.remap ? plan.overscan.size : size;
+  // The plan's overscan is for the camera it was made for; a plan reused for another camera
+  // without the lens pass (a sweep's ablations) renders that camera's own image.
+  map_.emplace(camera, size, plan.remap ? plan.overscan : Overscan{camera, size, {0, 0}});
+  size_ = map_->overscan().size;
   outSize_ = size;
   done_ = 0;
-  // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
-  for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue})
-    channelFocusShifts_[static_cast<std::size_t>(c)] = camera_.effects.chromatic.inverseFocusShift(c);
   // With distortion or lateral colour the lens gather masks each view's samples at their own
   // undistorted rays (gather_lens.frag, BARREL); a parallel projection has no directions to clip.
   if (camera.hasBarrel() && camera.view.projection != Projection::Perspective)
@@ -84,7 +78,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   if (plan.vignetting && !vignettePass_) vignettePass_ = std::make_unique<VignettePass>();
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
-    lensPass_->prepare(camera, size, plan.overscan, plan.apertureSamples > 1, tables);
+    lensPass_->prepare(*map_, plan.apertureSamples > 1, tables);
   }
   adaptive_ = plan.adaptive.has_value();
   if (adaptive_) {
@@ -106,23 +100,16 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   }
 }
 
-glm::dmat4 Renderer::sampleClip(const LensSample& s, double inverseFocusShift) const {
-  const Window& w = camera_.view.window;
-  const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
-  // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
-  const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
-  return clipFromWorld(viewThroughLens(camera_, camera_.lensOffset(s.lens), pixelOffset, inverseFocusShift));
-}
-
 void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias) {
   const LensSample& first = parts.front().sample;
-  const Window& w = camera_.view.window;
+  const Camera& rendered = viewCamera();
+  const Window& w = rendered.view.window;
   const glm::dvec2 pixelSize(w.width() / size_.widthPx, w.height() / size_.heightPx);
   // Field curvature: this view's shift at r = 1, δ·d·κ, in pixels (Accumulator.h); and the sub-pixel
   // offset in view pixels, GL orientation, for the lens gather. Both are the view's, so a view with
   // either is drawn whole from one sample (one part).
-  const glm::vec2 curvatureShift(camera_.lensOffset(first.lens) * camera_.view.prp.z *
-                                 camera_.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
+  const glm::vec2 curvatureShift(rendered.lensOffset(first.lens) * rendered.view.prp.z *
+                                 rendered.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
   const glm::vec2 jitter(static_cast<float>(first.pixel.x), static_cast<float>(-first.pixel.y));
   // Views are added straight into the sum unless the scene's geometry costs more than a layer.
   double triangles = 0.0;
@@ -132,22 +119,25 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   // surfaces need every one over what lies behind (ScenePass::drawBlended).
   sum.setLayered(anyBlended(gpuScene_.scene()) ||
                  Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
-  const glm::dvec2 lensOffset = camera_.lensOffset(first.lens);
+  const glm::dvec2 lensOffset = rendered.lensOffset(first.lens);
   for (int c = 0; c < plan_.viewsPerSample; ++c) {
     glm::vec3 mask(1.0f);
-    double shift = 0.0;
+    // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own
+    // view; one view for all is focused as green, on the camera's own plane of focus.
+    Channel channel = Channel::Green;
     if (plan_.viewsPerSample == 3) {
       mask = glm::vec3(0.0f);
       mask[c] = 1.0f;
-      shift = channelFocusShifts_[static_cast<std::size_t>(c)];
+      channel = static_cast<Channel>(c);
     }
+    const double shift = rendered.effects.chromatic.inverseFocusShift(channel);
     // The barrel sees this view's aperture point at p·(1 − L/z_f), z_f this channel's focus.
-    const glm::vec2 barrelLens = camera_.hasBarrel()
-        ? glm::vec2(lensOffset * (1.0 - camera_.barrel.distance * (camera_.inverseFocusDistance() + shift)) / camera_.barrel.radius)
+    const glm::vec2 barrelLens = rendered.hasBarrel()
+        ? glm::vec2(lensOffset * (1.0 - rendered.barrel.distance * (rendered.inverseFocusDistance() + shift)) / rendered.barrel.radius)
         : glm::vec2(0.0f);
     const Accumulator::View view = sum.nextView(constantBackground(gpuScene_.scene()), mask, curvatureShift, jitter, barrelLens);
     for (const SamplePart& part : parts)
-      scenePass_.draw(gpuScene_, sampleClip(part.sample, shift), view.target, lodBias, part.boxes,
+      scenePass_.draw(gpuScene_, map_->clipFromWorld(part.sample, channel), view.target, lodBias, part.boxes,
                       view.addWeight ? &*view.addWeight : nullptr);
   }
 }
@@ -164,7 +154,7 @@ int Renderer::addSamples(int count) {
       // A single view is the image itself unless a pass follows it (the lens, the vignetting).
       const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_)
                                     : plan_.vignetting ? target(unvignetted_, size_) : target(output_, size_);
-      scenePass_.draw(gpuScene_, sampleClip(s, 0.0), out.drawTarget(), lodBias);
+      scenePass_.draw(gpuScene_, map_->clipFromWorld(s, Channel::Green), out.drawTarget(), lodBias);
     } else {
       drawSample({{s, nullptr}}, *accumulator_, lodBias);
     }
@@ -197,7 +187,7 @@ void Renderer::beginAdaptive() {
   }
   // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel, and
   // each view has one aperture point (the barrel's mask is per view).
-  scissorViews_ = !plan_.remap && !plan_.fieldCurvature && !camera_.hasBarrel();
+  scissorViews_ = !plan_.remap && !plan_.fieldCurvature && !viewCamera().hasBarrel();
   const TileGrid previous = grid_;
   grid_ = makeTileGrid(outSize_, a.tileSizePx);
   // About 16 regions of whole tiles, each with its own scramble (see step()).
@@ -453,7 +443,7 @@ std::vector<float> Renderer::pinholeDepth(const Camera& camera, ImageSize size) 
 const gl::RenderTarget& Renderer::resolveOnGpu() {
   if (done_ == 0) throw std::logic_error("Renderer::resolve before any sample");
   const gl::RenderTarget& out = target(output_, outSize_);
-  const VignetteGain gain = vignetteGainFor(outCamera_, outSize_);
+  const VignetteGain gain = vignetteGainFor(map_->camera(), outSize_);
   // A resolve of many views is the frame's last pass and multiplies the gain in itself.
   if (!adaptive_ && samplesPlanned() > 1) {  // the lens, if any, was applied as the views were summed
     accumulator_->resolve(out, plan_.vignetting ? &gain : nullptr);

@@ -8,6 +8,7 @@
 // colour applied to each overscanned view as it is summed into the output (a single view: remapped
 // afterwards by the lens pass). Vignetting, last: the finished image times its gain (VignettePass).
 #include "camera/Camera.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
 #include "gl/Framebuffer.h"
@@ -24,6 +25,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lenslab {
@@ -101,7 +103,6 @@ class Renderer {
     const std::vector<PixelBox>* boxes = nullptr;
   };
   void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
-  glm::dmat4 sampleClip(const LensSample& s, double inverseFocusShift) const;
   int regionOf(int tile) const;
   int mostSamples() const;  // the most samples any tile has
   // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
@@ -128,12 +129,15 @@ class Renderer {
   std::unique_ptr<gl::RenderTarget> unvignetted_;  // the image before the vignetting pass, when it runs
   std::unique_ptr<VignettePass> vignettePass_;     // made on first use
 
+  // The camera the scene passes use: the map's render (overscanned when the lens pass runs).
+  const Camera& viewCamera() const { return map_->overscan().camera; }
+
   FramePlan plan_;
-  Camera camera_;      // the camera the scene passes use (overscanned when the lens pass runs)
-  Camera outCamera_;   // the output image's camera (a tile's own): the vignetting pass's pixel positions
-  std::array<double, 3> channelFocusShifts_{};  // inverse focus shifts of red, green, blue (axial colour)
-  ImageSize size_;     // the size they render at
-  ImageSize outSize_;  // the image's size
+  // The frame's image map, built once by begin(): the output image's camera (a tile's own) and size,
+  // the render's, each view's clipFromWorld and the lens pass's tables.
+  std::optional<ThinLensMap> map_;
+  ImageSize size_;     // the size the scene passes render at (map_->overscan().size)
+  ImageSize outSize_;  // the image's size (map_->size())
   std::vector<LensSample> samples_;
   int done_ = 0;
 

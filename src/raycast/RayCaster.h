@@ -1,11 +1,12 @@
 #pragma once
 // The CPU reference: the lecture's ray casting, "for each pixel, ray R from PRP toward
 // VRP + u·udir + v·vdir; P = Intersect(R, World); Image[u, v] = Color(P)", through the thin lens
-// ("rays from every lens surface point toward the in-focus point, averaged"). It uses the same
-// Camera (lensRay), the same Scene and the same shading as the rasterizer, so any difference
-// between the two images is the rasterizer's method error. Surfaces of alphaMode BLEND are
-// composited along each ray, front to back, exactly per ray (shadeAlong; docs/materials.md). Embree finds the hits; TBB spreads
-// rows over the cores.
+// ("rays from every lens surface point toward the in-focus point, averaged"). It asks the same
+// image map as the rasterizer for its rays (camera/ImageMap.h), and uses the same Scene and the
+// same shading, so any difference between the two images is the rasterizer's method error.
+// Surfaces of alphaMode BLEND are composited along each ray, front to back, exactly per ray
+// (shadeAlong; docs/materials.md). Embree finds the hits (raycast/EmbreeScene.h); one loop casts
+// every lens's rays, TBB spreading rows over the cores (raycast/RenderLoop.h).
 #include "camera/Camera.h"
 #include "camera/ImageMap.h"
 #include "camera/ImageSize.h"

@@ -19,6 +19,7 @@
 #include "render/Accumulator.h"
 #include "render/GpuScene.h"
 #include "render/LensPass.h"
+#include "render/LensViews.h"
 #include "render/ScenePass.h"
 #include "render/VignettePass.h"
 
@@ -105,13 +106,6 @@ class Renderer {
   void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
   int regionOf(int tile) const;
   int mostSamples() const;  // the most samples any tile has
-  // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
-  std::optional<Accumulator::Curvature> curvatureWarp() const;
-  // Normalised image coordinates of the views' GL pixel corner (0, 0) and their step per pixel
-  // (the mapping both the field-curvature warp and the barrel's mask take).
-  Accumulator::Curvature normalisedPixels() const;
-  // The barrel's per-pixel mask for the views (Accumulator::Barrel), if the camera has a barrel.
-  std::optional<Accumulator::Barrel> barrelMask() const;
   void beginAdaptive();
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);
@@ -130,14 +124,14 @@ class Renderer {
   std::unique_ptr<VignettePass> vignettePass_;     // made on first use
 
   // The camera the scene passes use: the map's render (overscanned when the lens pass runs).
-  const Camera& viewCamera() const { return map_->overscan().camera; }
+  const Camera& viewCamera() const { return views_->map().overscan().camera; }
 
   FramePlan plan_;
-  // The frame's image map, built once by begin(): the output image's camera (a tile's own) and size,
-  // the render's, each view's clipFromWorld and the lens pass's tables.
-  std::optional<ThinLensMap> map_;
-  ImageSize size_;     // the size the scene passes render at (map_->overscan().size)
-  ImageSize outSize_;  // the image's size (map_->size())
+  // The frame's views and its image map, built once by begin(): the output image's camera (a
+  // tile's own) and size, the render's, each view's clipFromWorld and the lens pass's tables.
+  std::optional<LensViews> views_;
+  ImageSize size_;     // the size the scene passes render at (the map's overscan().size)
+  ImageSize outSize_;  // the image's size (the map's size())
   std::vector<LensSample> samples_;
   int done_ = 0;
 

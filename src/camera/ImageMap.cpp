@@ -73,6 +73,14 @@ ChannelSample ThinLensMap::undistorted(Channel c, glm::dvec2 pixel, std::optiona
   return s;
 }
 
+std::optional<CameraRay> ThinLensMap::start(glm::dvec2 pixel, int channel) const {
+  if (!movesRays_) return std::nullopt;
+  CameraRay r;
+  r.channel = channel;
+  r.normalised = undistorted(static_cast<Channel>(channel), pixel).normalised;
+  return r;
+}
+
 glm::dvec2 ThinLensMap::renderPixelFromOutput(glm::dvec2 pixel) const {
   const glm::dvec2 truth = camera_.effects.needsRemap() ? undistorted(Channel::Green, pixel).pixel : pixel;
   return truth + glm::dvec2(overscan_.padPx);
@@ -104,37 +112,6 @@ glm::dvec2 ThinLensMap::normalisedAtRenderCorner() const {
 glm::dvec2 ThinLensMap::normalisedPerRenderPixel() const {
   const Window& w = overscan_.camera.view.window;
   return glm::dvec2(w.width() / overscan_.size.widthPx, w.height() / overscan_.size.heightPx) / overscan_.camera.view.prp.z;
-}
-
-std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near) const {
-  CameraRay r;
-  r.channel = channel;
-  r.lensPoint = camera_.lensOffset(lens);
-  r.pixel = pixel;
-  if (movesRays_) {
-    // Exactly, per ray: the true perspective position that the inverse lens model gives for this
-    // point of the distorted image, focused on that channel's (and that radius's) plane of focus.
-    const ChannelSample s = undistorted(static_cast<Channel>(channel), pixel, near ? std::optional(near->normalised) : std::nullopt);
-    r.pixel = s.pixel;
-    r.normalised = s.normalised;
-    r.inverseFocusShift = s.inverseFocusShift;
-  }
-  r.ray = lensRay(rayCamera_, r.lensPoint, r.pixel, size_, r.inverseFocusShift);
-  // The barrel's opening (cat's-eye vignetting). The lecture's thin lens deflects the ray from
-  // aperture point p toward the point of the plane of focus seen in the undistorted direction n;
-  // that ray is the one the barrel may stop, at p·(1 − L/z_f) + L·n. Distortion and lateral colour
-  // only move where on the film that ray lands, so the test takes n of the undistorted position,
-  // never the distorted film point, and z_f with the channel's and the curvature's shift.
-  if (rayCamera_.hasBarrel()) {
-    const glm::dvec2 w = lenslab::windowFromPixel(rayCamera_.view.window, r.pixel, size_.widthPx, size_.heightPx);
-    const glm::dvec2 normalised = (w - glm::dvec2(rayCamera_.view.prp)) / rayCamera_.view.prp.z;
-    r.blocked = !throughBarrel(rayCamera_.barrel, r.lensPoint, normalised, rayCamera_.inverseFocusDistance() + r.inverseFocusShift);
-  }
-  return r;
-}
-
-Ray ThinLensMap::footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const {
-  return lensRay(rayCamera_, r.lensPoint, r.pixel + offsetPx, size_, r.inverseFocusShift);
 }
 
 double ThinLensMap::gainAt(glm::dvec2 pixel) const {

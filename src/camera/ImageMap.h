@@ -15,8 +15,10 @@
 // lens model is a new map; the renderers' loops stay as they are. Pure C++ and GLM, no GL.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
+#include "camera/Projection.h"
 #include "camera/Ray.h"
 #include "lens/AperturePattern.h"
+#include "lens/LensBarrel.h"
 #include "lens/LensCamera.h"
 #include "lens/LensEffects.h"
 
@@ -104,9 +106,10 @@ class ImageMap {
   virtual LensDomain lensDomain() const = 0;
   // Rays per sample: 3 when the channels see differently (lateral or axial colour, dispersion).
   virtual int rayChannels() const = 0;
-  // Whether ray() solves an inverse per film point, and so wants the pixel centre's ray of the same
-  // channel (`near`) to start from for each of the pixel's samples.
-  virtual bool startsFromCentre() const { return false; }
+  // Where ray() starts for the samples of a pixel, when it solves an inverse per film point: the
+  // pixel centre's solution for that channel (passed to ray() as `near`; only its solution is set,
+  // not its ray). nullopt for a map that solves none.
+  virtual std::optional<CameraRay> start(glm::dvec2 /*pixel*/, int /*channel*/) const { return std::nullopt; }
   // The ray from film point `pixel` (continuous, origin at the image's top-left corner) through lens
   // sample `lens` (lensDomain()) for channel 0..2 (1 when rayChannels() is 1); nullopt where the
   // sample lies outside what the lens passes (a real lens's stop and rims): it brings no light and
@@ -171,9 +174,13 @@ class ThinLensMap final : public ImageMap {
   // The ray caster's questions (ImageMap).
   LensDomain lensDomain() const override { return LensDomain::Disk; }
   int rayChannels() const override { return rayChannels_; }
-  bool startsFromCentre() const override { return movesRays_; }
+  std::optional<CameraRay> start(glm::dvec2 pixel, int channel) const override;
   std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near = nullptr) const override;
-  Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override;
+  // Inline: the ray caster's loop, compiled for this map (RayCaster::render), calls it for every
+  // texture lookup's ray differentials.
+  Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override {
+    return lensRay(rayCamera_, r.lensPoint, r.pixel + offsetPx, size_, r.inverseFocusShift);
+  }
   double gainAt(glm::dvec2 pixel) const override;
 
   // The lens pass's tables (camera/LensMap.cpp), filled on every core: one inverse table for each
@@ -209,6 +216,35 @@ class ThinLensMap final : public ImageMap {
   bool movesRays_ = false;  // effects besides vignetting: each ray goes through the inverse lens model
   int rayChannels_ = 1;
 };
+
+// Inline, as footprintRay: the ray caster's loop calls it for every ray.
+inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near) const {
+  std::optional<CameraRay> out(std::in_place);  // built in place: this runs for every ray
+  CameraRay& r = *out;
+  r.channel = channel;
+  r.lensPoint = camera_.lensOffset(lens);
+  r.pixel = pixel;
+  if (movesRays_) {
+    // Exactly, per ray: the true perspective position that the inverse lens model gives for this
+    // point of the distorted image, focused on that channel's (and that radius's) plane of focus.
+    const ChannelSample s = undistorted(static_cast<Channel>(channel), pixel, near ? std::optional(near->normalised) : std::nullopt);
+    r.pixel = s.pixel;
+    r.normalised = s.normalised;
+    r.inverseFocusShift = s.inverseFocusShift;
+  }
+  r.ray = lensRay(rayCamera_, r.lensPoint, r.pixel, size_, r.inverseFocusShift);
+  // The barrel's opening (cat's-eye vignetting). The lecture's thin lens deflects the ray from
+  // aperture point p toward the point of the plane of focus seen in the undistorted direction n;
+  // that ray is the one the barrel may stop, at p·(1 − L/z_f) + L·n. Distortion and lateral colour
+  // only move where on the film that ray lands, so the test takes n of the undistorted position,
+  // never the distorted film point, and z_f with the channel's and the curvature's shift.
+  if (rayCamera_.hasBarrel()) {
+    const glm::dvec2 w = lenslab::windowFromPixel(rayCamera_.view.window, r.pixel, size_.widthPx, size_.heightPx);
+    const glm::dvec2 normalised = (w - glm::dvec2(rayCamera_.view.prp)) / rayCamera_.view.prp.z;
+    r.blocked = !throughBarrel(rayCamera_.barrel, r.lensPoint, normalised, rayCamera_.inverseFocusDistance() + r.inverseFocusShift);
+  }
+  return out;
+}
 
 // A real lens: the traced prescription (lens/LensCamera), placed from `placed`; for each film point
 // and each pupil sample the ray leaves the lens into the scene, weighted by its relative

@@ -79,33 +79,9 @@ glm::dvec3 EmbreeScene::originFor(const Camera& camera, ImageSize size) const {
   return scene->bounds.empty() ? lensCentre : glm::clamp(lensCentre, scene->bounds.min, scene->bounds.max);
 }
 
-bool EmbreeScene::embreeTakes(const RTCRay& r) {
-  constexpr float kLarge = 1.8e18f;  // Embree's FLT_LARGE is 1.844e18
-  for (const float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z})
-    if (!(std::abs(v) <= kLarge)) return false;
-  return r.tnear >= 0.0f && r.tnear <= r.tfar;
-}
-
 InputError EmbreeScene::unfiniteRay(const Camera& camera, glm::dvec2 pixel) {
   return InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",", pixel.y,
                         "; check its window, PRP, focus and lens effects"));
-}
-
-std::pair<double, double> EmbreeScene::boundsSpan(const Ray& ray) const {
-  const glm::dvec3 lo = scene->bounds.min - origin, hi = scene->bounds.max - origin;
-  const double pad = 1e-4 * glm::length(hi - lo) + 1e-6 * glm::length(glm::abs(lo) + glm::abs(hi)) + 1e-30;
-  double enter = -std::numeric_limits<double>::infinity(), exit = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 3; ++a) {
-    const double o = ray.origin[a], d = ray.direction[a];
-    if (d == 0.0) {
-      if (o < lo[a] - pad || o > hi[a] + pad) return {1.0, 0.0};
-      continue;
-    }
-    const double t0 = (lo[a] - pad - o) / d, t1 = (hi[a] + pad - o) / d;
-    enter = std::max(enter, std::min(t0, t1));
-    exit = std::min(exit, std::max(t0, t1));
-  }
-  return {enter, exit};
 }
 
 }  // namespace lenslab

@@ -14,6 +14,8 @@
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <mutex>
 #include <utility>
@@ -69,5 +71,30 @@ struct EmbreeScene {
   // so that a surface on a face of the box is never missed; empty (enter > exit) on a miss.
   std::pair<double, double> boundsSpan(const Ray& ray) const;
 };
+
+// Inline: both run for every ray, inside the shading loop.
+inline bool EmbreeScene::embreeTakes(const RTCRay& r) {
+  constexpr float kLarge = 1.8e18f;  // Embree's FLT_LARGE is 1.844e18
+  for (const float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z})
+    if (!(std::abs(v) <= kLarge)) return false;
+  return r.tnear >= 0.0f && r.tnear <= r.tfar;
+}
+
+inline std::pair<double, double> EmbreeScene::boundsSpan(const Ray& ray) const {
+  const glm::dvec3 lo = scene->bounds.min - origin, hi = scene->bounds.max - origin;
+  const double pad = 1e-4 * glm::length(hi - lo) + 1e-6 * glm::length(glm::abs(lo) + glm::abs(hi)) + 1e-30;
+  double enter = -std::numeric_limits<double>::infinity(), exit = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const double o = ray.origin[a], d = ray.direction[a];
+    if (d == 0.0) {
+      if (o < lo[a] - pad || o > hi[a] + pad) return {1.0, 0.0};
+      continue;
+    }
+    const double t0 = (lo[a] - pad - o) / d, t1 = (hi[a] + pad - o) / d;
+    enter = std::max(enter, std::min(t0, t1));
+    exit = std::min(exit, std::max(t0, t1));
+  }
+  return {enter, exit};
+}
 
 }  // namespace lenslab

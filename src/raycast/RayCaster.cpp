@@ -396,9 +396,16 @@ Image RayCaster::render(const LensCamera& lens, const Camera& camera, ImageSize 
 Image RayCaster::render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress) const {
   impl_->rebase(impl_->originFor(map.camera(), map.size()));
   const Impl& m = *impl_;
-  return renderThroughMap(map, options, progress, m.origin, [&](const Ray& ray, const auto& rayAt, double footprintPx, glm::dvec2 pixel) {
+  const auto shade = [&](const Ray& ray, const auto& rayAt, double footprintPx, glm::dvec2 pixel) {
     return m.shadeRay(ray, rayAt, footprintPx, map.camera(), pixel);
-  });
+  };
+  // The loop is compiled for each lens model the renderers have, so that its calls to the map are
+  // direct (per ray, and per texture lookup for the ray differentials); another map goes through
+  // the interface.
+  const auto cast = [&](const auto& concrete) { return renderThroughMap(concrete, options, progress, m.origin, shade); };
+  if (const auto* thin = dynamic_cast<const ThinLensMap*>(&map)) return cast(*thin);
+  if (const auto* real = dynamic_cast<const RealLensMap*>(&map)) return cast(*real);
+  return cast(map);
 }
 
 }  // namespace lenslab

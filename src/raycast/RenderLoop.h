@@ -66,8 +66,10 @@ inline std::uint32_t pixelSeed(std::uint32_t seed, int x, int y, int widthPx) {
 // `origin`) sees, with `rayAt(offset)` the same sample's ray from `offset` pixels over (ray
 // differentials for its textures), returning the colour and coverage (RayCaster's Hit).
 // `progress(rowsDone, rows)` between bands of rows, from the calling thread.
-template <class Shade>
-Image renderThroughMap(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress,
+// `Map` is the map's own type where the caller knows it (its calls then direct, and inline where
+// the map defines them so), else ImageMap.
+template <class Map, class Shade>
+Image renderThroughMap(const Map& map, const RaycastOptions& options, const std::function<void(int, int)>& progress,
                        const glm::dvec3& origin, const Shade& shade) {
   using render_loop::inBands;
   using render_loop::LensPoints;
@@ -87,8 +89,7 @@ Image renderThroughMap(const ImageMap& map, const RaycastOptions& options, const
         const LensPoints lens(map.lensDomain(), seed);
         // A map that solves an inverse per film point starts each sample's from the pixel centre's.
         std::optional<CameraRay> centre[3];
-        if (map.startsFromCentre())
-          for (int c = 0; c < channels; ++c) centre[c] = map.ray({x + 0.5, y + 0.5}, {0.0, 0.0}, channels == 3 ? c : 1);
+        for (int c = 0; c < channels; ++c) centre[c] = map.start({x + 0.5, y + 0.5}, channels == 3 ? c : 1);
         glm::dvec3 sum(0.0);
         double covered = 0.0, weights = 0.0;  // Σ coverage (Hit::coverage) and Σ weight of the rays: alpha is their ratio
         for (std::size_t i = 0; i < samples.size(); ++i) {

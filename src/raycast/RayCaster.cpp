@@ -350,8 +350,7 @@ std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) c
 namespace {
 
 // What the ray of `map` through film point `pixel` from the lens centre (green's) sees first: the
-// AOVs' surface. Textures filtered over one pixel. (A template over the caster's Impl, which is
-// private to RayCaster.)
+// AOVs' surface, textures over one pixel. (A template: the caster's Impl is private to RayCaster.)
 template <class Impl>
 auto firstHit(const Impl& m, const ImageMap& map, glm::dvec2 pixel) {
   using Hit = typename Impl::Hit;
@@ -381,16 +380,6 @@ AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSe
     const double depth = std::isinf(hit.t) ? hit.t : glm::dot(hit.t * hit.ray.direction, axis);
     return AovSurface{hit.surface, depth, hit.normal, hit.albedo, hit.gltfNode};
   });
-}
-
-Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,
-                        const std::function<void(int, int)>& progress) const {
-  return render(ThinLensMap(camera, size), options, progress);
-}
-
-Image RayCaster::render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
-                        const std::function<void(int, int)>& progress) const {
-  return render(RealLensMap(lens, camera, size), options, progress);
 }
 
 Image RayCaster::render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress) const {

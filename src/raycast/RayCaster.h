@@ -39,12 +39,14 @@ class RayCaster {
 
   // `progress(rowsDone, rows)` is called from the calling thread between bands of rows.
   Image render(const Camera& camera, ImageSize size, const RaycastOptions& options,
-               const std::function<void(int, int)>& progress = {}) const;
+               const std::function<void(int, int)>& progress = {}) const {
+    return render(ThinLensMap(camera, size), options, progress);
+  }
 
-  // The one ray-casting loop, for every lens: each pixel's stratified samples (pixel position ×
-  // lens point, in the map's lens domain), each channel's ray asked of the map, shaded, weighted by
-  // the ray's weight, averaged, times the map's gain at the pixel. The two overloads below build
-  // the map for a thin lens and for a real one.
+  // The one ray-casting loop, for every lens (raycast/RenderLoop.h): each pixel's stratified
+  // samples (pixel position × lens point, in the map's lens domain), each channel's ray asked of the
+  // map, shaded, weighted by the ray's weight, averaged, times the map's gain at the pixel. The
+  // thin-lens and real-lens overloads build their map and call it.
   Image render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress = {}) const;
 
   // The reference image through a real lens (lens/LensCamera, `raycast --lens`): each sample is a
@@ -54,7 +56,9 @@ class RayCaster {
   // `camera` is the one the lens camera was placed from: it sets where the scene's geometry is
   // kept relative to, and names messages.
   Image render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
-               const std::function<void(int, int)>& progress = {}) const;
+               const std::function<void(int, int)>& progress = {}) const {
+    return render(RealLensMap(lens, camera, size), options, progress);
+  }
 
   // The shaded colour seen along one ray through continuous pixel position `pixel` from aperture
   // offset `lensOffset` (linear RGB; the background where nothing is hit). Textures are filtered

@@ -1,6 +1,6 @@
 #include "camera/FocusOnPixel.h"
 
-#include "camera/LensMap.h"
+#include "camera/ImageMap.h"
 #include "core/Error.h"
 #include "core/Text.h"
 
@@ -18,8 +18,9 @@ SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm:
   double distance = 0.0;
   if (camera.effects.needsRemap()) {
     const glm::dvec2 centre(x + 0.5, y + 0.5);
-    const Overscan o = overscanFor(camera, size);
-    const glm::dvec2 p = undistortedSample(camera, Channel::Green, centre, size).pixel + glm::dvec2(o.padPx);
+    const ThinLensMap map = ThinLensMap(camera, size).overscanned();
+    const Overscan& o = map.overscan();
+    const glm::dvec2 p = map.renderPixelFromOutput(centre);
     distance = depthAt(o.camera, o.size, static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
   } else {
     distance = depthAt(camera, size, x, y);

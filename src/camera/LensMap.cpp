@@ -1,5 +1,7 @@
 #include "camera/LensMap.h"
 
+#include "camera/ImageMap.h"
+
 #include "camera/Projection.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -34,19 +36,6 @@ void forEachRowBand(int height, const std::function<void(int, int)>& rows) {
 void forEachSlice(int height, const std::function<void(int, int)>& slice, int rowsPerSlice = 0) {
   const int rows = rowsPerSlice > 0 ? rowsPerSlice : std::max(height / 20, 8 * tbb::this_task_arena::max_concurrency());
   for (int first = 0; first < height; first += rows) slice(first, std::min(height, first + rows));
-}
-
-glm::dvec2 undistortOrThrow(const Camera& camera, Channel c, glm::dvec2 distorted, glm::dvec2 guess) {
-  auto undistorted = camera.effects.undistortChannel(c, distorted, guess);
-  if (!undistorted) {
-    // The inverse follows the branch that contains the centre (continuation, LensEffects.cpp), so it
-    // fails only where that branch folds; validateLensEffects refuses folds inside the image, so
-    // this is a point the lens cannot show.
-    throw InputError(cat(camera.source, ": distortion: no true position on the lens's branch lands at normalised (",
-                         distorted.x, ", ", distorted.y,
-                         ") (the distortion folds before it); use weaker distortion coefficients or a narrower field of view"));
-  }
-  return *undistorted;
 }
 
 }  // namespace
@@ -149,13 +138,13 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   }
 }
 
-double forwardLinearisationErrorPx(const Camera& camera, ImageSize size) {
+double ThinLensMap::forwardLinearisationErrorPx() const {
+  const Camera& camera = camera_;
   if (!camera.effects.needsRemap()) return 0.0;
-  const Window& w = camera.view.window;
-  const int width = size.widthPx, height = size.heightPx;
+  const int width = size_.widthPx, height = size_.heightPx;
   // Pixel (image orientation) → normalised, and back: the rendered view has the image's pitch.
-  const auto normalised = [&](glm::dvec2 pixel) { return normalisedFromWindow(camera.view, windowFromPixel(w, pixel, width, height)); };
-  const auto pixel = [&](glm::dvec2 n) { return pixelFromWindow(w, windowFromNormalised(camera.view, n), width, height); };
+  const auto normalised = [&](glm::dvec2 pixel) { return normalisedFromPixel(pixel); };
+  const auto pixel = [&](glm::dvec2 n) { return pixelFromNormalised(n); };
   const double scale = 1.0 + std::max({0.0, std::abs(camera.effects.chromatic.lateralRed), std::abs(camera.effects.chromatic.lateralBlue)});
   // Where the lens puts the view's point q (view pixels), in output pixels.
   const auto forward = [&](glm::dvec2 q) { return pixel(camera.effects.distortion.distort(normalised(q))); };
@@ -167,7 +156,7 @@ double forwardLinearisationErrorPx(const Camera& camera, ImageSize size) {
       glm::dvec2 guess(0.0);
       for (int i = 0; i <= nx; ++i) {
         const glm::dvec2 out(width * static_cast<double>(i) / nx, height * static_cast<double>(j) / ny);
-        const glm::dvec2 truth = undistortOrThrow(camera, Channel::Green, normalised(out), i == 0 ? normalised(out) : guess);
+        const glm::dvec2 truth = undistortNormalised(Channel::Green, normalised(out), i == 0 ? normalised(out) : guess);
         guess = truth;
         // The forward table's texel: its centre's image and central differences over one texel.
         const glm::dvec2 q = pixel(truth);
@@ -184,8 +173,10 @@ double forwardLinearisationErrorPx(const Camera& camera, ImageSize size) {
   return scale * *std::max_element(worstPerRow.begin(), worstPerRow.end());
 }
 
-void validateForwardLinearisation(const Camera& camera, ImageSize size) {
-  const double errorPx = forwardLinearisationErrorPx(camera, size);
+void ThinLensMap::validateForwardLinearisation() const {
+  const Camera& camera = camera_;
+  const ImageSize size = size_;
+  const double errorPx = forwardLinearisationErrorPx();
   if (errorPx <= kMaxForwardLinearisationErrorPx) return;
   const Distortion& d = camera.effects.distortion;
   std::string coefficients;
@@ -201,19 +192,19 @@ void validateForwardLinearisation(const Camera& camera, ImageSize size) {
                        "about --width ", widthFor, " or more, use weaker coefficients, or lenslab raycast (exact per ray)"));
 }
 
-Overscan overscanFor(const Camera& camera, ImageSize size) {
-  Overscan o{camera, size, {0, 0}};
-  if (!camera.effects.needsRemap()) return o;
+ThinLensMap ThinLensMap::overscanned() const {
+  const Camera& camera = camera_;
+  Overscan o{camera, size_, {0, 0}};
+  if (!camera.effects.needsRemap()) return ThinLensMap(camera, size_, std::move(o));
   const Window& w = camera.view.window;
-  const int width = size.widthPx, height = size.heightPx;
+  const int width = size_.widthPx, height = size_.heightPx;
   // The output image's border maps to the border of the region it shows (no fold inside), so the
   // border's true positions bound everything the post pass samples.
   glm::dvec2 lo(0.0), hi(width, height);
   const auto visit = [&](glm::dvec2 pixel) {
     for (const Channel c : remappedChannels(camera.effects)) {
-      const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, width, height));
-      const glm::dvec2 truth = undistortOrThrow(camera, c, distorted, distorted);
-      const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height);
+      const glm::dvec2 distorted = normalisedFromPixel(pixel);
+      const glm::dvec2 p = pixelFromNormalised(undistortNormalised(c, distorted, distorted));
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
@@ -238,13 +229,12 @@ Overscan overscanFor(const Camera& camera, ImageSize size) {
   ow.umax += o.padPx.x * pitch.x;
   ow.vmin -= o.padPx.y * pitch.y;
   ow.vmax += o.padPx.y * pitch.y;
-  return o;
+  return ThinLensMap(camera, size_, std::move(o));
 }
 
-void fillRemapRows(const Camera& camera, ImageSize size, const Overscan& overscan, Channel c, int firstRow, int lastRow,
-                   glm::vec2* out) {
-  const Window& w = camera.view.window;
-  const int width = size.widthPx, height = size.heightPx;
+void ThinLensMap::fillRemapRows(Channel c, int firstRow, int lastRow, glm::vec2* out) const {
+  const Overscan& overscan = overscan_;
+  const int width = size_.widthPx, height = size_.heightPx;
   const glm::dvec2 inner(overscan.size.widthPx, overscan.size.heightPx);
   const glm::dvec2 pad(overscan.padPx);
   // Rows are independent: bands on every core (a 4K table is 8 million Newton solves).
@@ -254,11 +244,11 @@ void fillRemapRows(const Camera& camera, ImageSize size, const Overscan& oversca
       const int y = height - 1 - row;  // GL rows run up, image rows down
       glm::dvec2 guess(0.0);
       for (int x = 0; x < width; ++x) {
-        const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, {x + 0.5, y + 0.5}, width, height));
+        const glm::dvec2 distorted = normalisedFromPixel({x + 0.5, y + 0.5});
         // Neighbouring pixels' solutions are close: start from the previous one.
-        const glm::dvec2 truth = undistortOrThrow(camera, c, distorted, x == 0 ? distorted : guess);
+        const glm::dvec2 truth = undistortNormalised(c, distorted, x == 0 ? distorted : guess);
         guess = truth;
-        const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, truth), width, height) + pad;
+        const glm::dvec2 p = pixelFromNormalised(truth) + pad;
         out[static_cast<std::size_t>(band) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
             glm::vec2(p.x / inner.x, 1.0 - p.y / inner.y);
       }
@@ -266,16 +256,16 @@ void fillRemapRows(const Camera& camera, ImageSize size, const Overscan& oversca
   });
 }
 
-RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
-  RemapTable table{size, {}};
-  const int width = size.widthPx, height = size.heightPx;
-  const std::vector<Channel> channels = remappedChannels(camera.effects);
+RemapTable ThinLensMap::remapTable(const RowProgress& progress) const {
+  RemapTable table{size_, {}};
+  const int width = size_.widthPx, height = size_.heightPx;
+  const std::vector<Channel> channels = remappedChannels(camera_.effects);
   const int rows = static_cast<int>(channels.size()) * height;
   for (const Channel c : channels) {
     std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     const int done = static_cast<int>(table.channels.size()) * height;
     forEachSlice(height, [&](int first, int last) {
-      fillRemapRows(camera, size, overscan, c, first, last, &map[static_cast<std::size_t>(first) * static_cast<std::size_t>(width)]);
+      fillRemapRows(c, first, last, &map[static_cast<std::size_t>(first) * static_cast<std::size_t>(width)]);
       if (progress) progress(done + last, rows);
     }, progress ? 0 : height);
     table.channels.push_back(std::move(map));
@@ -283,16 +273,12 @@ RemapTable makeRemapTable(const Camera& camera, ImageSize size, const Overscan& 
   return table;
 }
 
-double fillForwardRows(const Camera& camera, ImageSize size, const Overscan& overscan, int firstRow, int lastRow,
-                       glm::vec4* position, glm::vec4* jacobian) {
-  const int width = size.widthPx, height = size.heightPx;
-  const int viewWidth = overscan.size.widthPx, viewHeight = overscan.size.heightPx;
-  const Window& w = camera.view.window;
-  const Window& ow = overscan.camera.view.window;
+double ThinLensMap::fillForwardRows(int firstRow, int lastRow, glm::vec4* position, glm::vec4* jacobian) const {
+  const int width = size_.widthPx, height = size_.heightPx;
+  const int viewWidth = overscan_.size.widthPx, viewHeight = overscan_.size.heightPx;
   // View position (GL) → normalised → green's distorted position → output position (GL).
   const auto forward = [&](glm::dvec2 q) {
-    const glm::dvec2 n = normalisedFromWindow(overscan.camera.view, windowFromPixel(ow, {q.x, viewHeight - q.y}, viewWidth, viewHeight));
-    const glm::dvec2 p = pixelFromWindow(w, windowFromNormalised(camera.view, camera.effects.distortChannel(Channel::Green, n)), width, height);
+    const glm::dvec2 p = outputFromRenderPixel({q.x, viewHeight - q.y});
     return glm::dvec2(p.x, height - p.y);
   };
   std::vector<double> halfExtent(static_cast<std::size_t>(lastRow - firstRow), 0.0);  // per row, then the largest
@@ -322,58 +308,35 @@ double fillForwardRows(const Camera& camera, ImageSize size, const Overscan& ove
   return halfExtent.empty() ? 0.0 : *std::max_element(halfExtent.begin(), halfExtent.end());
 }
 
-double forwardReachPx(const Camera& camera, double largestHalfExtentPx) {
+double ThinLensMap::forwardReachPx(double largestHalfExtentPx) const {
+  const Camera& camera = camera_;
   // Red and blue are green's image magnified by (1 + lateral): their pre-images are smaller or
   // larger by that factor.
   const double smallestScale = std::min({1.0, 1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue});
   return largestHalfExtentPx * 1.01 / smallestScale + 1.0;
 }
 
-glm::dvec2 forwardPrincipalPointPx(const Camera& camera, ImageSize size) {
-  const glm::dvec2 principal = pixelFromWindow(camera.view.window, windowFromNormalised(camera.view, {0.0, 0.0}), size.widthPx, size.heightPx);
-  return {principal.x, size.heightPx - principal.y};
+glm::dvec2 ThinLensMap::forwardPrincipalPointPx() const {
+  const glm::dvec2 principal = pixelFromNormalised({0.0, 0.0});
+  return {principal.x, size_.heightPx - principal.y};
 }
 
-ForwardTable makeForwardTable(const Camera& camera, ImageSize size, const Overscan& overscan, const RowProgress& progress) {
+ForwardTable ThinLensMap::forwardTable(const RowProgress& progress) const {
   ForwardTable table;
-  table.size = overscan.size;
-  const int viewWidth = overscan.size.widthPx, viewHeight = overscan.size.heightPx;
+  table.size = overscan_.size;
+  const int viewWidth = overscan_.size.widthPx, viewHeight = overscan_.size.heightPx;
   const std::size_t texels = static_cast<std::size_t>(viewWidth) * static_cast<std::size_t>(viewHeight);
   table.position.resize(texels);
   table.jacobian.resize(texels);
   double halfExtent = 0.0;
   forEachSlice(viewHeight, [&](int first, int last) {
     const std::size_t at = static_cast<std::size_t>(first) * static_cast<std::size_t>(viewWidth);
-    halfExtent = std::max(halfExtent, fillForwardRows(camera, size, overscan, first, last, &table.position[at], &table.jacobian[at]));
+    halfExtent = std::max(halfExtent, fillForwardRows(first, last, &table.position[at], &table.jacobian[at]));
     if (progress) progress(last, viewHeight);
   }, progress ? 0 : viewHeight);
-  table.reachPx = forwardReachPx(camera, halfExtent);
-  table.principalPointPx = forwardPrincipalPointPx(camera, size);
+  table.reachPx = forwardReachPx(halfExtent);
+  table.principalPointPx = forwardPrincipalPointPx();
   return table;
-}
-
-namespace {
-
-ChannelSample undistortedFrom(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size,
-                              const std::optional<glm::dvec2>& guess) {
-  const Window& w = camera.view.window;
-  const glm::dvec2 distorted = normalisedFromWindow(camera.view, windowFromPixel(w, pixel, size.widthPx, size.heightPx));
-  ChannelSample s;
-  s.normalised = camera.effects.needsRemap() ? undistortOrThrow(camera, c, distorted, guess.value_or(distorted))
-                                             : distorted;
-  s.pixel = pixelFromWindow(w, windowFromNormalised(camera.view, s.normalised), size.widthPx, size.heightPx);
-  s.inverseFocusShift = camera.effects.inverseFocusShift(c, s.normalised);
-  return s;
-}
-
-}  // namespace
-
-ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size, glm::dvec2 guess) {
-  return undistortedFrom(camera, c, pixel, size, guess);
-}
-
-ChannelSample undistortedSample(const Camera& camera, Channel c, glm::dvec2 pixel, ImageSize size) {
-  return undistortedFrom(camera, c, pixel, size, std::nullopt);
 }
 
 }  // namespace lenslab

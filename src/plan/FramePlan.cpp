@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace lenslab {
@@ -55,6 +56,13 @@ PlanView planViewOf(const Camera& camera) {
 FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options,
                         const VisibleBlur* visible) {
   FramePlan plan;
+  // The frame's image map: built once, overscanned for the lens pass once it is needed.
+  const ThinLensMap map(camera, size);
+  std::optional<ThinLensMap> overscanned;
+  const auto renderMap = [&]() -> const ThinLensMap& {
+    if (!overscanned) overscanned = map.overscanned();
+    return *overscanned;
+  };
   plan.pattern = options.pattern;
   plan.seed = options.seed;
   const std::size_t triangles = scene.triangleCount();
@@ -130,7 +138,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
       // An effect may need more views however sharp the scene is (the barrel's cat's eye). With
       // distortion the barrel clips at the undistorted field, which the overscan's window holds.
       const EffectNeeds least =
-          effectNeeds(lensOf(camera), planViewOf(camera.effects.needsRemap() ? overscanFor(camera, size).camera : camera));
+          effectNeeds(lensOf(camera), planViewOf(renderMap().overscan().camera));
       if (plan.apertureSamples < std::min(least.minApertureSamples, options.maxSamples)) {
         plan.apertureSamples = std::min(least.minApertureSamples, options.maxSamples);
         plan.samplesWhy = cat(plan.apertureSamples, ": ", least.minSamplesWhy, " (", range, ")");
@@ -178,8 +186,8 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   }
   plan.remap = !needs.lensVariants.empty();
   plan.remapTables = needs.remapTables;
-  if (plan.remap) validateForwardLinearisation(camera, size);
-  plan.overscan = overscanFor(camera, size);
+  if (plan.remap) map.validateForwardLinearisation();
+  plan.overscan = renderMap().overscan();
   const ImageSize rendered = plan.overscan.size;
   const std::string where = plan.remap ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,
                                              "+", plan.overscan.padPx.y, " px overscan for the lens pass)")

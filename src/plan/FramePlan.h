@@ -13,6 +13,7 @@
 // The last two change nothing through a pinhole, and are left out for one.
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "lens/AperturePattern.h"
 #include "plan/VisibleBlur.h"

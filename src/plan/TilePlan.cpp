@@ -1,5 +1,6 @@
 #include "plan/TilePlan.h"
 
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -45,17 +46,16 @@ PixelRect quadAligned(PixelRect r, const PixelRect& frame) {
 // The pixels of the true perspective image that pixels `rect` of the distorted image show, for
 // every remapped channel: the bounding box of the pre-image of the rect's border under the inverse
 // lens model (validateLensEffects rules out folds, so the border's pre-image bounds the inside's),
-// on the full image's pixel grid, plus the gather's footprint (overscanFor's 2 pixels and 2 more,
-// as the gather's reach grows where the lens magnifies), and the rect itself. Unlike overscanFor's
+// on the full image's pixel grid, plus the gather's footprint (ThinLensMap::overscanned's 2 pixels and 2 more,
+// as the gather's reach grows where the lens magnifies), and the rect itself. Unlike overscanned()'s
 // symmetric padding, a corner tile's margin lies on the side the lens pulls from.
-PixelRect preImage(const Camera& camera, ImageSize size, const PixelRect& rect) {
+PixelRect preImage(const ThinLensMap& map, const PixelRect& rect) {
   constexpr int kFootprintPx = 4;
-  std::vector<Channel> channels{Channel::Green};
-  if (camera.effects.chromatic.hasLateral()) channels = {Channel::Red, Channel::Green, Channel::Blue};
+  const std::vector<Channel> channels = remappedChannels(map.camera().effects);
   glm::dvec2 lo(rect.x0, rect.y0), hi(rect.x1, rect.y1);
   const auto visit = [&](glm::dvec2 pixel) {
     for (const Channel c : channels) {
-      const glm::dvec2 p = undistortedSample(camera, c, pixel, size).pixel;
+      const glm::dvec2 p = map.undistorted(c, pixel).pixel;
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
@@ -88,12 +88,13 @@ std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& 
   const PixelRect frame = fullRender(size, plan);
   const double shift = curvatureShiftPx(camera, size, plan);
   const int curvature = shift > 0.0 ? static_cast<int>(std::ceil(shift)) + 2 : 0;  // + the Catmull–Rom taps
+  const ThinLensMap map(camera, size);
   std::vector<Tile> tiles;
   for (int y0 = 0; y0 < size.heightPx; y0 += tileHeight)
     for (int x0 = 0; x0 < size.widthPx; x0 += tileWidth) {
       const PixelRect rect{x0, y0, std::min(x0 + tileWidth, size.widthPx), std::min(y0 + tileHeight, size.heightPx)};
       // With the lens pass: the tile's pre-image (where its pixels' samples come from), else the tile.
-      const PixelRect source = plan.remap ? preImage(camera, size, rect) : rect;
+      const PixelRect source = plan.remap ? preImage(map, rect) : rect;
       const Tile tile{rect, quadAligned(intersect(grown(source, curvature, curvature), frame), frame)};
       if (!fits(plan, tile, limits, memory)) return {};
       tiles.push_back(tile);

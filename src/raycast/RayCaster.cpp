@@ -1,26 +1,24 @@
 #include "raycast/RayCaster.h"
 
-#include "camera/LensMap.h"
-
+#include "camera/ImageMap.h"
 #include "camera/Projection.h"
 #include "camera/Ray.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "lens/AperturePattern.h"
+#include "raycast/AovRender.h"
+#include "raycast/EmbreeScene.h"
+#include "raycast/RenderLoop.h"
 #include "raycast/SurfaceInputs.h"
 #include "raycast/TextureSampler.h"
 #include "scene/ShadingLights.h"
 
 #include <embree3/rtcore.h>
 #include <limits>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,128 +37,10 @@ constexpr float kAovAlphaThreshold = 0.5f;
 
 }  // namespace
 
-struct RayCaster::Impl {
-  const Scene* scene = nullptr;
-  RTCDevice device = nullptr;
-  RTCScene rtcScene = nullptr;
-  struct Geometry {
-    int instance;
-    const float* relativePositions;  // Embree's vertex buffer: 3 floats per vertex, (world − origin) / scale
-    glm::mat3 normalFromModel;
-    bool mirrored;
-    glm::mat3 tangentFromModel;  // worldFromModel's linear part, scaled to its largest entry (scene.vert)
-  };
-  std::vector<Geometry> geometries;           // by Embree geometry ID
+struct RayCaster::Impl : EmbreeScene {
+  using EmbreeScene::EmbreeScene;
   std::vector<TextureSampler> samplers;       // by Scene texture index
-  std::vector<ShadingLight> lights;           // positions relative to `origin` (rebase)
   std::vector<TextureSampler> dataSamplers;   // the same, for textures read as data (linear); empty where none is
-  // Embree works in float. Its geometry is stored relative to `origin` (the point of the scene's
-  // bounds nearest the camera's lens centre, subtracted in double), and each ray starts where it
-  // enters the bounds: a scene 1e7 from the world origin, or a telephoto's subject 1e9 from the
-  // camera, keeps the precision it has at the origin, float's relative error applying to sizes
-  // within the scene and not to its distance from (0,0,0) or from the camera.
-  glm::dvec3 origin{std::numeric_limits<double>::quiet_NaN()};
-  // ... and in units of `scale` world units, a power of two near the scene's size, so that a scene
-  // of 1e-12 or 1e-30 metres reaches Embree at the size of a metre: Embree runs with denormals
-  // flushed to zero, and its triangle test multiplies edge by edge by edge (a 1e-13 scene already
-  // underflows there). Scaling by a power of two rounds nothing; t values scale by it as well.
-  double scale = 1.0;
-  std::mutex rebaseMutex;
-
-  ~Impl() {
-    release();
-    if (device) rtcReleaseDevice(device);
-  }
-
-  void release() {
-    if (rtcScene) rtcReleaseScene(rtcScene);
-    rtcScene = nullptr;
-  }
-
-  // (Re)builds the Embree scene with its geometry relative to `newOrigin`, unless it already is.
-  void rebase(const glm::dvec3& newOrigin) {
-    const std::lock_guard lock(rebaseMutex);
-    if (rtcScene && newOrigin == origin) return;
-    release();
-    geometries.clear();
-    origin = newOrigin;
-    lights = shadingLights(*scene, origin);
-    const double size = scene->bounds.empty() ? 0.0 : glm::length(scene->bounds.max - scene->bounds.min);
-    scale = std::isfinite(size) && size > 0.0 ? std::exp2(std::round(std::log2(size))) : 1.0;
-    rtcScene = rtcNewScene(device);
-    rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
-    for (std::size_t k = 0; k < scene->instances.size(); ++k) {
-      const Instance& instance = scene->instances[k];
-      const Mesh& mesh = scene->meshes[static_cast<std::size_t>(instance.mesh)];
-      RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                   3 * sizeof(float), mesh.vertices.size()));
-      for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const glm::dvec3 p = (glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin) / scale;
-        positions[i * 3] = static_cast<float>(p.x);
-        positions[i * 3 + 1] = static_cast<float>(p.y);
-        positions[i * 3 + 2] = static_cast<float>(p.z);
-      }
-      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                    3 * sizeof(unsigned), mesh.indices.size() / 3));
-      std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
-      rtcCommitGeometry(geometry);
-      const unsigned id = rtcAttachGeometry(rtcScene, geometry);
-      rtcReleaseGeometry(geometry);
-      const glm::dmat3 linear(instance.worldFromModel);
-      if (id != geometries.size()) throw std::logic_error("Embree geometry IDs are not sequential");
-      double largest = 0.0;
-      for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(linear[c][r]));
-      const glm::mat3 tangentFromModel(largest > 0.0 && std::isfinite(largest) ? linear * (1.0 / largest) : linear);
-      geometries.push_back({static_cast<int>(k), positions, glm::mat3(worldNormalFromModel(instance.worldFromModel)),
-                            glm::determinant(linear) < 0.0, tangentFromModel});
-    }
-    rtcCommitScene(rtcScene);
-  }
-
-  // The origin the geometry is kept relative to for `camera`: the point of the bounds nearest its
-  // lens centre (the lens centre itself when it is inside them).
-  glm::dvec3 originFor(const Camera& camera, ImageSize size) const {
-    const glm::dvec3 lensCentre = lensRay(camera, {0.0, 0.0}, {0.5 * size.widthPx, 0.5 * size.heightPx}, size).origin;
-    if (!finite(lensCentre))
-      throw InputError(cat(camera.source, ": the camera's lens centre is not a finite point; check its VRP, VPN and PRP"));
-    return scene->bounds.empty() ? lensCentre : glm::clamp(lensCentre, scene->bounds.min, scene->bounds.max);
-  }
-
-  static bool finite(const glm::dvec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
-
-  // Embree's RayK::valid(), which it asserts before tracing.
-  static bool embreeTakes(const RTCRay& r) {
-    constexpr float kLarge = 1.8e18f;  // Embree's FLT_LARGE is 1.844e18
-    for (const float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z})
-      if (!(std::abs(v) <= kLarge)) return false;
-    return r.tnear >= 0.0f && r.tnear <= r.tfar;
-  }
-
-  static InputError unfiniteRay(const Camera& camera, glm::dvec2 pixel) {
-    return InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",", pixel.y,
-                          "; check its window, PRP, focus and lens effects"));
-  }
-
-  // [enter, exit] of `ray` (relative to `origin`) through the scene's bounds, widened by a margin
-  // so that a surface on a face of the box is never missed; empty (enter > exit) on a miss.
-  std::pair<double, double> boundsSpan(const Ray& ray) const {
-    const glm::dvec3 lo = scene->bounds.min - origin, hi = scene->bounds.max - origin;
-    const double pad = 1e-4 * glm::length(hi - lo) + 1e-6 * glm::length(glm::abs(lo) + glm::abs(hi)) + 1e-30;
-    double enter = -std::numeric_limits<double>::infinity(), exit = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3; ++a) {
-      const double o = ray.origin[a], d = ray.direction[a];
-      if (d == 0.0) {
-        if (o < lo[a] - pad || o > hi[a] + pad) return {1.0, 0.0};
-        continue;
-      }
-      const double t0 = (lo[a] - pad - o) / d, t1 = (hi[a] + pad - o) / d;
-      enter = std::max(enter, std::min(t0, t1));
-      exit = std::min(exit, std::max(t0, t1));
-    }
-    return {enter, exit};
-  }
 
   struct Hit {
     glm::vec3 color{0.0f};
@@ -374,18 +254,8 @@ struct RayCaster::Impl {
   }
 };
 
-RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {
   Impl& m = *impl_;
-  m.scene = &scene;
-  // LENSLAB_EMBREE_CONFIG is passed to Embree as its device configuration ("isa=sse2",
-  // "isa=avx", "verbose=1", ...): it forces another SIMD path for the ray caster, so a test can show
-  // that its figures do not hang on the ISA this CPU picks (docs/stability.md).
-  const char* config = std::getenv("LENSLAB_EMBREE_CONFIG");
-  m.device = rtcNewDevice(config && *config ? config : nullptr);
-  if (!m.device && config && *config)
-    throw InputError(cat("LENSLAB_EMBREE_CONFIG: Embree refused the device configuration \"", config,
-                         "\"; valid is an Embree config string such as isa=sse2, isa=sse4.2, isa=avx, isa=avx2 or verbose=1"));
-  if (!m.device) throw std::runtime_error("Embree: could not create a device");
   // The Embree scene is built on first use, relative to that camera (rebase): building it here too
   // would build it twice for every render.
   // Mip chains where the GPU makes them: any sampler of the image minifies with mipmaps.
@@ -425,193 +295,54 @@ std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) c
   return aovImages(camera, size, depth).depth;
 }
 
-AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const {
-  AovImages out;
-  out.widthPx = size.widthPx;
-  out.heightPx = size.heightPx;
-  const auto pixels = static_cast<std::size_t>(size.pixelCount());
-  if (selection.depth) out.depth.resize(pixels);
-  if (selection.normal) out.normal.resize(3 * pixels);
-  if (selection.albedo) out.albedo.resize(3 * pixels);
-  if (selection.instance) {
-    out.instance.resize(pixels);
-    // Float holds every integer to 2^24 exactly, and skips odd ones beyond.
-    for (const Instance& instance : impl_->scene->instances)
-      if (instance.gltfNode > kMaxExactInstance)
-        throw InputError(cat(impl_->scene->source, ": node ", instance.gltfNode, " has an index beyond 2^24 = ",
-                             kMaxExactInstance, ", the largest the float instance AOV holds exactly"));
-  }
-  impl_->rebase(impl_->originFor(camera, size));
-  const Impl& m = *impl_;
-  const ViewBasis basis = viewBasis(camera.view);
-  const glm::dvec3 axis = -basis.n;
-  const bool lensEffects = !camera.effects.isZero();
-  Camera focused = camera;
-  focused.effects = {};
-  tbb::parallel_for(tbb::blocked_range<int>(0, size.heightPx), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = 0; x < size.widthPx; ++x) {
-        glm::dvec2 pixel(x + 0.5, y + 0.5);
-        if (lensEffects) pixel = undistortedSample(camera, Channel::Green, pixel, size).pixel;
-        const Impl::Hit hit = m.shadeAlong(focused, {0.0, 0.0}, pixel, size, 1.0);
-        const std::size_t i = static_cast<std::size_t>(y) * size.widthPx + x;
-        if (selection.depth)
-          out.depth[i] = std::isinf(hit.t) ? std::numeric_limits<float>::infinity()
-                                           : static_cast<float>(glm::dot(hit.t * hit.ray.direction, axis));
-        if (selection.normal && hit.surface) {
-          // Camera space: the world normal's components along u, v and n.
-          const glm::dvec3 n(hit.normal);
-          const glm::dvec3 cameraNormal(glm::dot(n, basis.u), glm::dot(n, basis.v), glm::dot(n, basis.n));
-          for (int k = 0; k < 3; ++k) out.normal[3 * i + k] = static_cast<float>(cameraNormal[k]);
-        }
-        if (selection.albedo && hit.surface)
-          for (int k = 0; k < 3; ++k) out.albedo[3 * i + k] = hit.albedo[k];
-        if (selection.instance)
-          out.instance[i] = hit.surface ? static_cast<float>(hit.gltfNode) : kNoSurfaceInstance;
-      }
-  });
-  return out;
-}
-
 namespace {
 
-// Rows in bands of 16, each band's rows spread over the cores by TBB; `progress` between bands,
-// from the calling thread.
-template <class Rows>
-void inBands(ImageSize size, const std::function<void(int, int)>& progress, const Rows& rows) {
-  constexpr int kBand = 16;
-  for (int band = 0; band < size.heightPx; band += kBand) {
-    const int end = std::min(band + kBand, size.heightPx);
-    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& r) { rows(r.begin(), r.end()); });
-    if (progress) progress(end, size.heightPx);
-  }
-}
-
-// The vignetting gain of image pixel position `pixel` (continuous, origin top left).
-double vignettingGainAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) {
-  const glm::dvec2 n = normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx));
-  return camera.effects.vignetting.gain(glm::dot(n, n));
-}
-
-// A different stratified set per pixel, so that the noise does not repeat across pixels.
-std::uint32_t pixelSeed(std::uint32_t seed, int x, int y, int widthPx) {
-  return seed * 2654435761u ^ static_cast<std::uint32_t>(std::int64_t{y} * widthPx + x) * 40503u;
+// What the ray of `map` through film point `pixel` from the lens centre (green's) sees first: the
+// AOVs' surface, textures over one pixel. (A template: the caster's Impl is private to RayCaster.)
+template <class Impl>
+auto firstHit(const Impl& m, const ImageMap& map, glm::dvec2 pixel) {
+  using Hit = typename Impl::Hit;
+  const std::optional<CameraRay> r = map.ray(pixel, {0.0, 0.0}, 1);
+  Ray ray = r ? r->ray : Ray{};
+  ray.origin -= m.origin;
+  if (!r || r->blocked) return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
+  const auto rayAt = [&](glm::dvec2 offset) {
+    Ray n = map.footprintRay(*r, offset);
+    n.origin -= m.origin;
+    return n;
+  };
+  return m.shadeRay(ray, rayAt, 1.0, map.camera(), r->pixel);
 }
 
 }  // namespace
 
-Image RayCaster::render(const Camera& camera, ImageSize size, const RaycastOptions& options,
-                        const std::function<void(int, int)>& progress) const {
-  Image image(size.widthPx, size.heightPx);
-  const int spp = std::max(1, options.samplesPerPixel);
+AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const {
+  if (selection.instance) requireExactInstances(*impl_->scene);
   impl_->rebase(impl_->originFor(camera, size));
   const Impl& m = *impl_;
-  // The samples' pixel positions are stratified, one stratum of 1/√spp × 1/√spp pixels each: that
-  // is the area a sample stands for, so its texture lookups filter over that and no more.
-  const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
-  // Vignetting alone moves no ray: the plain path casts them, and the gain follows the mean.
-  const bool vignetting = !camera.effects.vignetting.isZero();
-  LensEffects rayEffects = camera.effects;
-  rayEffects.vignetting = {};
-  const bool lensEffects = !rayEffects.isZero();
-  // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
-  const int channels = camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1;
-  inBands(size, progress, [&](int yBegin, int yEnd) {
-    // The camera each channel's rays are cast with: the lens effects are applied here, per ray.
-    Camera focused = camera;
-    focused.effects = {};
-    focused.source.clear();
-    for (int y = yBegin; y < yEnd; ++y)
-      for (int x = 0; x < size.widthPx; ++x) {
-        const std::uint32_t seed = pixelSeed(options.seed, x, y, size.widthPx);
-        const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
-        glm::dvec3 sum(0.0);
-        double covered = 0.0;  // Σ coverage of the rays (Hit::coverage): alpha is the pixel's coverage
-        if (lensEffects) {
-          // Exactly, per sample: each channel's ray goes through the true perspective position
-          // that the inverse lens model gives for this sample's point of the distorted image,
-          // focused on that channel's (and that radius's) plane of focus.
-          glm::dvec2 guess[3];
-          for (int c = 0; c < channels; ++c)
-            guess[c] = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), {x + 0.5, y + 0.5}, size).normalised;
-          for (const LensSample& s : samples) {
-            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-            for (int c = 0; c < channels; ++c) {
-              const ChannelSample cs = undistortedSample(camera, static_cast<Channel>(channels == 3 ? c : 1), pixel, size, guess[c]);
-              const Impl::Hit hit =
-                  m.shadeAlong(focused, camera.lensOffset(s.lens), cs.pixel, size, footprintPx, cs.inverseFocusShift);
-              if (channels == 3) sum[c] += hit.color[c];
-              else sum += glm::dvec3(hit.color);
-              covered += static_cast<double>(hit.coverage) / channels;
-            }
-          }
-        } else {
-          for (const LensSample& s : samples) {
-            const glm::dvec2 pixel(x + 0.5 + s.pixel.x, y + 0.5 + s.pixel.y);
-            const Impl::Hit hit = m.shadeAlong(camera, camera.lensOffset(s.lens), pixel, size, footprintPx);
-            sum += glm::dvec3(hit.color);
-            covered += hit.coverage;
-          }
-        }
-        const double n = static_cast<double>(samples.size());
-        // Vignetting scales the pixel's light by the gain at its own place on the film (its
-        // centre, distorted coordinates: the output grid is the film), after the samples' mean.
-        const double gain = vignetting ? vignettingGainAt(camera, {x + 0.5, y + 0.5}, size) : 1.0;
-        image.set(x, y, glm::vec4(glm::vec3(gain * sum / n), static_cast<float>(covered / n)));
-      }
+  // Green's ray from the lens centre: through the inverse lens model, so depth lines up with the image.
+  const ThinLensMap map(camera, size);
+  const glm::dvec3 axis = -viewBasis(camera.view).n;
+  return aovImagesThrough(map, selection, [&](glm::dvec2 pixel) {
+    const Impl::Hit hit = firstHit(m, map, pixel);
+    const double depth = std::isinf(hit.t) ? hit.t : glm::dot(hit.t * hit.ray.direction, axis);
+    return AovSurface{hit.surface, depth, hit.normal, hit.albedo, hit.gltfNode};
   });
-  return image;
 }
 
-Image RayCaster::render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
-                        const std::function<void(int, int)>& progress) const {
-  Image image(size.widthPx, size.heightPx);
-  const int spp = std::max(1, options.samplesPerPixel);
-  impl_->rebase(impl_->originFor(camera, size));
+Image RayCaster::render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress) const {
+  impl_->rebase(impl_->originFor(map.camera(), map.size()));
   const Impl& m = *impl_;
-  const double footprintPx = 1.0 / std::sqrt(static_cast<double>(spp));
-  const int channels = lens.dispersion() ? 3 : 1;
-  const auto toRay = [&](const LensCamera::WorldRay& w) {
-    Ray r{w.origin - m.origin, w.direction, 0.0, std::numeric_limits<double>::infinity()};
-    return r;
+  const auto shade = [&](const Ray& ray, const auto& rayAt, double footprintPx, glm::dvec2 pixel) {
+    return m.shadeRay(ray, rayAt, footprintPx, map.camera(), pixel);
   };
-  inBands(size, progress, [&](int yBegin, int yEnd) {
-    for (int y = yBegin; y < yEnd; ++y)
-      for (int x = 0; x < size.widthPx; ++x) {
-        const std::uint32_t seed = pixelSeed(options.seed, x, y, size.widthPx);
-        // Pixel positions stratified as the thin lens's; pupil points from the R2 sequence with
-        // a random rotation per pixel (Cranley-Patterson): evenly spread over the pupil's box
-        // for any count, and unbiased.
-        const auto samples = makeApertureSamples(AperturePattern::Concentric, spp, seed);
-        const glm::dvec2 rotation = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
-        constexpr double kPlastic = 1.32471795724474602596;
-        const glm::dvec2 step(1.0 / kPlastic, 1.0 / (kPlastic * kPlastic));
-        glm::dvec3 sum(0.0);
-        double covered = 0.0, weights = 0.0;
-        for (std::size_t i = 0; i < samples.size(); ++i) {
-          const glm::dvec2 pixel(x + 0.5 + samples[i].pixel.x, y + 0.5 + samples[i].pixel.y);
-          const glm::dvec2 u = glm::fract(rotation + static_cast<double>(i + 1) * step);
-          for (int c = 0; c < channels; ++c) {
-            const int channel = channels == 3 ? c : 1;
-            const std::optional<LensCamera::WorldRay> w = lens.ray(pixel, size.widthPx, size.heightPx, u, channel);
-            if (!w) continue;  // stopped by a rim or the stop: no light, still a sample
-            const Ray ray = toRay(*w);
-            const auto rayAt = [&](glm::dvec2 offset) {
-              const std::optional<LensCamera::WorldRay> n = lens.ray(pixel + offset, size.widthPx, size.heightPx, u, channel);
-              return n ? toRay(*n) : ray;  // a neighbour the lens stops: no footprint that way
-            };
-            const Impl::Hit hit = m.shadeRay(ray, rayAt, footprintPx, camera, pixel);
-            if (channels == 3) sum[c] += w->weight * hit.color[c];
-            else sum += w->weight * glm::dvec3(hit.color);
-            covered += w->weight * hit.coverage / channels;
-            weights += w->weight / channels;
-          }
-        }
-        const double n = static_cast<double>(samples.size());
-        image.set(x, y, glm::vec4(glm::vec3(sum / n), static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
-      }
-  });
-  return image;
+  // The loop is compiled for each lens model the renderers have, so that its calls to the map are
+  // direct (per ray, and per texture lookup for the ray differentials); another map goes through
+  // the interface.
+  const auto cast = [&](const auto& concrete) { return renderThroughMap(concrete, options, progress, m.origin, shade); };
+  if (const auto* thin = dynamic_cast<const ThinLensMap*>(&map)) return cast(*thin);
+  if (const auto* real = dynamic_cast<const RealLensMap*>(&map)) return cast(*real);
+  return cast(map);
 }
 
 }  // namespace lenslab

@@ -1,12 +1,14 @@
 #pragma once
 // The CPU reference: the lecture's ray casting, "for each pixel, ray R from PRP toward
 // VRP + u·udir + v·vdir; P = Intersect(R, World); Image[u, v] = Color(P)", through the thin lens
-// ("rays from every lens surface point toward the in-focus point, averaged"). It uses the same
-// Camera (lensRay), the same Scene and the same shading as the rasterizer, so any difference
-// between the two images is the rasterizer's method error. Surfaces of alphaMode BLEND are
-// composited along each ray, front to back, exactly per ray (shadeAlong; docs/materials.md). Embree finds the hits; TBB spreads
-// rows over the cores.
+// ("rays from every lens surface point toward the in-focus point, averaged"). It asks the same
+// image map as the rasterizer for its rays (camera/ImageMap.h), and uses the same Scene and the
+// same shading, so any difference between the two images is the rasterizer's method error.
+// Surfaces of alphaMode BLEND are composited along each ray, front to back, exactly per ray
+// (shadeAlong; docs/materials.md). Embree finds the hits (raycast/EmbreeScene.h); one loop casts
+// every lens's rays, TBB spreading rows over the cores (raycast/RenderLoop.h).
 #include "camera/Camera.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "core/Aovs.h"
 #include "core/Image.h"
@@ -37,7 +39,15 @@ class RayCaster {
 
   // `progress(rowsDone, rows)` is called from the calling thread between bands of rows.
   Image render(const Camera& camera, ImageSize size, const RaycastOptions& options,
-               const std::function<void(int, int)>& progress = {}) const;
+               const std::function<void(int, int)>& progress = {}) const {
+    return render(ThinLensMap(camera, size), options, progress);
+  }
+
+  // The one ray-casting loop, for every lens (raycast/RenderLoop.h): each pixel's stratified
+  // samples (pixel position × lens point, in the map's lens domain), each channel's ray asked of the
+  // map, shaded, weighted by the ray's weight, averaged, times the map's gain at the pixel. The
+  // thin-lens and real-lens overloads build their map and call it.
+  Image render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress = {}) const;
 
   // The reference image through a real lens (lens/LensCamera, `raycast --lens`): each sample is a
   // film point in the pixel and a point of the exit pupil seen from it, traced through every
@@ -46,7 +56,9 @@ class RayCaster {
   // `camera` is the one the lens camera was placed from: it sets where the scene's geometry is
   // kept relative to, and names messages.
   Image render(const LensCamera& lens, const Camera& camera, ImageSize size, const RaycastOptions& options,
-               const std::function<void(int, int)>& progress = {}) const;
+               const std::function<void(int, int)>& progress = {}) const {
+    return render(RealLensMap(lens, camera, size), options, progress);
+  }
 
   // The shaded colour seen along one ray through continuous pixel position `pixel` from aperture
   // offset `lensOffset` (linear RGB; the background where nothing is hit). Textures are filtered

@@ -1,5 +1,6 @@
 #include "render/LensPass.h"
 
+#include "camera/LensMap.h"
 #include "gl/Shader.h"
 
 #include <tbb/task_arena.h>
@@ -14,7 +15,10 @@ namespace {
 
 // What the tables depend on. The window enters in normalised coordinates, so moving the camera or
 // refocusing it (which scales the window with PRP.n) keeps the tables.
-std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& overscan) {
+std::vector<double> keyOf(const ThinLensMap& map) {
+  const Camera& camera = map.camera();
+  const ImageSize size = map.size();
+  const Overscan& overscan = map.overscan();
   const LensEffects& e = camera.effects;
   const Distortion& d = e.distortion;
   const NormalisedRect n = normalisedWindow(camera.view);
@@ -30,9 +34,10 @@ std::vector<double> keyOf(const Camera& camera, ImageSize size, const Overscan& 
 LensPass::LensPass()
     : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")) {}
 
-void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& overscan, bool forGather,
-                       const TableProgress& progress) {
-  std::vector<double> key = keyOf(camera, size, overscan);
+void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgress& progress) {
+  const Camera& camera = map.camera();
+  const ImageSize size = map.size();
+  std::vector<double> key = keyOf(map);
   const auto texture = [](GLenum format, ImageSize at) {
     gl::Texture t = gl::Texture::create();
     glTextureStorage2D(t.id(), 1, format, at.widthPx, at.heightPx);
@@ -56,7 +61,7 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
       gl::Texture t = texture(GL_RG32F, size);
       for (int first = 0; first < size.heightPx; first += band) {
         const int last = std::min(size.heightPx, first + band);
-        fillRemapRows(camera, size, overscan, channels[c], first, last, rows.data());
+        map.fillRemapRows(channels[c], first, last, rows.data());
         glTextureSubImage2D(t.id(), 0, 0, first, size.widthPx, last - first, GL_RG, GL_FLOAT, rows.data());
         if (progress) progress("inverse", static_cast<int>(c) * size.heightPx + last, total);
       }
@@ -77,7 +82,7 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
   // The forward tables serve only the per-view gather: a single view (apply) never reads them,
   // and at 20000 px they cost more than the render.
   if (forGather && !forwardPosition_) {
-    const ImageSize at = overscan.size;
+    const ImageSize at = map.overscan().size;
     forwardPosition_ = texture(GL_RGBA32F, at);
     forwardJacobian_ = texture(GL_RGBA32F, at);
     const std::size_t bandTexels = static_cast<std::size_t>(at.widthPx) * static_cast<std::size_t>(std::min(band, at.heightPx));
@@ -85,15 +90,15 @@ void LensPass::prepare(const Camera& camera, ImageSize size, const Overscan& ove
     double halfExtent = 0.0;
     for (int first = 0; first < at.heightPx; first += band) {
       const int last = std::min(at.heightPx, first + band);
-      halfExtent = std::max(halfExtent, fillForwardRows(camera, size, overscan, first, last, position.data(), jacobian.data()));
+      halfExtent = std::max(halfExtent, map.fillForwardRows(first, last, position.data(), jacobian.data()));
       glTextureSubImage2D(forwardPosition_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT, position.data());
       glTextureSubImage2D(forwardJacobian_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT, jacobian.data());
       if (progress) progress("forward", last, at.heightPx);
     }
     gather_.forwardPosition = forwardPosition_.id();
     gather_.forwardJacobian = forwardJacobian_.id();
-    gather_.reachPx = static_cast<float>(forwardReachPx(camera, halfExtent));
-    gather_.principalPointPx = glm::vec2(forwardPrincipalPointPx(camera, size));
+    gather_.reachPx = static_cast<float>(map.forwardReachPx(halfExtent));
+    gather_.principalPointPx = glm::vec2(map.forwardPrincipalPointPx());
   }
 }
 

@@ -8,6 +8,7 @@
 // colour applied to each overscanned view as it is summed into the output (a single view: remapped
 // afterwards by the lens pass). Vignetting, last: the finished image times its gain (VignettePass).
 #include "camera/Camera.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
 #include "gl/Framebuffer.h"
@@ -18,12 +19,14 @@
 #include "render/Accumulator.h"
 #include "render/GpuScene.h"
 #include "render/LensPass.h"
+#include "render/LensViews.h"
 #include "render/ScenePass.h"
 #include "render/VignettePass.h"
 
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lenslab {
@@ -101,16 +104,8 @@ class Renderer {
     const std::vector<PixelBox>* boxes = nullptr;
   };
   void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
-  glm::dmat4 sampleClip(const LensSample& s, double inverseFocusShift) const;
   int regionOf(int tile) const;
   int mostSamples() const;  // the most samples any tile has
-  // The field-curvature warp's image coordinates for the views (Accumulator::Curvature), if the plan has one.
-  std::optional<Accumulator::Curvature> curvatureWarp() const;
-  // Normalised image coordinates of the views' GL pixel corner (0, 0) and their step per pixel
-  // (the mapping both the field-curvature warp and the barrel's mask take).
-  Accumulator::Curvature normalisedPixels() const;
-  // The barrel's per-pixel mask for the views (Accumulator::Barrel), if the camera has a barrel.
-  std::optional<Accumulator::Barrel> barrelMask() const;
   void beginAdaptive();
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);
@@ -128,12 +123,15 @@ class Renderer {
   std::unique_ptr<gl::RenderTarget> unvignetted_;  // the image before the vignetting pass, when it runs
   std::unique_ptr<VignettePass> vignettePass_;     // made on first use
 
+  // The camera the scene passes use: the map's render (overscanned when the lens pass runs).
+  const Camera& viewCamera() const { return views_->map().overscan().camera; }
+
   FramePlan plan_;
-  Camera camera_;      // the camera the scene passes use (overscanned when the lens pass runs)
-  Camera outCamera_;   // the output image's camera (a tile's own): the vignetting pass's pixel positions
-  std::array<double, 3> channelFocusShifts_{};  // inverse focus shifts of red, green, blue (axial colour)
-  ImageSize size_;     // the size they render at
-  ImageSize outSize_;  // the image's size
+  // The frame's views and its image map, built once by begin(): the output image's camera (a
+  // tile's own) and size, the render's, each view's clipFromWorld and the lens pass's tables.
+  std::optional<LensViews> views_;
+  ImageSize size_;     // the size the scene passes render at (the map's overscan().size)
+  ImageSize outSize_;  // the image's size (the map's size())
   std::vector<LensSample> samples_;
   int done_ = 0;
 

@@ -1,6 +1,6 @@
 #include "report/Sweep.h"
 
-#include "camera/LensMap.h"
+#include "camera/ImageMap.h"
 #include "camera/Projection.h"
 #include "core/Clock.h"
 #include "core/Error.h"
@@ -55,16 +55,13 @@ double medianOf3(const std::function<Image()>& frame, Image& image) {
 // pixel's true perspective position is, in the overscanned pinhole view (nearest pixel: the mask
 // only needs to find the edges).
 std::vector<bool> pinholeEdges(Renderer& renderer, const Camera& camera, ImageSize size) {
-  const Overscan overscan = overscanFor(camera, size);
+  const ThinLensMap map = ThinLensMap(camera, size).overscanned();
+  const Overscan& overscan = map.overscan();
   std::vector<float> zNdc = renderer.pinholeDepth(overscan.camera, overscan.size);
   std::vector<double> depth(static_cast<std::size_t>(size.widthPx) * static_cast<std::size_t>(size.heightPx));
   for (int y = 0; y < size.heightPx; ++y)
     for (int x = 0; x < size.widthPx; ++x) {
-      const glm::dvec2 centre(x + 0.5, y + 0.5);
-      glm::dvec2 p = centre;
-      if (camera.effects.needsRemap()) {
-        p = undistortedSample(camera, Channel::Green, centre, size).pixel + glm::dvec2(overscan.padPx);
-      }
+      const glm::dvec2 p = map.renderPixelFromOutput(glm::dvec2(x + 0.5, y + 0.5));
       const int px = std::clamp(static_cast<int>(p.x), 0, overscan.size.widthPx - 1);
       const int py = std::clamp(static_cast<int>(p.y), 0, overscan.size.heightPx - 1);
       depth[static_cast<std::size_t>(y * size.widthPx + x)] =

@@ -13,6 +13,7 @@
 //   BM_LensTables       building the lens pass's lookup tables (CPU, Newton), 3 channels
 // Run:  build/tests/lenslab_bench [--scene F --camera F --size WxH --views N] [--backend=egl]
 //       (bench_options.h; OSMesa by default), plus Google Benchmark's flags (--benchmark_filter=…)
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "gl/GlContext.h"
@@ -131,8 +132,8 @@ void BM_LensFrame(benchmark::State& state) {
 
 void BM_LensTables(benchmark::State& state) {
   const Camera camera = withEffects(fixture().camera, 2);
-  const Overscan overscan = overscanFor(camera, kSize);
-  for (auto _ : state) benchmark::DoNotOptimize(makeRemapTable(camera, kSize, overscan));
+  const ThinLensMap map = ThinLensMap(camera, kSize).overscanned();
+  for (auto _ : state) benchmark::DoNotOptimize(map.remapTable());
 }
 
 BENCHMARK(BM_LensFrame)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();

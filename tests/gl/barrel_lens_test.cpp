@@ -5,6 +5,7 @@
 // its undistorted field position, per colour channel, in both renderers: checked in closed form on
 // a wall in focus, and raster against ray cast on a scene with depth of field.
 #include "camera/Camera.h"
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Text.h"
@@ -89,12 +90,13 @@ TEST_P(CatsEyeThroughALens, APixelSeesTheOverlapAtItsUndistortedFieldPosition) {
   const auto shareAt = [&](glm::dvec2 n) {
     return roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, n, camera.inverseFocusDistance());
   };
+  const ThinLensMap lensMap(camera, size);
   double worstRaster = 0.0, worstRaycast = 0.0, cornerGap = 0.0;
   for (int y = 0; y < size.heightPx; ++y)
     for (int x = 0; x < size.widthPx; ++x)
       for (const Channel c : {Channel::Red, Channel::Green, Channel::Blue}) {
         const glm::dvec2 pixel(x + 0.5, y + 0.5);
-        const double share = shareAt(undistortedSample(camera, c, pixel, size).normalised);
+        const double share = shareAt(lensMap.undistorted(c, pixel).normalised);
         const int k = static_cast<int>(c);
         worstRaster = std::max(worstRaster, std::abs(static_cast<double>(raster.at(x, y)[k]) - share));
         worstRaycast = std::max(worstRaycast, std::abs(static_cast<double>(raycast.at(x, y)[k]) - share));
@@ -102,7 +104,7 @@ TEST_P(CatsEyeThroughALens, APixelSeesTheOverlapAtItsUndistortedFieldPosition) {
                                       glm::dvec2(camera.view.prp)) / camera.view.prp.z;
         cornerGap = std::max(cornerGap, std::abs(shareAt(distorted) - share));
       }
-  const double corner = shareAt(undistortedSample(camera, Channel::Green, {0.5, 0.5}, size).normalised);
+  const double corner = shareAt(lensMap.undistorted(Channel::Green, {0.5, 0.5}).normalised);
   std::printf("  %s: corner share %.3f; worst |image - overlap at the undistorted position| raster %.4f, ray cast %.4f; "
               "overlap at the distorted position differs by up to %.3f\n",
               wall.name, corner, worstRaster, worstRaycast, cornerGap);
@@ -139,6 +141,7 @@ TEST_P(CatsEyeOnACurvedFocus, APixelSeesTheOverlapForItsRadiusFocus) {
   ASSERT_TRUE(plan.fieldCurvature);
   const Image raster = renderer.render(camera, plan, size);
   const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{1024, 4});
+  const ThinLensMap lensMap(camera, size);
   double worstRaster = 0.0, worstRaycast = 0.0, flatGap = 0.0;
   const double inverseFocus = camera.inverseFocusDistance();
   for (int y = 0; y < size.heightPx; ++y)
@@ -147,7 +150,7 @@ TEST_P(CatsEyeOnACurvedFocus, APixelSeesTheOverlapForItsRadiusFocus) {
       double share = 0.0, flat = 0.0;
       for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 4; ++i) {
-          const ChannelSample s = undistortedSample(camera, Channel::Green, {x + (i + 0.5) / 4.0, y + (j + 0.5) / 4.0}, size);
+          const ChannelSample s = lensMap.undistorted(Channel::Green, {x + (i + 0.5) / 4.0, y + (j + 0.5) / 4.0});
           share += roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, s.normalised, inverseFocus + s.inverseFocusShift) / 16.0;
           flat += roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, s.normalised, inverseFocus) / 16.0;
         }

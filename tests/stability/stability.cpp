@@ -18,6 +18,7 @@
 // compares figures with a tolerance, never digit for digit.
 #include "camera/Camera.h"
 #include "camera/DepthRange.h"
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "camera/PhysicalCamera.h"
 #include "core/Error.h"
@@ -523,7 +524,7 @@ void lensExtremes(const Scene& rowsScene) {
   const Image a = raster(rowsScene, c, size, 256), b = raycast(rowsScene, c, size, 256);
   const double p = psnr(a, b);
   record("lens extremes", "distortion k1 = 100 at 96 px", "raster (256 views) vs ray cast (256 spp) ≥ 30 dB",
-         cat(dB(p), " (samples ", sig(forwardLinearisationErrorPx(c, size)), " px from the linear map)"), finite(a) && finite(b) && p >= 30.0);
+         cat(dB(p), " (samples ", sig(ThinLensMap(c, size).forwardLinearisationErrorPx()), " px from the linear map)"), finite(a) && finite(b) && p >= 30.0);
 }
 
 // ---- ends of the scales (fx-scales2): a field of view down to 1e-9 rad, the view plane down to

@@ -1,6 +1,7 @@
 // Lens effects without a GL context: the distortion model against OpenCV's formulas written out
 // here, its inverse, fold-over detection, chromatic aberration, the camera file keys and the
 // frame plan's passes.
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Error.h"
@@ -154,12 +155,13 @@ TEST(Overscan, BarrelFromMinusHalfToZeroNeverSamplesOutsideTheRender) {
   for (double k1 = -0.5; k1 <= 0.0; k1 += 0.05) {
     Camera camera = narrowCamera(k1);
     ASSERT_NO_THROW(validateLensEffects(camera, "test"));
-    const Overscan o = overscanFor(camera, size);
-    const RemapTable table = makeRemapTable(camera, size, o);
+    const ThinLensMap map = ThinLensMap(camera, size).overscanned();
+    const Overscan& o = map.overscan();
+    const RemapTable table = map.remapTable();
     // Every lookup's bilinear footprint lies on rendered texels: no black border.
     const glm::dvec2 halfTexel(0.5 / o.size.widthPx, 0.5 / o.size.heightPx);
-    for (const auto& map : table.channels) {
-      for (const glm::vec2 t : map) {
+    for (const auto& channel : table.channels) {
+      for (const glm::vec2 t : channel) {
         ASSERT_GE(t.x, halfTexel.x) << "k1 " << k1;
         ASSERT_LE(t.x, 1.0 - halfTexel.x) << "k1 " << k1;
         ASSERT_GE(t.y, halfTexel.y) << "k1 " << k1;
@@ -176,8 +178,9 @@ TEST(Overscan, ZeroDistortionIsTheIdentityOnPixelCentres) {
   Camera camera = narrowCamera(0.0);
   camera.effects.chromatic.lateralRed = 1e-9;  // forces the tables to be made
   const ImageSize size{64, 48};
-  const Overscan o = overscanFor(camera, size);
-  const RemapTable table = makeRemapTable(camera, size, o);
+  const ThinLensMap map = ThinLensMap(camera, size).overscanned();
+  const Overscan& o = map.overscan();
+  const RemapTable table = map.remapTable();
   const auto& green = table.channels[1];
   for (int row = 0; row < size.heightPx; ++row)
     for (int x = 0; x < size.widthPx; ++x) {
@@ -195,16 +198,17 @@ TEST(LensTables, BandsGiveTheWholeTable) {
   camera.effects.chromatic.lateralRed = 0.004;
   camera.effects.chromatic.lateralBlue = -0.004;
   const ImageSize size{97, 61};
-  const Overscan o = overscanFor(camera, size);
-  const RemapTable table = makeRemapTable(camera, size, o);
+  const ThinLensMap map = ThinLensMap(camera, size).overscanned();
+  const Overscan& o = map.overscan();
+  const RemapTable table = map.remapTable();
   const std::vector<Channel> channels = remappedChannels(camera.effects);
   ASSERT_EQ(channels.size(), table.channels.size());
-  const ForwardTable forward = makeForwardTable(camera, size, o);
+  const ForwardTable forward = map.forwardTable();
   for (const int band : {1, 7, 64}) {
     for (std::size_t c = 0; c < channels.size(); ++c) {
       std::vector<glm::vec2> banded(table.channels[c].size());
       for (int first = 0; first < size.heightPx; first += band)
-        fillRemapRows(camera, size, o, channels[c], first, std::min(size.heightPx, first + band),
+        map.fillRemapRows(channels[c], first, std::min(size.heightPx, first + band),
                       &banded[static_cast<std::size_t>(first * size.widthPx)]);
       EXPECT_EQ(banded, table.channels[c]) << "band " << band << ", channel " << c;
     }
@@ -212,12 +216,12 @@ TEST(LensTables, BandsGiveTheWholeTable) {
     double halfExtent = 0.0;
     for (int first = 0; first < o.size.heightPx; first += band) {
       const std::size_t at = static_cast<std::size_t>(first * o.size.widthPx);
-      halfExtent = std::max(halfExtent, fillForwardRows(camera, size, o, first, std::min(o.size.heightPx, first + band),
+      halfExtent = std::max(halfExtent, map.fillForwardRows(first, std::min(o.size.heightPx, first + band),
                                                         &position[at], &jacobian[at]));
     }
     EXPECT_EQ(position, forward.position) << "band " << band;
     EXPECT_EQ(jacobian, forward.jacobian) << "band " << band;
-    EXPECT_EQ(forwardReachPx(camera, halfExtent), forward.reachPx) << "band " << band;
+    EXPECT_EQ(map.forwardReachPx(halfExtent), forward.reachPx) << "band " << band;
   }
   EXPECT_GT(forward.reachPx, 1.0);
 }
@@ -373,8 +377,9 @@ TEST(FramePlanEffects, ADistortionTooSharpForTheResolutionIsRefused) {
   };
   const ImageSize small{63, 42}, large{252, 168};
   // A calibrated lens is far inside the limit; the error halves as the pitch does.
-  EXPECT_LT(forwardLinearisationErrorPx(camera(-0.22), small), 0.05);
-  const double at63 = forwardLinearisationErrorPx(camera(10.0), small), at252 = forwardLinearisationErrorPx(camera(10.0), large);
+  EXPECT_LT(ThinLensMap(camera(-0.22), small).forwardLinearisationErrorPx(), 0.05);
+  const double at63 = ThinLensMap(camera(10.0), small).forwardLinearisationErrorPx(),
+               at252 = ThinLensMap(camera(10.0), large).forwardLinearisationErrorPx();
   EXPECT_GT(at63 / at252, 3.0);
   EXPECT_LT(at63 / at252, 5.0);
   EXPECT_NO_THROW(makeFramePlan(scene, camera(10.0), small));
@@ -488,7 +493,7 @@ TEST(DistortionInverse, StrongDistortionFoldingBeyondTheImageIsInvertedOnItsBran
   camera.effects.distortion = d;
   camera.source = "k1 2 k2 -2";
   EXPECT_NO_THROW(validateLensEffects(camera, "test"));
-  EXPECT_NO_THROW(overscanFor(camera, {64, 45}));
+  EXPECT_NO_THROW(ThinLensMap(camera, {64, 45}).overscanned());
 }
 
 // Beyond the fold no point of the lens's branch lands: the inverse says so (empty), and the

@@ -1,6 +1,7 @@
 // Tiles are sub-windows: the same rays per pixel, and a plan that covers the image once, within
 // the render-target limits, with margins for the lens.
 #include "camera/Camera.h"
+#include "camera/ImageMap.h"
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "camera/SubWindow.h"
@@ -146,7 +147,7 @@ TEST(TilePlan, LensTilesRenderTheirPreImageWithinTheFramesOverscan) {
     EXPECT_EQ(intersect(t.rendered, t.rect), t.rect);
     for (double y = t.rect.y0; y <= t.rect.y1; y += 0.25 * t.rect.height())
       for (double x = t.rect.x0; x <= t.rect.x1; x += 0.25 * t.rect.width()) {
-        const glm::dvec2 p = undistortedSample(camera, Channel::Green, {x, y}, size).pixel;
+        const glm::dvec2 p = ThinLensMap(camera, size).undistorted(Channel::Green, {x, y}).pixel;
         EXPECT_GE(p.x, t.rendered.x0 + 2);
         EXPECT_LE(p.x, t.rendered.x1 - 2);
         EXPECT_GE(p.y, t.rendered.y0 + 2);

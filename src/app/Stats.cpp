@@ -19,6 +19,70 @@ namespace {
 
 nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
 
+// The camera's lens: focus, aperture and its shape, the barrel, and the physical camera it came from.
+nlohmann::json lensJson(const RunStats& s) {
+  nlohmann::json j = {{"focus_distance", distanceJson(s.focusDistance)}, {"aperture_radius", s.apertureRadius},
+                      {"aperture", {{"shape", describeAperture(s.aperture)}, {"blades", s.aperture.blades},
+                                    {"rotation_deg", s.aperture.rotationDeg}, {"roundness", s.aperture.roundness},
+                                    {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
+  if (s.barrel.present())
+    j["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
+  if (s.physical) {
+    const PhysicalCamera& p = *s.physical;
+    j["focal_length_mm"] = p.focalLengthMm;
+    j["f_number"] = distanceJson(p.fNumber);
+    j["sensor_mm"] = {p.sensorMm.x, p.sensorMm.y};
+    j["eye"] = {p.eye.x, p.eye.y, p.eye.z};
+    j["target"] = {p.target.x, p.target.y, p.target.z};
+  }
+  return j;
+}
+
+// The exposure and view transform of PNG output (and of the viewer's display); EXR output holds
+// the radiance before them.
+nlohmann::json displayJson(const RunStats& s) {
+  const Exposure& e = s.exposure;
+  nlohmann::json d = {{"exposure_stops", e.stops}, {"exposure_scale", e.scale}, {"exposure_source", e.source},
+                      {"exposure", describe(e)}, {"view_transform", viewTransformName(s.viewTransform)}};
+  if (e.ev100) {
+    d["ev100"] = *e.ev100;
+    d["shutter_s"] = *e.shutterSeconds;
+    d["iso"] = *e.iso;
+    d["f_number"] = *e.fNumber;
+  }
+  return d;
+}
+
+// The frame plan: its passes with why, the aperture samples and the blur they were chosen for.
+nlohmann::json planJson(const FramePlan& plan) {
+  nlohmann::json passes = nlohmann::json::array();
+  for (const PlannedPass& p : plan.passes) passes.push_back({{"name", p.name}, {"why", p.why}, {"variants", p.variants}});
+  nlohmann::json j = {{"passes", passes},
+                      {"aperture_samples", plan.apertureSamples},
+                      {"aperture_samples_why", plan.samplesWhy},
+                      {"pattern", patternName(plan.pattern)},
+                      {"seed", plan.seed},
+                      {"coc_px", {{"min", plan.cocMinPx}, {"max", plan.cocMaxPx}}},
+                      {"depth_range", {{"min", plan.depthMin}, {"max", distanceJson(plan.depthMax)}}},
+                      {"views_per_sample", plan.viewsPerSample},
+                      {"render_size", {plan.overscan.size.widthPx, plan.overscan.size.heightPx}}};
+  if (plan.visible) {
+    const VisibleBlurSummary& v = *plan.visible;
+    j["visible_blur"] = {
+        {"prepass_size", {v.prepass.widthPx, v.prepass.heightPx}},
+        {"fraction_of_pixels", {{"coc_le_1px", v.fractions[0]}, {"coc_1_to_4px", v.fractions[1]}, {"coc_4_to_16px", v.fractions[2]},
+                                {"coc_16_to_64px", v.fractions[3]}, {"coc_over_64px", v.fractions[4]}}},
+        {"coc_px_percentiles", {{"p50", v.p50Px}, {"p90", v.p90Px}, {"p99", v.p99Px}, {"max", v.maxPx}}},
+        {"bounds_coc_max_px", v.boundsCocMaxPx},
+        {"bounds_aperture_samples", v.boundsSamples}};
+  }
+  if (plan.adaptive) {
+    j["target_psnr"] = plan.adaptive->targetPsnrDb;
+    j["tile_size"] = plan.adaptive->tileSizePx;
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string toJson(const RunStats& s) {
@@ -26,34 +90,8 @@ std::string toJson(const RunStats& s) {
   j["command"] = s.command;
   j["scene"] = s.scene;
   j["camera"] = s.camera;
-  j["lens"] = {{"focus_distance", distanceJson(s.focusDistance)}, {"aperture_radius", s.apertureRadius},
-               {"aperture", {{"shape", describeAperture(s.aperture)}, {"blades", s.aperture.blades},
-                             {"rotation_deg", s.aperture.rotationDeg}, {"roundness", s.aperture.roundness},
-                             {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
-  if (s.barrel.present())
-    j["lens"]["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
-  if (s.physical) {
-    const PhysicalCamera& p = *s.physical;
-    j["lens"]["focal_length_mm"] = p.focalLengthMm;
-    j["lens"]["f_number"] = distanceJson(p.fNumber);
-    j["lens"]["sensor_mm"] = {p.sensorMm.x, p.sensorMm.y};
-    j["lens"]["eye"] = {p.eye.x, p.eye.y, p.eye.z};
-    j["lens"]["target"] = {p.target.x, p.target.y, p.target.z};
-  }
-  {
-    // The exposure and view transform of PNG output (and of the viewer's display); EXR output holds
-    // the radiance before them.
-    const Exposure& e = s.exposure;
-    nlohmann::json d = {{"exposure_stops", e.stops}, {"exposure_scale", e.scale}, {"exposure_source", e.source},
-                        {"exposure", describe(e)}, {"view_transform", viewTransformName(s.viewTransform)}};
-    if (e.ev100) {
-      d["ev100"] = *e.ev100;
-      d["shutter_s"] = *e.shutterSeconds;
-      d["iso"] = *e.iso;
-      d["f_number"] = *e.fNumber;
-    }
-    j["display"] = d;
-  }
+  j["lens"] = lensJson(s);
+  j["display"] = displayJson(s);
   if (s.environment) {
     const EnvironmentSummary& e = *s.environment;
     j["environment"] = {{"file", e.file}, {"intensity", e.intensity}, {"rotation_deg", e.rotationDegrees},
@@ -71,31 +109,7 @@ std::string toJson(const RunStats& s) {
                   {"render_seconds", s.renderSeconds},
                   {"write_seconds", s.writeSeconds},
                   {"prepass_seconds", s.prepassSeconds}};
-  nlohmann::json passes = nlohmann::json::array();
-  for (const PlannedPass& p : s.plan.passes) passes.push_back({{"name", p.name}, {"why", p.why}, {"variants", p.variants}});
-  j["plan"] = {{"passes", passes},
-               {"aperture_samples", s.plan.apertureSamples},
-               {"aperture_samples_why", s.plan.samplesWhy},
-               {"pattern", patternName(s.plan.pattern)},
-               {"seed", s.plan.seed},
-               {"coc_px", {{"min", s.plan.cocMinPx}, {"max", s.plan.cocMaxPx}}},
-               {"depth_range", {{"min", s.plan.depthMin}, {"max", distanceJson(s.plan.depthMax)}}},
-               {"views_per_sample", s.plan.viewsPerSample},
-               {"render_size", {s.plan.overscan.size.widthPx, s.plan.overscan.size.heightPx}}};
-  if (s.plan.visible) {
-    const VisibleBlurSummary& v = *s.plan.visible;
-    j["plan"]["visible_blur"] = {
-        {"prepass_size", {v.prepass.widthPx, v.prepass.heightPx}},
-        {"fraction_of_pixels", {{"coc_le_1px", v.fractions[0]}, {"coc_1_to_4px", v.fractions[1]}, {"coc_4_to_16px", v.fractions[2]},
-                                {"coc_16_to_64px", v.fractions[3]}, {"coc_over_64px", v.fractions[4]}}},
-        {"coc_px_percentiles", {{"p50", v.p50Px}, {"p90", v.p90Px}, {"p99", v.p99Px}, {"max", v.maxPx}}},
-        {"bounds_coc_max_px", v.boundsCocMaxPx},
-        {"bounds_aperture_samples", v.boundsSamples}};
-  }
-  if (s.plan.adaptive) {
-    j["plan"]["target_psnr"] = s.plan.adaptive->targetPsnrDb;
-    j["plan"]["tile_size"] = s.plan.adaptive->tileSizePx;
-  }
+  j["plan"] = planJson(s.plan);
   if (s.estimate) {
     const FrameEstimate& e = *s.estimate;
     j["estimate"] = {{"psnr", e.psnrDb}, {"rmse", e.rmse}, {"target_met", e.targetMet},

@@ -190,6 +190,58 @@ glm::dvec3 fitBrown(const std::vector<double>& x, const std::vector<double>& y) 
   return glm::inverse(a) * b;
 }
 
+// Brown-Conrady and equidistant fits over a finer sampling of the field than the report's
+// table, out to the half diagonal; `reference` is the paraxial focal length at this focus.
+void fitDistortionModels(const Setup& s, double halfDiagonal, double reference, LensReport& report) {
+  std::vector<double> x, y, ru, rd, thetas, heights;
+  for (int k = 1; k <= 48; ++k) {
+    const double h = halfDiagonal * k / 48.0;
+    const double theta = fieldAngleAt(s, h, kLineDNm);
+    thetas.push_back(theta);
+    heights.push_back(h);
+    if (theta >= 0.5 * kPi) continue;
+    const double u = std::tan(theta), d = h / reference;
+    ru.push_back(u), rd.push_back(d);
+    x.push_back(u * u), y.push_back(d / u - 1.0);
+  }
+  if (x.size() >= 3) {
+    report.brownK = fitBrown(x, y);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < ru.size(); ++i) {
+      const double r2 = ru[i] * ru[i];
+      const double model = ru[i] * (1.0 + r2 * (report.brownK.x + r2 * (report.brownK.y + r2 * report.brownK.z)));
+      sum += std::pow((model - rd[i]) / rd[i], 2.0);
+    }
+    report.brownRmsErrorPercent = 100.0 * std::sqrt(sum / static_cast<double>(ru.size()));
+  }
+  if (report.fisheye) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t i = 0; i < thetas.size(); ++i) num += heights[i] * thetas[i], den += thetas[i] * thetas[i];
+    report.equidistantFocalMm = num / den;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < thetas.size(); ++i) sum += std::pow((report.equidistantFocalMm * thetas[i] - heights[i]) / heights[i], 2.0);
+    report.equidistantRmsErrorPercent = 100.0 * std::sqrt(sum / static_cast<double>(thetas.size()));
+  }
+}
+
+// Axial colour (F line's focus against C's) and lateral colour at the half diagonal.
+void measureColour(const Setup& s, double halfDiagonal, LensReport& report) {
+  const LensPrescription blue = atWavelength(s.lens, kLineFNm), red = atWavelength(s.lens, kLineCNm);
+  report.axialColourMm = filmDistanceForFocusMm(blue, INFINITY) - filmDistanceForFocusMm(red, INFINITY);
+  // The same scene angle as the d line's chief ray at the half diagonal, found at F and at C.
+  const double target = fieldAngleAt(s, halfDiagonal, kLineDNm);
+  const auto heightFor = [&](double wavelengthNm) {
+    double h0 = halfDiagonal, h1 = 1.001 * halfDiagonal;
+    double e0 = fieldAngleAt(s, h0, wavelengthNm) - target, e1 = fieldAngleAt(s, h1, wavelengthNm) - target;
+    for (int i = 0; i < 40 && std::abs(e1) > 1e-13 && e1 != e0; ++i) {
+      const double h2 = h1 - e1 * (h1 - h0) / (e1 - e0);
+      h0 = h1, e0 = e1, h1 = h2, e1 = fieldAngleAt(s, h1, wavelengthNm) - target;
+    }
+    return h1;
+  };
+  report.lateralColourMm = heightFor(kLineFNm) - heightFor(kLineCNm);
+}
+
 }  // namespace
 
 LensReport analyseLens(const LensPrescription& lens, const LensAnalysisOptions& o) {
@@ -235,54 +287,9 @@ LensReport analyseLens(const LensPrescription& lens, const LensAnalysisOptions& 
     report.field.push_back(f);
   }
 
-  // Brown-Conrady and equidistant fits over a finer sampling of the same field.
-  std::vector<double> x, y, ru, rd, thetas, heights;
-  for (int k = 1; k <= 48; ++k) {
-    const double h = halfDiagonal * k / 48.0;
-    const double theta = fieldAngleAt(setup, h, kLineDNm);
-    thetas.push_back(theta);
-    heights.push_back(h);
-    if (theta >= 0.5 * kPi) continue;
-    const double u = std::tan(theta), d = h / reference;
-    ru.push_back(u), rd.push_back(d);
-    x.push_back(u * u), y.push_back(d / u - 1.0);
-  }
-  if (x.size() >= 3) {
-    report.brownK = fitBrown(x, y);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < ru.size(); ++i) {
-      const double r2 = ru[i] * ru[i];
-      const double model = ru[i] * (1.0 + r2 * (report.brownK.x + r2 * (report.brownK.y + r2 * report.brownK.z)));
-      sum += std::pow((model - rd[i]) / rd[i], 2.0);
-    }
-    report.brownRmsErrorPercent = 100.0 * std::sqrt(sum / static_cast<double>(ru.size()));
-  }
-  if (report.fisheye) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < thetas.size(); ++i) num += heights[i] * thetas[i], den += thetas[i] * thetas[i];
-    report.equidistantFocalMm = num / den;
-    double sum = 0.0;
-    for (std::size_t i = 0; i < thetas.size(); ++i) sum += std::pow((report.equidistantFocalMm * thetas[i] - heights[i]) / heights[i], 2.0);
-    report.equidistantRmsErrorPercent = 100.0 * std::sqrt(sum / static_cast<double>(thetas.size()));
-  }
-
+  fitDistortionModels(setup, halfDiagonal, reference, report);
   report.dispersion = lens.hasDispersion();
-  if (report.dispersion) {
-    const LensPrescription blue = atWavelength(lens, kLineFNm), red = atWavelength(lens, kLineCNm);
-    report.axialColourMm = filmDistanceForFocusMm(blue, INFINITY) - filmDistanceForFocusMm(red, INFINITY);
-    // The same scene angle as the d line's chief ray at the half diagonal, found at F and at C.
-    const double target = fieldAngleAt(setup, halfDiagonal, kLineDNm);
-    const auto heightFor = [&](double wavelengthNm) {
-      double h0 = halfDiagonal, h1 = 1.001 * halfDiagonal;
-      double e0 = fieldAngleAt(setup, h0, wavelengthNm) - target, e1 = fieldAngleAt(setup, h1, wavelengthNm) - target;
-      for (int i = 0; i < 40 && std::abs(e1) > 1e-13 && e1 != e0; ++i) {
-        const double h2 = h1 - e1 * (h1 - h0) / (e1 - e0);
-        h0 = h1, e0 = e1, h1 = h2, e1 = fieldAngleAt(setup, h1, wavelengthNm) - target;
-      }
-      return h1;
-    };
-    report.lateralColourMm = heightFor(kLineFNm) - heightFor(kLineCNm);
-  }
+  if (report.dispersion) measureColour(setup, halfDiagonal, report);
 
   const double focus = atInfinity ? INFINITY : o.focusDistanceMm;
   report.rmsSpotMm = {rmsSpot(setup, 0.0, focus, o.pupilSamples), rmsSpot(setup, 0.5 * halfDiagonal, focus, o.pupilSamples),

@@ -57,6 +57,24 @@ glm::dvec3 directionFromUvDouble(double u, double cosTheta) {
   return {sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi)};
 }
 
+// A GGX half vector h about n (frame t, b, n; a2 = α²) from (u1, u2), as the direction l that
+// reflects v about it: the specular lobe's own importance sampling.
+glm::dvec3 sampleGgxReflection(const glm::dvec3& n, const glm::dvec3& t, const glm::dvec3& b, const glm::dvec3& v, double a2, double u1,
+                               double u2) {
+  const double phi = 2.0 * kPi * u1;
+  const double cosTheta = std::sqrt((1.0 - u2) / (1.0 + (a2 - 1.0) * u2));
+  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+  const glm::dvec3 h = sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * n;
+  return 2.0 * glm::dot(v, h) * h - v;
+}
+
+// A cosine-distributed direction about n (frame t, b, n) from (u1, u2): the diffuse lobe's shape.
+glm::dvec3 sampleCosine(const glm::dvec3& n, const glm::dvec3& t, const glm::dvec3& b, double u1, double u2) {
+  const double phi = 2.0 * kPi * u1;
+  const double r = std::sqrt(u2);
+  return r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1.0 - u2)) * n;
+}
+
 }  // namespace
 
 double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
@@ -86,6 +104,19 @@ double EnvironmentIntegral::environmentPdf(const glm::dvec3& direction) const {
   const int y = std::clamp(static_cast<int>(uv.y * static_cast<float>(image_.height)), 0, image_.height - 1);
   // P(texel) / Ω(texel) = luminance × Ω / total / Ω.
   return luminance(glm::dvec3(image_.at(x, y))) / luminanceTimesSolidAngle_;
+}
+
+// A direction drawn in proportion to luminance × solid angle: u3 picks the texel by its running
+// sum, (u1, u2) the point inside it, uniform in longitude and in cos θ (the texel's solid angle).
+glm::dvec3 EnvironmentIntegral::sampleLuminance(double u1, double u2, double u3) const {
+  const double pick = u3 * luminanceTimesSolidAngle_;
+  const auto texel = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
+      std::upper_bound(texelCdf_.begin(), texelCdf_.end(), pick) - texelCdf_.begin(),
+      static_cast<std::ptrdiff_t>(texelCdf_.size()) - 1));
+  const int x = static_cast<int>(texel % static_cast<std::size_t>(image_.width));
+  const int y = static_cast<int>(texel / static_cast<std::size_t>(image_.width));
+  const double cosTop = std::cos(kPi * y / image_.height), cosBottom = std::cos(kPi * (y + 1) / image_.height);
+  return directionFromUvDouble((x + u1) / image_.width, cosTop + u2 * (cosBottom - cosTop));
 }
 
 RadianceEstimate EnvironmentIntegral::outgoingRadiance(const ShadingSurface& s, int samples, std::uint64_t seed) const {
@@ -121,26 +152,9 @@ RadianceEstimate EnvironmentIntegral::outgoingRadiance(const ShadingSurface& s, 
   Random random{seed * 0x2545f4914f6cdd1dull + 1};
   const auto sampleDirection = [&](Strategy strategy) -> glm::dvec3 {
     const double u1 = random.next(), u2 = random.next();
-    if (strategy == Ggx) {
-      const double phi = 2.0 * kPi * u1;
-      const double cosTheta = std::sqrt((1.0 - u2) / (1.0 + (a2 - 1.0) * u2));
-      const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-      const glm::dvec3 h = sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * n;
-      return 2.0 * glm::dot(v, h) * h - v;
-    }
-    if (strategy == Cosine) {
-      const double phi = 2.0 * kPi * u1;
-      const double r = std::sqrt(u2);
-      return r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1.0 - u2)) * n;
-    }
-    const double pick = random.next() * luminanceTimesSolidAngle_;
-    const auto texel = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
-        std::upper_bound(texelCdf_.begin(), texelCdf_.end(), pick) - texelCdf_.begin(),
-        static_cast<std::ptrdiff_t>(texelCdf_.size()) - 1));
-    const int x = static_cast<int>(texel % static_cast<std::size_t>(image_.width));
-    const int y = static_cast<int>(texel / static_cast<std::size_t>(image_.width));
-    const double cosTop = std::cos(kPi * y / image_.height), cosBottom = std::cos(kPi * (y + 1) / image_.height);
-    return directionFromUvDouble((x + u1) / image_.width, cosTop + u2 * (cosBottom - cosTop));
+    if (strategy == Ggx) return sampleGgxReflection(n, t, b, v, a2, u1, u2);
+    if (strategy == Cosine) return sampleCosine(n, t, b, u1, u2);
+    return sampleLuminance(u1, u2, random.next());
   };
   const auto pdfOf = [&](Strategy strategy, const glm::dvec3& l) {
     if (strategy == Ggx) return ggxPdf(n, v, l, alpha);

@@ -48,6 +48,9 @@ class EnvironmentIntegral {
   double environmentPdf(const glm::dvec3& direction) const;
 
  private:
+  // The environment strategy's direction from three uniform numbers in [0, 1).
+  glm::dvec3 sampleLuminance(double u1, double u2, double u3) const;
+
   EnvironmentImage image_;
   std::vector<double> texelCdf_;  // running sum of luminance × solid angle, texel by texel
   double luminanceTimesSolidAngle_ = 0.0;

@@ -1,8 +1,9 @@
 // lenslab view: the Dear ImGui panel, one function per section (progress, the viewing
-// description and its matrices, the physical lens, aperture samples, lens effects, comparison and
-// outside view, saving, controls). Edits go to the model (ViewerModel.h), which checks them and
-// marks the accumulation for a restart.
+// description and its matrices, comparison and outside view, saving, display, controls; the lens's
+// sections are in ViewerPanelLens.cpp, the widgets in PanelWidgets.h). Edits go to the model
+// (ViewerModel.h), which checks them and marks the accumulation for a restart.
 #include "view/Viewer.h"
+
 
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
@@ -10,6 +11,7 @@
 #include "io/AtomicFile.h"
 #include "io/CameraJson.h"
 #include "io/ImageFile.h"
+#include "view/PanelWidgets.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -18,91 +20,6 @@
 #include <limits>
 
 namespace lenslab::view {
-namespace {
-
-// Each item is checked against the panel's width as it is drawn (PanelFit.h): a narrow window must
-// not cut text off on the right.
-// A widget with its label on the right, or above it when the panel is too narrow for both on one
-// line (fit.labelsAbove). `widget(label)` draws it under the label (an ImGui id) it is given.
-template <class Widget>
-bool labelled(PanelFit& fit, const char* label, Widget widget) {
-  if (!fit.labelsAbove) {
-    const bool changed = widget(label);
-    fit.check(label);
-    return changed;
-  }
-  ImGui::TextUnformatted(label);
-  fit.check(label);
-  ImGui::SetNextItemWidth(-FLT_MIN);
-  ImGui::PushID(label);  // the widget's id: the label's, without its text
-  const bool changed = widget("##v");
-  ImGui::PopID();
-  fit.check(label);
-  return changed;
-}
-// A checkbox or a button: its label is its text and its id.
-bool checkbox(PanelFit& fit, const char* label, bool* value) {
-  const bool changed = ImGui::Checkbox(label, value);
-  fit.check(label);
-  return changed;
-}
-bool button(PanelFit& fit, const char* label) {
-  const bool pressed = ImGui::Button(label);
-  fit.check(label);
-  return pressed;
-}
-// Numbers in fields, each checked to show whole in its field.
-bool dragDoubles(PanelFit& fit, const char* label, double* v, int n, float speed, const char* format = "%.4g") {
-  return labelled(fit, label, [&](const char* id) {
-    fit.checkFields(label, v, n, format);
-    return ImGui::DragScalarN(id, ImGuiDataType_Double, v, n, speed, nullptr, nullptr, format);
-  });
-}
-bool dragDouble3(PanelFit& fit, const char* label, glm::dvec3& v, float speed) { return dragDoubles(fit, label, &v.x, 3, speed); }
-bool dragDouble(PanelFit& fit, const char* label, double& v, float speed, double lo, double hi, const char* format = "%.4g") {
-  return labelled(fit, label, [&](const char* id) {
-    fit.checkFields(label, &v, 1, format);
-    return ImGui::DragScalar(id, ImGuiDataType_Double, &v, speed, &lo, &hi, format, ImGuiSliderFlags_AlwaysClamp);
-  });
-}
-// Prose and figures, wrapped at the panel's edge: nothing to cut.
-void wrapped(const std::string& text) { ImGui::TextWrapped("%s", text.c_str()); }
-void wrappedColoured(const ImVec4& colour, const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  wrapped(text);
-  ImGui::PopStyleColor();
-}
-// A line that must not wrap (a row of numbers), checked against the width left.
-void line(PanelFit& fit, const std::string& text) {
-  fit.checkText(text.c_str(), 0.0f);
-  ImGui::TextUnformatted(text.c_str());
-}
-// A section header: its title is drawn inside a full-width frame after the arrow.
-bool header(PanelFit& fit, const char* title, ImGuiTreeNodeFlags flags = 0) {
-  fit.checkText(title, ImGui::GetTreeNodeToLabelSpacing() + ImGui::GetStyle().FramePadding.x);
-  return ImGui::CollapsingHeader(title, flags);
-}
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
-// A 4x4 matrix in four columns that share the width, each number checked against its cell.
-void matrixTable(PanelFit& fit, const char* name, const glm::dmat4& m) {
-  ImGui::TextUnformatted(name);
-  fit.check(name);
-  if (!ImGui::BeginTable(name, 4, ImGuiTableFlags_SizingStretchSame)) return;
-  for (int row = 0; row < 4; ++row) {  // GLM is column-major: m[column][row]
-    ImGui::TableNextRow();
-    for (int column = 0; column < 4; ++column) {
-      ImGui::TableNextColumn();
-      line(fit, number(m[column][row]));
-    }
-  }
-  ImGui::EndTable();
-}
-
-}  // namespace
 
 void Viewer::sectionProgress() {
   const ImVec4 amber(1.0f, 0.8f, 0.3f, 1.0f);
@@ -181,150 +98,6 @@ void Viewer::sectionMatrices() {
   if (s.projection == Projection::Perspective) matrixTable(fit_, "lecture perspective (1/f)", lecturePerspective(s.prp.z));
   matrixTable(fit_, "clipFromEye (reverse-Z)", clipFromEye(s));
   matrixTable(fit_, "clipFromWorld", clipFromWorld(s));
-}
-
-void Viewer::sectionPhysical() {
-  if (!header(fit_, "Physical lens", openFlags(true))) return;
-  if (!model_.camera().physical) {
-    wrapped("The camera is in the lecture form.");
-    if (!model_.canDescribeAsLens()) {
-      wrapped("(A physical lens needs a perspective projection with the PRP over the window centre.)");
-      return;
-    }
-    if (button(fit_, "Describe it as a lens (35 mm)")) model_.describeAsLens();
-    return;
-  }
-  PhysicalCamera p = *model_.camera().physical;
-  bool changed = false;
-  const float step = static_cast<float>(0.005 * std::max(1.0, glm::length(p.target - p.eye)));
-  changed |= dragDouble3(fit_, "eye", p.eye, step);
-  changed |= dragDouble3(fit_, "target", p.target, step);
-  changed |= dragDouble3(fit_, "up", p.up, 0.005f);
-  changed |= dragDouble(fit_, "focal length (mm)", p.focalLengthMm, 0.2f, 1.0, 2000.0);
-  changed |= dragDoubles(fit_, "sensor (mm)", &p.sensorMm.x, 2, 0.1f);
-  bool pinhole = std::isinf(p.fNumber);
-  if (checkbox(fit_, "pinhole (no aperture)", &pinhole)) {
-    p.fNumber = pinhole ? std::numeric_limits<double>::infinity() : 2.8;
-    changed = true;
-  }
-  if (!pinhole) changed |= dragDouble(fit_, "f-number", p.fNumber, 0.02f, 0.5, 64.0, "f/%.2f");
-  bool infinityFocus = std::isinf(p.focusDistance);
-  if (checkbox(fit_, "focus at infinity", &infinityFocus)) {
-    p.focusDistance = infinityFocus ? std::numeric_limits<double>::infinity() : glm::length(p.target - p.eye);
-    changed = true;
-  }
-  if (!infinityFocus) changed |= dragDouble(fit_, "focus distance (m)", p.focusDistance, step, 1e-3, 1e9);
-  if (changed) model_.editPhysical(p);
-}
-
-void Viewer::sectionSamples() {
-  if (!header(fit_, "Aperture samples", openFlags(true))) return;
-  PlanOptions o = model_.planOptions();
-  const FramePlan& plan = model_.plan();
-  bool changed = false;
-  int pattern = static_cast<int>(o.pattern);
-  static const std::vector<std::string> names = patternNameList();  // in AperturePattern's order
-  const auto name = [](void* list, int i, const char** out) {
-    *out = (*static_cast<const std::vector<std::string>*>(list))[static_cast<std::size_t>(i)].c_str();
-    return true;
-  };
-  if (labelled(fit_, "pattern", [&](const char* id) {
-        return ImGui::Combo(id, &pattern, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
-      })) {
-    o.pattern = static_cast<AperturePattern>(pattern);
-    changed = true;
-  }
-  bool automatic = o.apertureSamples == 0;
-  if (checkbox(fit_, "auto sample count", &automatic)) {
-    o.apertureSamples = automatic ? 0 : std::max(plan.apertureSamples, 1);
-    changed = true;
-  }
-  int& count = automatic ? o.maxSamples : o.apertureSamples;
-  changed |= labelled(fit_, automatic ? "max samples" : "samples", [&](const char* id) {
-    return ImGui::SliderInt(id, &count, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
-  });
-  bool target = o.targetPsnrDb.has_value();
-  if (checkbox(fit_, "to a target PSNR", &target)) {
-    o.targetPsnrDb = target ? std::optional<double>(40.0) : std::nullopt;
-    if (target) {
-      o.pattern = AperturePattern::Sobol;
-      o.apertureSamples = 0;
-    }
-    changed = true;
-  }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("per-tile budgets: each tile gets samples until its estimate reaches the target");
-  if (o.targetPsnrDb) {
-    float db = static_cast<float>(*o.targetPsnrDb);
-    if (labelled(fit_, "target (dB)", [&](const char* id) { return ImGui::SliderFloat(id, &db, 20.0f, 60.0f, "%.1f"); })) {
-      o.targetPsnrDb = db;
-      changed = true;
-    }
-  }
-  int seed = static_cast<int>(o.seed);
-  if (labelled(fit_, "seed", [&](const char* id) { return ImGui::InputInt(id, &seed); })) {
-    o.seed = static_cast<std::uint32_t>(std::max(seed, 0));
-    changed = true;
-  }
-  if (changed) model_.setPlanOptions(o);
-  wrapped(cat("N = ", plan.apertureSamples, ": ", plan.samplesWhy));
-  char text[96];
-  std::snprintf(text, sizeof text, "circle of confusion in view: %.2f to %.2f px", plan.cocMinPx, plan.cocMaxPx);
-  wrapped(text);
-}
-
-// The lecture's last part: distortion, chromatic aberration, the curved focal plane. Each adds a
-// pass or shader variant only when it is not zero; the plan's passes are listed to show it.
-void Viewer::sectionLensEffects() {
-  if (!header(fit_, "Lens effects", openFlags(true))) return;
-  const Camera& c = model_.camera().camera;
-  LensEffects e = c.effects;
-  bool changed = false;
-  wrapped("Distortion: Brown-Conrady in OpenCV's order (normalised coordinates about the principal point)");
-  changed |= dragDouble(fit_, "k1", e.distortion.k1, 0.002f, -2.0, 2.0);
-  changed |= dragDouble(fit_, "k2", e.distortion.k2, 0.002f, -2.0, 2.0);
-  changed |= dragDouble(fit_, "k3", e.distortion.k3, 0.002f, -2.0, 2.0);
-  changed |= dragDouble(fit_, "p1", e.distortion.p1, 0.0002f, -0.2, 0.2);
-  changed |= dragDouble(fit_, "p2", e.distortion.p2, 0.0002f, -0.2, 0.2);
-  if (scripted()) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // the whole panel in a scripted run
-  const bool lectureSeries = ImGui::TreeNode("the lecture's series");
-  fit_.check("the lecture's series");
-  if (lectureSeries) {
-    wrapped("rho = rho'(1 + a rho' + b rho'^2 + c rho'^3)");
-    changed |= dragDouble(fit_, "alpha", e.distortion.alpha, 0.002f, -2.0, 2.0);
-    changed |= dragDouble(fit_, "beta", e.distortion.beta, 0.002f, -2.0, 2.0);
-    changed |= dragDouble(fit_, "gamma", e.distortion.gamma, 0.002f, -2.0, 2.0);
-    ImGui::TreePop();
-  }
-  wrapped("Chromatic aberration: lateral = red/blue magnification relative to green; axial = each colour's plane of "
-          "focus, as a change of 1/focus distance (1/world unit)");
-  changed |= dragDouble(fit_, "lateral red", e.chromatic.lateralRed, 0.0002f, -0.1, 0.1);
-  changed |= dragDouble(fit_, "lateral blue", e.chromatic.lateralBlue, 0.0002f, -0.1, 0.1);
-  changed |= dragDouble(fit_, "axial red (1/m)", e.chromatic.inverseFocusShiftRed, 0.002f, -10.0, 10.0);
-  changed |= dragDouble(fit_, "axial blue (1/m)", e.chromatic.inverseFocusShiftBlue, 0.002f, -10.0, 10.0);
-  const double focus = c.inverseFocusDistance();
-  const auto distance = [](double inverse) { return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity(); };
-  if (e.chromatic.hasAxial())
-    wrapped(cat("red in focus at ", number(distance(focus + e.chromatic.inverseFocusShiftRed)), ", green ",
-                number(distance(focus)), ", blue ", number(distance(focus + e.chromatic.inverseFocusShiftBlue))));
-  wrapped("Field curvature: 1/focus distance grows by this (1/m) times r^2 toward the corners");
-  changed |= dragDouble(fit_, "curvature", e.fieldCurvature.inverseFocusPerRadius2, 0.005f, -20.0, 20.0);
-  if (!e.fieldCurvature.isZero()) {
-    const double corner = normalisedWindow(c.view).cornerRadius();
-    wrapped(cat("centre in focus at ", number(distance(focus)), ", corners at ",
-                number(distance(focus + e.fieldCurvature.inverseFocusPerRadius2 * corner * corner))));
-  }
-  if (button(fit_, "no lens effects")) {
-    e = LensEffects{};
-    changed = true;
-  }
-  if (changed) model_.editLensEffects(e);  // checked here: an invalid lens is reported and not taken
-  std::string passes;
-  for (const PlannedPass& pass : model_.plan().passes) {
-    passes += (passes.empty() ? "" : ", ") + pass.name;
-    for (const std::string& variant : pass.variants) passes += "+" + variant;
-  }
-  wrapped("passes: " + passes);
-  for (const std::string& warning : model_.plan().warnings) wrapped("note: " + warning);
 }
 
 void Viewer::sectionCompare() {

@@ -35,12 +35,13 @@ inline constexpr const char* kTableEnd = "<!-- stability-table:end -->";
 // llvmpipe's code paths (105.4 … 109.0 dB, RMS 5.4e-6 … 3.5e-6), all within 1e-5 of each other.
 inline constexpr double kRoundingFloor = 1e-5;
 
-// Above the floor, figures compare within 12 % of the larger (about 1 dB of PSNR). Measured: the
-// largest move of a figure below 100 dB across the forced SIMD paths was 0.3 dB (26.4 → 26.1 dB,
-// raster vs ray cast, llvmpipe without SSE), 3.5 % in RMS; the 1 × 1 pixel's difference moved by
-// 0.4 % (0.00548 … 0.0055). 12 % is about three times the larger, and still fails a figure that
-// has really changed (a dB or more).
-inline constexpr double kRelativeTolerance = 0.12;
+// Above the floor, figures compare within 20 % of the larger (about 1.9 dB of PSNR). Measured: the
+// forced SIMD paths moved figures below 100 dB by up to 0.3 dB (26.4 → 26.1 dB, raster vs ray cast,
+// llvmpipe without SSE), 3.5 % in RMS, on one CPU; on an AMD EPYC, Embree's SSE2 path (isa=sse2)
+// against its native one moves the box corner at a field of view of 1e-5 rad (4 views against
+// 4 spp, a handful of edge pixels) from 44.1 to 42.7 dB, 15 % in RMS. 20 % holds both, and still
+// fails a figure that has really changed (two dB or more).
+inline constexpr double kRelativeTolerance = 0.20;
 
 enum class BareNumbers {
   Exact,            // counts, percentages, numbers quoted in a refusal: part of the words

@@ -13,12 +13,13 @@ bool same(const std::string& documented, const std::string& measured, BareNumber
   return cellDifference(documented, measured, bare).empty();
 }
 
-TEST(TableCheck, PsnrFiguresCompareWithinAboutOneDecibel) {
+TEST(TableCheck, PsnrFiguresCompareWithinAboutTwoDecibels) {
   EXPECT_TRUE(same("finite, 26.4 dB", "finite, 26.4 dB"));
   EXPECT_TRUE(same("finite, 26.4 dB", "finite, 26.1 dB"));  // llvmpipe without SSE
-  EXPECT_TRUE(same("33.5 dB", "34.4 dB"));
-  EXPECT_FALSE(same("33.5 dB", "34.8 dB"));
-  EXPECT_FALSE(same("33.5 dB", "32.2 dB"));
+  EXPECT_TRUE(same("44.1 dB", "42.7 dB"));  // Embree's SSE2 path on an AMD EPYC
+  EXPECT_TRUE(same("33.5 dB", "35.2 dB"));
+  EXPECT_FALSE(same("33.5 dB", "35.6 dB"));
+  EXPECT_FALSE(same("33.5 dB", "31.4 dB"));
   EXPECT_FALSE(same("76.2 dB; 42.4 dB", "76.2 dB; 40.0 dB"));
   EXPECT_TRUE(same("76.2 dB; 42.4 dB", "76.9 dB; 42.0 dB"));
 }
@@ -49,7 +50,7 @@ TEST(TableCheck, ColourDifferencesCompareRelativelyAboveTheRoundingFloor) {
   const BareNumbers c = BareNumbers::ColourDifference;
   EXPECT_TRUE(same("0.0055", "0.00548", c));  // the last digit, from one CPU to another
   EXPECT_TRUE(same("0.0055", "0.006", c));
-  EXPECT_FALSE(same("0.0055", "0.0065", c));
+  EXPECT_FALSE(same("0.0055", "0.0070", c));
   EXPECT_TRUE(same("5.36e-07", "3.1e-06", c));  // both float rounding
   EXPECT_FALSE(same("5.36e-07", "2.5e-05", c));
   EXPECT_TRUE(same("4.92e-05", "5.2e-05", c));

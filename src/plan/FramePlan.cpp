@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <vector>
 
 namespace lenslab {
@@ -53,141 +52,124 @@ PlanView planViewOf(const Camera& camera) {
 
 }  // namespace
 
-FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options,
-                        const VisibleBlur* visible) {
-  FramePlan plan;
-  // The frame's image map: built once, overscanned for the lens pass once it is needed.
-  const ThinLensMap map(camera, size);
-  std::optional<ThinLensMap> overscanned;
-  const auto renderMap = [&]() -> const ThinLensMap& {
-    if (!overscanned) overscanned = map.overscanned();
-    return *overscanned;
-  };
-  plan.pattern = options.pattern;
-  plan.seed = options.seed;
-  const std::size_t triangles = scene.triangleCount();
-  depthRange(scene, camera, plan);
-  const bool inView = plan.depthMax >= plan.depthMin && plan.depthMax > 0.0;
+namespace {
 
-  if (camera.isPinhole()) {
-    // Every view of a pinhole is the same view; only the sub-pixel jitter differs. An explicit
-    // count is honoured as that many jittered views (anti-aliasing: the box-filtered pixel
-    // integral); auto asks for none.
-    if (options.pattern == AperturePattern::Lecture17) {
-      plan.apertureSamples = 17;
-      plan.samplesWhy = "pinhole camera: the lecture's 17-point pattern as 17 sub-pixel-jittered views (anti-aliasing)";
-    } else if (options.apertureSamples > 1) {
-      plan.apertureSamples = options.apertureSamples;
-      plan.samplesWhy = cat("pinhole camera: ", options.apertureSamples, " sub-pixel-jittered views as asked (anti-aliasing)");
-    } else {
-      plan.apertureSamples = 1;
-      plan.samplesWhy = "pinhole camera: one view from the PRP";
-    }
+// Views of a pinhole: every view is the same view and only the sub-pixel jitter differs. An explicit
+// count is honoured as that many jittered views (anti-aliasing: the box-filtered pixel integral);
+// auto asks for none.
+void planPinholeSamples(const PlanOptions& options, FramePlan& plan) {
+  if (options.pattern == AperturePattern::Lecture17) {
+    plan.apertureSamples = 17;
+    plan.samplesWhy = "pinhole camera: the lecture's 17-point pattern as 17 sub-pixel-jittered views (anti-aliasing)";
+  } else if (options.apertureSamples > 1) {
+    plan.apertureSamples = options.apertureSamples;
+    plan.samplesWhy = cat("pinhole camera: ", options.apertureSamples, " sub-pixel-jittered views as asked (anti-aliasing)");
   } else {
-    const double pxPerWindowUnit = size.widthPx / camera.view.window.width();
-    if (inView) {
-      // Axial colour and field curvature move the plane of focus per channel and toward the
-      // corners: the largest circle is the largest over each of those planes.
-      const std::vector<double> shifts = extremeFocusShifts(camera);
-      plan.cocMaxPx = 0.0;
-      plan.cocMinPx = std::numeric_limits<double>::infinity();
-      for (const double shift : shifts) {
-        const double atNear = cocDiameterOnWindow(camera, plan.depthMin, shift) * pxPerWindowUnit;
-        const double atFar = cocDiameterOnWindow(camera, plan.depthMax, shift) * pxPerWindowUnit;
-        plan.cocMaxPx = std::max({plan.cocMaxPx, atNear, atFar});
-        // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
-        const double inverse = camera.inverseFocusDistance() + shift;
-        const double focus = inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
-        plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
-      }
-    }
-    std::string range = cat("circle of confusion ", plan.cocMinPx, " to ", plan.cocMaxPx,
-                            " px over depths ", plan.depthMin, " to ", plan.depthMax);
-    if (visible) {
-      // What is seen, not what the bounds could hold.
-      VisibleBlurSummary v;
-      v.prepass = visible->prepass;
-      v.fractions = visible->fractions;
-      v.p50Px = visible->p50Px;
-      v.p90Px = visible->p90Px;
-      v.p99Px = visible->p99Px;
-      v.maxPx = visible->maxPx;
-      v.boundsCocMaxPx = plan.cocMaxPx;
-      v.boundsSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
-      plan.visible = v;
-      plan.cocMinPx = visible->ownMinPx;
-      plan.cocMaxPx = visible->maxPx;
-      range = cat("circle of confusion seen ", plan.cocMinPx, " to ", plan.cocMaxPx, " px (pinhole depth pre-pass at ",
-                  v.prepass.widthPx, "x", v.prepass.heightPx, ", dilated by nearer circles; the bounds would say ",
-                  v.boundsCocMaxPx, " px)");
-    }
-    if (options.pattern == AperturePattern::Lecture17) {
-      plan.apertureSamples = 17;
-      plan.samplesWhy = cat("the lecture's 17-point pattern (", range, ")");
-    } else if (options.apertureSamples > 0) {
-      plan.apertureSamples = options.apertureSamples;
-      plan.samplesWhy = cat("as asked (", range, ")");
-    } else {
-      plan.apertureSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
-      if (plan.apertureSamples == 1)
-        plan.samplesWhy = cat("the scene lies inside the depth of field: ", range);
-      else
-        plan.samplesWhy = cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)", 
-                              plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
-                              " (", range, ")");
-      // An effect may need more views however sharp the scene is (the barrel's cat's eye). With
-      // distortion the barrel clips at the undistorted field, which the overscan's window holds.
-      const EffectNeeds least =
-          effectNeeds(lensOf(camera), planViewOf(renderMap().overscan().camera));
-      if (plan.apertureSamples < std::min(least.minApertureSamples, options.maxSamples)) {
-        plan.apertureSamples = std::min(least.minApertureSamples, options.maxSamples);
-        plan.samplesWhy = cat(plan.apertureSamples, ": ", least.minSamplesWhy, " (", range, ")");
-      }
-    }
+    plan.apertureSamples = 1;
+    plan.samplesWhy = "pinhole camera: one view from the PRP";
   }
+}
 
-  if (options.targetPsnrDb) {
-    // Per-tile budgets: the count is each tile's own, up to the cap; the order progressive.
-    AdaptivePlan a;
-    a.targetPsnrDb = *options.targetPsnrDb;
-    a.tileSizePx = options.tileSizePx;
-    a.maxSamples = std::max(options.maxSamples / 2 * 2, 2);  // even: the two streams stay equal
-    // Each view's textures are filtered over 1/64 of the pixel (or 1/max, if less): finer than the
-    // strata of any count up to 64, and beyond that the filter's own blur is under 1/8 pixel. One
-    // fixed filter for all counts keeps the converged image the same wherever a tile stops.
-    a.lodBias = -0.5f * std::log2(static_cast<float>(std::min(a.maxSamples, kLodSamples)));
-    const TileGrid grid = makeTileGrid(size, a.tileSizePx);
-    for (int t = 0; t < grid.count(); ++t) {
-      const PixelBox b = grid.box(t);
-      // The pre-pass's rows run from the top.
-      const double coc = camera.isPinhole() ? 0.0
-                         : visible ? visible->maxOver(b.x, size.heightPx - b.y - b.height, b.x + b.width, size.heightPx - b.y)
-                                   : plan.cocMaxPx;
-      a.sharpTiles += coc <= 1.0;
-      a.minSamples.push_back(std::min(coc <= 1.0 ? kMinSamplesSharpTile : kMinSamplesBlurredTile, a.maxSamples));
+// The circle of confusion over the scene's depths (cocMinPx, cocMaxPx), or over what the pre-pass
+// saw; returns the range in words for samplesWhy.
+std::string planCircles(const Camera& camera, ImageSize size, const PlanOptions& options, const VisibleBlur* visible,
+                        FramePlan& plan) {
+  const double pxPerWindowUnit = size.widthPx / camera.view.window.width();
+  if (plan.depthMax >= plan.depthMin && plan.depthMax > 0.0) {
+    // Axial colour and field curvature move the plane of focus per channel and toward the
+    // corners: the largest circle is the largest over each of those planes.
+    plan.cocMaxPx = 0.0;
+    plan.cocMinPx = std::numeric_limits<double>::infinity();
+    for (const double shift : extremeFocusShifts(camera)) {
+      const double atNear = cocDiameterOnWindow(camera, plan.depthMin, shift) * pxPerWindowUnit;
+      const double atFar = cocDiameterOnWindow(camera, plan.depthMax, shift) * pxPerWindowUnit;
+      plan.cocMaxPx = std::max({plan.cocMaxPx, atNear, atFar});
+      // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
+      const double inverse = camera.inverseFocusDistance() + shift;
+      const double focus = inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+      plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
     }
-    plan.pattern = AperturePattern::Sobol;
-    plan.apertureSamples = a.maxSamples;
-    plan.samplesWhy = cat("to ", a.targetPsnrDb, " dB: ", grid.count(), " tiles of ", a.tileSizePx, " px, each from ",
-                          kMinSamplesSharpTile, " (", a.sharpTiles, " tiles in focus) or ", kMinSamplesBlurredTile,
-                          " samples (blurred) up to ", a.maxSamples, ", in sobol order, stopping where the two streams' "
-                          "estimate says one more sample gains least (", camera.isPinhole() ? std::string("pinhole camera") : plan.samplesWhy, ")");
-    plan.adaptive = std::move(a);
   }
+  if (!visible)
+    return cat("circle of confusion ", plan.cocMinPx, " to ", plan.cocMaxPx, " px over depths ", plan.depthMin, " to ",
+               plan.depthMax);
+  // What is seen, not what the bounds could hold.
+  VisibleBlurSummary v;
+  v.prepass = visible->prepass;
+  v.fractions = visible->fractions;
+  v.p50Px = visible->p50Px;
+  v.p90Px = visible->p90Px;
+  v.p99Px = visible->p99Px;
+  v.maxPx = visible->maxPx;
+  v.boundsCocMaxPx = plan.cocMaxPx;
+  v.boundsSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
+  plan.visible = v;
+  plan.cocMinPx = visible->ownMinPx;
+  plan.cocMaxPx = visible->maxPx;
+  return cat("circle of confusion seen ", plan.cocMinPx, " to ", plan.cocMaxPx, " px (pinhole depth pre-pass at ",
+             v.prepass.widthPx, "x", v.prepass.heightPx, ", dilated by nearer circles; the bounds would say ",
+             v.boundsCocMaxPx, " px)");
+}
 
-  // What each lens effect asks of the frame (lens/effects/); per-view effects only with many views
-  // through an aperture.
-  const EffectNeeds needs = effectNeeds(lensOf(camera), planViewOf(camera));
-  std::vector<std::string> sceneVariants;
-  if (plan.apertureSamples > 1 && !camera.isPinhole()) {
-    plan.viewsPerSample = needs.viewsPerSample;
-    plan.fieldCurvature = needs.fieldCurvatureWarp;
-    sceneVariants = needs.sceneVariants;
+// Views through an aperture: the pattern's, the count asked, or as many as the largest circle
+// needs — and at least what an effect needs however sharp the scene is (`least`: the barrel's cat's eye).
+void planLensSamples(const PlanOptions& options, const std::string& range, const EffectNeeds& least, FramePlan& plan) {
+  if (options.pattern == AperturePattern::Lecture17) {
+    plan.apertureSamples = 17;
+    plan.samplesWhy = cat("the lecture's 17-point pattern (", range, ")");
+    return;
   }
-  plan.remap = !needs.lensVariants.empty();
-  plan.remapTables = needs.remapTables;
-  if (plan.remap) map.validateForwardLinearisation();
-  plan.overscan = renderMap().overscan();
+  if (options.apertureSamples > 0) {
+    plan.apertureSamples = options.apertureSamples;
+    plan.samplesWhy = cat("as asked (", range, ")");
+    return;
+  }
+  plan.apertureSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
+  if (plan.apertureSamples == 1)
+    plan.samplesWhy = cat("the scene lies inside the depth of field: ", range);
+  else
+    plan.samplesWhy = cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)",
+                          plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
+                          " (", range, ")");
+  if (plan.apertureSamples < std::min(least.minApertureSamples, options.maxSamples)) {
+    plan.apertureSamples = std::min(least.minApertureSamples, options.maxSamples);
+    plan.samplesWhy = cat(plan.apertureSamples, ": ", least.minSamplesWhy, " (", range, ")");
+  }
+}
+
+// Per-tile budgets (--target-psnr): the count is each tile's own, up to the cap; the order progressive.
+void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& options, const VisibleBlur* visible,
+                  FramePlan& plan) {
+  AdaptivePlan a;
+  a.targetPsnrDb = *options.targetPsnrDb;
+  a.tileSizePx = options.tileSizePx;
+  a.maxSamples = std::max(options.maxSamples / 2 * 2, 2);  // even: the two streams stay equal
+  // Each view's textures are filtered over 1/64 of the pixel (or 1/max, if less): finer than the
+  // strata of any count up to 64, and beyond that the filter's own blur is under 1/8 pixel. One
+  // fixed filter for all counts keeps the converged image the same wherever a tile stops.
+  a.lodBias = -0.5f * std::log2(static_cast<float>(std::min(a.maxSamples, kLodSamples)));
+  const TileGrid grid = makeTileGrid(size, a.tileSizePx);
+  for (int t = 0; t < grid.count(); ++t) {
+    const PixelBox b = grid.box(t);
+    // The pre-pass's rows run from the top.
+    const double coc = camera.isPinhole() ? 0.0
+                       : visible ? visible->maxOver(b.x, size.heightPx - b.y - b.height, b.x + b.width, size.heightPx - b.y)
+                                 : plan.cocMaxPx;
+    a.sharpTiles += coc <= 1.0;
+    a.minSamples.push_back(std::min(coc <= 1.0 ? kMinSamplesSharpTile : kMinSamplesBlurredTile, a.maxSamples));
+  }
+  plan.pattern = AperturePattern::Sobol;
+  plan.apertureSamples = a.maxSamples;
+  plan.samplesWhy = cat("to ", a.targetPsnrDb, " dB: ", grid.count(), " tiles of ", a.tileSizePx, " px, each from ",
+                        kMinSamplesSharpTile, " (", a.sharpTiles, " tiles in focus) or ", kMinSamplesBlurredTile,
+                        " samples (blurred) up to ", a.maxSamples, ", in sobol order, stopping where the two streams' "
+                        "estimate says one more sample gains least (", camera.isPinhole() ? std::string("pinhole camera") : plan.samplesWhy, ")");
+  plan.adaptive = std::move(a);
+}
+
+// The passes that run, each with why, from the views planned and what the effects need.
+void planPasses(const Camera& camera, std::size_t triangles, const EffectNeeds& needs,
+                const std::vector<std::string>& sceneVariants, FramePlan& plan) {
   const ImageSize rendered = plan.overscan.size;
   const std::string where = plan.remap ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,
                                              "+", plan.overscan.padPx.y, " px overscan for the lens pass)")
@@ -236,6 +218,42 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
       plan.passes.push_back({"vignetting", cat("multiplies the image by ", gain), {}});
     }
   }
+}
+
+}  // namespace
+
+FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options,
+                        const VisibleBlur* visible) {
+  FramePlan plan;
+  // The frame's image map, built once, and its render for the lens pass (the image itself without one).
+  const ThinLensMap map(camera, size);
+  const ThinLensMap rendered = map.overscanned();
+  plan.pattern = options.pattern;
+  plan.seed = options.seed;
+  depthRange(scene, camera, plan);
+  if (camera.isPinhole()) {
+    planPinholeSamples(options, plan);
+  } else {
+    const std::string range = planCircles(camera, size, options, visible, plan);
+    // With distortion the barrel clips at the undistorted field, which the overscan's window holds.
+    planLensSamples(options, range, effectNeeds(lensOf(camera), planViewOf(rendered.overscan().camera)), plan);
+  }
+  if (options.targetPsnrDb) planAdaptive(camera, size, options, visible, plan);
+
+  // What each lens effect asks of the frame (lens/effects/); per-view effects only with many views
+  // through an aperture.
+  const EffectNeeds needs = effectNeeds(lensOf(camera), planViewOf(camera));
+  std::vector<std::string> sceneVariants;
+  if (plan.apertureSamples > 1 && !camera.isPinhole()) {
+    plan.viewsPerSample = needs.viewsPerSample;
+    plan.fieldCurvature = needs.fieldCurvatureWarp;
+    sceneVariants = needs.sceneVariants;
+  }
+  plan.remap = !needs.lensVariants.empty();
+  plan.remapTables = needs.remapTables;
+  if (plan.remap) map.validateForwardLinearisation();
+  plan.overscan = rendered.overscan();
+  planPasses(camera, scene.triangleCount(), needs, sceneVariants, plan);
   if (camera.isPinhole() && needs.idleThroughPinhole)
     plan.warnings.push_back("axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
                             "has none, so they change nothing here (give an aperture)");

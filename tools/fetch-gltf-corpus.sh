@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fetches the external glTF test corpus (the ctest entry `corpus`) for a machine that has network
 # access: 29 Khronos sample models and 53 glTF-Validator test files, at pinned commits, laid out as
-# tests/unit/gltf_loader_test.cpp expects (samples/<Model>/<variant>/..., invalid/base/...,
+# tests/scene/gltf_loader_test.cpp expects (samples/<Model>/<variant>/..., invalid/base/...,
 # invalid/ext/..., invalid/expected.json). Prints the cmake option that points a build at it.
 #
 #   tools/fetch-gltf-corpus.sh [FOLDER]      FOLDER defaults to build/gltf-corpus in this repository

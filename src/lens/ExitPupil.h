@@ -9,7 +9,7 @@
 // Rings would appear in an image if a ring's box were computed at one radius only and missed rays
 // that pass at another radius of the same ring. Each box is the union of the passing regions
 // found at several radii across its ring, both ends included, grown by a search cell: it holds
-// every passing ray of the ring (tests/unit/exit_pupil_test.cpp checks this against a search of
+// every passing ray of the ring (tests/lens/exit_pupil_test.cpp checks this against a search of
 // the whole rear element). Pure math (GLM + std), no GL.
 #include "lens/LensPrescription.h"
 #include "lens/RealLens.h"

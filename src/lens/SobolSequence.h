@@ -24,7 +24,7 @@
 // sobolSample is the two-stream order the per-tile budgets (render/AdaptiveRender, --target-psnr)
 // draw today: in each stream the lens and the pixel are two separate (0, 2) pairs, paired by a
 // scrambled index, so they are stratified in 2-D each but not jointly. Its estimate is what
-// tests/gl/estimate_test.cpp validates; sobolTwoStreamSample is the 4-D form for it to move to
+// tests/render/estimate_test.cpp validates; sobolTwoStreamSample is the 4-D form for it to move to
 // once that test holds with it (docs/sampling.md).
 #include "lens/AperturePattern.h"
 

@@ -29,7 +29,7 @@
 //    (anyPerpendicular), where MikkTSpace copies one from a neighbouring group: the frame is
 //    arbitrary there either way, since no uv gradient exists to map the texture by.
 //  - Sums are in double; results agree with MikkTSpace to float rounding on meshes with
-//    non-degenerate uv (tests/unit/tangents_test.cpp checks them against the analytic ∂P/∂u).
+//    non-degenerate uv (tests/scene/tangents_test.cpp checks them against the analytic ∂P/∂u).
 
 namespace lenslab {
 

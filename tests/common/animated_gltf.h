@@ -1,7 +1,7 @@
 #pragma once
 // A small glTF written by a test: one buffer (in a data: URI), meshes, nodes, cameras and
-// animation channels added one call at a time (tests/unit/animation_test.cpp,
-// tests/unit/camera_options_test.cpp).
+// animation channels added one call at a time (tests/scene/animation_test.cpp,
+// tests/plan/camera_options_test.cpp).
 #include <OpenImageIO/strutil.h>
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Scenes of alphaMode BLEND quads for the tests of both renderers' blending (tests/gl/alpha_blend_test.cpp,
-// raycast_compare_test.cpp, tests/unit/blend_order_test.cpp): quads facing +z, placed apart in
+// Scenes of alphaMode BLEND quads for the tests of both renderers' blending (tests/render/alpha_blend_test.cpp,
+// raycast_compare_test.cpp, tests/scene/blend_order_test.cpp): quads facing +z, placed apart in
 // depth so that the rasterizer's back-to-front order by bounds centre is the true order.
 #include "scene/ProceduralScenes.h"
 #include "scene/Scene.h"

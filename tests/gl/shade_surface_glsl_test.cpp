@@ -8,8 +8,8 @@
 #include "gl/FullScreenPass.h"
 #include "gl/Framebuffer.h"
 #include "gl/Shader.h"
-#include "gl_test_context.h"
-#include "shader_dir_override.h"
+#include "../common/gl_test_context.h"
+#include "../common/shader_dir_override.h"
 #include "scene/Brdf.h"
 #include "scene/ShadeSurface.h"
 

@@ -1,8 +1,8 @@
 // Shader errors are reported with the file, the line and the driver's log.
 #include "gl/EmbeddedShaders.h"
 #include "gl/Shader.h"
-#include "gl_test_context.h"
-#include "shader_dir_override.h"
+#include "../common/gl_test_context.h"
+#include "../common/shader_dir_override.h"
 
 #include <gtest/gtest.h>
 

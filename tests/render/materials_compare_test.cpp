@@ -1,7 +1,7 @@
 // Metallic-roughness materials and punctual lights in the rasterizer against the CPU ray cast:
 // both evaluate shaders/common/brdf.glsl on the same inputs (positions relative to each view's
 // eye, v toward it), so the images differ only by sampling and texture filtering.
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"

@@ -11,7 +11,7 @@
 // (golden-failures/). A missing golden is a failure. To regenerate after an intended change:
 //   tools/update-goldens.sh   (runs this test with LENSLAB_UPDATE_GOLDENS=1)
 #include "camera/ImageSize.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "io/ImageFile.h"

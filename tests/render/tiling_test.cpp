@@ -2,7 +2,7 @@
 // rays, same aperture samples, same sub-pixel jitter), rendered with margins for what the lens
 // gather and the field-curvature warp read from outside it. Small forced tiles (at most 64 px,
 // here 50 x 45) put tile edges everywhere, including through the distortion's strongest part.
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "io/ImageFile.h"

@@ -1,7 +1,7 @@
 // Reverse-Z with a float depth buffer keeps surfaces 1e-5 apart (relative) in the right order
 // from near = 1e-3 to far = 1e6: the nearer colour wins whichever is drawn first.
 #include "camera/Camera.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "plan/FramePlan.h"
 #include "render/Renderer.h"
 #include "scene/ProceduralScenes.h"

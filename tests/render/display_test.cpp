@@ -4,7 +4,7 @@
 #include "camera/Camera.h"
 #include "gl/Framebuffer.h"
 #include "gl/ImageTexture.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/ImageFile.h"
 #include "io/ToneMap.h"
 #include "plan/FramePlan.h"

@@ -5,7 +5,7 @@
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Text.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"

@@ -7,7 +7,7 @@
 #include "camera/Camera.h"
 #include "camera/Projection.h"
 #include "core/Text.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"
 #include "plan/TilePlan.h"

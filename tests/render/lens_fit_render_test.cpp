@@ -6,7 +6,7 @@
 #include "camera/LensFitCamera.h"
 #include "camera/PhysicalCamera.h"
 #include "core/Text.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/ImageCompare.h"
 #include "core/TextFile.h"
 #include "lens/LensCamera.h"

@@ -3,7 +3,7 @@
 #include "../common/blend_scene.h"
 #include "camera/PhysicalCamera.h"
 #include "core/Error.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/EnvironmentFile.h"
 #include "io/ImageCompare.h"

@@ -8,7 +8,7 @@
 #include "camera/Camera.h"
 #include "camera/DepthRange.h"
 #include "core/Text.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "plan/CameraSelection.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"

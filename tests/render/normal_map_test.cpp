@@ -5,7 +5,7 @@
 #include "../common/looking_at.h"
 #include "camera/PhysicalCamera.h"
 #include "camera/Projection.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
@@ -100,7 +100,7 @@ glm::dvec3 glTFFrameNormal(const glm::dmat4& worldFromModel, double normalScale)
 // The radiance the shading gives a surface of kBase (the glTF default metallic-roughness's
 // dielectric here: metallic 0 set by tiltedByMap) with normal `n` seen along `v` (unit, toward
 // the eye), under the scene's default light and its uniform surround: brdf.glsl's functions,
-// which tests/unit/brdf_test.cpp holds to closed forms; here the normal is what is tested.
+// which tests/scene/brdf_test.cpp holds to closed forms; here the normal is what is tested.
 glm::dvec3 shadedWith(const Scene& scene, const glm::dvec3& n, const glm::dvec3& v) {
   ShadingSurface s;
   s.baseColor = kBase;

@@ -1,7 +1,7 @@
 // A small marker at a known world position lands on the pixel the lecture's formula predicts.
 #include "camera/Camera.h"
 #include "camera/Projection.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "plan/FramePlan.h"
 #include "render/Renderer.h"
 #include "scene/ProceduralScenes.h"

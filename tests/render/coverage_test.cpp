@@ -1,7 +1,7 @@
 // Coverage in alpha and the background colour, in both renderers: where no surface is seen the
 // pixel is the background with alpha 0, where a surface fills the pixel alpha is 1, and the
 // fraction in between is the same in the raster and the ray cast.
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"

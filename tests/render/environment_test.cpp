@@ -3,7 +3,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/FullScreenPass.h"
 #include "gl/Object.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"

@@ -2,7 +2,7 @@
 // surface once, and a constant colour comes out to float precision.
 #include "camera/Camera.h"
 #include "camera/Projection.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"

@@ -14,7 +14,7 @@
 // scrambles (Renderer::step) make the parts many. Tiles that stop early are those whose estimate
 // came out low, which leans the frame's estimate to the optimistic side by a few tenths of a dB.
 #include "camera/DepthRange.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"

@@ -4,7 +4,7 @@
 // renderer that filters textures over a pixel footprint and then averages over the pixel again
 // converges to a blurred image instead, and plateaus.
 #include "../common/pixel_integral.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"

@@ -2,7 +2,7 @@
 // post-process baseline fails where the lecture's partial obscuration matters (occlusion edges).
 #include "../common/temp_dir_test.h"
 #include "core/Error.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/AtomicFile.h"
 #include "io/CameraJson.h"
 #include "lens/AperturePattern.h"

@@ -4,7 +4,7 @@
 #include "../common/opencv_model.h"
 #include "camera/ImageSize.h"
 #include "core/Text.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "plan/FramePlan.h"
 #include "render/Renderer.h"

@@ -5,7 +5,7 @@
 #include "../common/blend_scene.h"
 #include "camera/PhysicalCamera.h"
 #include "camera/Projection.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"

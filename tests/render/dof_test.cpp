@@ -2,7 +2,7 @@
 #include "camera/Camera.h"
 #include "camera/Projection.h"
 #include "camera/Ray.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
 #include "io/ImageCompare.h"
 #include "plan/FramePlan.h"

@@ -1,6 +1,6 @@
 // The oracle's own checks (tests/common/pixel_integral.h): clipping, the Gauss rules, the camera
 // it builds from the lecture's formula, and its images against closed forms and against
-// themselves at twice the quadrature (the grazing floor's: tests/gl/oracle_test.cpp). No GL; they live beside the oracle tests they support.
+// themselves at twice the quadrature (the grazing floor's: tests/render/oracle_test.cpp). No GL; they live beside the oracle tests they support.
 #include "../common/pixel_integral.h"
 #include "camera/Projection.h"
 

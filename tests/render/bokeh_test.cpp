@@ -5,7 +5,7 @@
 // falls in the square about the pixel, over the shape's area (polygon clipping, exact).
 #include "camera/Camera.h"
 #include "camera/Projection.h"
-#include "gl_test_context.h"
+#include "../common/gl_test_context.h"
 #include "lens/ApertureShape.h"
 #include "lens/LensBarrel.h"
 #include "plan/FramePlan.h"

@@ -1,6 +1,6 @@
 // Where the scene's programs take their inputs, for both languages: the shaders include this file
 // as GLSL, and the C++ that sets the inputs (render/GpuScene.cpp, ScenePass, SceneUniforms,
-// GpuEnvironment) includes it as C++, so a location is written once. #define lines only.
+// GpuEnvironment, VignettePass) includes it as C++, so a location is written once. #define lines only.
 #ifndef LENSLAB_LOCATIONS_GLSL
 #define LENSLAB_LOCATIONS_GLSL
 
@@ -67,6 +67,12 @@
 #define LOCATION_WORLD_DIRECTION_FROM_NDC 0
 #define LOCATION_NDC_PER_PIXEL 1
 #define LOCATION_BACKGROUND_WEIGHT 2
+
+// The vignetting gain's inputs (common/vignetting.glsl) in the post passes that multiply by it:
+// accumulate/resolve.frag and lens/vignetting.frag, set by render/VignettePass.cpp.
+#define LOCATION_VIGNETTING_AT_ORIGIN 40
+#define LOCATION_VIGNETTING_PER_PIXEL 41
+#define LOCATION_VIGNETTING_COEFFICIENTS 42
 
 // Texture units.
 #define UNIT_BASE_COLOR 0              // sRGB

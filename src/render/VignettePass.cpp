@@ -3,6 +3,8 @@
 #include "camera/Projection.h"
 #include "gl/Shader.h"
 
+#include "../../shaders/common/locations.glsl"
+
 namespace lenslab {
 
 VignetteGain vignetteGainFor(const Camera& camera, ImageSize size) {
@@ -18,9 +20,9 @@ VignetteGain vignetteGainFor(const Camera& camera, ImageSize size) {
 }
 
 void setVignetteGain(GLuint program, const VignetteGain& gain) {
-  glProgramUniform2fv(program, 40, 1, &gain.normalisedAtOrigin.x);
-  glProgramUniform2fv(program, 41, 1, &gain.normalisedPerPixel.x);
-  glProgramUniform3fv(program, 42, 1, &gain.coefficients.x);
+  glProgramUniform2fv(program, LOCATION_VIGNETTING_AT_ORIGIN, 1, &gain.normalisedAtOrigin.x);
+  glProgramUniform2fv(program, LOCATION_VIGNETTING_PER_PIXEL, 1, &gain.normalisedPerPixel.x);
+  glProgramUniform3fv(program, LOCATION_VIGNETTING_COEFFICIENTS, 1, &gain.coefficients.x);
 }
 
 VignettePass::VignettePass() : program_(gl::buildProgram("common/fullscreen.vert", "lens/vignetting.frag")) {}

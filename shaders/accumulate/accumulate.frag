@@ -5,26 +5,27 @@
 // a batch at a time, so that the scene passes of a batch need not wait for one another.
 // Each view has a weight per channel: 1 for a full view; with axial chromatic aberration each
 // aperture point gives three views, each focused for one colour and adding only that colour.
+#include "../common/locations.glsl"
 layout(binding = 0) uniform sampler2DArray views;
-layout(location = 0) uniform int viewCount;
-layout(location = 1) uniform vec4 weights[8];
+layout(location = LOCATION_ACCUMULATE_VIEW_COUNT) uniform int viewCount;
+layout(location = LOCATION_ACCUMULATE_WEIGHTS) uniform vec4 weights[ACCUMULATE_MAX_BATCH];
 #ifdef FIELD_CURVATURE
 // The lecture's "curved focal plane" (see src/render/Accumulator.h): pixel x of a view focused on
 // the curved surface is what the flat-focused view shows at x − shift·r(x)², r the normalised
 // radius of x. Sampled with Catmull–Rom.
-layout(location = 9) uniform vec2 shiftPerRadius2[8];
+layout(location = LOCATION_ACCUMULATE_SHIFT_PER_RADIUS2) uniform vec2 shiftPerRadius2[ACCUMULATE_MAX_BATCH];
 #endif
 #if defined(FIELD_CURVATURE) || defined(BARREL)
 // Normalised image coordinates (the pinhole ray's x/z, y/z) of GL pixel corner (0, 0), and their step.
-layout(location = 17) uniform vec2 normalisedAtOrigin;
-layout(location = 18) uniform vec2 normalisedPerPixel;
+layout(location = LOCATION_ACCUMULATE_NORMALISED_AT_ORIGIN) uniform vec2 normalisedAtOrigin;
+layout(location = LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL) uniform vec2 normalisedPerPixel;
 #endif
 #ifdef BARREL
 // Cat's-eye vignetting (src/lens/LensBarrel.h): the ray from view i's aperture point toward
 // direction n crosses the barrel's opening at barrelLens[i] + barrelReach·n, in units of the
 // opening's radius; outside it the barrel stops the ray and the view adds nothing there.
-layout(location = 30) uniform vec2 barrelLens[8];
-layout(location = 38) uniform float barrelReach;
+layout(location = LOCATION_ACCUMULATE_BARREL_LENS) uniform vec2 barrelLens[ACCUMULATE_MAX_BATCH];
+layout(location = LOCATION_ACCUMULATE_BARREL_REACH) uniform float barrelReach;
 #endif
 layout(location = 0) out vec4 sum;
 

@@ -8,6 +8,7 @@
 // form a randomly shifted lattice, so these sums converge to the integral of the true image over
 // the pixel's pre-image — the pixel integral of the distorted image — with no resampling filter
 // to ring or blur, and the mean of samples never leaves the range of the scene's values.
+#include "../common/locations.glsl"
 layout(binding = 0) uniform sampler2DArray views;
 layout(binding = 1) uniform sampler2D forwardPosition;  // per view texel: distorted x, y (output px); |det J|
 layout(binding = 2) uniform sampler2D forwardJacobian;  // per view texel: ∂position/∂x (xy), ∂position/∂y (zw)
@@ -16,18 +17,18 @@ layout(binding = 3) uniform sampler2D greenMap;         // per output pixel: the
 layout(binding = 4) uniform sampler2D redMap;
 layout(binding = 5) uniform sampler2D blueMap;
 #endif
-layout(location = 0) uniform int viewCount;
-layout(location = 1) uniform vec4 weights[8];
+layout(location = LOCATION_ACCUMULATE_VIEW_COUNT) uniform int viewCount;
+layout(location = LOCATION_ACCUMULATE_WEIGHTS) uniform vec4 weights[ACCUMULATE_MAX_BATCH];
 #ifdef FIELD_CURVATURE
-layout(location = 9) uniform vec2 shiftPerRadius2[8];
-layout(location = 17) uniform vec2 normalisedAtOrigin;
-layout(location = 18) uniform vec2 normalisedPerPixel;
+layout(location = LOCATION_ACCUMULATE_SHIFT_PER_RADIUS2) uniform vec2 shiftPerRadius2[ACCUMULATE_MAX_BATCH];
+layout(location = LOCATION_ACCUMULATE_NORMALISED_AT_ORIGIN) uniform vec2 normalisedAtOrigin;
+layout(location = LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL) uniform vec2 normalisedPerPixel;
 #endif
-layout(location = 19) uniform vec2 jitter[8];  // each view's sub-pixel offset (view pixels, GL orientation)
-layout(location = 27) uniform float reach;     // view pixels: see ForwardTable::reachPx
+layout(location = LOCATION_GATHER_JITTER) uniform vec2 jitter[ACCUMULATE_MAX_BATCH];  // each view's sub-pixel offset (view pixels, GL orientation)
+layout(location = LOCATION_GATHER_REACH) uniform float reach;     // view pixels: see ForwardTable::reachPx
 #ifdef LATERAL_COLOUR
-layout(location = 28) uniform vec2 principalPoint;  // output pixels, GL orientation
-layout(location = 29) uniform vec2 lateralScale;    // 1 + lateral, red and blue
+layout(location = LOCATION_GATHER_PRINCIPAL_POINT) uniform vec2 principalPoint;  // output pixels, GL orientation
+layout(location = LOCATION_GATHER_LATERAL_SCALE) uniform vec2 lateralScale;    // 1 + lateral, red and blue
 #endif
 #ifdef BARREL
 // Cat's-eye vignetting (src/lens/LensBarrel.h), per sample: the ray of view i's texel t leaves
@@ -37,9 +38,9 @@ layout(location = 29) uniform vec2 lateralScale;    // 1 + lateral, red and blue
 // radius, at barrelLens[i] + barrelAtOrigin + (t + ½ + jitter)·barrelPerPixel (= p·(1 − L/z_f)/R
 // + (L/R)·n); outside the unit circle the barrel stops it. The distortion and lateral colour move
 // where a sample lands, not which ray it is, so each channel's gather masks the same samples.
-layout(location = 60) uniform vec2 barrelAtOrigin;   // (L/R)·n at GL pixel corner (0, 0) of the views
-layout(location = 61) uniform vec2 barrelPerPixel;   // (L/R)·n's step per view pixel
-layout(location = 62) uniform vec2 barrelLens[8];    // 62–69: p·(1 − L/z_f)/R per view
+layout(location = LOCATION_GATHER_BARREL_AT_ORIGIN) uniform vec2 barrelAtOrigin;   // (L/R)·n at GL pixel corner (0, 0) of the views
+layout(location = LOCATION_GATHER_BARREL_PER_PIXEL) uniform vec2 barrelPerPixel;   // (L/R)·n's step per view pixel
+layout(location = LOCATION_GATHER_BARREL_LENS) uniform vec2 barrelLens[ACCUMULATE_MAX_BATCH];    // 62–69: p·(1 − L/z_f)/R per view
 #endif
 layout(location = 0) out vec4 sum;
 layout(location = 1) out vec4 weight;

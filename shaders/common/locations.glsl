@@ -68,6 +68,25 @@
 #define LOCATION_NDC_PER_PIXEL 1
 #define LOCATION_BACKGROUND_WEIGHT 2
 
+// The accumulation of aperture views (accumulate/accumulate.frag, accumulate/gather_lens.frag),
+// set by render/Accumulator.cpp: a batch of at most ACCUMULATE_MAX_BATCH views (Accumulator's
+// kMaxBatch), one array element per view.
+#define ACCUMULATE_MAX_BATCH 8
+#define LOCATION_ACCUMULATE_VIEW_COUNT 0
+#define LOCATION_ACCUMULATE_WEIGHTS 1                // 1–8
+#define LOCATION_ACCUMULATE_SHIFT_PER_RADIUS2 9      // 9–16, FIELD_CURVATURE
+#define LOCATION_ACCUMULATE_NORMALISED_AT_ORIGIN 17  // FIELD_CURVATURE or BARREL
+#define LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL 18
+#define LOCATION_GATHER_JITTER 19                    // 19–26, the lens gather
+#define LOCATION_GATHER_REACH 27
+#define LOCATION_GATHER_PRINCIPAL_POINT 28           // LATERAL_COLOUR
+#define LOCATION_GATHER_LATERAL_SCALE 29
+#define LOCATION_ACCUMULATE_BARREL_LENS 30           // 30–37, BARREL without the lens gather
+#define LOCATION_ACCUMULATE_BARREL_REACH 38
+#define LOCATION_GATHER_BARREL_AT_ORIGIN 60          // BARREL with the lens gather
+#define LOCATION_GATHER_BARREL_PER_PIXEL 61
+#define LOCATION_GATHER_BARREL_LENS 62               // 62–69
+
 // The vignetting gain's inputs (common/vignetting.glsl) in the post passes that multiply by it:
 // accumulate/resolve.frag and lens/vignetting.frag, set by render/VignettePass.cpp.
 #define LOCATION_VIGNETTING_AT_ORIGIN 40

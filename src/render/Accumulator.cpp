@@ -2,6 +2,8 @@
 
 #include "gl/Shader.h"
 
+#include "../../shaders/common/locations.glsl"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -130,6 +132,7 @@ void Accumulator::allocateAddTarget() {
 }
 
 int Accumulator::layersFor(int widthPx, int heightPx) {
+  static_assert(kMaxBatch == ACCUMULATE_MAX_BATCH, "the accumulate shaders' arrays hold one batch of views");
   const double bytesPerLayer = 16.0 * widthPx * heightPx;
   return std::clamp(static_cast<int>(kBatchMemoryBytes / bytesPerLayer), 1, kMaxBatch);
 }
@@ -256,33 +259,33 @@ void Accumulator::flushLayers() {
                        : barrel_    ? accumulateBarrel_[curvature_ ? 1 : 0].id()
                        : curvature_ ? accumulateCurved_.id()
                                     : accumulate_.id();
-  glProgramUniform1i(program, 0, pending_);
-  glProgramUniform4fv(program, 1, pending_, &pendingWeights_[0].x);
+  glProgramUniform1i(program, LOCATION_ACCUMULATE_VIEW_COUNT, pending_);
+  glProgramUniform4fv(program, LOCATION_ACCUMULATE_WEIGHTS, pending_, &pendingWeights_[0].x);
   if (curvature_) {
-    glProgramUniform2fv(program, 9, pending_, &pendingShifts_[0].x);
-    glProgramUniform2fv(program, 17, 1, &curvature_->normalisedAtOrigin.x);
-    glProgramUniform2fv(program, 18, 1, &curvature_->normalisedPerPixel.x);
+    glProgramUniform2fv(program, LOCATION_ACCUMULATE_SHIFT_PER_RADIUS2, pending_, &pendingShifts_[0].x);
+    glProgramUniform2fv(program, LOCATION_ACCUMULATE_NORMALISED_AT_ORIGIN, 1, &curvature_->normalisedAtOrigin.x);
+    glProgramUniform2fv(program, LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL, 1, &curvature_->normalisedPerPixel.x);
   }
   if (barrel_ && lens_) {
     // The lens gather masks each sample at its own ray (gather_lens.frag): the opening's
     // coordinates of the views' pixel grid, in units of its radius.
     const glm::vec2 atOrigin = barrel_->reach * barrel_->normalisedAtOrigin, perPixel = barrel_->reach * barrel_->normalisedPerPixel;
-    glProgramUniform2fv(program, 60, 1, &atOrigin.x);
-    glProgramUniform2fv(program, 61, 1, &perPixel.x);
-    glProgramUniform2fv(program, 62, pending_, &pendingBarrelLens_[0].x);
+    glProgramUniform2fv(program, LOCATION_GATHER_BARREL_AT_ORIGIN, 1, &atOrigin.x);
+    glProgramUniform2fv(program, LOCATION_GATHER_BARREL_PER_PIXEL, 1, &perPixel.x);
+    glProgramUniform2fv(program, LOCATION_GATHER_BARREL_LENS, pending_, &pendingBarrelLens_[0].x);
   }
   if (barrel_ && !lens_) {
-    glProgramUniform2fv(program, 17, 1, &barrel_->normalisedAtOrigin.x);
-    glProgramUniform2fv(program, 18, 1, &barrel_->normalisedPerPixel.x);
-    glProgramUniform2fv(program, 30, pending_, &pendingBarrelLens_[0].x);
-    glProgramUniform1f(program, 38, barrel_->reach);
+    glProgramUniform2fv(program, LOCATION_ACCUMULATE_NORMALISED_AT_ORIGIN, 1, &barrel_->normalisedAtOrigin.x);
+    glProgramUniform2fv(program, LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL, 1, &barrel_->normalisedPerPixel.x);
+    glProgramUniform2fv(program, LOCATION_ACCUMULATE_BARREL_LENS, pending_, &pendingBarrelLens_[0].x);
+    glProgramUniform1f(program, LOCATION_ACCUMULATE_BARREL_REACH, barrel_->reach);
   }
   if (lens_) {
-    glProgramUniform2fv(program, 19, pending_, &pendingJitters_[0].x);
-    glProgramUniform1f(program, 27, lens_->reachPx);
+    glProgramUniform2fv(program, LOCATION_GATHER_JITTER, pending_, &pendingJitters_[0].x);
+    glProgramUniform1f(program, LOCATION_GATHER_REACH, lens_->reachPx);
     if (lens_->lateral) {
-      glProgramUniform2fv(program, 28, 1, &lens_->principalPointPx.x);
-      glProgramUniform2fv(program, 29, 1, &lens_->lateralScale.x);
+      glProgramUniform2fv(program, LOCATION_GATHER_PRINCIPAL_POINT, 1, &lens_->principalPointPx.x);
+      glProgramUniform2fv(program, LOCATION_GATHER_LATERAL_SCALE, 1, &lens_->lateralScale.x);
     }
     glBindTextureUnit(1, lens_->forwardPosition);
     glBindTextureUnit(2, lens_->forwardJacobian);

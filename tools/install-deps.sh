@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libbenchmark-dev libimgui-dev libcli11-dev libembree-dev libtbb-dev libeigen3-dev
   xvfb xauth fonts-dejavu-core python3-pil python3-yaml
   strace  # tests/install/install_test.sh, where no private mount namespace can be made
+  clang-format  # tools/check-format.sh: the C++ follows .clang-format (ctest entry format)
 )
 # --fuzz: also what tools/fuzz.sh needs (it asks for them itself): libFuzzer comes with clang (the
 # default build stays on gcc); llvm-14 has llvm-symbolizer, for file:line in the fuzzers' reports.

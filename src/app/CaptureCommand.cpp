@@ -96,7 +96,7 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
     if (frameCameras.followsNode() && !scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
     const FrameKey f = frameKey(frameCameras, scene, o, frame);
     const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
-    ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.effects.distortion, 0, where);
+    ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
     const std::string key = colmapCamerasText({camera});
     const auto [it, added] = cameraIdOfParams.emplace(key, static_cast<std::uint32_t>(cameras.size() + 1));
     if (added) {
@@ -109,8 +109,8 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
                                    imageWhere));
     // What a pinhole model cannot hold. Blur (depth of field, axial colour, field curvature) is
     // centred where the pinhole at the lens centre projects, so the geometry stays right.
-    const LensEffects& e = f.camera.effects;
-    if (!f.camera.isPinhole())
+    const LensEffects& e = f.camera.lens.effects;
+    if (!f.camera.lens.isPinhole())
       warnings.insert("the depth of field (aperture and focus) is not in the model: COLMAP's cameras are pinholes "
                       "(each blur is centred where the model projects)");
     if (e.chromatic.hasAxial())
@@ -199,7 +199,7 @@ struct CaptureRun {
     const ImageSize size = f.size;
     if (const std::string shape = pixelShapeWarning(f.camera, o.width, o.height, size); !shape.empty()) warnOnce(shape);
     const std::string cameraText =
-        toIntrinsicsCameraJson(key.camera, key.effects, size, cameras.nearGiven(), cameras.farGiven(), key.aperture, key.barrel);
+        toIntrinsicsCameraJson(key.camera, key.lens, size, cameras.nearGiven(), cameras.farGiven());
     // The frame's camera as `render --camera` will read it, from the very text written.
     const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, f.where).camera, scene.bounds);
 

@@ -24,7 +24,7 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   const OpenCvPose pose = poseOf(camera.view);
   nlohmann::json j;
   j["K"] = {{k.fx, 0.0, k.cx}, {0.0, k.fy, k.cy}, {0.0, 0.0, 1.0}};
-  const Distortion& d = camera.effects.distortion;
+  const Distortion& d = camera.lens.effects.distortion;
   if (d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["dist"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
   j["R"] = nlohmann::json::array();
   for (const glm::dvec3& row : pose.rows) j["R"].push_back({row.x, row.y, row.z});
@@ -32,7 +32,7 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   j["width"] = size.widthPx;
   j["height"] = size.heightPx;
   j["focus_distance"] = distanceJson(camera.focusDistance());
-  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (camera.lens.apertureRadius > 0.0) j["aperture_radius"] = camera.lens.apertureRadius;
   return j;
 }
 

@@ -29,8 +29,9 @@ FrameCameras::FrameCameras(const CaptureOptions& o, Scene& scene, double imageAs
   if (base_.form != CameraForm::GltfPerspective) {
     const SelectedCamera still = composeCamera(base_, o.camera, imageAspect_);
     still_ = physicalOf(still);
-    stillAperture_ = still.camera.aperture;
-    stillBarrel_ = still.camera.barrel;
+    // Its aperture shape and barrel go into every frame; its lens effects do not.
+    stillLens_ = still.camera.lens;
+    stillLens_.effects = {};
   }
 }
 
@@ -46,10 +47,10 @@ PathKey FrameCameras::at(const Scene& scene, double time, const std::string& whe
     if (o_.camera.changesLens()) key.camera = withCameraOptions(key.camera, o_.camera, where);  // the command line wins
     return key;
   }
-  if (still_) return {time, *still_, {}, stillAperture_, stillBarrel_};
+  if (still_) return {time, *still_, stillLens_};
   // A glTF camera where its node is at this time, its focus on the scene's centre then.
   const BaseCamera base = gltfBaseCamera(scene, base_.gltfIndex);
-  return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}, {}, {}};
+  return {time, gltfPhysicalCamera(base, o_.camera, imageAspect_), {}};
 }
 
 PhysicalCamera FrameCameras::physicalOf(const SelectedCamera& selected) const {
@@ -65,11 +66,8 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.timeSeconds = cameras.timeOf(frame);
   k.where = cat(cameras.name(), ": frame ", frame, " (", k.timeSeconds, " s)");
   k.key = cameras.at(scene, k.timeSeconds, k.where);
-  k.key.aperture = withApertureOptions(k.key.aperture, o.lens);  // --blades / --squeeze over every frame's
-  k.camera = toCamera(k.key.camera, k.where);
-  k.camera.effects = k.key.effects;
-  k.camera.aperture = k.key.aperture;
-  k.camera.barrel = k.key.barrel;
+  k.key.lens.aperture = withApertureOptions(k.key.lens.aperture, o.lens);  // --blades / --squeeze over every frame's
+  k.camera = toCamera(k.key.camera, k.key.lens, k.where);
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
 }

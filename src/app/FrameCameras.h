@@ -70,8 +70,7 @@ class FrameCameras {
   const CaptureOptions& o_;
   double imageAspect_ = 0.0;
   std::optional<CameraPath> path_;
-  ApertureShape stillAperture_;
-  LensBarrel stillBarrel_;
+  Lens stillLens_;  // a still camera's aperture shape and barrel (the radius is its f/2N)
   double fps_ = 24.0;
   BaseCamera base_;
   std::optional<PhysicalCamera> still_;

@@ -17,7 +17,7 @@ namespace lenslab {
 FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera, ImageSize size,
                     const PlanOptions& options, RunStats& stats) {
   std::optional<VisibleBlur> visible;
-  if (!camera.isPinhole() && (options.apertureSamples == 0 || options.targetPsnrDb)) {
+  if (!camera.lens.isPinhole() && (options.apertureSamples == 0 || options.targetPsnrDb)) {
     const auto t = std::chrono::steady_clock::now();
     visible = measureVisibleBlur(renderer, camera, size);
     stats.prepassSeconds = secondsSince(t);

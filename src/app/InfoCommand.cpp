@@ -30,7 +30,7 @@ void printVector(std::ostream& out, const glm::dvec3& v) {
 // The visible-blur pre-pass needs a GL context: one is made (OSMesa) only for a camera with an
 // aperture; without one, the plan says what the bounds say.
 std::optional<VisibleBlur> measureBlur(const Scene& scene, const Camera& camera, ImageSize size, std::ostream& out) {
-  if (camera.isPinhole()) return std::nullopt;
+  if (camera.lens.isPinhole()) return std::nullopt;
   try {
     const std::unique_ptr<GlContext> context = createHeadlessContext(Backend::OSMesa);
     Renderer renderer(scene);

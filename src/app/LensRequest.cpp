@@ -13,11 +13,11 @@ namespace lenslab {
 LensRequest lensRequestFor(const std::string& file, const SelectedCamera& selected, const Camera& camera) {
   const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };
   if (camera.view.projection != Projection::Perspective) refuse("a real lens needs a perspective camera");
-  if (!camera.effects.isZero())
+  if (!camera.lens.effects.isZero())
     refuse("the camera's lens effects (distortion, chromatic, field_curvature, vignetting) stand for a lens; the prescription has its own: "
            "remove them from the camera");
-  if (camera.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
-  if (!camera.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
+  if (camera.lens.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
+  if (!camera.lens.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
   const Window& w = camera.view.window;
   const double centreU = 0.5 * (w.umin + w.umax) - camera.view.prp.x, centreV = 0.5 * (w.vmin + w.vmax) - camera.view.prp.y;
   if (std::abs(centreU) > 1e-9 * w.width() || std::abs(centreV) > 1e-9 * w.height())
@@ -62,11 +62,12 @@ std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& 
     leaveOut(c);
     out.emplace_back(name, c);
   };
-  without("distortion", !fitted.effects.distortion.isZero(), [](Camera& c) { c.effects.distortion = {}; });
-  without("colour", fitted.effects.chromatic.hasLateral() || fitted.effects.chromatic.hasAxial(), [](Camera& c) { c.effects.chromatic = {}; });
-  without("field-curvature", !fitted.effects.fieldCurvature.isZero(), [](Camera& c) { c.effects.fieldCurvature = {}; });
-  without("barrel", fitted.barrel.present(), [](Camera& c) { c.barrel = {}; });
-  without("vignetting", !fitted.effects.vignetting.isZero(), [](Camera& c) { c.effects.vignetting = {}; });
+  const LensEffects& e = fitted.lens.effects;
+  without("distortion", !e.distortion.isZero(), [](Camera& c) { c.lens.effects.distortion = {}; });
+  without("colour", e.chromatic.hasLateral() || e.chromatic.hasAxial(), [](Camera& c) { c.lens.effects.chromatic = {}; });
+  without("field-curvature", !e.fieldCurvature.isZero(), [](Camera& c) { c.lens.effects.fieldCurvature = {}; });
+  without("barrel", fitted.lens.barrel.present(), [](Camera& c) { c.lens.barrel = {}; });
+  without("vignetting", !e.vignetting.isZero(), [](Camera& c) { c.lens.effects.vignetting = {}; });
   return out;
 }
 

@@ -177,8 +177,8 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   }
   stats.plan.apertureSamples = o.samplesPerPixel;
   stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
-  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.isPinhole() ? "the PRP" : "the thin lens",
-                                        camera.effects.isZero() ? "" : ", each through the inverse lens model (exact)"), {}}};
+  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.lens.isPinhole() ? "the PRP" : "the thin lens",
+                                        camera.lens.effects.isZero() ? "" : ", each through the inverse lens model (exact)"), {}}};
   t = std::chrono::steady_clock::now();
   Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed},
                               [&](int done, int rows) { progress.update(done, rows); });

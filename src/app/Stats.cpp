@@ -9,9 +9,9 @@ namespace lenslab {
 void RunStats::setCamera(const SelectedCamera& selected) {
   camera = selected.camera.source;
   focusDistance = selected.camera.focusDistance();
-  apertureRadius = selected.camera.apertureRadius;
-  aperture = selected.camera.aperture;
-  barrel = selected.camera.barrel;
+  apertureRadius = selected.camera.lens.apertureRadius;
+  aperture = selected.camera.lens.aperture;
+  barrel = selected.camera.lens.barrel;
   physical = selected.physical;
 }
 

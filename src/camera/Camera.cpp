@@ -13,7 +13,7 @@ namespace lenslab {
 Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std::string source) {
   Camera c;
   c.view = view;
-  c.apertureRadius = apertureRadius;
+  c.lens.apertureRadius = apertureRadius;
   c.source = std::move(source);
   return c;
 }
@@ -78,7 +78,7 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
 }
 
 double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift) {
-  const double r = camera.apertureRadius * (camera.aperture.isRound() ? 1.0 : apertureReach(camera.aperture));
+  const double r = camera.lens.apertureRadius * (camera.lens.aperture.isRound() ? 1.0 : apertureReach(camera.lens.aperture));
   const double d = camera.view.prp.z;
   // Parallel: the ray from lens offset s meets depth z at s·(1 − z/z_f) from where the pinhole's does.
   if (camera.view.projection == Projection::Parallel) return 2.0 * r * std::abs(1.0 - depth * camera.inverseFocusDistance());

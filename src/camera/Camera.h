@@ -8,9 +8,7 @@
 // pixel from every aperture point, and any other point spreads over its circle of confusion.
 #include "camera/ImageSize.h"
 #include "camera/ViewSpec.h"
-#include "lens/ApertureShape.h"
-#include "lens/LensBarrel.h"
-#include "lens/LensEffects.h"
+#include "lens/Lens.h"
 
 #include <glm/glm.hpp>
 
@@ -22,9 +20,9 @@ namespace lenslab {
 
 struct Camera {
   ViewSpec view;
-  double apertureRadius = 0.0;  // world units; 0 = pinhole
-  ApertureShape aperture;       // round unless the camera has blades or a squeeze (lens/ApertureShape.h)
-  LensBarrel barrel;            // the barrel's opening in front of the aperture: cat's-eye vignetting (lens/LensBarrel.h)
+  // The aperture's radius (0: a pinhole) and shape, the barrel and the lens effects (perspective
+  // only; lens/LensEffects.h), as one value (lens/Lens.h).
+  Lens lens;
   // The plane of focus is the view plane, except where no well-conditioned view plane can hold
   // it: at infinity focus, and at a finite focus far beyond the view plane (a view plane at 1e300
   // has a window of 1e300 and no precision left). There the focus is carried as an inverse
@@ -36,19 +34,9 @@ struct Camera {
   // to the scene before rendering, so that the depth buffer's precision lands where the scene is.
   bool nearFromScene = false;
   bool farFromScene = false;
-  // Distortion, chromatic aberration, field curvature (perspective only; see lens/LensEffects.h).
-  LensEffects effects;
   // The image size the camera was calibrated for (OpenCV intrinsics), the default render size.
   std::optional<ImageSize> calibratedSize;
 
-  bool isPinhole() const { return !(apertureRadius > 0.0); }
-  // Whether the barrel clips the aperture anywhere: a pinhole has no aperture to clip.
-  bool hasBarrel() const { return barrel.present() && !isPinhole(); }
-  // The lens offset (u, v; world units) of an aperture sample's point on the unit disk: the
-  // aperture's shape applied, scaled by the radius. Both renderers place the PRP through this.
-  glm::dvec2 lensOffset(glm::dvec2 unitDisk) const {
-    return apertureRadius * (aperture.isRound() ? unitDisk : apertureFromDisk(unitDisk, aperture));
-  }
   // 1/z_f, from the PRP along −n: 1/PRP.n on the view plane, 0 at infinity focus.
   double inverseFocusDistance() const { return inverseFocusOffPlane ? *inverseFocusOffPlane : 1.0 / view.prp.z; }
   bool focusAtInfinity() const { return inverseFocusDistance() == 0.0; }

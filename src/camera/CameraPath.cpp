@@ -29,8 +29,6 @@ double lerpDistance(double a, double b, double u) {
   return lerp(a, b, u);
 }
 
-LensParts lensOf(const PathKey& key) { return {key.effects, key.aperture, key.barrel}; }
-
 // A neighbour beyond the ends: the end point reflected through its neighbour.
 glm::dvec3 pointOr(const std::vector<glm::dvec3>& p, std::ptrdiff_t i) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.size());
@@ -159,7 +157,7 @@ double monotoneCubic(const std::vector<double>& x, const std::vector<double>& y,
 PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   const std::vector<PathKey>& keys = path.keys;
   const auto held = [&](const PathKey& key) {
-    PathKey out{timeSeconds, key.camera, key.effects, key.aperture, key.barrel};
+    PathKey out{timeSeconds, key.camera, key.lens};
     out.camera.up = orthonormalUp(key.camera, key.camera.up);
     return out;
   };
@@ -173,10 +171,7 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   PathKey out;
   out.timeSeconds = timeSeconds;
   // Each lens effect as its module interpolates it (lens/effects/).
-  const LensParts lens = interpolateLens(lensOf(keys[k]), lensOf(keys[k + 1]), u);
-  out.effects = lens.effects;
-  out.aperture = lens.aperture;
-  out.barrel = lens.barrel;
+  out.lens = interpolateLens(keys[k].lens, keys[k + 1].lens, u);
   PhysicalCamera& c = out.camera;
   std::vector<double> times, inverseFocus, stops;
   std::vector<glm::dvec3> eyes, targets;

@@ -16,7 +16,7 @@
 // "linear": every quantity piecewise linear in time (focus still in 1/z_f, f-number in stops).
 // Outside the keys' times the first or last key holds.
 #include "camera/PhysicalCamera.h"
-#include "lens/LensEffects.h"
+#include "lens/Lens.h"
 
 #include <optional>
 #include <string_view>
@@ -27,9 +27,10 @@ namespace lenslab {
 struct PathKey {
   double timeSeconds = 0.0;
   PhysicalCamera camera;
-  LensEffects effects;
-  ApertureShape aperture;  // one for the whole path: the keys must agree (io/CameraPathJson)
-  LensBarrel barrel;       // likewise
+  // The lens beyond the physical description: its effects, and its aperture shape and barrel, one
+  // each for the whole path (the keys must agree, io/CameraPathJson). Its radius is not read: the
+  // camera's f/2N is (toCamera(PhysicalCamera, Lens, …)).
+  Lens lens;
 };
 
 enum class PathInterpolation { Smooth, Linear };

@@ -16,7 +16,7 @@ SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm:
     throw InputError(cat(asked, " ", pixel.x, ",", pixel.y, ": the pixel is outside the ", size.widthPx, "x",
                          size.heightPx, " image"));
   double distance = 0.0;
-  if (camera.effects.needsRemap()) {
+  if (camera.lens.effects.needsRemap()) {
     const glm::dvec2 centre(x + 0.5, y + 0.5);
     const ThinLensMap map = ThinLensMap(camera, size).overscanned();
     const Overscan& o = map.overscan();

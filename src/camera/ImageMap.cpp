@@ -21,7 +21,7 @@ bool effectsMoveRays(const LensEffects& effects) {
 }
 
 Camera withoutEffects(Camera camera) {
-  camera.effects = {};
+  camera.lens.effects = {};
   return camera;
 }
 
@@ -33,9 +33,9 @@ ThinLensMap::ThinLensMap(const Camera& camera, ImageSize size, Overscan overscan
     : ImageMap(camera, size),
       overscan_(std::move(overscan)),
       rayCamera_(withoutEffects(camera)),
-      movesRays_(effectsMoveRays(camera.effects)),
+      movesRays_(effectsMoveRays(camera.lens.effects)),
       // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
-      rayChannels_(camera.effects.chromatic.hasLateral() || camera.effects.chromatic.hasAxial() ? 3 : 1) {}
+      rayChannels_(camera.lens.effects.chromatic.hasLateral() || camera.lens.effects.chromatic.hasAxial() ? 3 : 1) {}
 
 glm::dvec2 ThinLensMap::windowFromPixel(glm::dvec2 pixel) const {
   return lenslab::windowFromPixel(camera_.view.window, pixel, size_.widthPx, size_.heightPx);
@@ -52,7 +52,7 @@ glm::dvec2 ThinLensMap::pixelFromNormalised(glm::dvec2 normalised) const {
 }
 
 glm::dvec2 ThinLensMap::undistortNormalised(Channel c, glm::dvec2 distorted, glm::dvec2 guess) const {
-  const auto undistorted = camera_.effects.undistortChannel(c, distorted, guess);
+  const auto undistorted = camera_.lens.effects.undistortChannel(c, distorted, guess);
   if (!undistorted) {
     // The inverse follows the branch that contains the centre (continuation, LensEffects.cpp), so it
     // fails only where that branch folds; validateLensEffects refuses folds inside the image, so
@@ -67,9 +67,9 @@ glm::dvec2 ThinLensMap::undistortNormalised(Channel c, glm::dvec2 distorted, glm
 ChannelSample ThinLensMap::undistorted(Channel c, glm::dvec2 pixel, std::optional<glm::dvec2> guess) const {
   const glm::dvec2 distorted = normalisedFromPixel(pixel);
   ChannelSample s;
-  s.normalised = camera_.effects.needsRemap() ? undistortNormalised(c, distorted, guess.value_or(distorted)) : distorted;
+  s.normalised = camera_.lens.effects.needsRemap() ? undistortNormalised(c, distorted, guess.value_or(distorted)) : distorted;
   s.pixel = pixelFromNormalised(s.normalised);
-  s.inverseFocusShift = camera_.effects.inverseFocusShift(c, s.normalised);
+  s.inverseFocusShift = camera_.lens.effects.inverseFocusShift(c, s.normalised);
   return s;
 }
 
@@ -82,7 +82,7 @@ std::optional<CameraRay> ThinLensMap::start(glm::dvec2 pixel, int channel) const
 }
 
 glm::dvec2 ThinLensMap::renderPixelFromOutput(glm::dvec2 pixel) const {
-  const glm::dvec2 truth = camera_.effects.needsRemap() ? undistorted(Channel::Green, pixel).pixel : pixel;
+  const glm::dvec2 truth = camera_.lens.effects.needsRemap() ? undistorted(Channel::Green, pixel).pixel : pixel;
   return truth + glm::dvec2(overscan_.padPx);
 }
 
@@ -90,7 +90,7 @@ glm::dvec2 ThinLensMap::outputFromRenderPixel(glm::dvec2 renderPixel) const {
   const Overscan& o = overscan_;
   const glm::dvec2 n = normalisedFromWindow(o.camera.view, lenslab::windowFromPixel(o.camera.view.window, renderPixel, o.size.widthPx,
                                                                                     o.size.heightPx));
-  return pixelFromNormalised(camera_.effects.distortChannel(Channel::Green, n));
+  return pixelFromNormalised(camera_.lens.effects.distortChannel(Channel::Green, n));
 }
 
 glm::dmat4 ThinLensMap::clipFromWorld(const LensSample& s, Channel c) const {
@@ -100,8 +100,8 @@ glm::dmat4 ThinLensMap::clipFromWorld(const LensSample& s, Channel c) const {
   // Image y runs down, v runs up: a sub-pixel offset of +y moves the sample toward −v.
   const glm::dvec2 pixelOffset(s.pixel.x * pixelSize.x, -s.pixel.y * pixelSize.y);
   // Axial chromatic aberration: each colour has its own plane of focus (green's is the camera's).
-  const double shift = rendered.effects.chromatic.inverseFocusShift(c);
-  return lenslab::clipFromWorld(viewThroughLens(rendered, rendered.lensOffset(s.lens), pixelOffset, shift));
+  const double shift = rendered.lens.effects.chromatic.inverseFocusShift(c);
+  return lenslab::clipFromWorld(viewThroughLens(rendered, rendered.lens.lensOffset(s.lens), pixelOffset, shift));
 }
 
 glm::dvec2 ThinLensMap::normalisedAtRenderCorner() const {
@@ -117,9 +117,9 @@ glm::dvec2 ThinLensMap::normalisedPerRenderPixel() const {
 double ThinLensMap::gainAt(glm::dvec2 pixel) const {
   // Vignetting scales the pixel's light by the gain at its own place on the film (distorted
   // coordinates: the output grid is the film).
-  if (camera_.effects.vignetting.isZero()) return 1.0;
+  if (camera_.lens.effects.vignetting.isZero()) return 1.0;
   const glm::dvec2 n = normalisedFromPixel(pixel);
-  return camera_.effects.vignetting.gain(glm::dot(n, n));
+  return camera_.lens.effects.vignetting.gain(glm::dot(n, n));
 }
 
 RealLensMap::RealLensMap(LensCamera lens, const Camera& placed, ImageSize size, std::optional<Camera> fittedCamera)

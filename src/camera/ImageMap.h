@@ -92,7 +92,7 @@ struct CameraRay {
 };
 
 // How a map reads its lens samples: points of the unit disk (the thin lens's aperture, shaped by
-// Camera::lensOffset) or of the unit square (a real lens's box around its exit pupil).
+// Lens::lensOffset) or of the unit square (a real lens's box around its exit pupil).
 enum class LensDomain { Disk, Square };
 
 class ImageMap {
@@ -164,7 +164,7 @@ class ThinLensMap final : public ImageMap {
   // the camera's own), as GL clip coordinates. Points land on the render's pixels; the lens pass
   // (the tables below) carries them to the output's.
   const Overscan& overscan() const { return overscan_; }
-  bool remaps() const { return camera_.effects.needsRemap(); }
+  bool remaps() const { return camera_.lens.effects.needsRemap(); }
   glm::dmat4 clipFromWorld(const LensSample& s, Channel c) const;
   // Normalised image coordinates of the render's GL pixel corner (0, 0), and their step per pixel:
   // the field-curvature warp's and the barrel mask's coordinates.
@@ -222,7 +222,7 @@ inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 le
   std::optional<CameraRay> out(std::in_place);  // built in place: this runs for every ray
   CameraRay& r = *out;
   r.channel = channel;
-  r.lensPoint = camera_.lensOffset(lens);
+  r.lensPoint = camera_.lens.lensOffset(lens);
   r.pixel = pixel;
   if (movesRays_) {
     // Exactly, per ray: the true perspective position that the inverse lens model gives for this
@@ -238,10 +238,10 @@ inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 le
   // that ray is the one the barrel may stop, at p·(1 − L/z_f) + L·n. Distortion and lateral colour
   // only move where on the film that ray lands, so the test takes n of the undistorted position,
   // never the distorted film point, and z_f with the channel's and the curvature's shift.
-  if (rayCamera_.hasBarrel()) {
+  if (rayCamera_.lens.hasBarrel()) {
     const glm::dvec2 w = lenslab::windowFromPixel(rayCamera_.view.window, r.pixel, size_.widthPx, size_.heightPx);
     const glm::dvec2 normalised = (w - glm::dvec2(rayCamera_.view.prp)) / rayCamera_.view.prp.z;
-    r.blocked = !throughBarrel(rayCamera_.barrel, r.lensPoint, normalised, rayCamera_.inverseFocusDistance() + r.inverseFocusShift);
+    r.blocked = !throughBarrel(rayCamera_.lens.barrel, r.lensPoint, normalised, rayCamera_.inverseFocusDistance() + r.inverseFocusShift);
   }
   return out;
 }

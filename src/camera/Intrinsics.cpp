@@ -65,7 +65,7 @@ Camera pinholeFromOpenCv(const OpenCvIntrinsics& k, const Distortion& distortion
   Camera camera = cameraFocusedOnViewPlane(spec, 0.0, source);
   camera.nearFromScene = camera.farFromScene = true;
   camera.calibratedSize = ImageSize{k.widthPx, k.heightPx};
-  camera.effects.distortion = distortion;
+  camera.lens.effects.distortion = distortion;
   validateLensEffects(camera, source);
   return camera;
 }

@@ -12,10 +12,11 @@ Camera cameraForFittedLens(const Camera& like, const FittedLens& fit, glm::dvec2
   const double focusDistance = fit.inverseFocusPerMm > 0.0 ? worldPerMm / fit.inverseFocusPerMm : INFINITY;
   Camera camera = refocused(like, focusDistance, source);
   camera.source = std::move(source);
-  camera.apertureRadius = 0.5 * fit.entrancePupilDiameterMm * worldPerMm;
-  camera.aperture = ApertureShape{};
-  camera.effects = fittedEffects(fit, worldPerMm);
-  camera.barrel = fittedBarrel(fit, worldPerMm);
+  // The whole lens is the fit's: the entrance pupil's radius, a round aperture, its barrel and effects.
+  camera.lens = Lens{.apertureRadius = 0.5 * fit.entrancePupilDiameterMm * worldPerMm,
+                     .aperture = ApertureShape{},
+                     .barrel = fittedBarrel(fit, worldPerMm),
+                     .effects = fittedEffects(fit, worldPerMm)};
   camera.calibratedSize.reset();
   // The window on the view plane at distance d = PRP.n: the sensor's half sides over F, times d,
   // about the principal point (a prescription's sensor is centred on its axis).

@@ -57,7 +57,7 @@ NormalisedRect normalisedWindow(const ViewSpec& view) {
 }
 
 std::vector<double> extremeFocusShifts(const Camera& camera) {
-  const LensEffects& e = camera.effects;
+  const LensEffects& e = camera.lens.effects;
   const double corner = camera.view.projection == Projection::Perspective ? normalisedWindow(camera.view).cornerRadius() : 0.0;
   std::vector<double> shifts;
   for (const double channel : {0.0, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue})
@@ -66,7 +66,7 @@ std::vector<double> extremeFocusShifts(const Camera& camera) {
 }
 
 void validateLensEffects(const Camera& camera, const std::string& where, std::optional<double> focalLength) {
-  const LensEffects& e = camera.effects;
+  const LensEffects& e = camera.lens.effects;
   if (e.isZero()) return;
   if (camera.view.projection != Projection::Perspective)
     throw InputError(cat(where, ": distortion, chromatic aberration, field curvature and vignetting need a perspective "
@@ -100,7 +100,7 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   // and at 1e-200 its rays overflow (a window shifted by 1e200 aperture radii).
   const double phi = camera.inverseFocusDistance();
   const double corner = normalisedWindow(camera.view).cornerRadius();
-  const double nearest = focalLength ? *focalLength : camera.apertureRadius;
+  const double nearest = focalLength ? *focalLength : camera.lens.apertureRadius;
   for (const auto& [name, shift] : {std::pair{"chromatic.focus_distance_red", e.chromatic.inverseFocusShiftRed},
                                     std::pair{"chromatic.focus_distance_blue", e.chromatic.inverseFocusShiftBlue},
                                     std::pair{"field_curvature.corner_focus_distance",
@@ -109,7 +109,7 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
     if (shift == 0.0 || !(nearest > 0.0) || !(inverse * nearest >= 1.0)) continue;
     throw InputError(cat(where, ": ", name, " is ", 1.0 / inverse, "; it must be beyond ",
                          focalLength ? cat("the focal length (", *focalLength, " world units), or the lens forms no real image there")
-                                     : cat("the aperture radius (", camera.apertureRadius, " world units): no lens is faster than "
+                                     : cat("the aperture radius (", camera.lens.apertureRadius, " world units): no lens is faster than "
                                            "f/0.5, so none with this aperture forms a real image nearer"),
                          "; \"infinity\" is allowed"));
   }
@@ -139,15 +139,15 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
 }
 
 double ThinLensMap::forwardLinearisationErrorPx() const {
-  const Camera& camera = camera_;
-  if (!camera.effects.needsRemap()) return 0.0;
+  const LensEffects& effects = camera_.lens.effects;
+  if (!effects.needsRemap()) return 0.0;
   const int width = size_.widthPx, height = size_.heightPx;
   // Pixel (image orientation) → normalised, and back: the rendered view has the image's pitch.
   const auto normalised = [&](glm::dvec2 pixel) { return normalisedFromPixel(pixel); };
   const auto pixel = [&](glm::dvec2 n) { return pixelFromNormalised(n); };
-  const double scale = 1.0 + std::max({0.0, std::abs(camera.effects.chromatic.lateralRed), std::abs(camera.effects.chromatic.lateralBlue)});
+  const double scale = 1.0 + std::max({0.0, std::abs(effects.chromatic.lateralRed), std::abs(effects.chromatic.lateralBlue)});
   // Where the lens puts the view's point q (view pixels), in output pixels.
-  const auto forward = [&](glm::dvec2 q) { return pixel(camera.effects.distortion.distort(normalised(q))); };
+  const auto forward = [&](glm::dvec2 q) { return pixel(effects.distortion.distort(normalised(q))); };
   // The error is smooth over the image: a grid of up to 129 × 129 points, the border included.
   const int nx = std::min(width, 128), ny = std::min(height, 128);
   std::vector<double> worstPerRow(static_cast<std::size_t>(ny) + 1, 0.0);
@@ -178,7 +178,7 @@ void ThinLensMap::validateForwardLinearisation() const {
   const ImageSize size = size_;
   const double errorPx = forwardLinearisationErrorPx();
   if (errorPx <= kMaxForwardLinearisationErrorPx) return;
-  const Distortion& d = camera.effects.distortion;
+  const Distortion& d = camera.lens.effects.distortion;
   std::string coefficients;
   for (const auto& [name, value] : {std::pair{"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"p1", d.p1}, {"p2", d.p2}, {"alpha", d.alpha},
                                     {"beta", d.beta}, {"gamma", d.gamma}})
@@ -195,14 +195,14 @@ void ThinLensMap::validateForwardLinearisation() const {
 ThinLensMap ThinLensMap::overscanned() const {
   const Camera& camera = camera_;
   Overscan o{camera, size_, {0, 0}};
-  if (!camera.effects.needsRemap()) return ThinLensMap(camera, size_, std::move(o));
+  if (!camera.lens.effects.needsRemap()) return ThinLensMap(camera, size_, std::move(o));
   const Window& w = camera.view.window;
   const int width = size_.widthPx, height = size_.heightPx;
   // The output image's border maps to the border of the region it shows (no fold inside), so the
   // border's true positions bound everything the post pass samples.
   glm::dvec2 lo(0.0), hi(width, height);
   const auto visit = [&](glm::dvec2 pixel) {
-    for (const Channel c : remappedChannels(camera.effects)) {
+    for (const Channel c : remappedChannels(camera.lens.effects)) {
       const glm::dvec2 distorted = normalisedFromPixel(pixel);
       const glm::dvec2 p = pixelFromNormalised(undistortNormalised(c, distorted, distorted));
       lo = glm::min(lo, p);
@@ -259,7 +259,7 @@ void ThinLensMap::fillRemapRows(Channel c, int firstRow, int lastRow, glm::vec2*
 RemapTable ThinLensMap::remapTable(const RowProgress& progress) const {
   RemapTable table{size_, {}};
   const int width = size_.widthPx, height = size_.heightPx;
-  const std::vector<Channel> channels = remappedChannels(camera_.effects);
+  const std::vector<Channel> channels = remappedChannels(camera_.lens.effects);
   const int rows = static_cast<int>(channels.size()) * height;
   for (const Channel c : channels) {
     std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
@@ -309,10 +309,10 @@ double ThinLensMap::fillForwardRows(int firstRow, int lastRow, glm::vec4* positi
 }
 
 double ThinLensMap::forwardReachPx(double largestHalfExtentPx) const {
-  const Camera& camera = camera_;
+  const Chromatic& chromatic = camera_.lens.effects.chromatic;
   // Red and blue are green's image magnified by (1 + lateral): their pre-images are smaller or
   // larger by that factor.
-  const double smallestScale = std::min({1.0, 1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue});
+  const double smallestScale = std::min({1.0, 1.0 + chromatic.lateralRed, 1.0 + chromatic.lateralBlue});
   return largestHalfExtentPx * 1.01 / smallestScale + 1.0;
 }
 

@@ -87,11 +87,16 @@ Camera toCamera(const PhysicalCamera& c, std::string source) {
   return camera;
 }
 
+Camera toCamera(const PhysicalCamera& c, const Lens& lens, std::string source) {
+  Camera camera = toCamera(c, std::move(source));
+  const double radius = camera.lens.apertureRadius;
+  camera.lens = lens;
+  camera.lens.apertureRadius = radius;
+  return camera;
+}
+
 SelectedCamera toSelectedCamera(const PhysicalCamera& camera, const Camera& like, std::string source) {
-  SelectedCamera out{toCamera(camera, std::move(source)), camera};
-  out.camera.effects = like.effects;
-  out.camera.aperture = like.aperture;
-  out.camera.barrel = like.barrel;
+  SelectedCamera out{toCamera(camera, like.lens, std::move(source)), camera};
   out.camera.calibratedSize = like.calibratedSize;
   out.camera.nearFromScene = like.nearFromScene;
   out.camera.farFromScene = like.farFromScene;

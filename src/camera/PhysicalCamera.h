@@ -58,6 +58,10 @@ ViewSpec toViewSpec(const PhysicalCamera& camera);
 
 // The whole camera: view, aperture radius f/2N and focus.
 Camera toCamera(const PhysicalCamera& camera, std::string source);
+// The same with `lens`'s aperture shape, barrel and effects; the radius stays the description's
+// f/2N. How a lens kept beside a physical description (a path's key, a camera being replaced)
+// joins it.
+Camera toCamera(const PhysicalCamera& camera, const Lens& lens, std::string source);
 
 // A camera and, when it was given in the physical form, that description: what refocusing and the
 // viewer's lens panel change.

@@ -42,11 +42,7 @@ void parseCommon(const JsonReader& r, CameraFile& file) {
   Camera& camera = file.camera;
   if (r.has("image_size")) camera.calibratedSize = imageSizeOf(r);
   const LensFrame frame = lensFrameOf(file, r.where());
-  LensParts lens{camera.effects, camera.aperture, camera.barrel};
-  for (const LensEffectModule* module : lensEffectModules()) module->read(r, frame, lens);
-  camera.effects = lens.effects;
-  camera.aperture = lens.aperture;
-  camera.barrel = lens.barrel;
+  for (const LensEffectModule* module : lensEffectModules()) module->read(r, frame, camera.lens);
   validateLensEffects(camera, r.where(), frame.focalLength);
 }
 

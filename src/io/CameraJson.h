@@ -55,13 +55,13 @@ CameraFile loadCameraJson(const std::filesystem::path& file);
 // The lecture form of `camera` as JSON text (what `view` will save and `render` loads back).
 std::string toCameraJson(const Camera& camera);
 
-// A physical camera with lens effects, as seen on an image of `size`, in the OpenCV-intrinsics form
-// (K, distCoeffs as an array when the lens is all OpenCV's, plus focus_distance and aperture_radius):
-// one file both `lenslab render --camera` and vision tools read. `capture` writes one per frame.
-// near / far are written only when asked; left out, the renderer fits them to the scene. A shaped
-// aperture is written as "aperture", a barrel as "barrel".
-std::string toIntrinsicsCameraJson(const PhysicalCamera& camera, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar, const ApertureShape& aperture = {},
-                                   const LensBarrel& barrel = {});
+// A physical camera with `lens`'s effects, aperture shape and barrel (its radius is the camera's
+// f/2N), as seen on an image of `size`, in the OpenCV-intrinsics form (K, distCoeffs as an array
+// when the lens is all OpenCV's, plus focus_distance and aperture_radius): one file both
+// `lenslab render --camera` and vision tools read. `capture` writes one per frame. near / far are
+// written only when asked; left out, the renderer fits them to the scene. A shaped aperture is
+// written as "aperture", a barrel as "barrel".
+std::string toIntrinsicsCameraJson(const PhysicalCamera& camera, const Lens& lens, ImageSize size, bool writeNear,
+                                   bool writeFar);
 
 }  // namespace lenslab

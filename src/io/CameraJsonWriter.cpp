@@ -42,9 +42,8 @@ void writeEffects(const Camera& camera, json& j) {
   frame.inverseFocus = camera.inverseFocusDistance();
   frame.cornerRadius = normalisedWindow(camera.view).cornerRadius();
   frame.perspective = camera.view.projection == Projection::Perspective;
-  const LensParts lens{camera.effects, camera.aperture, camera.barrel};
   JsonKeyWriter writer(j);
-  for (const LensEffectModule* module : lensEffectModules()) module->write(lens, frame, writer);
+  for (const LensEffectModule* module : lensEffectModules()) module->write(camera.lens, frame, writer);
 }
 
 }  // namespace
@@ -59,7 +58,7 @@ std::string toCameraJson(const Camera& camera) {
   j["prp"] = {s.prp.x, s.prp.y, s.prp.z};
   j["window"] = {s.window.umin, s.window.vmin, s.window.umax, s.window.vmax};
   j["near"] = s.nearDistance;
-  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (camera.lens.apertureRadius > 0.0) j["aperture_radius"] = camera.lens.apertureRadius;
   if (camera.inverseFocusOffPlane) j["focus_distance"] = camera.focusAtInfinity() ? json("infinity") : json(camera.focusDistance());
   if (std::isinf(s.farDistance)) j["far"] = "infinity";
   else j["far"] = s.farDistance;
@@ -68,12 +67,9 @@ std::string toCameraJson(const Camera& camera) {
   return j.dump(2) + "\n";
 }
 
-std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEffects& effects, ImageSize size,
-                                   bool writeNear, bool writeFar, const ApertureShape& aperture, const LensBarrel& barrel) {
-  Camera camera = toCamera(physical, "the frame's camera");
-  camera.effects = effects;
-  camera.aperture = aperture;
-  camera.barrel = barrel;
+std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const Lens& lens, ImageSize size, bool writeNear,
+                                   bool writeFar) {
+  const Camera camera = toCamera(physical, lens, "the frame's camera");
   const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
   json j;
   j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};
@@ -81,12 +77,12 @@ std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const LensEff
   j["up"] = {physical.up.x, physical.up.y, physical.up.z};
   j["intrinsics"] = {{"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}, {"width", k.widthPx}, {"height", k.heightPx}};
   j["focus_distance"] = std::isinf(physical.focusDistance) ? json("infinity") : json(physical.focusDistance);
-  if (camera.apertureRadius > 0.0) j["aperture_radius"] = camera.apertureRadius;
+  if (camera.lens.apertureRadius > 0.0) j["aperture_radius"] = camera.lens.apertureRadius;
   if (writeNear) j["near"] = physical.nearDistance;
   if (writeFar) j["far"] = std::isinf(physical.farDistance) ? json("infinity") : json(physical.farDistance);
   writeEffects(camera, j);
   // OpenCV's distCoeffs as an array where the lens is all OpenCV's (the lecture's series is not).
-  const Distortion& d = effects.distortion;
+  const Distortion& d = camera.lens.effects.distortion;
   if (!d.isZero() && d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
   return j.dump(2) + "\n";
 }

@@ -56,14 +56,12 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
     key.camera = *file.physical;
     if (camera.contains("near")) path.nearFromScene = false;
     if (camera.contains("far")) path.farFromScene = false;
-    key.effects = file.camera.effects;
-    key.aperture = file.camera.aperture;
-    key.barrel = file.camera.barrel;
+    key.lens = file.camera.lens;
     // The iris and the lens's squeeze do not change along a shot: one shape for every key.
-    if (!path.keys.empty() && key.aperture != path.keys.front().aperture)
-      throw InputError(cat(name, ": \"aperture\" is ", describeAperture(key.aperture), " where the first key's is ",
-                           describeAperture(path.keys.front().aperture), "; every key of a path takes the same aperture shape"));
-    if (!path.keys.empty() && key.barrel != path.keys.front().barrel)
+    if (!path.keys.empty() && key.lens.aperture != path.keys.front().lens.aperture)
+      throw InputError(cat(name, ": \"aperture\" is ", describeAperture(key.lens.aperture), " where the first key's is ",
+                           describeAperture(path.keys.front().lens.aperture), "; every key of a path takes the same aperture shape"));
+    if (!path.keys.empty() && key.lens.barrel != path.keys.front().lens.barrel)
       throw InputError(cat(name, ": \"barrel\" differs from the first key's; every key of a path takes the same lens barrel"));
     path.keys.push_back(key);
   }

@@ -6,7 +6,7 @@
 // The samples stay where the aperture patterns put them (lens/AperturePattern.h: points on the
 // unit disk, stratified); apertureFromDisk carries each to the shape by one area-preserving map,
 // continuous inside each blade's sector, so equal areas of the disk stay equal areas of the shape
-// and strata stay compact. Both renderers take their aperture points through it (Camera::lensOffset),
+// and strata stay compact. Both renderers take their aperture points through it (Lens::lensOffset),
 // so they converge to the same image.
 //
 // Lens coordinates are the view's u (image right) and v (image up). A point beyond the plane of

@@ -169,15 +169,15 @@ SelectedCamera composeViewingDescription(const BaseCamera& base, const CameraOpt
   const double n = parseFNumber(o.fNumber);
   SelectedCamera out = base.selected;
   if (std::isinf(n)) {
-    out.camera.apertureRadius = 0.0;
+    out.camera.lens.apertureRadius = 0.0;
     out.camera.source += ", a pinhole (--f-number infinity)";
     return out;
   }
   if (!o.focalLengthMm)
     refuse(cat("--f-number ", o.fNumber), cat(base.name, " is in ", form,
                                               ", which has no focal length: give --focal-length too, or aperture_radius in the file"));
-  out.camera.apertureRadius = *o.focalLengthMm * kMetresPerMillimetre / (2.0 * n);
-  out.camera.source += cat(", aperture radius ", out.camera.apertureRadius, " (", *o.focalLengthMm, " mm at f/", o.fNumber, ")");
+  out.camera.lens.apertureRadius = *o.focalLengthMm * kMetresPerMillimetre / (2.0 * n);
+  out.camera.source += cat(", aperture radius ", out.camera.lens.apertureRadius, " (", *o.focalLengthMm, " mm at f/", o.fNumber, ")");
   return out;
 }
 
@@ -327,7 +327,7 @@ SelectedCamera composeCamera(const BaseCamera& base, const CameraOptions& o, dou
 
 std::vector<std::string> focusWarnings(const Camera& camera, const LensOptions& lens) {
   std::vector<std::string> warnings;
-  if (!camera.isPinhole()) return warnings;
+  if (!camera.lens.isPinhole()) return warnings;
   const std::string why = "the camera has no aperture (a pinhole), so focus changes nothing; give --f-number N (or f_number / "
                           "aperture_radius in the camera file) for depth of field";
   if (!lens.focusDistance.empty()) warnings.push_back(cat("--focus-distance ", lens.focusDistance, ": ", why));

@@ -35,14 +35,10 @@ void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
     plan.depthMax = std::numeric_limits<double>::infinity();
 }
 
-LensParts lensOf(const Camera& camera) { return {camera.effects, camera.aperture, camera.barrel}; }
-
 // What the lens-effect modules are told of `camera` (lens/effects/LensEffectModule.h).
 PlanView planViewOf(const Camera& camera) {
   const ViewSpec& v = camera.view;
   PlanView view;
-  view.pinhole = camera.isPinhole();
-  view.apertureRadius = camera.apertureRadius;
   view.inverseFocus = camera.inverseFocusDistance();
   for (const double u : {v.window.umin, v.window.umax})
     for (const double w : {v.window.vmin, v.window.vmax})
@@ -152,7 +148,7 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
   for (int t = 0; t < grid.count(); ++t) {
     const PixelBox b = grid.box(t);
     // The pre-pass's rows run from the top.
-    const double coc = camera.isPinhole() ? 0.0
+    const double coc = camera.lens.isPinhole() ? 0.0
                        : visible ? visible->maxOver(b.x, size.heightPx - b.y - b.height, b.x + b.width, size.heightPx - b.y)
                                  : plan.cocMaxPx;
     a.sharpTiles += coc <= 1.0;
@@ -163,7 +159,8 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
   plan.samplesWhy = cat("to ", a.targetPsnrDb, " dB: ", grid.count(), " tiles of ", a.tileSizePx, " px, each from ",
                         kMinSamplesSharpTile, " (", a.sharpTiles, " tiles in focus) or ", kMinSamplesBlurredTile,
                         " samples (blurred) up to ", a.maxSamples, ", in sobol order, stopping where the two streams' "
-                        "estimate says one more sample gains least (", camera.isPinhole() ? std::string("pinhole camera") : plan.samplesWhy, ")");
+                        "estimate says one more sample gains least (",
+                        camera.lens.isPinhole() ? std::string("pinhole camera") : plan.samplesWhy, ")");
   plan.adaptive = std::move(a);
 }
 
@@ -189,7 +186,9 @@ void planPasses(const Camera& camera, std::size_t triangles, const EffectNeeds& 
     PlannedPass scenePass{"scene", cat(plan.apertureSamples * plan.viewsPerSample, " views of ", triangles, " triangles, ",
                                        plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "
                                                                 : "one from each ",
-                                       patternName(plan.pattern), camera.isPinhole() ? " sample" : " aperture point", ", with sub-pixel jitter", where), {}};
+                                       patternName(plan.pattern), camera.lens.isPinhole() ? " sample" : " aperture point",
+                                       ", with sub-pixel jitter", where),
+                          {}};
     scenePass.variants = sceneVariants;
     plan.passes.push_back(scenePass);
     plan.passes.push_back({"accumulate", cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"), {}});
@@ -231,20 +230,20 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   plan.pattern = options.pattern;
   plan.seed = options.seed;
   depthRange(scene, camera, plan);
-  if (camera.isPinhole()) {
+  if (camera.lens.isPinhole()) {
     planPinholeSamples(options, plan);
   } else {
     const std::string range = planCircles(camera, size, options, visible, plan);
     // With distortion the barrel clips at the undistorted field, which the overscan's window holds.
-    planLensSamples(options, range, effectNeeds(lensOf(camera), planViewOf(rendered.overscan().camera)), plan);
+    planLensSamples(options, range, effectNeeds(camera.lens, planViewOf(rendered.overscan().camera)), plan);
   }
   if (options.targetPsnrDb) planAdaptive(camera, size, options, visible, plan);
 
   // What each lens effect asks of the frame (lens/effects/); per-view effects only with many views
   // through an aperture.
-  const EffectNeeds needs = effectNeeds(lensOf(camera), planViewOf(camera));
+  const EffectNeeds needs = effectNeeds(camera.lens, planViewOf(camera));
   std::vector<std::string> sceneVariants;
-  if (plan.apertureSamples > 1 && !camera.isPinhole()) {
+  if (plan.apertureSamples > 1 && !camera.lens.isPinhole()) {
     plan.viewsPerSample = needs.viewsPerSample;
     plan.fieldCurvature = needs.fieldCurvatureWarp;
     sceneVariants = needs.sceneVariants;
@@ -254,7 +253,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   if (plan.remap) map.validateForwardLinearisation();
   plan.overscan = rendered.overscan();
   planPasses(camera, scene.triangleCount(), needs, sceneVariants, plan);
-  if (camera.isPinhole() && needs.idleThroughPinhole)
+  if (camera.lens.isPinhole() && needs.idleThroughPinhole)
     plan.warnings.push_back("axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
                             "has none, so they change nothing here (give an aperture)");
   return plan;

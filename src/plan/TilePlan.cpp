@@ -51,7 +51,7 @@ PixelRect quadAligned(PixelRect r, const PixelRect& frame) {
 // symmetric padding, a corner tile's margin lies on the side the lens pulls from.
 PixelRect preImage(const ThinLensMap& map, const PixelRect& rect) {
   constexpr int kFootprintPx = 4;
-  const std::vector<Channel> channels = remappedChannels(map.camera().effects);
+  const std::vector<Channel> channels = remappedChannels(map.camera().lens.effects);
   glm::dvec2 lo(rect.x0, rect.y0), hi(rect.x1, rect.y1);
   const auto visit = [&](glm::dvec2 pixel) {
     for (const Channel c : channels) {
@@ -111,7 +111,7 @@ double curvatureShiftPx(const Camera& camera, ImageSize size, const FramePlan& p
   const Window& w = camera.view.window;
   const double pitch = std::min(w.width() / size.widthPx, w.height() / size.heightPx);
   // Renderer::addSamples: the shift at r = 1 is lensOffset·d·κ / pitch, |lensOffset| ≤ aperture radius.
-  return camera.apertureRadius * camera.view.prp.z * std::abs(camera.effects.fieldCurvature.inverseFocusPerRadius2) *
+  return camera.lens.apertureRadius * camera.view.prp.z * std::abs(camera.lens.effects.fieldCurvature.inverseFocusPerRadius2) *
          corner * corner / pitch;
 }
 

@@ -57,7 +57,7 @@ ApertureShape withApertureOptions(ApertureShape a, const LensOptions& o) {
 namespace {
 
 SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
-  c.camera.aperture = withApertureOptions(c.camera.aperture, o);
+  c.camera.lens.aperture = withApertureOptions(c.camera.lens.aperture, o);
   return c;
 }
 

@@ -100,7 +100,7 @@ VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass
     // Nothing seen: a constant background has no circle; an environment has infinity's.
     if (!(z > 0.0) || (std::isinf(z) && !(backgroundAtInfinity && camera.view.projection == Projection::Perspective))) continue;
     double c = 0.0;
-    if (!camera.isPinhole())
+    if (!camera.lens.isPinhole())
       for (const double shift : shifts) c = std::max(c, cocDiameterOnWindow(camera, z, shift) * pxPerWindowUnit);
     blur.ownPx[i] = static_cast<float>(std::min(c, 1e9));
     depthF[i] = static_cast<float>(z);

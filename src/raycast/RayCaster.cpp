@@ -83,10 +83,10 @@ struct RayCaster::Impl : EmbreeScene {
     // p·(1 − L/z_f) + L·n. Distortion and lateral colour only move where on the film that ray
     // lands, so the test takes n of the undistorted position, never the distorted film point, and
     // z_f with the channel's and the curvature's shift (the same ray lensRay casts).
-    if (camera.hasBarrel()) {
+    if (camera.lens.hasBarrel()) {
       const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
       const glm::dvec2 normalised = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
-      if (!throughBarrel(camera.barrel, lensOffset, normalised, camera.inverseFocusDistance() + inverseFocusShift))
+      if (!throughBarrel(camera.lens.barrel, lensOffset, normalised, camera.inverseFocusDistance() + inverseFocusShift))
         return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
     }
     // The texture's ray differentials: the same lens point, the pixel one footprint over.

@@ -19,7 +19,7 @@ std::vector<double> keyOf(const ThinLensMap& map) {
   const Camera& camera = map.camera();
   const ImageSize size = map.size();
   const Overscan& overscan = map.overscan();
-  const LensEffects& e = camera.effects;
+  const LensEffects& e = camera.lens.effects;
   const Distortion& d = e.distortion;
   const NormalisedRect n = normalisedWindow(camera.view);
   return {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed, e.chromatic.lateralBlue,
@@ -54,7 +54,7 @@ void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgre
     tables_.clear();
     forwardPosition_ = {};
     forwardJacobian_ = {};
-    const std::vector<Channel> channels = remappedChannels(camera.effects);
+    const std::vector<Channel> channels = remappedChannels(camera.lens.effects);
     std::vector<glm::vec2> rows(static_cast<std::size_t>(size.widthPx) * static_cast<std::size_t>(std::min(band, size.heightPx)));
     const int total = static_cast<int>(channels.size()) * size.heightPx;
     for (std::size_t c = 0; c < channels.size(); ++c) {
@@ -73,7 +73,7 @@ void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgre
     gather_.lateral = perChannel;
     gather_.outWidthPx = size.widthPx;
     gather_.outHeightPx = size.heightPx;
-    gather_.lateralScale = glm::vec2(1.0 + camera.effects.chromatic.lateralRed, 1.0 + camera.effects.chromatic.lateralBlue);
+    gather_.lateralScale = glm::vec2(1.0 + camera.lens.effects.chromatic.lateralRed, 1.0 + camera.lens.effects.chromatic.lateralBlue);
     if (perChannel && !perChannelProgram_)
       perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
     key_ = std::move(key);

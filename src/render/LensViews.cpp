@@ -22,10 +22,10 @@ Accumulator::Curvature LensViews::normalisedPixels() const {
 }
 
 std::optional<Accumulator::Barrel> LensViews::barrelMask() const {
-  if (!rendered().hasBarrel()) return std::nullopt;
+  if (!rendered().lens.hasBarrel()) return std::nullopt;
   const Accumulator::Curvature pixels = normalisedPixels();
   return Accumulator::Barrel{pixels.normalisedAtOrigin, pixels.normalisedPerPixel,
-                             static_cast<float>(rendered().barrel.distance / rendered().barrel.radius)};
+                             static_cast<float>(rendered().lens.barrel.distance / rendered().lens.barrel.radius)};
 }
 
 std::optional<Accumulator::Curvature> LensViews::curvatureWarp() const {
@@ -38,14 +38,16 @@ glm::vec2 LensViews::curvatureShiftPx(const LensSample& s) const {
   const Window& w = camera.view.window;
   const ImageSize size = map_.overscan().size;
   const glm::dvec2 pixelSize(w.width() / size.widthPx, w.height() / size.heightPx);
-  return glm::vec2(camera.lensOffset(s.lens) * camera.view.prp.z * camera.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
+  const Lens& lens = camera.lens;
+  return glm::vec2(lens.lensOffset(s.lens) * camera.view.prp.z * lens.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
 }
 
 glm::vec2 LensViews::barrelLens(const LensSample& s, Channel c) const {
   const Camera& camera = rendered();
-  if (!camera.hasBarrel()) return glm::vec2(0.0f);
-  const double shift = camera.effects.chromatic.inverseFocusShift(c);
-  return glm::vec2(camera.lensOffset(s.lens) * (1.0 - camera.barrel.distance * (camera.inverseFocusDistance() + shift)) / camera.barrel.radius);
+  const Lens& lens = camera.lens;
+  if (!lens.hasBarrel()) return glm::vec2(0.0f);
+  const double shift = lens.effects.chromatic.inverseFocusShift(c);
+  return glm::vec2(lens.lensOffset(s.lens) * (1.0 - lens.barrel.distance * (camera.inverseFocusDistance() + shift)) / lens.barrel.radius);
 }
 
 }  // namespace lenslab

@@ -40,7 +40,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   done_ = 0;
   // With distortion or lateral colour the lens gather masks each view's samples at their own
   // undistorted rays (gather_lens.frag, BARREL); a parallel projection has no directions to clip.
-  if (camera.hasBarrel() && camera.view.projection != Projection::Perspective)
+  if (camera.lens.hasBarrel() && camera.view.projection != Projection::Perspective)
     throw InputError(cat(camera.source, ": the lens barrel (cat's-eye vignetting) needs a perspective projection; remove \"barrel\""));
   if (plan.vignetting && !vignettePass_) vignettePass_ = std::make_unique<VignettePass>();
   if (plan.remap) {

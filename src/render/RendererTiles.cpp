@@ -54,7 +54,7 @@ void Renderer::beginAdaptive() {
   }
   // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel, and
   // each view has one aperture point (the barrel's mask is per view).
-  scissorViews_ = !plan_.remap && !plan_.fieldCurvature && !viewCamera().hasBarrel();
+  scissorViews_ = !plan_.remap && !plan_.fieldCurvature && !viewCamera().lens.hasBarrel();
   const TileGrid previous = grid_;
   grid_ = makeTileGrid(outSize_, a.tileSizePx);
   // About 16 regions of whole tiles, each with its own scramble (see step()).

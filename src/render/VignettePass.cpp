@@ -11,7 +11,7 @@ VignetteGain vignetteGainFor(const Camera& camera, ImageSize size) {
   // Normalised coordinates are linear in the window: the GL corner (0, 0) is the window's
   // (umin, vmin), and each pixel steps by the window's pitch over the PRP's distance.
   const Window& w = camera.view.window;
-  const Vignetting& v = camera.effects.vignetting;
+  const Vignetting& v = camera.lens.effects.vignetting;
   VignetteGain g;
   g.normalisedAtOrigin = glm::vec2(normalisedFromWindow(camera.view, {w.umin, w.vmin}));
   g.normalisedPerPixel = glm::vec2(glm::dvec2(w.width() / size.widthPx, w.height() / size.heightPx) / camera.view.prp.z);

@@ -61,7 +61,7 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
   // The camera used, after every option and the depth range fitted: its file form, and the two
   // numbers the file form rounds or leaves implicit.
   h.piece(toCameraJson(camera));
-  h.number(camera.apertureRadius);
+  h.number(camera.lens.apertureRadius);
   h.number(camera.inverseFocusDistance());
   for (const long long v : {static_cast<long long>(size.widthPx), static_cast<long long>(size.heightPx),
                             static_cast<long long>(o.referenceSpp), static_cast<long long>(o.seed)})

@@ -96,7 +96,7 @@ struct SweepRun {
     // The gather baseline blurs the pinhole image with round disks and knows no lens effects:
     // comparing it with an exact distorted (or polygonal) reference would measure what it lacks,
     // not the method.
-    if (series == "postprocess") return camera.effects.isZero() && camera.aperture.isRound() ? o.gatherTaps : std::vector<int>{};
+    if (series == "postprocess") return camera.lens.effects.isZero() && camera.lens.aperture.isRound() ? o.gatherTaps : std::vector<int>{};
     return doublings(o.maxViews);
   }
 
@@ -193,7 +193,7 @@ void runGatherSeries(SweepRun& run) {
   const SweepOptions& o = run.o;
   const std::vector<int> gatherTaps = run.budgetsOf("postprocess");
   if (gatherTaps.empty() && !o.gatherTaps.empty() && run.wanted("postprocess"))
-    say(o, run.camera.effects.isZero() ? "postprocess gather: left out (it blurs with round disks only)"
+    say(o, run.camera.lens.effects.isZero() ? "postprocess gather: left out (it blurs with round disks only)"
                                        : "postprocess gather: left out (it has no lens effects)");
   for (int taps : gatherTaps) {
     Image image;
@@ -248,7 +248,7 @@ std::vector<std::string> sweepSeriesNames() {
 }
 
 SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {
-  if (camera.isPinhole())
+  if (camera.lens.isPinhole())
     throw InputError("sweep: the camera is a pinhole, so there is no depth of field to converge to; give a camera with "
                      "f_number (physical form) or aperture_radius (lecture form), or --f-number N");
   SweepResult result;

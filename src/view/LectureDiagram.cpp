@@ -44,11 +44,11 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
     }
   }
 
-  if (camera.isPinhole()) return lines;
+  if (camera.lens.isPinhole()) return lines;
 
   // The aperture in the PRP's plane (parallel to the view plane): a disk, or the blades' shape.
-  const double r = camera.apertureRadius * style.apertureScale;
-  const std::vector<glm::dvec2> outline = apertureOutline(camera.aperture, camera.aperture.blades == 0 ? 64 : 16);
+  const double r = camera.lens.apertureRadius * style.apertureScale;
+  const std::vector<glm::dvec2> outline = apertureOutline(camera.lens.aperture, camera.lens.aperture.blades == 0 ? 64 : 16);
   for (std::size_t i = 0; i < outline.size(); ++i) {
     const glm::dvec2 a = outline[i], c = outline[(i + 1) % outline.size()];
     add(prp + r * (a.x * b.u + a.y * b.v), prp + r * (c.x * b.u + c.y * b.v), colors.aperture);
@@ -56,7 +56,7 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
   // The sample points: the PRP moves to each of them for one scene pass.
   const double dot = std::min(0.06 * r, mark);
   auto lensPoint = [&](const LensSample& sample) {
-    const glm::dvec2 p = camera.aperture.isRound() ? sample.lens : apertureFromDisk(sample.lens, camera.aperture);
+    const glm::dvec2 p = camera.lens.aperture.isRound() ? sample.lens : apertureFromDisk(sample.lens, camera.lens.aperture);
     return prp + r * (p.x * b.u + p.y * b.v);
   };
   for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -78,9 +78,9 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
 }
 
 double readableApertureScale(const Camera& camera, double fraction) {
-  if (camera.isPinhole()) return 1.0;
+  if (camera.lens.isPinhole()) return 1.0;
   const double wanted = 0.5 * fraction * camera.view.window.height();
-  return std::max(1.0, wanted / camera.apertureRadius);
+  return std::max(1.0, wanted / camera.lens.apertureRadius);
 }
 
 }  // namespace lenslab::view

@@ -57,9 +57,9 @@ EditableCamera flown(const EditableCamera& c, glm::dvec3 m) {
   return moved(c, glm::translate(glm::dmat4(1.0), m.x * b.u + m.y * b.v - m.z * b.n));
 }
 
-EditableCamera fromPhysical(const PhysicalCamera& physical, const std::string& source) {
+EditableCamera fromPhysical(const PhysicalCamera& physical, const std::string& source, const Lens& lens) {
   validate(physical, "the panel's physical lens");
-  return {toCamera(physical, source), physical};
+  return {toCamera(physical, lens, source), physical};
 }
 
 }  // namespace lenslab::view

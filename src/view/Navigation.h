@@ -32,7 +32,8 @@ EditableCamera lookedAround(const EditableCamera& camera, double yawRadians, dou
 // Move by (right, up, forward) world units along u, v and −n.
 EditableCamera flown(const EditableCamera& camera, glm::dvec3 rightUpForward);
 
-// Rebuilds the renderable camera from the physical description (after an edit of it).
-EditableCamera fromPhysical(const PhysicalCamera& physical, const std::string& source);
+// Rebuilds the renderable camera from the physical description (after an edit of it), through
+// `lens`'s aperture shape, barrel and effects (the radius is the description's f/2N).
+EditableCamera fromPhysical(const PhysicalCamera& physical, const std::string& source, const Lens& lens = {});
 
 }  // namespace lenslab::view

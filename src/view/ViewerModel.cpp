@@ -124,10 +124,7 @@ void ViewerModel::refocus(double distance) {
 void ViewerModel::editPhysical(const PhysicalCamera& physical) {
   try {
     const Camera before = cam_.camera;
-    cam_ = fromPhysical(physical, before.source);
-    cam_.camera.effects = before.effects;
-    cam_.camera.aperture = before.aperture;
-    cam_.camera.barrel = before.barrel;
+    cam_ = fromPhysical(physical, before.source, before.lens);
     cam_.camera.calibratedSize = before.calibratedSize;
     dirty_ = true;
   } catch (const InputError& e) {
@@ -146,8 +143,8 @@ void ViewerModel::describeAsLens() {
     const ViewSpec& s = cam_.camera.view;
     const glm::dvec2 sensor(36.0, 36.0 * s.window.height() / s.window.width());
     PhysicalCamera p = toPhysical(cam_.camera, sensor);
-    if (cam_.camera.apertureRadius > 0.0)
-      p.fNumber = p.focalLengthMm * kMetresPerMillimetre / (2.0 * cam_.camera.apertureRadius);
+    if (cam_.camera.lens.apertureRadius > 0.0)
+      p.fNumber = p.focalLengthMm * kMetresPerMillimetre / (2.0 * cam_.camera.lens.apertureRadius);
     editPhysical(p);
   } catch (const InputError& e) {
     reportError(e.what());
@@ -156,7 +153,7 @@ void ViewerModel::describeAsLens() {
 
 void ViewerModel::editLensEffects(const LensEffects& effects) {
   Camera c = cam_.camera;
-  c.effects = effects;
+  c.lens.effects = effects;
   try {
     validateLensEffects(c, "the panel's lens");
     cam_.camera = c;
@@ -198,7 +195,7 @@ void ViewerModel::replanWith(const VisibleBlur& visible) {
 }
 
 bool ViewerModel::wantsVisibleBlur() const {
-  return !cam_.camera.isPinhole() && (planOptions_.apertureSamples == 0 || planOptions_.targetPsnrDb.has_value());
+  return !cam_.camera.lens.isPinhole() && (planOptions_.apertureSamples == 0 || planOptions_.targetPsnrDb.has_value());
 }
 
 Camera ViewerModel::renderCamera() const { return withDepthRangeFitted(cam_.camera, scene_.bounds); }
@@ -207,7 +204,7 @@ void ViewerModel::restart() {
   try {
     validate(cam_.camera.view, "the panel's camera");
     validateLensEffects(cam_.camera, "the panel's camera");
-    if (!(cam_.camera.apertureRadius >= 0.0) || !std::isfinite(cam_.camera.apertureRadius))
+    if (!(cam_.camera.lens.apertureRadius >= 0.0) || !std::isfinite(cam_.camera.lens.apertureRadius))
       throw InputError("the panel's camera: aperture radius must be 0 (a pinhole) or positive");
     plan_ = makeFramePlan(scene_, cam_.camera, size_, planOptions_);
     lastGood_ = cam_;

@@ -76,7 +76,7 @@ void Viewer::sectionLecture() {
     changed = true;
   }
   if (!farInfinite) changed |= dragDouble(fit_, "far", s.farDistance, step * 10.0f, 0.0, 1e12);
-  changed |= dragDouble(fit_, "aperture radius", c.apertureRadius, step * 0.01f, 0.0, 1e6);
+  changed |= dragDouble(fit_, "aperture radius", c.lens.apertureRadius, step * 0.01f, 0.0, 1e6);
   if (changed) model_.editLecture(c);  // checked at the restart: an invalid camera is rolled back
   // Focus distance: moves the view plane (the plane of focus), keeping the field of view.
   double focus = std::min(model_.camera().camera.focusDistance(), 1e9);
@@ -114,8 +114,8 @@ void Viewer::sectionCompare() {
     bool enlarge = model_.enlargeAperture();
     if (checkbox(fit_, "enlarge the aperture", &enlarge)) model_.setEnlargeAperture(enlarge);
     const Camera& c = model_.camera().camera;
-    if (enlarge && !c.isPinhole())
-      wrapped(cat("aperture drawn x", std::round(model_.diagramApertureScale()), " (radius ", number(c.apertureRadius), ")"));
+    if (enlarge && !c.lens.isPinhole())
+      wrapped(cat("aperture drawn x", std::round(model_.diagramApertureScale()), " (radius ", number(c.lens.apertureRadius), ")"));
   }
 }
 

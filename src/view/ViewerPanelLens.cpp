@@ -108,7 +108,7 @@ void Viewer::sectionSamples() {
 void Viewer::sectionLensEffects() {
   if (!header(fit_, "Lens effects", openFlags(true))) return;
   const Camera& c = model_.camera().camera;
-  LensEffects e = c.effects;
+  LensEffects e = c.lens.effects;
   bool changed = false;
   wrapped("Distortion: Brown-Conrady in OpenCV's order (normalised coordinates about the principal point)");
   changed |= dragDouble(fit_, "k1", e.distortion.k1, 0.002f, -2.0, 2.0);

@@ -65,7 +65,7 @@ void BM_ScenePass(benchmark::State& state) {
   state.SetLabel(f.context->renderer());
   FramePlan plan = makeFramePlan(f.scene, f.camera, kSize, PlanOptions{AperturePattern::Concentric, 1, 1, 1});
   Camera pinhole = f.camera;
-  pinhole.apertureRadius = 0.0;
+  pinhole.lens.apertureRadius = 0.0;
   f.renderer->begin(pinhole, plan, kSize);
   for (auto _ : state) {
     f.renderer->begin(pinhole, plan, kSize);
@@ -99,19 +99,19 @@ void BM_Accumulate(benchmark::State& state) {
 
 Camera withEffects(const Camera& base, int set) {
   Camera c = base;
-  const LensEffects all = loadCameraJson(assetDir() + "/rows/camera-lens.json").camera.effects;
-  c.effects = {};
+  const LensEffects all = loadCameraJson(assetDir() + "/rows/camera-lens.json").camera.lens.effects;
+  c.lens.effects = {};
   if (set == 2) {
-    c.effects.distortion = all.distortion;
-    c.effects.chromatic.lateralRed = all.chromatic.lateralRed;
-    c.effects.chromatic.lateralBlue = all.chromatic.lateralBlue;
+    c.lens.effects.distortion = all.distortion;
+    c.lens.effects.chromatic.lateralRed = all.chromatic.lateralRed;
+    c.lens.effects.chromatic.lateralBlue = all.chromatic.lateralBlue;
   } else if (set == 3) {
-    c.effects.chromatic.inverseFocusShiftRed = all.chromatic.inverseFocusShiftRed;
-    c.effects.chromatic.inverseFocusShiftBlue = all.chromatic.inverseFocusShiftBlue;
+    c.lens.effects.chromatic.inverseFocusShiftRed = all.chromatic.inverseFocusShiftRed;
+    c.lens.effects.chromatic.inverseFocusShiftBlue = all.chromatic.inverseFocusShiftBlue;
   } else if (set == 4) {
-    c.effects.fieldCurvature = all.fieldCurvature;
+    c.lens.effects.fieldCurvature = all.fieldCurvature;
   } else if (set == 5) {
-    c.effects = all;
+    c.lens.effects = all;
   }
   return c;
 }

@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
   const Scene scene = loadGltf(options.scenePath);
   const Camera camera = withDepthRangeFitted(loadCameraJson(options.cameraPath).camera, scene.bounds);
   Camera pinhole = camera;
-  pinhole.apertureRadius = 0.0;
+  pinhole.lens.apertureRadius = 0.0;
   const ImageSize size{options.widthPx, options.heightPx};
   const int views = options.views;
   const double triangles = bench::trianglesOf(scene);

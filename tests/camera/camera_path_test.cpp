@@ -29,9 +29,9 @@ CameraPath threeKeys(PathInterpolation mode) {
   CameraPath p;
   p.fps = 24.0;
   p.interpolation = mode;
-  p.keys = {{0.0, lens({0, 1, 5}, {0, 0.5, 0}, 1.0, 1.4, 35.0), {}, {}, {}},
-            {1.0, lens({2, 1.5, 4}, {0.2, 0.5, -1}, 4.0, 2.8, 50.0), {}, {}, {}},
-            {2.5, lens({3, 1, 1}, {0, 0.5, -3}, 20.0, 8.0, 85.0), {}, {}, {}}};
+  p.keys = {{0.0, lens({0, 1, 5}, {0, 0.5, 0}, 1.0, 1.4, 35.0), {}},
+            {1.0, lens({2, 1.5, 4}, {0.2, 0.5, -1}, 4.0, 2.8, 50.0), {}},
+            {2.5, lens({3, 1, 1}, {0, 0.5, -3}, 20.0, 8.0, 85.0), {}}};
   p.keys[1].camera.up = glm::normalize(glm::dvec3(0.2, 1.0, 0.0));
   validate(p, "test");
   return p;
@@ -95,7 +95,7 @@ TEST(CameraPath, UpStaysOrthonormalToTheViewDirection) {
   CameraPath p;
   p.fps = 30.0;
   for (int k = 0; k < 6; ++k) {
-    PathKey key{k * 0.5, lens({u(rng) * 3, 1 + u(rng), 5 + u(rng)}, {u(rng), 0.5, u(rng)}, 3.0, 2.0), {}, {}, {}};
+    PathKey key{k * 0.5, lens({u(rng) * 3, 1 + u(rng), 5 + u(rng)}, {u(rng), 0.5, u(rng)}, 3.0, 2.0), {}};
     key.camera.up = glm::normalize(glm::dvec3(0.3 * u(rng), 1.0, 0.3 * u(rng)));
     p.keys.push_back(key);
   }
@@ -117,7 +117,7 @@ TEST(CameraPath, AnEyeThroughItsTargetIsRefusedBeforeTheFirstFrame) {
   CameraPath p;
   p.fps = 4.0;
   p.interpolation = PathInterpolation::Linear;
-  p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}, {}, {}}, {1.0, lens({0, 0, -5}, {0, 0, 0}, 3.0, 2.8), {}, {}, {}}};
+  p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}, {1.0, lens({0, 0, -5}, {0, 0, 0}, 3.0, 2.8), {}}};
   const std::string message = refusal(p);
   EXPECT_NE(message.find("path.json: frame 2 (t = 0.5 s): eye meets target"), std::string::npos) << message;
 }
@@ -126,7 +126,7 @@ TEST(CameraPath, UpsThatCancelAreRefusedNamingTheFrame) {
   CameraPath p;
   p.fps = 4.0;
   p.interpolation = PathInterpolation::Linear;
-  p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}, {}, {}}, {1.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}, {}, {}}};
+  p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}, {1.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}};
   p.keys[1].camera.up = {0, -1, 0};
   const std::string message = refusal(p);
   EXPECT_NE(message.find("path.json: frame 2 (t = 0.5 s): up is parallel to the view direction"), std::string::npos) << message;
@@ -173,7 +173,7 @@ TEST(CameraPathJson, ReadsAPathWithEffects) {
   ASSERT_EQ(p.keys.size(), 2u);
   EXPECT_EQ(p.frameCount(), 25);
   EXPECT_EQ(p.interpolation, PathInterpolation::Linear);
-  EXPECT_NEAR(cameraAt(p, 1.0).effects.distortion.k1, -0.05, 1e-12);
+  EXPECT_NEAR(cameraAt(p, 1.0).lens.effects.distortion.k1, -0.05, 1e-12);
 }
 
 TEST(CameraPathJson, BadPathsAreRefusedNamingTheKey) {
@@ -250,8 +250,8 @@ TEST(CameraPathJson, APathHoldsOneApertureShape) {
   const std::string shaped0 = R"({"time": 0, "eye": [0, 1, 5], "target": [0, 0.5, 0], "f_number": 2, "aperture": {"blades": 6}})";
   const std::string shaped1 = R"({"time": 1, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "aperture": {"blades": 6}})";
   const CameraPath p = parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + shaped1 + "]}", "path.json");
-  EXPECT_EQ(cameraAt(p, 0.5).aperture.blades, 6);
-  EXPECT_EQ(cameraAt(p, 1.0).aperture.blades, 6);
+  EXPECT_EQ(cameraAt(p, 0.5).lens.aperture.blades, 6);
+  EXPECT_EQ(cameraAt(p, 1.0).lens.aperture.blades, 6);
   const std::string message = test::refusalOf([&] { parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + kKey1 + "]}", "path.json"); });
   EXPECT_NE(message.find("keys[1]: \"aperture\" is circle where the first key's is 6 blades"), std::string::npos) << message;
 }

@@ -33,7 +33,7 @@ PhysicalCamera lens(double focus) {
 std::vector<glm::dvec2> landings(const Camera& camera, glm::dvec3 point) {
   std::vector<glm::dvec2> out;
   for (const LensSample& s : makeApertureSamples(AperturePattern::Concentric, 16, 1)) {
-    const ViewSpec v = viewThroughLens(camera, s.lens * camera.apertureRadius, {0, 0});
+    const ViewSpec v = viewThroughLens(camera, s.lens * camera.lens.apertureRadius, {0, 0});
     out.push_back(ndcFromWindow(v.window, projectToWindow(v, point)));
   }
   return out;
@@ -62,7 +62,8 @@ TEST(FocusAsInverseDistance, RefocusFarAwayKeepsTheViewPlane) {
     EXPECT_DOUBLE_EQ(far.focusDistance(), focus);
     EXPECT_TRUE(std::isfinite(far.view.window.width()));
     // Circles of confusion stay finite, tending to the infinity-focus value 2R·d/z.
-    EXPECT_NEAR(cocDiameterOnWindow(far, 2.0), 2.0 * c.apertureRadius * 5.0 / 2.0, 2.0 * c.apertureRadius * 5.0 / focus * 1.001 + 1e-15);
+    const double radius = c.lens.apertureRadius;
+    EXPECT_NEAR(cocDiameterOnWindow(far, 2.0), 2.0 * radius * 5.0 / 2.0, 2.0 * radius * 5.0 / focus * 1.001 + 1e-15);
   }
   // Within kMaxViewPlaneMove the view plane moves to the plane of focus, as it always did.
   EXPECT_DOUBLE_EQ(refocused(c, 50.0, "test").view.prp.z, 50.0);
@@ -78,7 +79,7 @@ TEST(FocusAsInverseDistance, ParallelLensFocusesOffItsViewPlane) {
   c.view.window = {-1, -1, 1, 1};
   c.view.nearDistance = 0.0;
   c.view.farDistance = 100.0;
-  c.apertureRadius = 0.2;
+  c.lens.apertureRadius = 0.2;
   const Camera focused = refocused(c, 5000.0, "test");  // beyond kMaxViewPlaneMove × 4
   ASSERT_TRUE(focused.inverseFocusOffPlane);
   // A point on the plane of focus (depth 5000 from the PRP) lands on one window point from every

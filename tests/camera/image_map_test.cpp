@@ -34,7 +34,7 @@ Camera obliqueCamera(Projection projection) {
   c.view.vpn = glm::normalize(glm::dvec3(0.2, 0.1, 1.0));
   c.view.prp = {0.08, -0.05, 2.0};
   c.view.window = {-0.7, -0.45, 0.75, 0.55};
-  c.apertureRadius = 0.04;
+  c.lens.apertureRadius = 0.04;
   c.source = "test camera";
   return projection == Projection::Perspective ? refocused(c, 5.0, "test") : c;
 }
@@ -53,11 +53,11 @@ const Lens kLenses[] = {
 };
 
 Camera withLens(Camera c, const Lens& lens) {
-  c.effects.distortion = lens.distortion;
-  c.effects.chromatic.lateralRed = lens.lateralRed;
-  c.effects.chromatic.lateralBlue = lens.lateralBlue;
-  c.effects.chromatic.inverseFocusShiftRed = lens.axialRed;
-  c.effects.chromatic.inverseFocusShiftBlue = lens.axialBlue;
+  c.lens.effects.distortion = lens.distortion;
+  c.lens.effects.chromatic.lateralRed = lens.lateralRed;
+  c.lens.effects.chromatic.lateralBlue = lens.lateralBlue;
+  c.lens.effects.chromatic.inverseFocusShiftRed = lens.axialRed;
+  c.lens.effects.chromatic.inverseFocusShiftBlue = lens.axialBlue;
   validateLensEffects(c, "test");
   return c;
 }
@@ -71,8 +71,8 @@ glm::dvec2 randomOnDisk(std::mt19937& rng) {
 // Where the output image shows channel `c`'s true perspective pixel position `ideal`: the lens
 // model applied forward (distortion, then the channel's magnification).
 glm::dvec2 outputPixel(const ThinLensMap& map, Channel c, glm::dvec2 ideal) {
-  if (!map.camera().effects.needsRemap()) return ideal;
-  return map.pixelFromNormalised(map.camera().effects.distortChannel(c, map.normalisedFromPixel(ideal)));
+  if (!map.camera().lens.effects.needsRemap()) return ideal;
+  return map.pixelFromNormalised(map.camera().lens.effects.distortChannel(c, map.normalisedFromPixel(ideal)));
 }
 
 // Every point of the ray from lens point s through output pixel p lands back on p: projected by
@@ -97,7 +97,8 @@ TEST(ImageMap, PixelToRayToPixelRoundTrips) {
           ASSERT_TRUE(r);
           EXPECT_NEAR(glm::length(r->ray.direction), 1.0, 1e-12);
           const glm::dvec3 point = r->ray.origin + t(rng) * r->ray.direction;
-          const ViewSpec seenFrom = viewThroughLens(camera, camera.lensOffset(disk), {0.0, 0.0}, camera.effects.chromatic.inverseFocusShift(c));
+          const ViewSpec seenFrom =
+              viewThroughLens(camera, camera.lens.lensOffset(disk), {0.0, 0.0}, camera.lens.effects.chromatic.inverseFocusShift(c));
           const glm::dvec2 ideal = pixelFromWindow(seenFrom.window, projectToWindow(seenFrom, point), kSize.widthPx, kSize.heightPx);
           const double error = glm::length(outputPixel(map, c, ideal) - pixel);
           worst = std::max(worst, error);
@@ -121,14 +122,14 @@ TEST(ImageMap, PlainCameraRaysAreLensRaysAndConversionsInvert) {
     std::uniform_real_distribution<double> x(0.0, kSize.widthPx), y(0.0, kSize.heightPx);
     for (int i = 0; i < 200; ++i) {
       const glm::dvec2 pixel(x(rng), y(rng)), disk = randomOnDisk(rng);
-      const Ray expected = lensRay(camera, camera.lensOffset(disk), pixel, kSize);
+      const Ray expected = lensRay(camera, camera.lens.lensOffset(disk), pixel, kSize);
       const CameraRay r = *map.ray(pixel, disk, 1);
       EXPECT_EQ(r.ray.origin, expected.origin);
       EXPECT_EQ(r.ray.direction, expected.direction);
       EXPECT_EQ(r.ray.tNear, expected.tNear);
       EXPECT_FALSE(r.blocked);
       const Ray over = map.footprintRay(r, {0.25, -0.5});
-      EXPECT_EQ(over.direction, lensRay(camera, camera.lensOffset(disk), pixel + glm::dvec2(0.25, -0.5), kSize).direction);
+      EXPECT_EQ(over.direction, lensRay(camera, camera.lens.lensOffset(disk), pixel + glm::dvec2(0.25, -0.5), kSize).direction);
       EXPECT_NEAR(glm::length(map.pixelFromWindow(map.windowFromPixel(pixel)) - pixel), 0.0, 1e-9);
       if (projection == Projection::Perspective) {
         EXPECT_NEAR(glm::length(map.pixelFromNormalised(map.normalisedFromPixel(pixel)) - pixel), 0.0, 1e-9);
@@ -181,13 +182,13 @@ TEST(ImageMap, ClipFromWorldAgreesWithRay) {
 // Vignetting moves no ray and scales the pixel by the gain at its place on the film.
 TEST(ImageMap, VignettingIsAGainNotARay) {
   Camera camera = obliqueCamera(Projection::Perspective);
-  camera.effects.vignetting.a1 = -0.3;
+  camera.lens.effects.vignetting.a1 = -0.3;
   const ThinLensMap map(camera, kSize);
   EXPECT_FALSE(map.start({3.5, 2.5}, 1)) << "vignetting alone solves no inverse";
   const glm::dvec2 corner(0.5, 0.5);
   const glm::dvec2 n = map.normalisedFromPixel(corner);
   EXPECT_DOUBLE_EQ(map.gainAt(corner), 1.0 - 0.3 * glm::dot(n, n));
-  EXPECT_EQ(map.ray(corner, {0.3, 0.2}, 1)->ray.direction, lensRay(camera, camera.lensOffset({0.3, 0.2}), corner, kSize).direction);
+  EXPECT_EQ(map.ray(corner, {0.3, 0.2}, 1)->ray.direction, lensRay(camera, camera.lens.lensOffset({0.3, 0.2}), corner, kSize).direction);
 }
 
 LensPrescription bundled(const std::string& name) {

@@ -36,7 +36,7 @@ std::string intrinsicsJson(const OpenCvCamera& c, const std::string& extra = "")
 // lenslab's own chain: world → lecture projection → normalised → distortion → pixel.
 glm::dvec2 lenslabPixel(const Camera& camera, const glm::dvec3& world, ImageSize size) {
   const glm::dvec2 ideal = normalisedFromWindow(camera.view, projectToWindow(camera.view, world));
-  const glm::dvec2 distorted = camera.effects.distortion.distort(ideal);
+  const glm::dvec2 distorted = camera.lens.effects.distortion.distort(ideal);
   return pixelFromWindow(camera.view.window, windowFromNormalised(camera.view, distorted), size.widthPx, size.heightPx);
 }
 
@@ -64,7 +64,7 @@ TEST_P(OpenCvModel, IntrinsicsCameraPutsPointsWhereOpenCvDoes) {
 
 TEST_P(OpenCvModel, InverseRoundTripsBelowOneMillionth) {
   const CameraFile file = parseCameraJson(intrinsicsJson(GetParam()), "test.json");
-  const Distortion& d = file.camera.effects.distortion;
+  const Distortion& d = file.camera.lens.effects.distortion;
   const NormalisedRect rect = normalisedWindow(file.camera.view);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(rect.min.x, rect.max.x), v(rect.min.y, rect.max.y);
@@ -80,7 +80,7 @@ TEST_P(OpenCvModel, InverseRoundTripsBelowOneMillionth) {
 }
 
 TEST_P(OpenCvModel, JacobianMatchesFiniteDifferences) {
-  const Distortion d = parseCameraJson(intrinsicsJson(GetParam()), "t").camera.effects.distortion;
+  const Distortion d = parseCameraJson(intrinsicsJson(GetParam()), "t").camera.lens.effects.distortion;
   for (const glm::dvec2 p : {glm::dvec2(0.3, -0.2), glm::dvec2(-0.5, 0.4), glm::dvec2(0.01, 0.6)}) {
     const glm::dmat2 j = d.jacobian(p);
     const double h = 1e-6;
@@ -146,7 +146,7 @@ Camera narrowCamera(double k1) {
   c.view.vrp = {0, 0, 0};
   c.view.prp = {0, 0, 2};
   c.view.window = {-0.72, -0.48, 0.72, 0.48};
-  c.effects.distortion.k1 = k1;
+  c.lens.effects.distortion.k1 = k1;
   return c;
 }
 
@@ -176,7 +176,7 @@ TEST(Overscan, BarrelFromMinusHalfToZeroNeverSamplesOutsideTheRender) {
 
 TEST(Overscan, ZeroDistortionIsTheIdentityOnPixelCentres) {
   Camera camera = narrowCamera(0.0);
-  camera.effects.chromatic.lateralRed = 1e-9;  // forces the tables to be made
+  camera.lens.effects.chromatic.lateralRed = 1e-9;  // forces the tables to be made
   const ImageSize size{64, 48};
   const ThinLensMap map = ThinLensMap(camera, size).overscanned();
   const Overscan& o = map.overscan();
@@ -194,14 +194,14 @@ TEST(Overscan, ZeroDistortionIsTheIdentityOnPixelCentres) {
 // bands gives the whole table's values, and the forward table's reach is the largest over the bands.
 TEST(LensTables, BandsGiveTheWholeTable) {
   Camera camera = narrowCamera(-0.2);
-  camera.effects.distortion.p1 = 0.002;
-  camera.effects.chromatic.lateralRed = 0.004;
-  camera.effects.chromatic.lateralBlue = -0.004;
+  camera.lens.effects.distortion.p1 = 0.002;
+  camera.lens.effects.chromatic.lateralRed = 0.004;
+  camera.lens.effects.chromatic.lateralBlue = -0.004;
   const ImageSize size{97, 61};
   const ThinLensMap map = ThinLensMap(camera, size).overscanned();
   const Overscan& o = map.overscan();
   const RemapTable table = map.remapTable();
-  const std::vector<Channel> channels = remappedChannels(camera.effects);
+  const std::vector<Channel> channels = remappedChannels(camera.lens.effects);
   ASSERT_EQ(channels.size(), table.channels.size());
   const ForwardTable forward = map.forwardTable();
   for (const int band : {1, 7, 64}) {
@@ -240,23 +240,23 @@ TEST(Chromatic, CameraFileReadsPerChannelFocusAndLateralScale) {
   const CameraFile file = parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
       "aperture_radius": 0.05, "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.003,
       "focus_distance_red": 2.5, "focus_distance_blue": "infinity"}})", "c.json");
-  const Chromatic& c = file.camera.effects.chromatic;
+  const Chromatic& c = file.camera.lens.effects.chromatic;
   EXPECT_DOUBLE_EQ(c.lateralRed, 0.004);
   EXPECT_DOUBLE_EQ(c.lateralBlue, -0.003);
   EXPECT_NEAR(file.camera.inverseFocusDistance() + c.inverseFocusShiftRed, 1.0 / 2.5, 1e-15);
   EXPECT_NEAR(file.camera.inverseFocusDistance() + c.inverseFocusShiftBlue, 0.0, 1e-15);
   // Saved and loaded again, the lens is the same.
   const CameraFile again = parseCameraJson(toCameraJson(file.camera), "again.json");
-  EXPECT_NEAR(again.camera.effects.chromatic.inverseFocusShiftRed, c.inverseFocusShiftRed, 1e-12);
-  EXPECT_DOUBLE_EQ(again.camera.effects.chromatic.lateralRed, c.lateralRed);
+  EXPECT_NEAR(again.camera.lens.effects.chromatic.inverseFocusShiftRed, c.inverseFocusShiftRed, 1e-12);
+  EXPECT_DOUBLE_EQ(again.camera.lens.effects.chromatic.lateralRed, c.lateralRed);
 }
 
 TEST(Chromatic, PhysicalFormTakesAnAbbeNumber) {
   const CameraFile file = parseCameraJson(R"({"eye": [0,0,5], "target": [0,0,0], "focal_length_mm": 50, "f_number": 2,
       "chromatic": {"abbe_number": 40}})", "p.json");
   const auto expected = inverseFocusShiftsFromAbbe(40, 0.05);
-  EXPECT_DOUBLE_EQ(file.camera.effects.chromatic.inverseFocusShiftRed, expected[0]);
-  EXPECT_DOUBLE_EQ(file.camera.effects.chromatic.inverseFocusShiftBlue, expected[1]);
+  EXPECT_DOUBLE_EQ(file.camera.lens.effects.chromatic.inverseFocusShiftRed, expected[0]);
+  EXPECT_DOUBLE_EQ(file.camera.lens.effects.chromatic.inverseFocusShiftBlue, expected[1]);
 }
 
 TEST(FieldCurvature, CornerFocusDistanceSetsTheCurvature) {
@@ -264,10 +264,11 @@ TEST(FieldCurvature, CornerFocusDistanceSetsTheCurvature) {
       "aperture_radius": 0.05, "field_curvature": {"corner_focus_distance": 1.6}})", "f.json");
   const Camera& camera = file.camera;
   const glm::dvec2 corner(0.3, 0.4);  // normalised: window corner / PRP.n, radius 0.5
-  EXPECT_NEAR(camera.inverseFocusDistance() + camera.effects.inverseFocusShift(Channel::Green, corner), 1.0 / 1.6, 1e-12);
-  EXPECT_NEAR(camera.effects.inverseFocusShift(Channel::Green, {0.0, 0.0}), 0.0, 1e-15);
+  EXPECT_NEAR(camera.inverseFocusDistance() + camera.lens.effects.inverseFocusShift(Channel::Green, corner), 1.0 / 1.6, 1e-12);
+  EXPECT_NEAR(camera.lens.effects.inverseFocusShift(Channel::Green, {0.0, 0.0}), 0.0, 1e-15);
   const CameraFile again = parseCameraJson(toCameraJson(camera), "again.json");
-  EXPECT_NEAR(again.camera.effects.fieldCurvature.inverseFocusPerRadius2, camera.effects.fieldCurvature.inverseFocusPerRadius2, 1e-12);
+  EXPECT_NEAR(again.camera.lens.effects.fieldCurvature.inverseFocusPerRadius2,
+              camera.lens.effects.fieldCurvature.inverseFocusPerRadius2, 1e-12);
 }
 
 TEST(LensEffectsJson, BadKeysAndFormsGiveOneLineErrors) {
@@ -411,18 +412,18 @@ TEST(FramePlanEffects, EachEffectAddsOnlyItsOwnPassOrVariant) {
   EXPECT_GT(plan.overscan.size.widthPx, size.widthPx);
 
   Camera axial = narrowCamera(0.0);
-  axial.effects.chromatic.inverseFocusShiftRed = -0.1;
+  axial.lens.effects.chromatic.inverseFocusShiftRed = -0.1;
   plan = makeFramePlan(scene, axial, size);  // a pinhole: axial colour changes nothing
   EXPECT_EQ(plan.viewsPerSample, 1);
   EXPECT_FALSE(plan.warnings.empty());
-  axial.apertureRadius = 0.05;
+  axial.lens.apertureRadius = 0.05;
   plan = makeFramePlan(scene, axial, size);
   EXPECT_EQ(plan.viewsPerSample, 3);
   EXPECT_FALSE(plan.remap);
 
   Camera curved = narrowCamera(0.0);
-  curved.apertureRadius = 0.05;
-  curved.effects.fieldCurvature.inverseFocusPerRadius2 = 0.5;
+  curved.lens.apertureRadius = 0.05;
+  curved.lens.effects.fieldCurvature.inverseFocusPerRadius2 = 0.5;
   plan = makeFramePlan(scene, curved, size);
   EXPECT_TRUE(plan.fieldCurvature);
   EXPECT_EQ(plan.passes[0].variants, std::vector<std::string>{"field-curvature"});
@@ -490,7 +491,7 @@ TEST(DistortionInverse, StrongDistortionFoldingBeyondTheImageIsInvertedOnItsBran
   camera.view.vpn = {0, 0, 1};
   camera.view.prp = {0, 0, 1};
   camera.view.window = {-0.5, -0.35, 0.5, 0.35};  // corner radius 0.61 < the fold's distorted 0.91
-  camera.effects.distortion = d;
+  camera.lens.effects.distortion = d;
   camera.source = "k1 2 k2 -2";
   EXPECT_NO_THROW(validateLensEffects(camera, "test"));
   EXPECT_NO_THROW(ThinLensMap(camera, {64, 45}).overscanned());

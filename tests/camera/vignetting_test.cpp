@@ -73,15 +73,15 @@ TEST(Vignetting, LargestGainIsFoundAtATurningPointInside) {
 
 TEST(VignettingJson, ReadsTheKeyAndWritesItBack) {
   const Camera c = parseCameraJson("{" + kView + R"(, "vignetting": {"a1": -0.35, "a3": 0.02}})", "v.json").camera;
-  EXPECT_EQ(c.effects.vignetting.a1, -0.35);
-  EXPECT_EQ(c.effects.vignetting.a2, 0.0);  // missing keys are 0
-  EXPECT_EQ(c.effects.vignetting.a3, 0.02);
-  EXPECT_FALSE(c.effects.isZero());
-  EXPECT_FALSE(c.effects.needsRemap());  // a gain moves no pixel
+  EXPECT_EQ(c.lens.effects.vignetting.a1, -0.35);
+  EXPECT_EQ(c.lens.effects.vignetting.a2, 0.0);  // missing keys are 0
+  EXPECT_EQ(c.lens.effects.vignetting.a3, 0.02);
+  EXPECT_FALSE(c.lens.effects.isZero());
+  EXPECT_FALSE(c.lens.effects.needsRemap());  // a gain moves no pixel
   const Camera again = parseCameraJson(toCameraJson(c), "again.json").camera;
-  EXPECT_EQ(again.effects.vignetting.a1, -0.35);
-  EXPECT_EQ(again.effects.vignetting.a2, 0.0);
-  EXPECT_EQ(again.effects.vignetting.a3, 0.02);
+  EXPECT_EQ(again.lens.effects.vignetting.a1, -0.35);
+  EXPECT_EQ(again.lens.effects.vignetting.a2, 0.0);
+  EXPECT_EQ(again.lens.effects.vignetting.a3, 0.02);
   // Written only when present.
   EXPECT_FALSE(has(toCameraJson(parseCameraJson("{" + kView + "}", "plain.json").camera), "vignetting"));
 }

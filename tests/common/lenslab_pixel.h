@@ -13,7 +13,7 @@ namespace lenslab::test {
 
 inline glm::dvec2 lenslabPixel(const Camera& camera, const glm::dvec3& world, ImageSize size) {
   const glm::dvec2 ideal = normalisedFromWindow(camera.view, projectToWindow(camera.view, world));
-  const glm::dvec2 distorted = camera.effects.distortion.distort(ideal);
+  const glm::dvec2 distorted = camera.lens.effects.distortion.distort(ideal);
   return pixelFromWindow(camera.view.window, windowFromNormalised(camera.view, distorted), size.widthPx, size.heightPx);
 }
 

@@ -34,7 +34,7 @@ TEST(CameraJson, ReadsTheLectureForm) {
   EXPECT_DOUBLE_EQ(s.nearDistance, 0.1);
   EXPECT_TRUE(std::isinf(s.farDistance));
   EXPECT_FALSE(f.physical.has_value());
-  EXPECT_EQ(f.camera.apertureRadius, 0.0);
+  EXPECT_EQ(f.camera.lens.apertureRadius, 0.0);
 }
 
 TEST(CameraJson, ReadsTheParallelLectureForm) {
@@ -50,7 +50,7 @@ TEST(CameraJson, ReadsThePhysicalFormWithDefaults) {
   ASSERT_TRUE(f.physical.has_value());
   EXPECT_DOUBLE_EQ(f.physical->focusDistance, 5.0);
   EXPECT_EQ(f.physical->sensorMm, glm::dvec2(36, 24));
-  EXPECT_NEAR(f.camera.apertureRadius, 0.05 / 8.0, 1e-15);
+  EXPECT_NEAR(f.camera.lens.apertureRadius, 0.05 / 8.0, 1e-15);
   const glm::dvec2 uv = projectToWindow(f.camera.view, {0, 1, -3});
   EXPECT_NEAR(uv.x, 0.0, 1e-12);
   EXPECT_NEAR(uv.y, 0.0, 1e-12);
@@ -145,15 +145,15 @@ namespace {
 TEST(CameraJson, ReadsAndWritesTheAperturesShape) {
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
       "aperture": {"blades": 7, "rotation_deg": 12.5, "roundness": 0.25, "anamorphic_squeeze": 1.33}})", "cam.json");
-  EXPECT_EQ(f.camera.aperture, (ApertureShape{7, 12.5, 0.25, 1.33}));
+  EXPECT_EQ(f.camera.lens.aperture, (ApertureShape{7, 12.5, 0.25, 1.33}));
   const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
-  EXPECT_EQ(back.camera.aperture, f.camera.aperture);
+  EXPECT_EQ(back.camera.lens.aperture, f.camera.lens.aperture);
   // Absent: round; in every form (here the lecture's).
-  EXPECT_TRUE(parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0]})", "cam.json").camera.aperture.isRound());
+  EXPECT_TRUE(parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0]})", "cam.json").camera.lens.aperture.isRound());
   const CameraFile lecture = parseCameraJson(
       R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1], "aperture_radius": 0.1,
           "aperture": {"blades": 5}})", "cam.json");
-  EXPECT_EQ(lecture.camera.aperture.blades, 5);
+  EXPECT_EQ(lecture.camera.lens.aperture.blades, 5);
 }
 
 TEST(CameraJson, RefusesABadApertureShapeNamingTheField) {
@@ -175,11 +175,11 @@ namespace {
 TEST(CameraJson, ReadsAndWritesTheLensBarrel) {
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
       "barrel": {"distance_mm": 40, "diameter_mm": 30}})", "cam.json");
-  EXPECT_DOUBLE_EQ(f.camera.barrel.distance, 0.04);
-  EXPECT_DOUBLE_EQ(f.camera.barrel.radius, 0.015);
+  EXPECT_DOUBLE_EQ(f.camera.lens.barrel.distance, 0.04);
+  EXPECT_DOUBLE_EQ(f.camera.lens.barrel.radius, 0.015);
   const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
-  EXPECT_NEAR(back.camera.barrel.distance, 0.04, 1e-15);
-  EXPECT_NEAR(back.camera.barrel.radius, 0.015, 1e-15);
+  EXPECT_NEAR(back.camera.lens.barrel.distance, 0.04, 1e-15);
+  EXPECT_NEAR(back.camera.lens.barrel.radius, 0.015, 1e-15);
   const std::string head = R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2, )";
   expectRefused(head + R"("barrel": {"distance_mm": 40}})", "\"barrel.diameter_mm\" is missing");
   expectRefused(head + R"("barrel": {"distance_mm": -4, "diameter_mm": 30}})", "\"barrel.distance_mm\" is -4");
@@ -189,12 +189,12 @@ TEST(CameraJson, TakesTheLensBarrelWithDistortionAndLateralColourButNotWithAPara
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
       "barrel": {"distance_mm": 40, "diameter_mm": 30}, "distortion": {"k1": -0.2, "k2": 0.03},
       "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})", "cam.json");
-  EXPECT_DOUBLE_EQ(f.camera.barrel.radius, 0.015);
-  EXPECT_DOUBLE_EQ(f.camera.effects.distortion.k1, -0.2);
-  EXPECT_TRUE(f.camera.effects.needsRemap());
+  EXPECT_DOUBLE_EQ(f.camera.lens.barrel.radius, 0.015);
+  EXPECT_DOUBLE_EQ(f.camera.lens.effects.distortion.k1, -0.2);
+  EXPECT_TRUE(f.camera.lens.effects.needsRemap());
   const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
-  EXPECT_NEAR(back.camera.barrel.distance, 0.04, 1e-15);
-  EXPECT_NEAR(back.camera.effects.chromatic.lateralRed, 0.004, 1e-15);
+  EXPECT_NEAR(back.camera.lens.barrel.distance, 0.04, 1e-15);
+  EXPECT_NEAR(back.camera.lens.effects.chromatic.lateralRed, 0.004, 1e-15);
   expectRefused(R"({"projection": "parallel", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 5],
       "window": [-2, -1, 2, 1], "far": 20, "barrel": {"distance_mm": 40, "diameter_mm": 30}})",
                 "\"barrel\" needs a perspective projection");

@@ -160,20 +160,20 @@ TEST(FrameCameraFile, PoseAndIntrinsicsProjectAsLenslabDoes) {
 
 TEST(FrameCameraFile, ReadsBackAsTheSameCamera) {
   PhysicalCamera c = aLens();
-  LensEffects effects;
-  effects.distortion.k1 = -0.1;
-  effects.distortion.p2 = 0.001;
+  Lens lens;
+  lens.effects.distortion.k1 = -0.1;
+  lens.effects.distortion.p2 = 0.001;
   const Camera expected = toCamera(c, "expected");
-  const std::string text = toIntrinsicsCameraJson(c, effects, {960, 640}, false, false);
+  const std::string text = toIntrinsicsCameraJson(c, lens, {960, 640}, false, false);
   const nlohmann::json j = nlohmann::json::parse(text);
   EXPECT_EQ(j["distortion"], nlohmann::json({-0.1, 0.0, 0.0, 0.001, 0.0}));  // OpenCV's distCoeffs
   EXPECT_FALSE(j.contains("near"));
   const CameraFile file = parseCameraJson(text, "frame");
   const Camera& got = file.camera;
   EXPECT_TRUE(got.nearFromScene);
-  EXPECT_NEAR(got.apertureRadius, expected.apertureRadius, 1e-15);
+  EXPECT_NEAR(got.lens.apertureRadius, expected.lens.apertureRadius, 1e-15);
   EXPECT_NEAR(got.focusDistance(), 3.0, 1e-12);
-  EXPECT_EQ(got.effects.distortion.k1, -0.1);
+  EXPECT_EQ(got.lens.effects.distortion.k1, -0.1);
   ASSERT_TRUE(got.calibratedSize);
   EXPECT_EQ(got.calibratedSize->widthPx, 960);
   // The same rays: the window's corners seen from the PRP point the same way.

@@ -84,7 +84,7 @@ TEST(OpenCvPoseForm, PutsWorldPointsWhereKRXPlusTDoes) {
         const ImageSize size = resolveImageSize(camera, std::nullopt, std::nullopt);
         ASSERT_EQ(size.widthPx, 640);
         ASSERT_EQ(size.heightPx, 480);
-        EXPECT_TRUE(camera.isPinhole());
+        EXPECT_TRUE(camera.lens.isPinhole());
         EXPECT_TRUE(camera.nearFromScene && camera.farFromScene);
         for (int i = 0; i < 300; ++i) {
           const double z = 0.2 * std::pow(100.0, 0.5 * (uniform(rng) + 1.0));
@@ -111,7 +111,7 @@ TEST(OpenCvPoseForm, FocusAndApertureMoveTheFocusNotThePixels) {
   const Camera lens = parseCameraJson(base + ", \"focus_distance\": 3.5, \"aperture_radius\": 0.01}", "l.json").camera;
   const Camera far = parseCameraJson(base + ", \"focus_distance\": \"infinity\", \"aperture_radius\": 0.01}", "f.json").camera;
   EXPECT_NEAR(lens.focusDistance(), 3.5, 1e-12);
-  EXPECT_EQ(lens.apertureRadius, 0.01);
+  EXPECT_EQ(lens.lens.apertureRadius, 0.01);
   EXPECT_TRUE(far.focusAtInfinity());
   const ImageSize size{640, 480};
   for (const glm::dvec3 cam : {glm::dvec3(0.1, 0.2, 1.0), glm::dvec3(-1.0, 0.5, 4.0), glm::dvec3(3.0, -2.0, 9.0)}) {
@@ -182,8 +182,8 @@ TEST(OpenCvPoseForm, EachBadKeyIsRefusedInOneLineNamingIt) {
             {"\"width\"", "inside \"intrinsics\""});
   // OpenCV's longer distCoeffs are read when what lenslab lacks is zero.
   const Camera c = parseCameraJson(file(k + ", " + rt + R"(, "dist": [-0.1, 0.01, 0, 0, 0.001, 0, 0, 0, 0, 0, 0, 0, 0, 0])"), "cam.json").camera;
-  EXPECT_EQ(c.effects.distortion.k1, -0.1);
-  EXPECT_EQ(c.effects.distortion.k3, 0.001);
+  EXPECT_EQ(c.lens.effects.distortion.k1, -0.1);
+  EXPECT_EQ(c.lens.effects.distortion.k3, 0.001);
 }
 
 }  // namespace

@@ -140,7 +140,7 @@ TEST(ViewThroughLens, ViewPlaneIsSharpAndOtherDepthsSpreadByTheCircleOfConfusion
     double spreadMax = 0.0;
     const glm::dvec2 centre = projectToWindow(cam.view, behind);
     for (const LensSample& s : makeApertureSamples(AperturePattern::Lecture17, 17, 1)) {
-      const ViewSpec v = viewThroughLens(cam, s.lens * cam.apertureRadius, {0.0, 0.0});
+      const ViewSpec v = viewThroughLens(cam, s.lens * cam.lens.apertureRadius, {0.0, 0.0});
       const glm::dvec2 p = projectToWindow(v, onPlane);
       EXPECT_NEAR(p.x, 0.3, 1e-12);
       EXPECT_NEAR(p.y, 0.2, 1e-12);
@@ -164,7 +164,7 @@ TEST(ViewThroughLens, FocusAtInfinityMovesTheWindowWithThePrp) {
   // Compared in NDC (where the point lands in the image), since the window itself moves.
   const glm::dvec2 centre = ndcFromWindow(cam.view.window, projectToWindow(cam.view, star));
   for (const LensSample& s : makeApertureSamples(AperturePattern::Concentric, 16, 1)) {
-    const ViewSpec v = viewThroughLens(cam, s.lens * cam.apertureRadius, {0, 0});
+    const ViewSpec v = viewThroughLens(cam, s.lens * cam.lens.apertureRadius, {0, 0});
     const glm::dvec2 q = ndcFromWindow(v.window, projectToWindow(v, star));
     EXPECT_NEAR(glm::length(q - centre), 0.0, 1e-6);
     EXPECT_GT(glm::length(v.window.center() - cam.view.window.center()), 0.0);
@@ -250,10 +250,10 @@ TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
 // opening's 0.155, while the undistorted corner with k1 = −0.8 (|n| ≈ 0.306) reaches 0.157.
 TEST(FramePlan, TheBarrelClipsAtTheUndistortedCorners) {
   Camera lens = cameraFocusedOnViewPlane(viewFiveAway(), 0.1, "test");
-  lens.barrel = LensBarrel{0.2, 0.155};
+  lens.lens.barrel = LensBarrel{0.2, 0.155};
   const FramePlan straight = makeFramePlan(planeAt(5.0), lens, {100, 100});
   EXPECT_EQ(straight.apertureSamples, 1) << "the window's corners see the whole aperture: " << straight.samplesWhy;
-  lens.effects.distortion.k1 = -0.8;
+  lens.lens.effects.distortion.k1 = -0.8;
   const FramePlan distorted = makeFramePlan(planeAt(5.0), lens, {100, 100});
   EXPECT_EQ(distorted.apertureSamples, 64) << distorted.samplesWhy;
   EXPECT_NE(distorted.samplesWhy.find("barrel"), std::string::npos) << distorted.samplesWhy;
@@ -321,7 +321,7 @@ TEST(LensRay, RaysOfOnePixelMeetAtTheLecturesTwoRayFocusPoint) {
   const glm::dvec2 uv(-a * focus / zi, -c * focus / zi);
   const glm::dvec2 pixel = pixelFromWindow(camera.view.window, uv, size.widthPx, size.heightPx);
   for (const LensSample& s : makeApertureSamples(AperturePattern::Lecture17, 17, 1)) {
-    const Ray ray = lensRay(camera, s.lens * camera.apertureRadius, pixel, size);
+    const Ray ray = lensRay(camera, s.lens * camera.lens.apertureRadius, pixel, size);
     const glm::dvec3 toPoint = focusPoint - ray.origin;
     const double miss = glm::length(toPoint - glm::dot(toPoint, ray.direction) * ray.direction);
     EXPECT_NEAR(miss, 0.0, 1e-9) << "a lens ray misses the in-focus point";

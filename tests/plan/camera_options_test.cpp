@@ -102,13 +102,13 @@ TEST(CameraComposition, PhysicalBaseTakesEveryOptionFieldByField) {
   o.fNumber = "2";
   SelectedCamera c = compose(base, o);
   ASSERT_TRUE(c.physical);
-  EXPECT_DOUBLE_EQ(c.camera.apertureRadius, 0.035 / 4.0) << "f / 2N of the file's 35 mm";
+  EXPECT_DOUBLE_EQ(c.camera.lens.apertureRadius, 0.035 / 4.0) << "f / 2N of the file's 35 mm";
   EXPECT_DOUBLE_EQ(c.physical->focalLengthMm, 35.0);
   EXPECT_TRUE(contains(c.camera.source, "cam.json, --f-number 2")) << c.camera.source;
 
   o.focalLengthMm = 70.0;
   c = compose(base, o);
-  EXPECT_DOUBLE_EQ(c.camera.apertureRadius, 0.070 / 4.0);
+  EXPECT_DOUBLE_EQ(c.camera.lens.apertureRadius, 0.070 / 4.0);
   // Twice the focal length: half the field of view's tangent (a little less, with the image distance).
   const double before = base.selected.camera.view.window.height() / base.selected.camera.view.prp.z;
   const double after = c.camera.view.window.height() / c.camera.view.prp.z;
@@ -168,7 +168,7 @@ BaseCamera lectureBase(CameraForm form) {
 // until --f-number gives it an aperture.
 TEST(CameraComposition, LensEffectsAreCheckedAgainstTheComposedLens) {
   BaseCamera base = physicalBase(6.0);
-  base.selected.camera.effects.chromatic.inverseFocusShiftRed = 1.0 / 0.04 - 1.0 / 6.0;
+  base.selected.camera.lens.effects.chromatic.inverseFocusShiftRed = 1.0 / 0.04 - 1.0 / 6.0;
   CameraOptions o;
   o.fNumber = "2";
   EXPECT_NO_THROW(compose(base, o));
@@ -177,7 +177,7 @@ TEST(CameraComposition, LensEffectsAreCheckedAgainstTheComposedLens) {
   EXPECT_TRUE(contains(message, "cam.json with --focal-length 50 --f-number 2: chromatic.focus_distance_red is 0.04; it must be "
                                 "beyond the focal length (0.05 world units)")) << message;
   BaseCamera lecture = lectureBase(CameraForm::Lecture);
-  lecture.selected.camera.effects.chromatic.inverseFocusShiftRed = 1e200;
+  lecture.selected.camera.lens.effects.chromatic.inverseFocusShiftRed = 1e200;
   o = {};
   o.fNumber = "2";
   o.focalLengthMm = 50.0;
@@ -195,7 +195,7 @@ TEST(CameraComposition, LectureFormTakesAnFNumberWithAFocalLengthOnly) {
                   ", which has no focal length: give --focal-length too, or aperture_radius in the file");
     o.focalLengthMm = 50.0;
     const SelectedCamera c = compose(base, o);
-    EXPECT_DOUBLE_EQ(c.camera.apertureRadius, 0.050 / 4.0);
+    EXPECT_DOUBLE_EQ(c.camera.lens.apertureRadius, 0.050 / 4.0);
     EXPECT_EQ(c.camera.view.window.height(), 2.0) << "the view stays: the lecture form's field of view is its window";
     EXPECT_FALSE(c.physical);
 
@@ -210,8 +210,8 @@ TEST(CameraComposition, LectureFormTakesAnFNumberWithAFocalLengthOnly) {
     o = {};
     o.fNumber = "infinity";
     BaseCamera open = base;
-    open.selected.camera.apertureRadius = 0.1;
-    EXPECT_TRUE(compose(open, o).camera.isPinhole()) << "f/infinity needs no focal length";
+    open.selected.camera.lens.apertureRadius = 0.1;
+    EXPECT_TRUE(compose(open, o).camera.lens.isPinhole()) << "f/infinity needs no focal length";
   }
 }
 
@@ -263,7 +263,7 @@ TEST(CameraComposition, AGltfPerspectiveCameraBecomesALensWithItsOwnView) {
     const double h = c.physical->sensorMm.y * 1e-3;
     const double zi = h / (2.0 * std::tan(0.3));
     EXPECT_NEAR(c.physical->focalLengthMm * 1e-3, zi * 5.0 / (zi + 5.0), 1e-15);
-    EXPECT_DOUBLE_EQ(c.camera.apertureRadius, c.physical->focalLengthMm * 1e-3 / 4.0);
+    EXPECT_DOUBLE_EQ(c.camera.lens.apertureRadius, c.physical->focalLengthMm * 1e-3 / 4.0);
     EXPECT_DOUBLE_EQ(c.camera.focusDistance(), 5.0);
   }
   EXPECT_EQ(compose(base, CameraOptions{.fNumber = "2"}).physical->sensorMm, glm::dvec2(36, 24)) << "24 mm high at aspect 1.5";
@@ -287,7 +287,7 @@ TEST(CameraComposition, AGltfOrthographicCameraHasNoLensButCanMove) {
            {"--f-number 2", CameraOptions{.fNumber = "2"}},
            {"--sensor aps-c", CameraOptions{.sensor = "aps-c"}}})
     EXPECT_EQ(refusal([&] { compose(base, o); }).rfind(option + ": two.gltf: glTF camera [1] node \"Top\" is orthographic", 0), 0u);
-  EXPECT_TRUE(compose(base, CameraOptions{.fNumber = "infinity"}).camera.isPinhole());
+  EXPECT_TRUE(compose(base, CameraOptions{.fNumber = "infinity"}).camera.lens.isPinhole());
   CameraOptions o;
   o.eye = glm::dvec3(0, 0, 6);
   o.target = glm::dvec3(0, 0, 0);
@@ -399,7 +399,7 @@ TEST(CameraWarnings, FocusOnAPinholeSaysItChangesNothing) {
   EXPECT_TRUE(contains(w[0], "--focus-distance 3: the camera has no aperture (a pinhole), so focus changes nothing; give --f-number")) << w[0];
   EXPECT_TRUE(contains(w[1], "--focus-at 10,20: ")) << w[1];
   Camera lens35 = pinhole;
-  lens35.apertureRadius = 0.01;
+  lens35.lens.apertureRadius = 0.01;
   EXPECT_TRUE(focusWarnings(lens35, lens).empty());
 }
 
@@ -517,7 +517,7 @@ TEST(AutomaticFraming, ACloseUpStaysALensAndBeyondLifeSizeIsAPinhole) {
   EXPECT_TRUE(contains(closeUp.camera.source, "a close-up at magnification")) << closeUp.camera.source;
   const SelectedCamera tiny = composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {}, 0.0);
   EXPECT_FALSE(tiny.physical);
-  EXPECT_TRUE(tiny.camera.isPinhole());
+  EXPECT_TRUE(tiny.camera.lens.isPinhole());
   EXPECT_TRUE(contains(tiny.camera.source, "would need a 35 mm on 36x24 mm lens at magnification")) << tiny.camera.source;
   EXPECT_TRUE(contains(tiny.camera.source, "beyond life size (1), so a pinhole")) << tiny.camera.source;
   EXPECT_TRUE(contains(refusal([&] { composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {.fNumber = "2"}, 0.0); }),

@@ -89,7 +89,7 @@ TEST(NormalAov, UnderDistortionThePlaneKeepsItsNormalAndOnlyTheSelectedImagesAre
   const glm::dvec3 normal = glm::normalize(glm::dvec3(0.3, 0.2, 1.0));
   const Scene scene = planeScene({0.0, 0.0, -5.0}, normal);
   Camera camera = toCamera(c, "test");
-  camera.effects.distortion.k1 = -0.2;
+  camera.lens.effects.distortion.k1 = -0.2;
   const ImageSize size = resolveImageSize(camera, kWidth, std::nullopt);
   AovSelection normalOnly;
   normalOnly.normal = true;

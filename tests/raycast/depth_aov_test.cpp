@@ -108,8 +108,8 @@ TEST(DepthAov, UnderDistortionEachPixelGetsTheDepthOfItsTruePerspectiveDirection
   const Scene scene = planeScene(plane, 100.0);
   Camera camera = toCamera(c, "test");
   const double k1 = -0.2, k2 = 0.05;
-  camera.effects.distortion.k1 = k1;
-  camera.effects.distortion.k2 = k2;
+  camera.lens.effects.distortion.k1 = k1;
+  camera.lens.effects.distortion.k2 = k2;
   const ImageSize size = resolveImageSize(camera, kWidth, std::nullopt);
   const std::vector<float> depth = RayCaster(scene).depthImage(camera, size);
   double worst = 0.0, moved = 0.0;

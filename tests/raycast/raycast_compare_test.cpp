@@ -36,7 +36,7 @@ struct BothWays {
 // The raster from `views` jittered (and, with an aperture, lens) samples, the ray cast with `spp`.
 BothWays renderBothWays(const Scene& scene, const Camera& camera, ImageSize size, int views, int spp) {
   Camera planCamera = camera;
-  if (planCamera.isPinhole()) planCamera.apertureRadius = 1e-3;  // only to get a plan with `views` samples
+  if (planCamera.lens.isPinhole()) planCamera.lens.apertureRadius = 1e-3;  // only to get a plan with `views` samples
   const FramePlan plan = makeFramePlan(scene, planCamera, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
   return {Renderer(scene).render(camera, plan, size), RayCaster(scene).render(camera, size, RaycastOptions{spp, 11}),
           plan.apertureSamples};
@@ -58,7 +58,7 @@ void addStudio(Scene& scene) {
 // The studio's lamps and the bokeh scene's are HDR (radiance 6), so the PSNR's peak is 1 over the
 // images clamped at 1 (the subject's range), as a display would show them.
 void expectPinholeAlike(const Scene& scene, Camera camera, ImageSize size, const std::string& what) {
-  camera.apertureRadius = 0.0;
+  camera.lens.apertureRadius = 0.0;
   BothWays both = renderBothWays(scene, camera, size, 256, 256);
   for (Image* image : {&both.raster, &both.reference})
     for (float& v : image->rgba) v = std::min(v, 1.0f);
@@ -73,7 +73,7 @@ double rasterVsRaycastPsnr(const std::string& sceneName, const std::string& came
   const fs::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / sceneName);
   Camera camera = loadCameraJson(assets / cameraFile).camera;
-  if (pinhole) camera.apertureRadius = 0.0;
+  if (pinhole) camera.lens.apertureRadius = 0.0;
   const BothWays both = renderBothWays(scene, camera, size, views, spp);
   const double psnr = compareImages(both.raster, both.reference, 0.0).psnrDb;
   std::cout << "[ measure  ] " << sceneName << (pinhole ? " pinhole" : " thin lens") << ": raster " << views
@@ -116,7 +116,7 @@ TEST(RasterVsRaycast, EmissionIsAddedAlikeAndKeptAboveOne) {
   }
   ASSERT_GT(glowing, 0);
   const Camera camera = loadCameraJson(assets / "rows/camera.json").camera;
-  ASSERT_TRUE(camera.isPinhole());
+  ASSERT_TRUE(camera.lens.isPinhole());
   const BothWays both = renderBothWays(scene, camera, {240, 160}, 256, 128);
   const Image& raster = both.raster;
   const Image& reference = both.reference;
@@ -186,7 +186,7 @@ TEST(RaycastPrecision, RaysThatOverflowAreAnErrorNotAnAbort) {
   const Scene scene = loadGltf(assets / "rows/rows.gltf");
   for (const bool curvature : {false, true}) {
     Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;
-    (curvature ? camera.effects.fieldCurvature.inverseFocusPerRadius2 : camera.effects.chromatic.inverseFocusShiftRed) = 1e200;
+    (curvature ? camera.lens.effects.fieldCurvature.inverseFocusPerRadius2 : camera.lens.effects.chromatic.inverseFocusShiftRed) = 1e200;
     try {
       RayCaster(scene).render(camera, {24, 16}, RaycastOptions{2, 1});
       ADD_FAILURE() << "rendered" << (curvature ? " (field curvature)" : " (axial colour)");
@@ -238,7 +238,7 @@ TEST(RasterVsRaycast, BlendedQuadsThroughTheThinLens) {
   LENSLAB_REQUIRE_GL();
   const Scene scene = blendQuads();
   const Camera camera = blendQuadsCamera();
-  ASSERT_FALSE(camera.isPinhole());
+  ASSERT_FALSE(camera.lens.isPinhole());
   const BothWays both = renderBothWays(scene, camera, {120, 80}, 256, 256);
   ASSERT_EQ(both.views, 256);
   const Image& raster = both.raster;

@@ -156,7 +156,7 @@ TEST(AlphaBlendRaster, DrawsBackToFrontWhateverTheSceneOrder) {
       const Camera camera = pinholeAt(5.0, c.focalLengthMm);
       ASSERT_EQ(isNarrowField(clipFromWorld(camera.view)), c.focalLengthMm > 1e4) << c.what;
       Camera jittered = camera;
-      jittered.apertureRadius = c.views > 1 ? 1e-3 : 0.0;  // only to get a plan with `views` jittered samples
+      jittered.lens.apertureRadius = c.views > 1 ? 1e-3 : 0.0;  // only to get a plan with `views` jittered samples
       PlanOptions options{AperturePattern::Concentric, c.views, c.views, 3};
       if (c.budget) {
         options.targetPsnrDb = 60.0;

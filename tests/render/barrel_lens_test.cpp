@@ -47,10 +47,10 @@ Camera wallCamera(double k1, double lateral) {
   v.window = {-1.0, -1.0, 1.0, 1.0};
   v.nearDistance = 0.01;
   Camera c = cameraFocusedOnViewPlane(v, 0.1, "barrel lens test");
-  c.barrel = LensBarrel{0.2, 0.13};
-  c.effects.distortion.k1 = k1;
-  c.effects.chromatic.lateralRed = -lateral;
-  c.effects.chromatic.lateralBlue = lateral;
+  c.lens.barrel = LensBarrel{0.2, 0.13};
+  c.lens.effects.distortion.k1 = k1;
+  c.lens.effects.chromatic.lateralRed = -lateral;
+  c.lens.effects.chromatic.lateralBlue = lateral;
   return c;
 }
 
@@ -88,7 +88,7 @@ TEST_P(CatsEyeThroughALens, APixelSeesTheOverlapAtItsUndistortedFieldPosition) {
   const Image raster = renderer.render(camera, plan, size);
   const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{1024, 4});
   const auto shareAt = [&](glm::dvec2 n) {
-    return roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, n, camera.inverseFocusDistance());
+    return roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
   };
   const ThinLensMap lensMap(camera, size);
   double worstRaster = 0.0, worstRaycast = 0.0, cornerGap = 0.0;
@@ -130,11 +130,11 @@ TEST_P(CatsEyeOnACurvedFocus, APixelSeesTheOverlapForItsRadiusFocus) {
   LENSLAB_REQUIRE_GL();
   const Scene scene = whiteWall();
   Camera camera = wallCamera(GetParam(), 0.0);
-  camera.effects.fieldCurvature.inverseFocusPerRadius2 = 1.0;  // the corners (r² = 0.5) focus at 1 m
+  camera.lens.effects.fieldCurvature.inverseFocusPerRadius2 = 1.0;  // the corners (r² = 0.5) focus at 1 m
   // An opening far out (0.6 in front, radius 0.4), where the focus moves the aperture's image in
   // its plane most: radius 0.1·(1 − 0.6·(0.5 + r²)), 0.07 flat; clipped past r ≈ 0.55. At r = 0.7
   // the overlap is 0.19 for the curved focus, 0.31 for the flat one.
-  camera.barrel = LensBarrel{0.6, 0.4};
+  camera.lens.barrel = LensBarrel{0.6, 0.4};
   const ImageSize size{48, 48};
   Renderer renderer(scene);
   const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 1024, 1024, 3});
@@ -151,8 +151,9 @@ TEST_P(CatsEyeOnACurvedFocus, APixelSeesTheOverlapForItsRadiusFocus) {
       for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 4; ++i) {
           const ChannelSample s = lensMap.undistorted(Channel::Green, {x + (i + 0.5) / 4.0, y + (j + 0.5) / 4.0});
-          share += roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, s.normalised, inverseFocus + s.inverseFocusShift) / 16.0;
-          flat += roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, s.normalised, inverseFocus) / 16.0;
+          share += roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, s.normalised,
+                                              inverseFocus + s.inverseFocusShift) / 16.0;
+          flat += roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, s.normalised, inverseFocus) / 16.0;
         }
       flatGap = std::max(flatGap, std::abs(flat - share));
       worstRaster = std::max(worstRaster, std::abs(static_cast<double>(raster.at(x, y).g) - share));
@@ -189,7 +190,7 @@ TEST_P(BarrelThroughRows, RasterConvergesToTheExactRayCastLens) {
   const std::filesystem::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / "rows" / "rows.gltf");
   const Camera camera = parseCameraJson(rowsCamera(GetParam()), "barrel rows camera").camera;
-  ASSERT_TRUE(camera.hasBarrel());
+  ASSERT_TRUE(camera.lens.hasBarrel());
   const ImageSize size = resolveImageSize(camera, 120, std::nullopt);
   Renderer renderer(scene);
   const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 1024, 1024, 1});
@@ -204,7 +205,7 @@ TEST_P(BarrelThroughRows, RasterConvergesToTheExactRayCastLens) {
   const double psnr = -20.0 * std::log10(corrected);
   // The barrel matters here: the same raster without it is far from the exact lens with it.
   Camera open = camera;
-  open.barrel = {};
+  open.lens.barrel = {};
   const Image withoutBarrel = renderer.render(open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 256, 256, 1}), size);
   const double withoutDb = compareImages(withoutBarrel, exactA, 0.0).psnrDb;
   std::cout << "[ measure  ] rows, k1 " << GetParam() << ", barrel 40/44 mm: raster 1024 views vs exact ray cast 256 spp: "
@@ -234,7 +235,7 @@ TEST(BarrelTiles, ATiledFrameWithTheBarrelAndEveryLensEffectEqualsOneRender) {
   const Image untiled = renderer.render(camera, plan, size);
   const Image tiled = renderTiled(renderer, camera, plan, size, tiles);
   Camera open = camera;
-  open.barrel = {};
+  open.lens.barrel = {};
   // Its own plan: with distortion the renderer draws the plan's overscan camera, barrel included.
   const Image withoutBarrel = renderer.render(open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3}), size);
   const double psnr = compareImages(untiled, tiled, 0.0).psnrDb, withoutDb = compareImages(untiled, withoutBarrel, 0.0).psnrDb;

@@ -41,7 +41,7 @@ Camera bokehCamera(const ApertureShape& shape) {
   // CoC diameter on the window 2R·(z − z_f)/z.
   const double radius = kCocRadiusPx / pxPerUnit / ((kMarkerDepth - kFocus) / kMarkerDepth);
   Camera c = cameraFocusedOnViewPlane(v, radius, "bokeh test");
-  c.aperture = shape;
+  c.lens.aperture = shape;
   return c;
 }
 
@@ -182,7 +182,7 @@ TEST(Bokeh, AMarkerBehindTheFocusBlursIntoTheBladesPolygonInTheRasterizer) {
   Renderer renderer(scene);
   const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 4096, 4096, 3}), size);
   Camera pinhole = camera;
-  pinhole.apertureRadius = 0.0;
+  pinhole.lens.apertureRadius = 0.0;
   const Image focused = renderer.render(pinhole, makeFramePlan(scene, pinhole, size, PlanOptions{AperturePattern::Sobol, 64, 64, 3}), size);
   expectTheShape("raster", image, focused, shape);
 }
@@ -195,7 +195,7 @@ TEST(Bokeh, AMarkerBehindTheFocusBlursIntoTheBladesPolygonInTheRayCaster) {
   const RayCaster caster(scene);
   const Image image = caster.render(camera, size, RaycastOptions{1024, 9});
   Camera pinhole = camera;
-  pinhole.apertureRadius = 0.0;
+  pinhole.lens.apertureRadius = 0.0;
   const Image focused = caster.render(pinhole, size, RaycastOptions{64, 9});
   expectTheShape("ray cast", image, focused, shape);
 }
@@ -262,10 +262,10 @@ TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
   scene.lighting.background = glm::vec3(0.0f);
   addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kFocus)), 4.0, 4.0, glm::vec3(1.0f));
   Camera camera = bokehCamera(ApertureShape{});
-  camera.apertureRadius = 0.1;
+  camera.lens.apertureRadius = 0.1;
   // Seen in the opening's plane the aperture has radius 0.1·(1 − 0.2/2) = 0.09, centred at 0.2·n:
   // whole at the centre, clipped toward the edges, most at the corners (|n| = 0.71).
-  camera.barrel = LensBarrel{0.2, 0.13};
+  camera.lens.barrel = LensBarrel{0.2, 0.13};
   const ImageSize size{48, 48};
   Renderer renderer(scene);
   const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 1024, 1024, 3});
@@ -276,7 +276,7 @@ TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
     for (int x = 0; x < size.widthPx; ++x) {
       const glm::dvec2 w = windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx);
       const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
-      const double share = roundApertureThroughBarrel(camera.barrel, camera.apertureRadius, n, camera.inverseFocusDistance());
+      const double share = roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
       least = std::min(least, share);
       worstRaster = std::max(worstRaster, std::abs(raster.at(x, y).g - share));
       worstRaycast = std::max(worstRaycast, std::abs(raycast.at(x, y).g - share));
@@ -297,7 +297,7 @@ TEST(CatsEye, ABarrelThatClipsNothingChangesNothing) {
   Renderer renderer(scene);
   const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 64, 64, 3});
   const Image without = renderer.render(camera, plan, size);
-  camera.barrel = LensBarrel{0.01, 10.0};  // wide open
+  camera.lens.barrel = LensBarrel{0.01, 10.0};  // wide open
   const FramePlan withPlan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
   const FramePlan withoutPlan = makeFramePlan(scene, bokehCamera(ApertureShape{}), size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
   EXPECT_EQ(withPlan.apertureSamples, withoutPlan.apertureSamples) << "no more views for a barrel that hides nothing";

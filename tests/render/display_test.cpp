@@ -114,10 +114,10 @@ TEST_F(HdrOutput, TheLensPassKeepsRadianceAboveOne) {
   const glm::vec3 radiance(4.0f, 2.0f, 0.5f);
   const Scene scene = brightQuad(radiance);
   Camera camera = lensCamera(4.0, 0.05);
-  camera.effects.distortion.k1 = -0.05;
-  camera.effects.chromatic.lateralRed = 0.002;
-  camera.effects.chromatic.lateralBlue = -0.002;
-  ASSERT_TRUE(camera.effects.needsRemap());
+  camera.lens.effects.distortion.k1 = -0.05;
+  camera.lens.effects.chromatic.lateralRed = 0.002;
+  camera.lens.effects.chromatic.lateralBlue = -0.002;
+  ASSERT_TRUE(camera.lens.effects.needsRemap());
   const ImageSize size{32, 32};
   Renderer renderer(scene);
   const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 8, 8, 1}), size);

@@ -39,7 +39,7 @@ FramePlan planWith(const Scene& scene, const Camera& camera, ImageSize size, Ape
 // A pinhole rendered with the same sub-pixel jitter as `plan` (lens offsets × radius 0), so that
 // only the lens differs between the two images.
 Image pinholeWithSameJitter(Renderer& renderer, Camera camera, const FramePlan& plan, ImageSize size) {
-  camera.apertureRadius = 0.0;
+  camera.lens.apertureRadius = 0.0;
   return renderer.render(camera, plan, size);
 }
 
@@ -208,7 +208,7 @@ TEST(DepthOfField, PartialObscurationKeepsTheFractionOfApertureThatSeesThrough) 
   const fs::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / "occluder/occluder.gltf");
   Camera camera = loadCameraJson(assets / "occluder/camera.json").camera;
-  camera.apertureRadius = 0.05 / (2.0 * 2.0);  // 50 mm at f/2
+  camera.lens.apertureRadius = 0.05 / (2.0 * 2.0);  // 50 mm at f/2
   const ImageSize size{240, 160};
   Renderer renderer(scene);
   const FramePlan plan = planWith(scene, camera, size, AperturePattern::Concentric, 256);
@@ -256,7 +256,7 @@ TEST(DepthOfField, PartialObscurationKeepsTheFractionOfApertureThatSeesThrough) 
     if (edge < 0.2 || (static_cast<int>(std::floor(cu)) + static_cast<int>(std::floor(cv))) % 2 != 0) continue;
     int visible = 0;
     for (const LensSample& s : samples) {
-      const glm::dvec3 lens = prp + camera.apertureRadius * (s.lens.x * b.u + s.lens.y * b.v);
+      const glm::dvec3 lens = prp + camera.lens.apertureRadius * (s.lens.x * b.u + s.lens.y * b.v);
       const glm::dvec3 through = wallPoint + s.pixel.x * pixelSize.x * b.u - s.pixel.y * pixelSize.y * b.v;
       visible += !blocked(lens, through);
     }
@@ -279,12 +279,12 @@ TEST(DepthOfField, ShrinkingTheApertureConvergesToThePinhole) {
   Camera camera = loadCameraJson(assets / "rows/camera.json").camera;
   const ImageSize size{180, 120};
   Renderer renderer(scene);
-  camera.apertureRadius = 0.02;
+  camera.lens.apertureRadius = 0.02;
   const FramePlan plan = planWith(scene, camera, size, AperturePattern::R2, 16);
   const Image pinhole = pinholeWithSameJitter(renderer, camera, plan, size);
   double previous = 0.0;
   for (double radius : {0.02, 0.002, 0.0002, 0.00002}) {
-    camera.apertureRadius = radius;
+    camera.lens.apertureRadius = radius;
     const double psnr = compareImages(renderer.render(camera, plan, size), pinhole, 0.0).psnrDb;
     EXPECT_GT(psnr, previous) << "radius " << radius;
     previous = psnr;

@@ -192,11 +192,11 @@ double environmentPsnr(const std::string& cameraFile, bool pinhole, std::optiona
   scene.environment = testEnvironment(256, 40.0, 1.0f);
   const ImageSize size{120, 80};
   Camera lensCamera = camera;
-  if (lensCamera.isPinhole()) lensCamera.apertureRadius = 1e-3;
+  if (lensCamera.lens.isPinhole()) lensCamera.lens.apertureRadius = 1e-3;
   PlanOptions options{targetPsnrDb ? AperturePattern::Sobol : AperturePattern::Concentric, targetPsnrDb ? 0 : 256, 256, 3};
   options.targetPsnrDb = targetPsnrDb;
   const FramePlan plan = makeFramePlan(scene, lensCamera, size, options);
-  if (pinhole) camera.apertureRadius = 0.0;
+  if (pinhole) camera.lens.apertureRadius = 0.0;
   Renderer renderer(scene);
   const Image raster = renderer.render(camera, plan, size);
   const RayCaster caster(scene);

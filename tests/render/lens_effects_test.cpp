@@ -98,7 +98,7 @@ glm::dvec2 measuredCentroid(const Image& fine, glm::dvec2 near, double radiusPx,
 Image renderFine(const Scene& scene, Camera camera) {
   const ImageSize fine = resolveImageSize(camera, kWidth * kSupersample, std::nullopt);
   EXPECT_EQ(fine.heightPx, kHeight * kSupersample);
-  camera.apertureRadius = 1e-9;
+  camera.lens.apertureRadius = 1e-9;
   Renderer renderer(scene);
   return renderer.render(camera, makeFramePlan(scene, camera, fine, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), fine);
 }
@@ -142,7 +142,7 @@ TEST(LensEffectsGl, GridDotsLandWhereOpenCvPutsThem) {
   constexpr int kScale = 2;
   const ImageSize size = resolveImageSize(camera, 960 * kScale, std::nullopt);
   ASSERT_EQ(size.heightPx, 640 * kScale);
-  camera.apertureRadius = 1e-9;  // 16 jittered views of the pinhole image: antialiased edges
+  camera.lens.apertureRadius = 1e-9;  // 16 jittered views of the pinhole image: antialiased edges
   Renderer renderer(scene);
   const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
   const auto pixel = [&](glm::dvec2 world) {  // a point of the dot plane (z = 0.001) → lenslab pixel
@@ -250,7 +250,7 @@ TEST(LensEffectsGl, LookupTablesAreBuiltOncePerLens) {
   camera = refocused(camera, 2.5, "test");  // the same lens focused elsewhere: the same tables
   renderer.render(camera, makeFramePlan(scene, camera, size), size);
   EXPECT_EQ(renderer.lensTablesBuilt(), 1);
-  camera.effects.distortion.k1 = -0.27;  // a new lens: new tables
+  camera.lens.effects.distortion.k1 = -0.27;  // a new lens: new tables
   renderer.render(camera, makeFramePlan(scene, camera, size), size);
   EXPECT_EQ(renderer.lensTablesBuilt(), 2);
 }
@@ -331,7 +331,7 @@ TEST(LensEffectsGl, RasterWithEveryEffectConvergesToTheExactRayCastLens) {
   EXPECT_GE(psnr, 45.0);  // before the lens was applied per view: 36.8 dB (post pass on the mean, Catmull–Rom)
   // And the effects matter: the same raster without them is far from the exact lens.
   Camera plain = camera;
-  plain.effects = {};
+  plain.lens.effects = {};
   const Image withoutEffects = renderer.render(plain, makeFramePlan(scene, plain, size, PlanOptions{AperturePattern::Concentric, 128, 128, 1}), size);
   EXPECT_LT(compareImages(withoutEffects, exactA, 0.0).psnrDb, psnr - 8.0);
 }

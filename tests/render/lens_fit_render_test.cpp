@@ -79,10 +79,10 @@ TEST(LensFitRender, TheFitComesCloserToTheExactLensThanFirstOrder) {
   };
   const double fittedDb = psnrOf(fitted), firstOrderDb = psnrOf(firstOrderCamera);
   Camera noDistortion = fitted;
-  noDistortion.effects.distortion = {};
+  noDistortion.lens.effects.distortion = {};
   const double noDistortionDb = psnrOf(noDistortion);
   Camera noVignetting = fitted;
-  noVignetting.effects.vignetting = {};
+  noVignetting.lens.effects.vignetting = {};
   const double noVignettingDb = psnrOf(noVignetting);
   std::cout << "[ measure  ] rows, double Gauss f/4 focused at 4 m, 120x80: fitted " << fittedDb << " dB, first order "
             << firstOrderDb << " dB, fitted without distortion " << noDistortionDb << " dB, without vignetting " << noVignettingDb

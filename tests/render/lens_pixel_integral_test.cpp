@@ -130,7 +130,7 @@ TEST(LensPixelIntegral, NoValueLeavesTheScenesRange) {
   const ImageSize size = resolveImageSize(camera, std::nullopt, std::nullopt);
   Renderer renderer(scene);
   Camera straight = camera;
-  straight.effects = {};
+  straight.lens.effects = {};
   const auto range = [](const Image& image) {
     float lo = 1e30f, hi = -1e30f;
     for (int y = 0; y < image.height; ++y)

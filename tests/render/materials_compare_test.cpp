@@ -65,7 +65,7 @@ TEST(RasterVsRaycast, MetallicRoughnessOcclusionPointAndSpot) {
   const Camera camera = loadCameraJson(fs::path(LENSLAB_TEST_ASSET_DIR) / "rows/camera.json").camera;
   const ImageSize size{240, 160};
   Camera jittered = camera;
-  jittered.apertureRadius = 1e-3;  // only to get a plan with 256 jittered views
+  jittered.lens.apertureRadius = 1e-3;  // only to get a plan with 256 jittered views
   const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 256, 256, 3});
   const Image raster = Renderer(scene).render(camera, plan, size);
   const Image reference = RayCaster(scene).render(camera, size, RaycastOptions{256, 11});
@@ -102,7 +102,7 @@ TEST(MaterialsFarFromTheOrigin, ALitSceneMovedBy1e7RendersAsAtTheOrigin) {
   Camera far = camera;
   far.view.vrp += offset;
   Camera jittered = camera;
-  jittered.apertureRadius = 1e-3;  // only to get a plan with 16 jittered views
+  jittered.lens.apertureRadius = 1e-3;  // only to get a plan with 16 jittered views
   const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3});
   const double raster = compareImages(Renderer(moved).render(far, plan, size), Renderer(scene).render(camera, plan, size), 0.0).psnrDb;
   const RaycastOptions options{4, 5};

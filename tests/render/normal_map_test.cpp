@@ -33,9 +33,9 @@ using test::pixelDirection;
 // The raster image of a pinhole camera, `views` sub-pixel-jittered views.
 Image raster(const Scene& scene, Camera camera, ImageSize size, int views) {
   Camera jittered = camera;
-  jittered.apertureRadius = 1e-3;  // only to get a plan with `views` jittered views
+  jittered.lens.apertureRadius = 1e-3;  // only to get a plan with `views` jittered views
   const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
-  camera.apertureRadius = 0.0;
+  camera.lens.apertureRadius = 0.0;
   return Renderer(scene).render(camera, plan, size);
 }
 

@@ -39,8 +39,8 @@ Camera flatCamera(double k1, double apertureRadius) {
   v.window = {-1.0, -1.0, 1.0, 1.0};
   v.nearDistance = 0.01;
   Camera c = cameraFocusedOnViewPlane(v, apertureRadius, "vignetting test");
-  c.effects.distortion.k1 = k1;
-  c.effects.vignetting = kLens;
+  c.lens.effects.distortion.k1 = k1;
+  c.lens.effects.vignetting = kLens;
   return c;
 }
 
@@ -72,7 +72,7 @@ double worstAgainstGain(const Image& image, const Camera& camera, ImageSize size
       else if (m > 0.3) colour = kBackground;
       else continue;
       ++*checked;
-      const double gain = camera.effects.vignetting.gain(glm::dot(n, n));
+      const double gain = camera.lens.effects.vignetting.gain(glm::dot(n, n));
       for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(image.at(x, y)[c] - colour[c] * gain));
     }
   return worst;
@@ -110,7 +110,7 @@ TEST_P(VignettingFrames, EveryPixelIsTimesTheGainAtItsPlaceOnTheFilm) {
   EXPECT_EQ(compareImages(raster, renderer.resolve(), 0.0).maxAbs, 0.0);
   const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{64, 4});
   Camera unvignetted = camera;
-  unvignetted.effects.vignetting = {};
+  unvignetted.lens.effects.vignetting = {};
   const Image plain = renderer.render(unvignetted, makeFramePlan(scene, unvignetted, size, options), size);
 
   int checked = 0;

@@ -121,7 +121,7 @@ TEST_F(ReferenceKey, ChangesWithEachOption) {
   focus.view.vrp.z += 1e-9;
   differs(referenceKey(scene, focus, size_, options), "the camera, by 1e-9");
   Camera aperture = camera_;
-  aperture.apertureRadius *= 1.0 + 1e-12;
+  aperture.lens.apertureRadius *= 1.0 + 1e-12;
   differs(referenceKey(scene, aperture, size_, options), "the aperture, by 1e-12 of it");
   EXPECT_EQ(keys.size(), 9u) << "every change its own key";
 }

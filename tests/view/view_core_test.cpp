@@ -29,7 +29,7 @@ TEST(ViewNavigation, OrbitKeepsThePivotAndTheShape) {
   EXPECT_NEAR(glm::length(prpWorld(c.camera.view) - focusPivotWorld(c.camera)),
               glm::length(prpWorld(start.camera.view) - focusPivotWorld(start.camera)), 1e-12);
   EXPECT_EQ(c.camera.view.prp, start.camera.view.prp) << "PRP and window ride along in VRC";
-  EXPECT_DOUBLE_EQ(c.camera.apertureRadius, start.camera.apertureRadius);
+  EXPECT_DOUBLE_EQ(c.camera.lens.apertureRadius, start.camera.lens.apertureRadius);
   // The physical description moved the same way: rebuilding from it gives the same camera.
   ASSERT_TRUE(c.physical);
   const Camera rebuilt = toCamera(*c.physical, "rebuilt");
@@ -71,7 +71,7 @@ TEST(LectureDiagram, WindowCornersRaysAndSamplesAreTheCameras) {
       // A ray from an aperture point (in the PRP's plane, inside the disk) through the window centre.
       ++rays;
       EXPECT_NEAR(glm::dot(l.from - prp, b.n), 0.0, 1e-12);
-      EXPECT_LE(glm::length(l.from - prp), camera.apertureRadius * (1.0 + 1e-12));
+      EXPECT_LE(glm::length(l.from - prp), camera.lens.apertureRadius * (1.0 + 1e-12));
       const glm::dvec3 centre = s.vrp + s.window.center().x * b.u + s.window.center().y * b.v;
       const glm::dvec3 d = glm::normalize(l.to - l.from);
       EXPECT_NEAR(glm::length(glm::cross(centre - l.from, d)), 0.0, 1e-9) << "the ray misses the window centre";
@@ -87,7 +87,7 @@ TEST(LectureDiagram, WindowCornersRaysAndSamplesAreTheCameras) {
   EXPECT_GT(style.apertureScale, 1.0);
   for (const DiagramLine& l : lectureDiagram(camera, samples, 5, style)) {
     if (l.color == style.colors.aperture) {
-      EXPECT_NEAR(glm::length(l.from - prp), camera.apertureRadius * style.apertureScale, 1e-9);
+      EXPECT_NEAR(glm::length(l.from - prp), camera.lens.apertureRadius * style.apertureScale, 1e-9);
     }
   }
 }

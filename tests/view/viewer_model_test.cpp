@@ -40,7 +40,7 @@ void expectSameCamera(const Camera& a, const Camera& b) {
   EXPECT_EQ(a.view.vpn, b.view.vpn);
   EXPECT_EQ(a.view.vup, b.view.vup);
   EXPECT_EQ(a.view.prp, b.view.prp);
-  EXPECT_DOUBLE_EQ(a.apertureRadius, b.apertureRadius);
+  EXPECT_DOUBLE_EQ(a.lens.apertureRadius, b.lens.apertureRadius);
 }
 
 TEST(ViewerModel, AnInvalidEditRollsBackToTheLastValidCameraAndSaysWhy) {
@@ -64,7 +64,7 @@ TEST(ViewerModel, AnInvalidEditRollsBackToTheLastValidCameraAndSaysWhy) {
 
   // A negative aperture radius is no lens either.
   c = valid.camera;
-  c.apertureRadius = -0.01;
+  c.lens.apertureRadius = -0.01;
   f.model.editLecture(c);
   f.model.restart();
   expectSameCamera(f.model.camera().camera, valid.camera);
@@ -72,10 +72,10 @@ TEST(ViewerModel, AnInvalidEditRollsBackToTheLastValidCameraAndSaysWhy) {
 
   // A valid edit is kept and clears the error.
   c = valid.camera;
-  c.apertureRadius = 0.5 * valid.camera.apertureRadius;
+  c.lens.apertureRadius = 0.5 * valid.camera.lens.apertureRadius;
   f.model.editLecture(c);
   f.model.restart();
-  EXPECT_DOUBLE_EQ(f.model.camera().camera.apertureRadius, c.apertureRadius);
+  EXPECT_DOUBLE_EQ(f.model.camera().camera.lens.apertureRadius, c.lens.apertureRadius);
   EXPECT_TRUE(f.model.error().empty()) << f.model.error();
 }
 
@@ -90,7 +90,7 @@ TEST(ViewerModel, EditsCheckedOnTheSpotAreRefusedWithoutARestart) {
   EXPECT_NE(f.model.error().find("finite"), std::string::npos) << f.model.error();
   EXPECT_FALSE(f.model.needsRestart());
   expectSameCamera(f.model.camera().camera, before);
-  EXPECT_TRUE(f.model.camera().camera.effects.isZero());
+  EXPECT_TRUE(f.model.camera().camera.lens.effects.isZero());
 
   // A click on the background: nothing to focus on, said in the click's words.
   const DepthAtPixel nothing = [](const Camera&, ImageSize, int, int) { return std::numeric_limits<double>::infinity(); };
@@ -109,7 +109,7 @@ TEST(ViewerModel, TakesDistortionAndLateralColourWithTheLensBarrel) {
   Scene scene = boxes();
   std::ostringstream log;
   EditableCamera camera = fromPhysical(rowsDof(), "test");
-  camera.camera.barrel = LensBarrel{0.04, 0.02};
+  camera.camera.lens.barrel = LensBarrel{0.04, 0.02};
   ViewerModel model{scene, camera, ImageSize{160, 107}, PlanOptions{}, 16.0, log};
   model.restart();
   ASSERT_TRUE(model.error().empty()) << model.error();
@@ -121,9 +121,9 @@ TEST(ViewerModel, TakesDistortionAndLateralColourWithTheLensBarrel) {
   EXPECT_TRUE(model.error().empty()) << model.error();
   model.restart();
   EXPECT_TRUE(model.error().empty()) << model.error();
-  EXPECT_DOUBLE_EQ(model.camera().camera.effects.distortion.k1, -0.2);
-  EXPECT_DOUBLE_EQ(model.camera().camera.effects.chromatic.lateralRed, 0.004);
-  EXPECT_EQ(model.camera().camera.barrel, (LensBarrel{0.04, 0.02})) << "the barrel stays with the lens effects";
+  EXPECT_DOUBLE_EQ(model.camera().camera.lens.effects.distortion.k1, -0.2);
+  EXPECT_DOUBLE_EQ(model.camera().camera.lens.effects.chromatic.lateralRed, 0.004);
+  EXPECT_EQ(model.camera().camera.lens.barrel, (LensBarrel{0.04, 0.02})) << "the barrel stays with the lens effects";
 }
 
 TEST(SampleBudget, FollowsTheMeasuredCostAndTheTimeBudgetAndNeverDropsBelowOne) {
@@ -187,7 +187,7 @@ TEST(ViewerModel, EveryChangeRestartsTheAccumulation) {
   }
   // What the changes did reached the camera and the plan.
   EXPECT_EQ(f.model.plan().apertureSamples, 5);
-  EXPECT_DOUBLE_EQ(f.model.camera().camera.effects.distortion.k1, -0.05);
+  EXPECT_DOUBLE_EQ(f.model.camera().camera.lens.effects.distortion.k1, -0.05);
   EXPECT_NEAR(f.model.camera().camera.view.prp.z, 3.0, 1e-9) << "the click focused at the depth under it";
   ASSERT_TRUE(f.model.lastFocusDistance());
   EXPECT_NEAR(*f.model.lastFocusDistance(), 3.0, 1e-9);

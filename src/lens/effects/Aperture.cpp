@@ -12,7 +12,7 @@ namespace {
 
 const std::set<std::string> kKeys = {"blades", "rotation_deg", "roundness", "anamorphic_squeeze"};
 
-void read(const KeyReader& camera, const LensFrame&, LensParts& lens) {
+void read(const KeyReader& camera, const LensFrame&, Lens& lens) {
   if (!camera.has("aperture")) return;
   const std::unique_ptr<KeyReader> o = camera.object("aperture", kKeys);
   ApertureShape& a = lens.aperture;
@@ -23,7 +23,7 @@ void read(const KeyReader& camera, const LensFrame&, LensParts& lens) {
   if (const std::optional<ApertureProblem> problem = apertureShapeProblem(a)) o->fail(problem->field, problem->message);
 }
 
-void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
+void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   const ApertureShape& a = lens.aperture;
   if (a == ApertureShape{}) return;
   KeyWriter& o = camera.object("aperture");
@@ -33,9 +33,9 @@ void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
   if (a.anamorphicSqueeze != 1.0) o.number("anamorphic_squeeze", a.anamorphicSqueeze);
 }
 
-void interpolate(const LensParts& a, const LensParts&, double, LensParts& out) { out.aperture = a.aperture; }
+void interpolate(const Lens& a, const Lens&, double, Lens& out) { out.aperture = a.aperture; }
 
-void plan(const LensParts&, const PlanView&, EffectNeeds&) {}
+void plan(const Lens&, const PlanView&, EffectNeeds&) {}
 
 }  // namespace
 

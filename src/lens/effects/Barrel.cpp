@@ -19,7 +19,7 @@ constexpr double kMetresPerMillimetre = 1e-3;  // world units are metres
 // aperture, resolved to about 1/64 by as many aperture points, however sharp the scene is.
 constexpr int kBarrelMinSamples = 64;
 
-void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
+void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   if (!camera.has("barrel")) return;
   const std::unique_ptr<KeyReader> o = camera.object("barrel", kKeys);
   o->require("distance_mm", "barrel");
@@ -30,21 +30,21 @@ void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
   lens.barrel = barrelFromMillimetres(distance, diameter);
 }
 
-void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
+void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   if (!lens.barrel.present()) return;
   KeyWriter& o = camera.object("barrel");
   o.number("distance_mm", lens.barrel.distance / kMetresPerMillimetre);
   o.number("diameter_mm", 2.0 * lens.barrel.radius / kMetresPerMillimetre);
 }
 
-void interpolate(const LensParts& a, const LensParts&, double, LensParts& out) { out.barrel = a.barrel; }
+void interpolate(const Lens& a, const Lens&, double, Lens& out) { out.barrel = a.barrel; }
 
 // Whether the barrel hides part of the aperture from some pixel: from the window's farthest corner
 // the aperture, seen in the opening's plane (radius R·|1 − L/z_f| about L·n), reaches past it.
-void plan(const LensParts& lens, const PlanView& view, EffectNeeds& needs) {
+void plan(const Lens& lens, const PlanView& view, EffectNeeds& needs) {
   const LensBarrel& b = lens.barrel;
-  if (!b.present() || view.pinhole) return;
-  const double seen = view.apertureRadius * apertureReach(lens.aperture) * std::abs(1.0 - b.distance * view.inverseFocus);
+  if (!lens.hasBarrel()) return;
+  const double seen = lens.apertureRadius * apertureReach(lens.aperture) * std::abs(1.0 - b.distance * view.inverseFocus);
   if (!(b.distance * view.farthestCornerSlope + seen > b.radius)) return;
   needs.minApertureSamples = std::max(needs.minApertureSamples, kBarrelMinSamples);
   needs.minSamplesWhy = "the lens barrel hides part of the aperture toward the corners (cat's-eye vignetting), a share "

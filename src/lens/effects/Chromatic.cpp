@@ -49,7 +49,7 @@ void readAbbe(const KeyReader& o, const LensFrame& frame, Chromatic& c) {
   c.inverseFocusShiftBlue = shifts[1];
 }
 
-void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
+void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   if (!camera.has("chromatic")) return;
   const std::unique_ptr<KeyReader> o = camera.object("chromatic", kKeys);
   Chromatic& c = lens.effects.chromatic;
@@ -60,7 +60,7 @@ void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
   if (o->has("focus_distance_blue")) c.inverseFocusShiftBlue = inverseOfDistance(*o, "focus_distance_blue") - frame.inverseFocus;
 }
 
-void write(const LensParts& lens, const LensFrame& frame, KeyWriter& camera) {
+void write(const Lens& lens, const LensFrame& frame, KeyWriter& camera) {
   const Chromatic& c = lens.effects.chromatic;
   if (!c.hasLateral() && !c.hasAxial()) return;
   KeyWriter& o = camera.object("chromatic");
@@ -72,7 +72,7 @@ void write(const LensParts& lens, const LensFrame& frame, KeyWriter& camera) {
   }
 }
 
-void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& out) {
+void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   const Chromatic &x = a.effects.chromatic, &y = b.effects.chromatic;
   Chromatic& c = out.effects.chromatic;
   c.lateralRed = lerpValue(x.lateralRed, y.lateralRed, u);
@@ -82,7 +82,7 @@ void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& ou
   c.inverseFocusShiftBlue = lerpValue(x.inverseFocusShiftBlue, y.inverseFocusShiftBlue, u);
 }
 
-void plan(const LensParts& lens, const PlanView&, EffectNeeds& needs) {
+void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {
   const Chromatic& c = lens.effects.chromatic;
   if (c.hasLateral()) {
     needs.lensVariants.push_back("lateral-colour");

@@ -180,7 +180,7 @@ Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
   return d;
 }
 
-void read(const KeyReader& r, const LensFrame&, LensParts& lens) {
+void read(const KeyReader& r, const LensFrame&, Lens& lens) {
   Distortion& d = lens.effects.distortion;
   if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
   if (r.has("dist")) {
@@ -198,7 +198,7 @@ void read(const KeyReader& r, const LensFrame&, LensParts& lens) {
   get("alpha", d.alpha), get("beta", d.beta), get("gamma", d.gamma);
 }
 
-void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
+void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   const Distortion& k = lens.effects.distortion;
   if (k.isZero()) return;
   KeyWriter& d = camera.object("distortion");
@@ -207,7 +207,7 @@ void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
     if (value != 0.0) d.number(key, value);
 }
 
-void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& out) {
+void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   const Distortion &x = a.effects.distortion, &y = b.effects.distortion;
   Distortion& d = out.effects.distortion;
   d.k1 = lerpValue(x.k1, y.k1, u), d.k2 = lerpValue(x.k2, y.k2, u), d.k3 = lerpValue(x.k3, y.k3, u);
@@ -215,7 +215,7 @@ void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& ou
   d.alpha = lerpValue(x.alpha, y.alpha, u), d.beta = lerpValue(x.beta, y.beta, u), d.gamma = lerpValue(x.gamma, y.gamma, u);
 }
 
-void plan(const LensParts& lens, const PlanView&, EffectNeeds& needs) {
+void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {
   if (lens.effects.distortion.isZero()) return;
   needs.lensVariants.push_back("distortion");
   needs.remapTables = std::max(needs.remapTables, 1);

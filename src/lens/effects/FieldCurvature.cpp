@@ -14,7 +14,7 @@ namespace {
 
 const std::set<std::string> kKeys = {"corner_focus_distance"};
 
-void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
+void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   if (!camera.has("field_curvature")) return;
   const std::unique_ptr<KeyReader> o = camera.object("field_curvature", kKeys);
   o->require("corner_focus_distance", "field_curvature");
@@ -23,7 +23,7 @@ void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
   lens.effects.fieldCurvature.inverseFocusPerRadius2 = (inverseOfDistance(*o, "corner_focus_distance") - frame.inverseFocus) / (corner * corner);
 }
 
-void write(const LensParts& lens, const LensFrame& frame, KeyWriter& camera) {
+void write(const Lens& lens, const LensFrame& frame, KeyWriter& camera) {
   const FieldCurvature& f = lens.effects.fieldCurvature;
   if (f.isZero()) return;
   const double corner = frame.cornerRadius;
@@ -32,12 +32,12 @@ void write(const LensParts& lens, const LensFrame& frame, KeyWriter& camera) {
                                                             frame, "field_curvature.corner_focus_distance"));
 }
 
-void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& out) {
+void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   out.effects.fieldCurvature.inverseFocusPerRadius2 =
       lerpValue(a.effects.fieldCurvature.inverseFocusPerRadius2, b.effects.fieldCurvature.inverseFocusPerRadius2, u);
 }
 
-void plan(const LensParts& lens, const PlanView&, EffectNeeds& needs) {
+void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {
   if (lens.effects.fieldCurvature.isZero()) return;
   needs.sceneVariants.push_back("field-curvature");
   needs.fieldCurvatureWarp = true;

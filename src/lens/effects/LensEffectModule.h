@@ -1,7 +1,7 @@
 #pragma once
 // A lens effect is a module (../shared/ARCHITECTURE.md, "A lens effect is a module"; Mitsuba 3's
 // one sensor, one file): each effect — distortion, lateral and axial colour, field curvature,
-// vignetting, the barrel, the aperture shape — says in one place
+// vignetting, the barrel, the aperture shape — says in one place, for its part of a Lens (lens/Lens.h),
 //   - its camera-file key and what the object under it holds (read and written through the small
 //     KeyReader / KeyWriter below, which io/ implements on JSON: lens/ stays free of the JSON
 //     library, and the effect's keys stay beside its model);
@@ -11,9 +11,7 @@
 //   - where its shader code lives.
 // kLensEffectModules (LensEffectRegistry.h) lists them once; the camera reader and writer, the
 // path's interpolation and the frame plan iterate it instead of naming effects.
-#include "lens/ApertureShape.h"
-#include "lens/LensBarrel.h"
-#include "lens/LensEffects.h"
+#include "lens/Lens.h"
 
 #include <memory>
 #include <optional>
@@ -22,13 +20,6 @@
 #include <vector>
 
 namespace lenslab {
-
-// What the effects live in: the lens parts of a camera (camera/Camera.h holds them one by one).
-struct LensParts {
-  LensEffects effects;
-  ApertureShape aperture;
-  LensBarrel barrel;
-};
 
 // What some keys need of the camera they belong to: the axial colour's and the field curvature's
 // keys are focus distances, held as shifts of the camera's own 1/z_f.
@@ -71,10 +62,8 @@ class KeyWriter {
   virtual KeyWriter& object(const std::string& key) = 0;           // a new object under `key`
 };
 
-// What the frame plan knows when it asks a module.
+// What the frame plan knows of the view when it asks a module (the aperture is the lens's).
 struct PlanView {
-  bool pinhole = true;
-  double apertureRadius = 0.0;       // world units
   double inverseFocus = 0.0;         // 1/z_f
   double farthestCornerSlope = 0.0;  // normalised radius of the rendered window's farthest corner
 };
@@ -97,13 +86,13 @@ struct LensEffectModule {
   const char* key;            // its camera-file key: "vignetting"
   const char* shaderSnippet;  // its shader code under shaders/, "" for none
   // Reads the module's key from the camera's object when present, onto `lens`.
-  void (*read)(const KeyReader& camera, const LensFrame& frame, LensParts& lens);
+  void (*read)(const KeyReader& camera, const LensFrame& frame, Lens& lens);
   // Writes the module's key into the camera's object when the effect is present.
-  void (*write)(const LensParts& lens, const LensFrame& frame, KeyWriter& camera);
+  void (*write)(const Lens& lens, const LensFrame& frame, KeyWriter& camera);
   // Sets the module's part of `out` between keys `a` (u = 0) and `b` (u = 1).
-  void (*interpolate)(const LensParts& a, const LensParts& b, double u, LensParts& out);
+  void (*interpolate)(const Lens& a, const Lens& b, double u, Lens& out);
   // Adds what a frame needs for the effect; nothing at zero strength.
-  void (*plan)(const LensParts& lens, const PlanView& view, EffectNeeds& needs);
+  void (*plan)(const Lens& lens, const PlanView& view, EffectNeeds& needs);
 };
 
 // Helpers the modules share.

@@ -26,13 +26,14 @@ std::set<std::string> lensEffectKeys() {
   return keys;
 }
 
-LensParts interpolateLens(const LensParts& a, const LensParts& b, double u) {
-  LensParts out;
+Lens interpolateLens(const Lens& a, const Lens& b, double u) {
+  Lens out;
+  out.apertureRadius = lerpValue(a.apertureRadius, b.apertureRadius, u);
   for (const LensEffectModule* m : lensEffectModules()) m->interpolate(a, b, u, out);
   return out;
 }
 
-EffectNeeds effectNeeds(const LensParts& lens, const PlanView& view) {
+EffectNeeds effectNeeds(const Lens& lens, const PlanView& view) {
   EffectNeeds needs;
   for (const LensEffectModule* m : lensEffectModules()) m->plan(lens, view, needs);
   return needs;

@@ -14,10 +14,11 @@ const std::array<const LensEffectModule*, 6>& lensEffectModules();
 // Every module's camera-file key.
 std::set<std::string> lensEffectKeys();
 
-// Each module's interpolation between `a` (u = 0) and `b` (u = 1).
-LensParts interpolateLens(const LensParts& a, const LensParts& b, double u);
+// Each module's interpolation between `a` (u = 0) and `b` (u = 1); the radius linearly (a camera
+// path's comes from its interpolated f-number instead, camera/CameraPath.h).
+Lens interpolateLens(const Lens& a, const Lens& b, double u);
 
 // What a frame needs for every effect of `lens`.
-EffectNeeds effectNeeds(const LensParts& lens, const PlanView& view);
+EffectNeeds effectNeeds(const Lens& lens, const PlanView& view);
 
 }  // namespace lenslab

@@ -74,7 +74,7 @@ namespace {
 
 const std::set<std::string> kKeys = {"a1", "a2", "a3"};
 
-void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
+void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   if (!camera.has("vignetting")) return;
   // Missing keys are 0; validateLensEffects refuses a gain that reaches 0 inside the image.
   const std::unique_ptr<KeyReader> o = camera.object("vignetting", kKeys);
@@ -85,7 +85,7 @@ void read(const KeyReader& camera, const LensFrame& frame, LensParts& lens) {
   if (!v.isZero() && !frame.perspective) camera.fail("vignetting", "needs a perspective projection");
 }
 
-void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
+void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   const Vignetting& v = lens.effects.vignetting;
   if (v.isZero()) return;
   KeyWriter& o = camera.object("vignetting");
@@ -93,12 +93,12 @@ void write(const LensParts& lens, const LensFrame&, KeyWriter& camera) {
     if (value != 0.0) o.number(key, value);
 }
 
-void interpolate(const LensParts& a, const LensParts& b, double u, LensParts& out) {
+void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   const Vignetting &va = a.effects.vignetting, &vb = b.effects.vignetting;
   out.effects.vignetting = {lerpValue(va.a1, vb.a1, u), lerpValue(va.a2, vb.a2, u), lerpValue(va.a3, vb.a3, u)};
 }
 
-void plan(const LensParts& lens, const PlanView&, EffectNeeds& needs) {
+void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {
   const Vignetting& v = lens.effects.vignetting;
   if (v.isZero()) return;
   needs.finalGain = cat("the lens's relative illumination 1 + a1 r^2 + a2 r^4 + a3 r^6 (a1 = ", v.a1, ", a2 = ", v.a2,

@@ -23,8 +23,8 @@ const char* const kView = R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "w
                               "aperture_radius": 0.05})";
 
 // Every effect at a strength that no default has, each field its own value.
-LensParts everyEffect() {
-  LensParts lens;
+Lens everyEffect() {
+  Lens lens;
   Distortion& d = lens.effects.distortion;
   d.k1 = -0.05, d.k2 = 0.011, d.p1 = 0.0013, d.p2 = -0.0007, d.k3 = 0.0021, d.alpha = 0.012, d.beta = -0.019, d.gamma = 0.0031;
   Chromatic& c = lens.effects.chromatic;
@@ -36,16 +36,16 @@ LensParts everyEffect() {
   return lens;
 }
 
-Camera cameraWith(const LensParts& lens) {
+Camera cameraWith(const Lens& lens) {
   Camera camera = parseCameraJson(kView, "view.json").camera;
-  camera.effects = lens.effects;
-  camera.aperture = lens.aperture;
-  camera.barrel = lens.barrel;
+  camera.lens.effects = lens.effects;
+  camera.lens.aperture = lens.aperture;
+  camera.lens.barrel = lens.barrel;
   camera.source = "test camera";
   return camera;
 }
 
-void expectSameLens(const LensParts& a, const LensParts& b) {
+void expectSameLens(const Lens& a, const Lens& b) {
   const Distortion &x = a.effects.distortion, &y = b.effects.distortion;
   for (const auto& [p, q] : {std::pair{x.k1, y.k1}, {x.k2, y.k2}, {x.p1, y.p1}, {x.p2, y.p2}, {x.k3, y.k3}, {x.alpha, y.alpha},
                              {x.beta, y.beta}, {x.gamma, y.gamma}})
@@ -64,8 +64,6 @@ void expectSameLens(const LensParts& a, const LensParts& b) {
   EXPECT_NEAR(a.barrel.radius, b.barrel.radius, 1e-15);
 }
 
-LensParts lensOf(const Camera& camera) { return {camera.effects, camera.aperture, camera.barrel}; }
-
 TEST(LensEffectModules, TheRegistryListsEachEffectOnce) {
   const std::set<std::string> keys = lensEffectKeys();
   EXPECT_EQ(keys, (std::set<std::string>{"aperture", "barrel", "chromatic", "distortion", "field_curvature", "vignetting"}));
@@ -75,30 +73,30 @@ TEST(LensEffectModules, TheRegistryListsEachEffectOnce) {
 TEST(LensEffectModules, EveryEffectsKeysRoundTripThroughWriteAndRead) {
   const Camera camera = cameraWith(everyEffect());
   const CameraFile again = parseCameraJson(toCameraJson(camera), "again.json");
-  expectSameLens(lensOf(again.camera), everyEffect());
+  expectSameLens(again.camera.lens, everyEffect());
 }
 
 TEST(LensEffectModules, EachModuleWritesItsOwnKeyAndReadsItBack) {
-  const LensParts all = everyEffect();
+  const Lens all = everyEffect();
   for (const LensEffectModule* module : lensEffectModules()) {
     SCOPED_TRACE(module->key);
-    LensParts one;
+    Lens one;
     module->interpolate(all, all, 0.0, one);  // the module's part of `all`, nothing else
     const std::string text = toCameraJson(cameraWith(one));
     for (const LensEffectModule* other : lensEffectModules()) {
       const bool written = text.find(std::string("\"") + other->key + "\"") != std::string::npos;
       EXPECT_EQ(written, other == module) << other->key << " in " << text;
     }
-    expectSameLens(lensOf(parseCameraJson(text, "one.json").camera), one);
+    expectSameLens(parseCameraJson(text, "one.json").camera.lens, one);
   }
 }
 
 TEST(LensEffectModules, EachEffectIsInterpolatedAlongAPath) {
-  const LensParts b = everyEffect();
-  LensParts a;  // zero strength; the aperture and the barrel are the first key's along a segment
+  const Lens b = everyEffect();
+  Lens a;  // zero strength; the aperture and the barrel are the first key's along a segment
   a.aperture = b.aperture;
   a.barrel = b.barrel;
-  const LensParts quarter = interpolateLens(a, b, 0.25);
+  const Lens quarter = interpolateLens(a, b, 0.25);
   const Distortion& d = quarter.effects.distortion;
   EXPECT_DOUBLE_EQ(d.k1, 0.25 * b.effects.distortion.k1);
   EXPECT_DOUBLE_EQ(d.p2, 0.25 * b.effects.distortion.p2);
@@ -122,17 +120,17 @@ TEST(LensEffectModules, APathCarriesEveryEffectBetweenItsKeys) {
       {"time": 2, "eye": [0,0,5], "target": [0,0,0], "f_number": 4, "vignetting": {"a1": -0.4},
        "distortion": {"k1": -0.2}, "chromatic": {"lateral_red": 0.004}}]})", "path.json");
   const PathKey middle = cameraAt(path, 1.0);
-  EXPECT_NEAR(middle.effects.vignetting.a1, -0.3, 1e-15);
-  EXPECT_NEAR(middle.effects.distortion.k1, -0.15, 1e-15);
-  EXPECT_NEAR(middle.effects.chromatic.lateralRed, 0.003, 1e-15);
+  EXPECT_NEAR(middle.lens.effects.vignetting.a1, -0.3, 1e-15);
+  EXPECT_NEAR(middle.lens.effects.distortion.k1, -0.15, 1e-15);
+  EXPECT_NEAR(middle.lens.effects.chromatic.lateralRed, 0.003, 1e-15);
 }
 
 TEST(LensEffectModules, ZeroStrengthAsksNothingOfTheFrame) {
   PlanView view;
-  view.pinhole = false;
-  view.apertureRadius = 0.05;
   view.inverseFocus = 0.5;
   view.farthestCornerSlope = 0.36;
+  Lens zero;  // an aperture, no effect
+  zero.apertureRadius = 0.05;
   const EffectNeeds none;
   const auto same = [](const EffectNeeds& x, const EffectNeeds& y) {
     return x.viewsPerSample == y.viewsPerSample && x.sceneVariants == y.sceneVariants &&
@@ -143,12 +141,12 @@ TEST(LensEffectModules, ZeroStrengthAsksNothingOfTheFrame) {
   for (const LensEffectModule* module : lensEffectModules()) {
     SCOPED_TRACE(module->key);
     EffectNeeds needs;
-    module->plan(LensParts{}, view, needs);
+    module->plan(zero, view, needs);
     EXPECT_TRUE(same(needs, none));
     // At strength, every module but the aperture's asks something (the aperture widens the
     // circles of confusion, which the plan reads from the camera).
-    LensParts one;
-    const LensParts all = everyEffect();
+    Lens one = zero;
+    const Lens all = everyEffect();
     module->interpolate(all, all, 0.0, one);
     EffectNeeds strong;
     module->plan(one, view, strong);
@@ -156,7 +154,7 @@ TEST(LensEffectModules, ZeroStrengthAsksNothingOfTheFrame) {
       EXPECT_FALSE(same(strong, none));
     }
   }
-  EXPECT_TRUE(same(effectNeeds(LensParts{}, view), none));
+  EXPECT_TRUE(same(effectNeeds(zero, view), none));
 }
 
 TEST(LensEffectModules, ZeroVignettingAddsNoPass) {

@@ -11,6 +11,7 @@
 #include "app/TiledFile.h"
 #include "camera/DepthRange.h"
 #include "camera/FocusOnPixel.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "camera/ViewSpec.h"
 #include "core/Clock.h"
@@ -92,9 +93,13 @@ Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedC
   }
   if (!o.lensFile.empty()) {
     const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
+    const FittedLens& fit = fitted && !o.lens.focusAt ? *fitted : fitFor(request);
+    // The frame is the real lens's map; the raster draws its real-time form, fitted().
+    const RealLensMap frame(lensCameraFor(request), camera, size,
+                            withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds));
     SelectedCamera lensCamera;
-    lensCamera.camera = fittedCameraFor(request, fitted && !o.lens.focusAt ? *fitted : fitFor(request), camera, o.lensFile);
-    camera = withDepthRangeFitted(lensCamera.camera, scene.bounds);
+    lensCamera.camera = frame.fitted().camera();
+    camera = lensCamera.camera;
     stats.setCamera(lensCamera);
   }
   return camera;
@@ -163,14 +168,14 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   }
   stats.camera = camera.source;
   if (!o.lensFile.empty()) {
-    const LensCamera lens = lensCameraFor(lensRequestFor(o.lensFile, selected, camera));
+    const RealLensMap frame(lensCameraFor(lensRequestFor(o.lensFile, selected, camera)), camera, size);
+    const LensCamera& lens = frame.lens();
     stats.plan.apertureSamples = o.samplesPerPixel;
     stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified film x exit-pupil samples per pixel (--spp)");
     stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel traced through every surface of ", o.lensFile,
                                           lens.dispersion() ? ", per channel at 610, 550 and 465 nm" : ""), {}}};
     t = std::chrono::steady_clock::now();
-    Image image = caster.render(lens, camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed},
-                                [&](int done, int rows) { progress.update(done, rows); });
+    Image image = caster.render(frame, RaycastOptions{o.samplesPerPixel, o.lens.seed}, [&](int done, int rows) { progress.update(done, rows); });
     stats.renderSeconds = secondsSince(t);
     aovChannelValues = aovsOf(caster, camera, size, aovs);
     return image;

@@ -5,6 +5,7 @@
 #include "app/LensRequest.h"
 #include "core/Clock.h"
 #include "camera/DepthRange.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -71,13 +72,13 @@ void refuseTargetsSharingAName(const std::vector<double>& targetsDb) {
   }
 }
 
-// --lens: the reference traces the lens; the swept camera (returned) is the thin lens fitted to it.
+// --lens: the lens placed at the camera (`exactLens`) and the thin lens fitted to it (returned),
+// with which the frame's real-lens map is made once the image size is known.
 Camera prepareExactLens(SweepCommandOptions& o, const SelectedCamera& selected, const Camera& camera, const Scene& scene,
                         std::optional<LensCamera>& exactLens) {
   const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
   const FittedLens fit = fitFor(request);
   exactLens.emplace(lensCameraFor(request));
-  o.sweep.exactLens = &*exactLens;
   o.sweep.inputFiles.push_back(o.lensFile);
   o.sweep.inputOptions.push_back(cat("lens settings ", shortestText(request.settings.sensorMm.x), " ",
                                      shortestText(request.settings.sensorMm.y), " ", shortestText(request.settings.fNumber.value_or(0.0)),
@@ -191,6 +192,14 @@ int runSweepCommand(SweepCommandOptions& o) {
   if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
     std::cerr << "lenslab: warning: " << shape << "\n";
   requireOneTarget(size, RenderTargetLimits{}, "sweep");
+  // --lens: the frame is the real lens's map. The reference and the ray-cast rows trace it; the
+  // raster rows draw its real-time form, fitted(). It is placed at the fitted camera, whose lens
+  // centre the reference is kept relative to and whose name its messages carry.
+  std::optional<RealLensMap> frame;
+  if (exactLens) {
+    frame.emplace(std::move(*exactLens), camera, size, camera);
+    o.sweep.exactLens = &*frame;
+  }
   const fs::path out = o.outDir;
   OutputSet outputs;
   prepareOutputs(outputs, out);
@@ -205,7 +214,7 @@ int runSweepCommand(SweepCommandOptions& o) {
   std::unique_ptr<ProgressReporter> progress;
   attachReporters(o.sweep, progress, o.quiet);
   t = std::chrono::steady_clock::now();
-  const SweepResult result = runSweep(scene, camera, size, o.sweep);
+  const SweepResult result = runSweep(scene, frame ? frame->fitted().camera() : camera, size, o.sweep);
   if (progress) progress->finish();
   times.sweepSeconds = secondsSince(t);
 

@@ -37,6 +37,8 @@ ThinLensMap::ThinLensMap(const Camera& camera, ImageSize size, Overscan overscan
       // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
       rayChannels_(camera.lens.effects.chromatic.hasLateral() || camera.lens.effects.chromatic.hasAxial() ? 3 : 1) {}
 
+ThinLensMap ThinLensMap::truePerspective(const Camera& camera, ImageSize size) { return ThinLensMap(withoutEffects(camera), size); }
+
 glm::dvec2 ThinLensMap::windowFromPixel(glm::dvec2 pixel) const {
   return lenslab::windowFromPixel(camera_.view.window, pixel, size_.widthPx, size_.heightPx);
 }

@@ -138,6 +138,10 @@ class ThinLensMap final : public ImageMap {
   ThinLensMap(const Camera& camera, ImageSize size);
   // A plan's map: the render `overscan` given (the frame's, or a tile's part of it).
   ThinLensMap(const Camera& camera, ImageSize size, Overscan overscan);
+  // The map of `camera`'s true perspective image: its lens effects left out, so that each pixel is
+  // a pinhole view's own (the barrel, which stops rays instead of moving them, still stops them).
+  // Where a depth lookup at an already undistorted pixel casts its ray (camera/FocusOnPixel.h).
+  static ThinLensMap truePerspective(const Camera& camera, ImageSize size);
   // This map with the render widened for the lens pass: the output's border maps to the border of
   // the region it shows (validateLensEffects refuses folds), so the border's true positions bound
   // everything the lens pass samples, plus 2 pixels for its footprint. No limit on the size here:

@@ -60,42 +60,23 @@ struct RayCaster::Impl : EmbreeScene {
     float coverage = 0.0f;
   };
 
-  // First visible surface along `ray` (single-sided back faces and masked-out texels are passed
-  // through, as the rasterizer culls and discards them), shaded. Surfaces of alphaMode BLEND in
-  // front of it are composited over it front to back (docs/materials.md): each adds
-  // transmittance · alpha · its shaded colour (emission included, so premultiplied by alpha as the
-  // Khronos Sample Viewer blends it) and leaves transmittance · (1 − alpha) to what is behind; the
-  // ray goes on from just past the blend surface (the skip masked texels take), kMaxBlendLayers
-  // of them at most. Textures are filtered over `footprintPx` pixels: the part of the pixel this
-  // sample stands for (see render), not the whole pixel, so that the mean of the samples converges
-  // to the pixel integral of the unfiltered texture instead of to a pixel-blurred one. The returned ray is relative to `origin`.
-  // `inverseFocusShift` focuses the ray for one colour or one radius (viewThroughLens).
-  Hit shadeAlong(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double footprintPx,
-                 double inverseFocusShift = 0.0) const {
-    Ray ray = lensRay(camera, lensOffset, pixel, size, inverseFocusShift);
+  // What the ray `map` casts from film point `pixel` through lens sample `lens` for `channel`
+  // sees (shadeRay), textures filtered over `footprintPx` pixels by the map's footprint rays. A
+  // ray the lens does not pass (outside a real lens's stop or rims), or that the thin lens's
+  // barrel stops, brings no light and sees no surface, background included. The returned ray is
+  // relative to `origin`.
+  Hit shadeAlong(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel, double footprintPx) const {
+    const std::optional<CameraRay> r = map.ray(pixel, lens, channel);
+    Ray ray = r ? r->ray : Ray{};
     ray.origin -= origin;
-    // The barrel's opening (cat's-eye vignetting): a ray it stops brings no light, background included.
-    // With lens effects `pixel` is already the true perspective position (render's
-    // undistortedSample: the distorted film point taken back through the inverse lens model, per
-    // channel) and `inverseFocusShift` that channel's and that radius's plane of focus. The
-    // lecture's thin lens deflects the ray from aperture point p toward the point of the plane of
-    // focus seen in the undistorted direction n; that ray is the one the barrel may stop, at
-    // p·(1 − L/z_f) + L·n. Distortion and lateral colour only move where on the film that ray
-    // lands, so the test takes n of the undistorted position, never the distorted film point, and
-    // z_f with the channel's and the curvature's shift (the same ray lensRay casts).
-    if (camera.lens.hasBarrel()) {
-      const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
-      const glm::dvec2 normalised = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
-      if (!throughBarrel(camera.lens.barrel, lensOffset, normalised, camera.inverseFocusDistance() + inverseFocusShift))
-        return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
-    }
-    // The texture's ray differentials: the same lens point, the pixel one footprint over.
+    if (!r || r->blocked) return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
+    // The texture's ray differentials: the same lens point, the film point one footprint over.
     const auto rayAt = [&](glm::dvec2 offset) {
-      Ray r = lensRay(camera, lensOffset, pixel + offset, size, inverseFocusShift);
-      r.origin -= origin;
-      return r;
+      Ray n = map.footprintRay(*r, offset);
+      n.origin -= origin;
+      return n;
     };
-    return shadeRay(ray, rayAt, footprintPx, camera, pixel);
+    return shadeRay(ray, rayAt, footprintPx, map.camera(), r->pixel);
   }
 
   // The nearest hit along the ray from `start` (in Embree's units) along `direction`, between
@@ -168,10 +149,18 @@ struct RayCaster::Impl : EmbreeScene {
     return ShadedHit{shaded.radiance, shaded.normal, glm::vec3(base), shaded.alpha};
   }
 
-  // What `ray` (relative to `origin`) sees: the surfaces it meets shaded, blend ones composited
-  // front to back, or the background. `rayAt(offset)` is the same sample's ray from the pixel
-  // `offset` over (relative to `origin`): textures filter over the footprint those rays span.
-  // `camera` and `pixel` name the ray in messages.
+  // What `ray` (relative to `origin`) sees: the first visible surface along it (single-sided back
+  // faces and masked-out texels are passed through, as the rasterizer culls and discards them),
+  // shaded, or the background. Surfaces of alphaMode BLEND in front of it are composited over it
+  // front to back (docs/materials.md): each adds transmittance · alpha · its shaded colour
+  // (emission included, so premultiplied by alpha as the Khronos Sample Viewer blends it) and
+  // leaves transmittance · (1 − alpha) to what is behind; the ray goes on from just past the blend
+  // surface (the skip masked texels take), kMaxBlendLayers of them at most. `rayAt(offset)` is the
+  // same sample's ray from the pixel `offset` over (relative to `origin`): textures filter over the
+  // footprint those rays span, `footprintPx` pixels, the part of the pixel this sample stands for
+  // (see render), not the whole pixel, so that the mean of the samples converges to the pixel
+  // integral of the unfiltered texture instead of to a pixel-blurred one. `camera` and `pixel` name
+  // the ray in messages.
   template <class RayAt>
   Hit shadeRay(const Ray& ray, const RayAt& rayAt, double footprintPx, const Camera& camera, glm::dvec2 pixel) const {
     Hit miss{scene->lighting.background, false, std::numeric_limits<double>::infinity(), ray};
@@ -276,15 +265,16 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) 
 
 RayCaster::~RayCaster() = default;
 
-glm::vec3 RayCaster::trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size,
-                           double footprintPx) const {
-  impl_->rebase(impl_->originFor(camera, size));
-  return impl_->shadeAlong(camera, lensOffset, pixel, size, footprintPx).color;
+glm::vec3 RayCaster::trace(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel, double footprintPx) const {
+  impl_->rebase(impl_->originFor(map.camera(), map.size()));
+  return impl_->shadeAlong(map, pixel, lens, channel, footprintPx).color;
 }
 
 double RayCaster::depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const {
   impl_->rebase(impl_->originFor(camera, size));
-  const Impl::Hit hit = impl_->shadeAlong(camera, {0.0, 0.0}, pixel, size, 1.0);
+  // `pixel` is already a true perspective position (camera/FocusOnPixel.h takes the output's back
+  // through the lens model): the ray is the pinhole view's, the effects left out.
+  const Impl::Hit hit = impl_->shadeAlong(ThinLensMap::truePerspective(camera, size), pixel, {0.0, 0.0}, 1, 1.0);
   if (std::isinf(hit.t)) return hit.t;
   return -glm::dot(hit.t * hit.ray.direction, viewBasis(camera.view).n);
 }
@@ -295,27 +285,6 @@ std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) c
   return aovImages(camera, size, depth).depth;
 }
 
-namespace {
-
-// What the ray of `map` through film point `pixel` from the lens centre (green's) sees first: the
-// AOVs' surface, textures over one pixel. (A template: the caster's Impl is private to RayCaster.)
-template <class Impl>
-auto firstHit(const Impl& m, const ImageMap& map, glm::dvec2 pixel) {
-  using Hit = typename Impl::Hit;
-  const std::optional<CameraRay> r = map.ray(pixel, {0.0, 0.0}, 1);
-  Ray ray = r ? r->ray : Ray{};
-  ray.origin -= m.origin;
-  if (!r || r->blocked) return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
-  const auto rayAt = [&](glm::dvec2 offset) {
-    Ray n = map.footprintRay(*r, offset);
-    n.origin -= m.origin;
-    return n;
-  };
-  return m.shadeRay(ray, rayAt, 1.0, map.camera(), r->pixel);
-}
-
-}  // namespace
-
 AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const {
   if (selection.instance) requireExactInstances(*impl_->scene);
   impl_->rebase(impl_->originFor(camera, size));
@@ -324,7 +293,7 @@ AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSe
   const ThinLensMap map(camera, size);
   const glm::dvec3 axis = -viewBasis(camera.view).n;
   return aovImagesThrough(map, selection, [&](glm::dvec2 pixel) {
-    const Impl::Hit hit = firstHit(m, map, pixel);
+    const Impl::Hit hit = m.shadeAlong(map, pixel, {0.0, 0.0}, 1, 1.0);
     const double depth = std::isinf(hit.t) ? hit.t : glm::dot(hit.t * hit.ray.direction, axis);
     return AovSurface{hit.surface, depth, hit.normal, hit.albedo, hit.gltfNode};
   });

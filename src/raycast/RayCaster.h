@@ -60,14 +60,17 @@ class RayCaster {
     return render(RealLensMap(lens, camera, size), options, progress);
   }
 
-  // The shaded colour seen along one ray through continuous pixel position `pixel` from aperture
-  // offset `lensOffset` (linear RGB; the background where nothing is hit). Textures are filtered
+  // The shaded colour seen along one of the map's rays: from continuous film position `pixel`
+  // through lens sample `lens` (in the map's lensDomain(); the unit disk's centre is a thin lens's
+  // centre) for `channel` (1 green; 0..2 where the map's rayChannels() is 3), linear RGB; the
+  // background where nothing is hit, black where the lens stops the ray. Textures are filtered
   // over `footprintPx` pixels around the ray (1: a whole pixel, as one GL view would).
-  glm::vec3 trace(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size,
-                  double footprintPx = 1.0) const;
+  glm::vec3 trace(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel = 1, double footprintPx = 1.0) const;
 
   // Depth (world units from the PRP along −n) of the first visible surface under pixel centre
-  // `pixel` seen from the lens centre; +infinity where nothing is hit. For --focus-at.
+  // `pixel` of a pinhole view of `camera` (its lens effects left out: ThinLensMap::truePerspective)
+  // seen from the lens centre; +infinity where nothing is hit. For --focus-at
+  // (camera/FocusOnPixel.h's DepthAtPixel).
   double depthAt(const Camera& camera, glm::dvec2 pixel, ImageSize size) const;
 
   // The depth AOV (`capture --aov depth`): for each pixel centre, the distance along the optical

@@ -107,6 +107,11 @@ class Renderer {
   int regionOf(int tile) const;
   int mostSamples() const;  // the most samples any tile has
   void beginAdaptive();
+  // One round of step(): how many more samples each tile is to have, and a group of tiles (those
+  // `selected`, each expected to need at most `wanted`) drawn from sample `first` on, each region of
+  // tiles with its own scramble; the samples drawn (0: the group is at the cap).
+  std::vector<int> samplesToAdd(double targetMse);
+  int drawTileGroup(int first, const std::vector<char>& selected, int wanted);
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);
   void bindStreams();      // the two sums and their weights, texture units 0–3

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace lenslab {
@@ -80,11 +81,39 @@ void Renderer::beginAdaptive() {
   glNamedFramebufferTexture(blockErrorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, blockError_.id(), 0);
 }
 
-bool Renderer::step() {
-  if (!adaptive_) throw std::logic_error("Renderer::step without a per-tile plan");
-  if (finished_) return false;
+namespace {
+
+// Tiles that have had the same samples go on together: every tile's samples stay a prefix of the
+// progressive order (a tile that paused and resumes is not given another tile's next points).
+struct TileGroup {
+  std::vector<char> selected;
+  int wanted = 0;  // the most any of its tiles is expected to need
+};
+
+// The tiles given more samples (`more` > 0) in groups, each keyed by the first sample it draws:
+// the samples its tiles have had, or with whole views (`wholeFrameFrom`) one group from the most
+// samples any tile has (a tile with fewer skips some of the order's points; each point is uniform
+// on its own, so its mean stays unbiased).
+std::map<int, TileGroup> groupTiles(const std::vector<int>& more, const std::vector<TileState>& tiles,
+                                    std::optional<int> wholeFrameFrom) {
+  std::map<int, TileGroup> groups;
+  for (std::size_t t = 0; t < more.size(); ++t)
+    if (more[t] > 0) {
+      TileGroup& group = groups[wholeFrameFrom ? *wholeFrameFrom : tiles[t].samples];
+      if (group.selected.empty()) {
+        group.selected.assign(more.size(), 0);
+        group.wanted = more[t];
+      }
+      group.selected[t] = 1;
+      group.wanted = std::max(group.wanted, more[t]);
+    }
+  return groups;
+}
+
+}  // namespace
+
+std::vector<int> Renderer::samplesToAdd(double targetMse) {
   const AdaptivePlan& a = *plan_.adaptive;
-  const double targetMse = mseFromPsnr(a.targetPsnrDb);
   // Once every tile has its minimum and an estimate, the frame goes on tile by tile only where
   // that is predicted to cost less than whole views (plan/TileBudget.h perTilePays); else it goes
   // on uniformly, all tiles together, to the frame's target. The choice is made once. The regions
@@ -97,83 +126,75 @@ bool Renderer::step() {
     const int wanted = wholeFrameMoreSamples(grid_, tiles_, targetMse, a.maxSamples);
     std::fill(more.begin(), more.end(), wanted);
   }
-  // Tiles that have had the same samples go on together: every tile's samples stay a prefix of
-  // the progressive order (a tile that paused and resumes is not given another tile's next points).
-  struct Group {
-    std::vector<char> selected;
-    int wanted = 0;  // the most any of its tiles is expected to need
-  };
-  std::map<int, Group> groups;
-  std::vector<char> drawn(more.size(), 0);
-  for (std::size_t t = 0; t < more.size(); ++t)
-    if (more[t] > 0) {
-      // Whole views: one group, from the most samples any tile has (a tile with fewer skips some
-      // of the order's points; each point is uniform on its own, so its mean stays unbiased).
-      Group& group = groups[wholeFrame_ ? mostSamples() : tiles_[t].samples];
-      if (group.selected.empty()) {
-        group.selected.assign(more.size(), 0);
-        group.wanted = more[t];
+  return more;
+}
+
+int Renderer::drawTileGroup(int first, const std::vector<char>& selected, int wanted) {
+  const AdaptivePlan& a = *plan_.adaptive;
+  const std::vector<PixelBox> boxes = mergedBoxes(grid_, selected);
+  accumulator_->setRegion(&boxes);
+  streamB_->setRegion(&boxes);
+  // Rounds grow with the count (half of it; each round ends in an estimate, which has its cost),
+  // but not past what any of the group's tiles is expected to need; an even number, so that the
+  // two streams stay equal.
+  const int round = std::max(a.samplesPerRound, first / 2 / 2 * 2);
+  const int count = std::min({round, std::max(wanted + (wanted & 1), 2), a.maxSamples - first}) / 2 * 2;
+  if (count <= 0) return 0;
+  // Each region of tiles draws its own scramble of the sequence (its own seed): the regions'
+  // errors are independent, so the frame's error — and its estimate — average over many
+  // independent parts instead of following one set of aperture points everywhere (a blurred
+  // checkerboard under one set errs alike over the whole floor). The views are drawn in fewer,
+  // covering rectangles where a pass costs more than the pixels it saves; only the tiles' exact
+  // boxes are added to the sums. Views the lens gather or the field-curvature warp read whole
+  // are one part, drawn whole.
+  std::vector<std::vector<PixelBox>> regionBoxes;
+  std::vector<std::uint32_t> regionSeeds;
+  if (scissorViews_) {
+    for (int r = 0; r < regionCount_; ++r) {
+      std::vector<char> inRegion = selected;
+      bool any = false;
+      for (std::size_t t = 0; t < inRegion.size(); ++t) {
+        inRegion[t] = inRegion[t] && regionOf(static_cast<int>(t)) == r;
+        any |= inRegion[t] != 0;
       }
-      group.selected[t] = 1;
-      drawn[t] = 1;
-      group.wanted = std::max(group.wanted, more[t]);
+      if (!any) continue;
+      regionBoxes.push_back(coveringBoxes(mergedBoxes(grid_, inRegion), kPixelsPerDrawBox));
+      regionSeeds.push_back(plan_.seed ^ (0x9e3779b9u * static_cast<std::uint32_t>(r + 1)));
     }
+  } else {
+    regionSeeds.push_back(plan_.seed);
+  }
+  for (int i = first; i < first + count; ++i) {
+    std::vector<SamplePart> parts;
+    for (std::size_t r = 0; r < regionSeeds.size(); ++r)
+      parts.push_back({sobolSample(static_cast<std::uint32_t>(i), regionSeeds[r]), regionBoxes.empty() ? nullptr : &regionBoxes[r]});
+    drawSample(parts, sobolStream(i) == 0 ? *accumulator_ : *streamB_, a.lodBias);
+  }
+  for (std::size_t t = 0; t < selected.size(); ++t)
+    if (selected[t]) tiles_[t].samples += count;
+  done_ += count;
+  return count;
+}
+
+bool Renderer::step() {
+  if (!adaptive_) throw std::logic_error("Renderer::step without a per-tile plan");
+  if (finished_) return false;
+  const std::vector<int> more = samplesToAdd(mseFromPsnr(plan_.adaptive->targetPsnrDb));
+  const std::map<int, TileGroup> groups = groupTiles(more, tiles_, wholeFrame_ ? std::optional(mostSamples()) : std::nullopt);
   if (groups.empty()) {
     finished_ = true;
     return false;
   }
   bool progressed = false;
-  for (const auto& [first, group] : groups) {
-    const std::vector<PixelBox> boxes = mergedBoxes(grid_, group.selected);
-    accumulator_->setRegion(&boxes);
-    streamB_->setRegion(&boxes);
-    // Rounds grow with the count (half of it; each round ends in an estimate, which has its
-    // cost), but not past what any of the group's tiles is expected to need; an even number, so
-    // that the two streams stay equal.
-    const int round = std::max(a.samplesPerRound, first / 2 / 2 * 2);
-    const int count = std::min({round, std::max(group.wanted + (group.wanted & 1), 2), a.maxSamples - first}) / 2 * 2;
-    if (count <= 0) continue;
-    progressed = true;
-    // Each region of tiles draws its own scramble of the sequence (its own seed): the regions'
-    // errors are independent, so the frame's error — and its estimate — average over many
-    // independent parts instead of following one set of aperture points everywhere (a blurred
-    // checkerboard under one set errs alike over the whole floor). The views are drawn in fewer,
-    // covering rectangles where a pass costs more than the pixels it saves; only the tiles' exact
-    // boxes are added to the sums. Views the lens gather or the field-curvature warp read whole
-    // are one part, drawn whole.
-    std::vector<std::vector<PixelBox>> regionBoxes;
-    std::vector<std::uint32_t> regionSeeds;
-    if (scissorViews_) {
-      for (int r = 0; r < regionCount_; ++r) {
-        std::vector<char> inRegion = group.selected;
-        bool any = false;
-        for (std::size_t t = 0; t < inRegion.size(); ++t) {
-          inRegion[t] = inRegion[t] && regionOf(static_cast<int>(t)) == r;
-          any |= inRegion[t] != 0;
-        }
-        if (!any) continue;
-        regionBoxes.push_back(coveringBoxes(mergedBoxes(grid_, inRegion), kPixelsPerDrawBox));
-        regionSeeds.push_back(plan_.seed ^ (0x9e3779b9u * static_cast<std::uint32_t>(r + 1)));
-      }
-    } else {
-      regionSeeds.push_back(plan_.seed);
-    }
-    for (int i = first; i < first + count; ++i) {
-      std::vector<SamplePart> parts;
-      for (std::size_t r = 0; r < regionSeeds.size(); ++r)
-        parts.push_back({sobolSample(static_cast<std::uint32_t>(i), regionSeeds[r]), regionBoxes.empty() ? nullptr : &regionBoxes[r]});
-      drawSample(parts, sobolStream(i) == 0 ? *accumulator_ : *streamB_, a.lodBias);
-    }
-    for (std::size_t t = 0; t < group.selected.size(); ++t)
-      if (group.selected[t]) tiles_[t].samples += count;
-    done_ += count;
-  }
+  for (const auto& [first, group] : groups) progressed |= drawTileGroup(first, group.selected, group.wanted) > 0;
   if (!progressed) {  // every tile going on is at the cap
     finished_ = true;
     return false;
   }
   ++rounds_;
   uploadTileWeights();
+  std::vector<char> drawn(more.size(), 0);  // the tiles whose estimates this round changes
+  for (std::size_t t = 0; t < more.size(); ++t) drawn[t] = more[t] > 0;
   updateEstimates(drawn);
   return true;
 }

@@ -94,7 +94,7 @@ ReferenceHalves referenceHalves(const RayCaster& caster, const Scene& scene, con
     const auto rowsDone = [&](int rows, int height) {
       if (o.progress) o.progress("reference rows", std::int64_t{k} * height + rows, 2 * std::int64_t{height});
     };
-    out.halves[k] = o.exactLens ? caster.render(*o.exactLens, camera, size, half, rowsDone) : caster.render(camera, size, half, rowsDone);
+    out.halves[k] = o.exactLens ? caster.render(*o.exactLens, half, rowsDone) : caster.render(camera, size, half, rowsDone);
     out.seconds += secondsSince(t);
     if (!cached.empty()) writeImage(*o.outputs, cached, out.halves[k]);
   }

@@ -182,7 +182,7 @@ void runRaycastSeries(SweepRun& run, const RayCaster& caster) {
   const SweepOptions& o = run.o;
   for (int spp : run.budgetsOf("raycast")) {
     const auto t = std::chrono::steady_clock::now();
-    const Image image = o.exactLens ? caster.render(*o.exactLens, run.camera, run.size, RaycastOptions{spp, o.seed})
+    const Image image = o.exactLens ? caster.render(*o.exactLens, RaycastOptions{spp, o.seed})
                                     : caster.render(run.camera, run.size, RaycastOptions{spp, o.seed});
     run.record("raycast", "stratified", spp, secondsSince(t), image);
   }

@@ -14,7 +14,7 @@
 // post-process frames (one run for the ray caster); context creation is measured apart by the
 // caller and reported in sweep.md; shader compilation happens before the rows (a warm-up frame).
 #include "camera/Camera.h"
-#include "lens/LensCamera.h"
+#include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
 #include "report/SweepReport.h"
@@ -41,11 +41,11 @@ struct SweepOptions {
   // Which series run: lecture17, concentric, r2, random, sobol, adaptive, raycast, postprocess.
   std::vector<std::string> series = sweepSeriesNames();
   std::uint32_t seed = 1;
-  // sweep --lens: the reference and the ray-cast series trace this real lens exactly
-  // (lens/LensCamera.h); the camera swept is the thin lens fitted to it, and each of
-  // `lensAblations` (that camera with one effect left out, named) is rendered once at maxViews
+  // sweep --lens: the frame's real-lens map (camera/ImageMap.h), at the sweep's size. The reference
+  // and the ray-cast series trace it exactly; the camera swept is its fitted() thin lens, and each
+  // of `lensAblations` (that camera with one effect left out, named) is rendered once at maxViews
   // views (sobol): what each fitted effect is worth against the truth.
-  const LensCamera* exactLens = nullptr;
+  const RealLensMap* exactLens = nullptr;
   // What the reference is computed from beyond the scene's own files (Scene::files) and the
   // camera: the camera file, the environment image, the lens file; and the options that change
   // it, as text ("background 0 0 0"). The cache key hashes the files' bytes and these

@@ -66,7 +66,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const lenslab::Scene scene = lenslab::loadGltf(file);
     (void)lenslab::chooseCamera(scene, std::nullopt, {}, 1.5);
-    if (verbose) std::fprintf(stderr, "loaded: %zu triangles, %zu images, %zu cameras\n", scene.triangleCount(), scene.images.size(), scene.cameras.size());
+    if (verbose)
+      std::fprintf(stderr, "loaded: %zu triangles, %zu images, %zu cameras\n", scene.triangleCount(),
+                   scene.images.size(), scene.cameras.size());
   } catch (const lenslab::InputError& e) {
     if (verbose) std::fprintf(stderr, "refused: %s\n", e.what());
     // refused with one line: what the loader must do with bad input

@@ -26,12 +26,13 @@ void addAovOption(CLI::App& command, std::vector<std::string>& names) {
 void checkAovOutput(const AovSelection& selection, const std::filesystem::path& image, const std::string& outOption) {
   if (!selection.any()) return;
   std::string ext = image.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".exr") return;
   std::string channels;
   for (const std::string& c : aovChannelNames(selection)) channels += (channels.empty() ? "" : " ") + c;
-  throw InputError(cat("--aov ", aovList(selection), ": ", image.string(), ": the AOVs go in an EXR's channels (", channels,
-                       "); give an ", outOption, " ending in .exr"));
+  throw InputError(cat("--aov ", aovList(selection), ": ", image.string(), ": the AOVs go in an EXR's channels (",
+                       channels, "); give an ", outOption, " ending in .exr"));
 }
 
 }  // namespace lenslab

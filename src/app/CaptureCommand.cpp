@@ -58,7 +58,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 // The folder COLMAP's NAMEs are relative to: --out's leading folders up to the first that holds
 // the frame number (give it to COLMAP as --image_path).
 fs::path framesFolder(const std::string& pattern) {
@@ -96,7 +95,8 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
     if (frameCameras.followsNode() && !scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
     const FrameKey f = frameKey(frameCameras, scene, o, frame);
     const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
-    ColmapCamera camera = colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
+    ColmapCamera camera =
+        colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
     const std::string key = colmapCamerasText({camera});
     const auto [it, added] = cameraIdOfParams.emplace(key, static_cast<std::uint32_t>(cameras.size() + 1));
     if (added) {
@@ -105,21 +105,23 @@ ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCamera
     }
     const fs::path file = formatFramePath(o.out, frame);
     const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
-    images.push_back(colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, it->second, name,
-                                   imageWhere));
+    images.push_back(
+        colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, it->second, name, imageWhere));
     // What a pinhole model cannot hold. Blur (depth of field, axial colour, field curvature) is
     // centred where the pinhole at the lens centre projects, so the geometry stays right.
     const LensEffects& e = f.camera.lens.effects;
     if (!f.camera.lens.isPinhole())
-      warnings.insert("the depth of field (aperture and focus) is not in the model: COLMAP's cameras are pinholes "
-                      "(each blur is centred where the model projects)");
+      warnings.insert(
+          "the depth of field (aperture and focus) is not in the model: COLMAP's cameras are pinholes "
+          "(each blur is centred where the model projects)");
     if (e.chromatic.hasAxial())
       warnings.insert("the axial colour is not in the model (it blurs, centred where the model projects)");
     if (!e.fieldCurvature.isZero())
       warnings.insert("the field curvature is not in the model (it blurs, centred where the model projects)");
     if (e.chromatic.hasLateral())
-      warnings.insert("the lateral colour is not in the model: it holds green's geometry, while red's and blue's "
-                      "images are magnified about the principal point");
+      warnings.insert(
+          "the lateral colour is not in the model: it holds green's geometry, while red's and blue's "
+          "images are magnified about the principal point");
   }
   if (!o.quiet)
     for (const std::string& w : warnings) std::cerr << "lenslab: warning: --colmap-out: " << w << "\n";
@@ -141,8 +143,8 @@ void writeColmapModel(const fs::path& dir, const ColmapFiles& files) {
 // Every output checked before any work (the frames' folders made first: a cluster's shards start
 // on an empty volume). The folders this run makes are in `madeFolders`, removed again, when still
 // empty, if it is refused or interrupted.
-void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames, const FrameRange& range, const fs::path& manifest,
-                         const AovSelection& aovs, OutputSet& madeFolders) {
+void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames, const FrameRange& range,
+                         const fs::path& manifest, const AovSelection& aovs, OutputSet& madeFolders) {
   std::set<fs::path> folders;
   for (const int f : frames) folders.insert(fs::path(formatFramePath(o.out, f)).parent_path());
   folders.insert(manifest.parent_path());
@@ -212,7 +214,8 @@ struct CaptureRun {
     for (const std::string& w : plan.warnings) warnOnce(w);
     for (const std::string& w : focusWarnings(camera, o.lens)) warnOnce(w);
     if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
-      throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why, "; capture renders each frame in one render "
+      throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why,
+                           "; capture renders each frame in one render "
                            "target: give a smaller size (render tiles a single large image)"));
     Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
     std::vector<ImageChannel> aovChannelValues;
@@ -225,10 +228,21 @@ struct CaptureRun {
     outputs.add(cameraFile, cameraText);
     applyDisplayForFile(imageFile, image, display.encoding);
     writeImage(outputs, imageFile, image, aovChannelValues);
-    const ManifestFrame entry{frame, time, imageFile, cameraFile, lens.seed,
+    const ManifestFrame entry{frame,
+                              time,
+                              imageFile,
+                              cameraFile,
+                              lens.seed,
                               stats.estimate ? stats.estimate->meanSamples : static_cast<double>(plan.apertureSamples),
                               stats.estimate ? std::optional<double>(stats.estimate->psnrDb) : std::nullopt,
-                              secondsSince(frameStart), size, key.camera, camera, aovs, display, environment, shard};
+                              secondsSince(frameStart),
+                              size,
+                              key.camera,
+                              camera,
+                              aovs,
+                              display,
+                              environment,
+                              shard};
     const nlohmann::json line = manifestLine(entry, manifest);
     commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
     return line;
@@ -239,7 +253,9 @@ int runCapture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   // Without --path the scene's animation gives the frame count: the scene is read first.
   if (o.pathFile.empty() && o.scene.empty())
-    throw InputError("--path: give a camera path, or a SCENE whose own camera (or automatic framing) is captured over its animation");
+    throw InputError(
+        "--path: give a camera path, or a SCENE whose own camera (or automatic framing) is captured over its "
+        "animation");
   const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
@@ -291,11 +307,10 @@ int runCapture(const CaptureOptions& o) {
   madeFolders.commit();
   if (!o.quiet)
     std::cerr << "lenslab: captured " << rendered << " frame" << (rendered == 1 ? "" : "s")
-              << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames " << range.first
-              << ".." << range.last << (range.step > 1 ? cat(" step ", range.step) : std::string())
-              << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string())
-              << " to " << o.out << ", manifest " << manifest.string() << " (" << std::round(secondsSince(start) * 10.0) / 10.0
-              << " s)\n";
+              << (skipped ? cat(" (", skipped, " already there, left alone)") : std::string()) << " of frames "
+              << range.first << ".." << range.last << (range.step > 1 ? cat(" step ", range.step) : std::string())
+              << (shard.count > 1 ? cat(", shard ", shard.index, "/", shard.count) : std::string()) << " to " << o.out
+              << ", manifest " << manifest.string() << " (" << std::round(secondsSince(start) * 10.0) / 10.0 << " s)\n";
   return 0;
 }
 
@@ -304,22 +319,26 @@ int runCapture(const CaptureOptions& o) {
 std::function<int()> addCaptureCommand(CLI::App& app) {
   auto o = std::make_shared<CaptureOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "capture", "Render a sequence of frames along a camera path, headless, with each frame's camera (and AOVs) beside it");
+      "capture",
+      "Render a sequence of frames along a camera path, headless, with each frame's camera (and AOVs) beside it");
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--path", o->pathFile,
-                  "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in the physical form>}, ...]} "
-                  "(see docs/capture.md); without it, the scene's glTF camera (--camera-node; else automatic framing) over "
-                  "its animation at --fps");
+  cmd->add_option(
+      "--path", o->pathFile,
+      "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in the physical form>}, ...]} "
+      "(see docs/capture.md); without it, the scene's glTF camera (--camera-node; else automatic framing) over "
+      "its animation at --fps");
   cmd->add_option("--fps", o->fps, "without --path: frames per second over the playing animation (default 24)")
       ->check(numberIn({.min = 1e-3, .max = 1e4, .unit = "frames per second"}))
       ->type_name("F");
-  cmd->add_option("--out,-o", o->out,
-                  "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "
-                  "each frame's camera goes beside it as frame_NNNN.camera.json")
+  cmd->add_option(
+         "--out,-o", o->out,
+         "frame files, a pattern with one %d (e.g. frames/frame_%04d.exr): .png (8-bit sRGB) or .exr (linear float); "
+         "each frame's camera goes beside it as frame_NNNN.camera.json")
       ->capture_default_str();
-  cmd->add_option("--frames", o->frames,
-                  "frames A to B, inclusive (A:B, A:, :B or one frame N), every STEP-th with A:B:STEP (A::STEP, :B:STEP); "
-                  "default: all of the path's frames (or, without --path, of the animation at --fps)");
+  cmd->add_option(
+      "--frames", o->frames,
+      "frames A to B, inclusive (A:B, A:, :B or one frame N), every STEP-th with A:B:STEP (A::STEP, :B:STEP); "
+      "default: all of the path's frames (or, without --path, of the animation at --fps)");
   cmd->add_option("--shard", o->shard,
                   "I/N: this is process I (0 to N-1) of N; it renders every N-th frame of the range from its I-th "
                   "(Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT; Kubernetes: $JOB_COMPLETION_INDEX/N)")
@@ -328,8 +347,9 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
                 "leave frames alone whose image exists and whose line the manifest holds (a frame with an image but no "
                 "line is rendered again)");
   addAovOption(*cmd, o->aovs);
-  cmd->add_option("--manifest", o->manifest,
-                  "the JSON-lines file each rendered frame appends one line to (default: manifest.jsonl beside the frames)");
+  cmd->add_option(
+      "--manifest", o->manifest,
+      "the JSON-lines file each rendered frame appends one line to (default: manifest.jsonl beside the frames)");
   cmd->add_option("--width", o->width, "image width in pixels (default 960; height follows the window's aspect)");
   cmd->add_option("--height", o->height, "image height in pixels");
   cmd->add_option("--backend", o->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")

@@ -41,13 +41,15 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
 fs::path defaultManifest(const std::string& pattern) {
   const fs::path folder = fs::path(pattern).parent_path();
   if (folder.string().find('%') != std::string::npos)
-    throw InputError(cat("--out ", pattern, ": the frame number is in the folder; give --manifest FILE for the manifest"));
+    throw InputError(
+        cat("--out ", pattern, ": the frame number is in the folder; give --manifest FILE for the manifest"));
   return folder / "manifest.jsonl";
 }
 
 std::string relativeTo(const fs::path& file, const fs::path& manifest) {
   const fs::path folder = manifest.parent_path().empty() ? fs::path(".") : manifest.parent_path();
-  const fs::path rel = fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(folder).lexically_normal());
+  const fs::path rel =
+      fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(folder).lexically_normal());
   if (!rel.empty() && rel.begin()->string() != "..") return rel.string();
   return file.string();
 }
@@ -56,7 +58,8 @@ std::set<std::string> manifestFiles(const fs::path& manifest) {
   std::set<std::string> files;
   for (const std::string& text : readCompleteLines(manifest)) {
     const nlohmann::json line = nlohmann::json::parse(text, nullptr, false);
-    if (line.is_object() && line.contains("file") && line["file"].is_string()) files.insert(line["file"].get<std::string>());
+    if (line.is_object() && line.contains("file") && line["file"].is_string())
+      files.insert(line["file"].get<std::string>());
   }
   return files;
 }
@@ -65,7 +68,8 @@ std::set<std::string> manifestFiles(const fs::path& manifest) {
 // place, then the line appended. An interruption between the two removes the files (they are in
 // io/Interrupt.h's list until the line is written); a failed line removes them here; a kill
 // leaves files without a line, which --skip-existing renders again.
-void commitFrame(OutputSet& outputs, const std::vector<fs::path>& files, const fs::path& manifest, const std::string& line) {
+void commitFrame(OutputSet& outputs, const std::vector<fs::path>& files, const fs::path& manifest,
+                 const std::string& line) {
   std::vector<std::uint64_t> handles;
   {
     const InterruptDeferral deferral;
@@ -107,10 +111,12 @@ nlohmann::json manifestLine(const ManifestFrame& f, const fs::path& manifest) {
     line["channels"] = channels;
   }
   if (!f.display.encoding.isIdentity())
-    line["display"] = {{"exposure_stops", f.display.exposure.stops}, {"exposure", describe(f.display.exposure)},
+    line["display"] = {{"exposure_stops", f.display.exposure.stops},
+                       {"exposure", describe(f.display.exposure)},
                        {"view_transform", viewTransformName(f.display.encoding.transform)}};
   if (f.environment)
-    line["environment"] = {{"file", f.environment->file}, {"intensity", f.environment->intensity},
+    line["environment"] = {{"file", f.environment->file},
+                           {"intensity", f.environment->intensity},
                            {"rotation_deg", f.environment->rotationDegrees}};
   line["opencv"] = openCvJson(f.camera, f.size);
   line["shard"] = cat(f.shard.index, "/", f.shard.count);

@@ -41,12 +41,12 @@ struct ManifestFrame {
   std::filesystem::path imageFile;
   std::filesystem::path cameraFile;
   std::uint32_t seed = 0;
-  double samples = 0.0;                   // per pixel (the mean, with a target error)
-  std::optional<double> psnrEstimateDb;   // with a target error
+  double samples = 0.0;                  // per pixel (the mean, with a target error)
+  std::optional<double> psnrEstimateDb;  // with a target error
   double seconds = 0.0;
   ImageSize size;
-  const PhysicalCamera& lens;             // the frame's physical description
-  const Camera& camera;                   // as rendered
+  const PhysicalCamera& lens;  // the frame's physical description
+  const Camera& camera;        // as rendered
   const AovSelection& aovs;
   const DisplaySettings& display;
   const std::optional<EnvironmentSummary>& environment;
@@ -55,7 +55,7 @@ struct ManifestFrame {
 nlohmann::json manifestLine(const ManifestFrame& frame, const std::filesystem::path& manifest);
 
 // A frame's files and its manifest line, together or not at all (see CaptureManifest.cpp).
-void commitFrame(OutputSet& outputs, const std::vector<std::filesystem::path>& files, const std::filesystem::path& manifest,
-                 const std::string& line);
+void commitFrame(OutputSet& outputs, const std::vector<std::filesystem::path>& files,
+                 const std::filesystem::path& manifest, const std::string& line);
 
 }  // namespace lenslab

@@ -12,8 +12,8 @@ std::function<int()> addRenderCommand(CLI::App& app);
 std::function<int()> addRaycastCommand(CLI::App& app);
 std::function<int()> addSweepCommand(CLI::App& app);
 std::function<int()> addInfoCommand(CLI::App& app);
-std::function<int()> addLensCommand(CLI::App& app);  // src/app/LensCommand.cpp
-std::function<int()> addViewCommand(CLI::App& app);  // src/app/ViewCommand.cpp
+std::function<int()> addLensCommand(CLI::App& app);     // src/app/LensCommand.cpp
+std::function<int()> addViewCommand(CLI::App& app);     // src/app/ViewCommand.cpp
 std::function<int()> addCaptureCommand(CLI::App& app);  // src/app/CaptureCommand.cpp
 
 }  // namespace lenslab

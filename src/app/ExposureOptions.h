@@ -12,12 +12,14 @@
 namespace lenslab {
 
 struct ExposureOptions {
-  ExposureRequest request;            // --exposure EV, or --shutter SECONDS and --iso ISO
+  ExposureRequest request;             // --exposure EV, or --shutter SECONDS and --iso ISO
   std::string viewTransform = "none";  // --view-transform NAME (io/ToneMap.h)
 };
 
 void addExposureOptions(CLI::App& command, ExposureRequest& request, std::string& viewTransform);
-inline void addExposureOptions(CLI::App& command, ExposureOptions& o) { addExposureOptions(command, o.request, o.viewTransform); }
+inline void addExposureOptions(CLI::App& command, ExposureOptions& o) {
+  addExposureOptions(command, o.request, o.viewTransform);
+}
 
 // resolveDisplay (io/ToneMap.h) of the options.
 inline DisplaySettings resolveDisplay(const ExposureOptions& o, const SelectedCamera& camera) {

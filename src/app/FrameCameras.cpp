@@ -11,13 +11,15 @@
 
 namespace lenslab {
 
-FrameCameras::FrameCameras(const CaptureOptions& o, Scene& scene, double imageAspect) : o_(o), imageAspect_(imageAspect) {
+FrameCameras::FrameCameras(const CaptureOptions& o, Scene& scene, double imageAspect)
+    : o_(o), imageAspect_(imageAspect) {
   if (!o.pathFile.empty()) {
     if (o.camera.changesPose())
       throw InputError(cat(o.camera.eye ? "--eye" : "--target", ": --path ", o.pathFile,
                            " gives each frame's eye and target; leave the option out, or edit the path's keys"));
     if (!o.camera.cameraNode.empty())
-      throw InputError(cat("--camera-node ", o.camera.cameraNode, ": --path ", o.pathFile, " gives each frame's camera; give one or the other"));
+      throw InputError(cat("--camera-node ", o.camera.cameraNode, ": --path ", o.pathFile,
+                           " gives each frame's camera; give one or the other"));
     if (o.fps) throw InputError(cat("--fps ", *o.fps, ": --path ", o.pathFile, " gives its own fps; edit it there"));
     path_ = loadCameraPath(o.pathFile);
     return;
@@ -55,10 +57,12 @@ PathKey FrameCameras::at(const Scene& scene, double time, const std::string& whe
 
 PhysicalCamera FrameCameras::physicalOf(const SelectedCamera& selected) const {
   if (selected.physical) return *selected.physical;
-  const std::string why = base_.form == CameraForm::GltfOrthographic ? cat(base_.name, " is orthographic")
-                                                                    : selected.camera.source;
-  throw InputError(cat(why, "; capture writes each frame's camera as a perspective lens (OpenCV intrinsics and a focus), which "
-                            "this camera is not: give --path, or a perspective camera"));
+  const std::string why =
+      base_.form == CameraForm::GltfOrthographic ? cat(base_.name, " is orthographic") : selected.camera.source;
+  throw InputError(
+      cat(why,
+          "; capture writes each frame's camera as a perspective lens (OpenCV intrinsics and a focus), which "
+          "this camera is not: give --path, or a perspective camera"));
 }
 
 FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const CaptureOptions& o, int frame) {

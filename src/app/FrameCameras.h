@@ -27,7 +27,7 @@ struct CaptureOptions {
   std::optional<int> width;
   std::optional<int> height;
   std::string backend = "osmesa";
-  std::string frames;    // "A:B"; empty = all
+  std::string frames;  // "A:B"; empty = all
   std::string shard = "0/1";
   bool skipExisting = false;
   std::vector<std::string> aovs;
@@ -36,7 +36,7 @@ struct CaptureOptions {
   CameraOptions camera;
   std::optional<double> fps;  // frames per second without --path
   std::optional<glm::vec3> background;
-  std::string colmapOut;  // --colmap-out DIR: the frames' cameras as a COLMAP text model
+  std::string colmapOut;     // --colmap-out DIR: the frames' cameras as a COLMAP text model
   ExposureOptions exposure;  // PNG frames only; physical settings take each frame's f-number
   EnvironmentRequest environment;
 };
@@ -58,7 +58,9 @@ class FrameCameras {
   bool nearGiven() const { return path_ ? !path_->nearFromScene : base_.form == CameraForm::GltfPerspective; }
   // Whether a frame's camera depends on the scene's pose (a glTF camera following its node).
   bool followsNode() const { return !path_ && !still_; }
-  bool farGiven() const { return path_ ? !path_->farFromScene : base_.form == CameraForm::GltfPerspective && std::isfinite(base_.gltf.zfar); }
+  bool farGiven() const {
+    return path_ ? !path_->farFromScene : base_.form == CameraForm::GltfPerspective && std::isfinite(base_.gltf.zfar);
+  }
 
   // The frame's camera, the scene posed at `time` already; `where` names it in errors.
   PathKey at(const Scene& scene, double time, const std::string& where) const;

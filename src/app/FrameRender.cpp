@@ -60,8 +60,10 @@ Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& p
         cat("lenslab: warning: the estimate reached ", stats.estimate->psnrDb, " dB, short of --target-psnr ",
             plan.adaptive->targetPsnrDb, ": the tiles still short of it are at the cap of ", plan.adaptive->maxSamples,
             " samples (--max-samples, an even count for the two streams)");
-    if (progress) progress->note(warning);  // below the bar, not through it
-    else std::cerr << warning << "\n";
+    if (progress)
+      progress->note(warning);  // below the bar, not through it
+    else
+      std::cerr << warning << "\n";
   }
   return image;
 }

@@ -23,9 +23,7 @@ namespace {
 
 constexpr double kDegreesPerRadian = 57.29577951308232;
 
-void printVector(std::ostream& out, const glm::dvec3& v) {
-  out << "[" << v.x << ", " << v.y << ", " << v.z << "]";
-}
+void printVector(std::ostream& out, const glm::dvec3& v) { out << "[" << v.x << ", " << v.y << ", " << v.z << "]"; }
 
 // The visible-blur pre-pass needs a GL context: one is made (OSMesa) only for a camera with an
 // aperture; without one, the plan says what the bounds say.
@@ -43,8 +41,8 @@ std::optional<VisibleBlur> measureBlur(const Scene& scene, const Camera& camera,
 
 // The scene's cameras, each as glTF gives it and where it stands.
 void printCameras(std::ostream& out, const Scene& scene) {
-  out << "cameras     " << scene.cameras.size() << (scene.cameras.empty() ? "" : " (render --camera-node NAME|INDEX picks one; default: [0])")
-      << "\n";
+  out << "cameras     " << scene.cameras.size()
+      << (scene.cameras.empty() ? "" : " (render --camera-node NAME|INDEX picks one; default: [0])") << "\n";
   for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
     const SceneCamera& c = scene.cameras[i];
     out << "  " << sceneCameraLabel(scene, i) << ": ";
@@ -62,11 +60,13 @@ void printCameras(std::ostream& out, const Scene& scene) {
 // The animation clips, with how many of their channels lenslab plays.
 void printAnimations(std::ostream& out, const Scene& scene) {
   const std::vector<AnimationClip>& clips = scene.animation.clips;
-  out << "animations  " << clips.size() << (clips.empty() ? "" : " (--animation NAME|INDEX|all picks what plays; default: [0])") << "\n";
+  out << "animations  " << clips.size()
+      << (clips.empty() ? "" : " (--animation NAME|INDEX|all picks what plays; default: [0])") << "\n";
   for (std::size_t i = 0; i < clips.size(); ++i)
     out << "  [" << i << "] " << (clips[i].name.empty() ? "(unnamed)" : "\"" + clips[i].name + "\"") << ": "
         << clipDurationSeconds(clips[i]) << " s, " << clips[i].fileChannelCount << " channel(s)"
-        << (clips[i].channels.size() < clips[i].fileChannelCount ? cat(", ", clips[i].channels.size(), " played") : std::string())
+        << (clips[i].channels.size() < clips[i].fileChannelCount ? cat(", ", clips[i].channels.size(), " played")
+                                                                 : std::string())
         << "\n";
 }
 
@@ -79,33 +79,37 @@ void printMaterials(std::ostream& out, const Scene& scene) {
         << ", base [" << m.baseColorFactor.r << ", " << m.baseColorFactor.g << ", " << m.baseColorFactor.b << ", "
         << m.baseColorFactor.a << "]" << (m.baseColorTexture.present() ? ", textured" : "")
         << (m.unlit ? std::string() : cat(", metallic ", m.metallicFactor, ", roughness ", m.roughnessFactor))
-        << (m.metallicRoughnessTexture.present() ? ", metallic-roughness map" : "") << (m.occlusionTexture.present() ? ", occlusion map" : "")
-        << (m.normalTexture.present() ? ", normal map" : "")
-        << (m.alphaMode == AlphaMode::Mask ? ", alpha mask" : m.alphaMode == AlphaMode::Blend ? ", alpha blend" : "")
+        << (m.metallicRoughnessTexture.present() ? ", metallic-roughness map" : "")
+        << (m.occlusionTexture.present() ? ", occlusion map" : "") << (m.normalTexture.present() ? ", normal map" : "")
+        << (m.alphaMode == AlphaMode::Mask    ? ", alpha mask"
+            : m.alphaMode == AlphaMode::Blend ? ", alpha blend"
+                                              : "")
         << (m.doubleSided ? ", double-sided" : "") << "\n";
   }
 }
 
 // The punctual lights (KHR_lights_punctual); without any, lenslab lights the scene itself.
 void printLights(std::ostream& out, const Scene& scene) {
-  out << "lights      " << scene.lights.size() << (scene.lights.empty() ? " (lenslab's default directional light)" : " (KHR_lights_punctual)") << "\n";
+  out << "lights      " << scene.lights.size()
+      << (scene.lights.empty() ? " (lenslab's default directional light)" : " (KHR_lights_punctual)") << "\n";
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const PunctualLight& l = scene.lights[i];
     static const char* const kTypes[] = {"directional", "point", "spot"};
-    out << "  [" << i << "] " << (l.name.empty() ? "(unnamed)" : l.name) << ": " << kTypes[static_cast<int>(l.type)] << ", "
-        << l.intensity << (l.type == LightType::Directional ? " lx" : " cd") << ", node " << l.gltfNode << "\n";
+    out << "  [" << i << "] " << (l.name.empty() ? "(unnamed)" : l.name) << ": " << kTypes[static_cast<int>(l.type)]
+        << ", " << l.intensity << (l.type == LightType::Directional ? " lx" : " cd") << ", node " << l.gltfNode << "\n";
   }
 }
 
 // What a render of the scene with the chosen camera would do: its size, aperture samples and the
 // blur the pre-pass sees, and each pass of the frame plan with why.
-void printRenderPlan(std::ostream& out, const Scene& scene, const std::string& cameraFile, const CameraOptions& cameraOptions) {
+void printRenderPlan(std::ostream& out, const Scene& scene, const std::string& cameraFile,
+                     const CameraOptions& cameraOptions) {
   if (scene.triangleCount() == 0) {
     out << "render      nothing to draw (no triangles)\n";
     return;
   }
-  SelectedCamera selected =
-      chooseCamera(scene, cameraFile.empty() ? std::nullopt : std::optional<std::filesystem::path>(cameraFile), cameraOptions, 0.0);
+  SelectedCamera selected = chooseCamera(
+      scene, cameraFile.empty() ? std::nullopt : std::optional<std::filesystem::path>(cameraFile), cameraOptions, 0.0);
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
   const ImageSize size = resolveImageSize(selected.camera, std::nullopt, std::nullopt);
   const std::optional<VisibleBlur> visible = measureBlur(scene, selected.camera, size, out);
@@ -117,11 +121,12 @@ void printRenderPlan(std::ostream& out, const Scene& scene, const std::string& c
     out << "blur seen   circle of confusion over the image (pinhole depth pre-pass at " << v.prepass.widthPx << "x"
         << v.prepass.heightPx << ", dilated by nearer circles):\n"
         << "            <= 1 px " << 100.0 * v.fractions[0] << " %, 1-4 px " << 100.0 * v.fractions[1] << " %, 4-16 px "
-        << 100.0 * v.fractions[2] << " %, 16-64 px " << 100.0 * v.fractions[3] << " %, > 64 px " << 100.0 * v.fractions[4]
-        << " %\n"
+        << 100.0 * v.fractions[2] << " %, 16-64 px " << 100.0 * v.fractions[3] << " %, > 64 px "
+        << 100.0 * v.fractions[4] << " %\n"
         << "            median " << v.p50Px << " px, 90 % " << v.p90Px << " px, 99 % " << v.p99Px << " px, largest "
         << v.maxPx << " px\n"
-        << "            the scene's bounds alone: up to " << v.boundsCocMaxPx << " px, " << v.boundsSamples << " samples\n";
+        << "            the scene's bounds alone: up to " << v.boundsCocMaxPx << " px, " << v.boundsSamples
+        << " samples\n";
   }
   for (const PlannedPass& p : plan.passes) {
     out << "            pass " << p.name << ": " << p.why;
@@ -135,8 +140,8 @@ int runInfo(const std::string& path, const std::string& cameraFile, const Camera
   std::ostream& out = std::cout;
   out.precision(6);
   out << "scene       " << path << "\n";
-  out << "triangles   " << scene.triangleCount() << " (" << scene.meshes.size() << " meshes, "
-      << scene.instances.size() << " instances)\n";
+  out << "triangles   " << scene.triangleCount() << " (" << scene.meshes.size() << " meshes, " << scene.instances.size()
+      << " instances)\n";
   if (scene.bounds.empty()) {
     out << "bounds      empty\n";
   } else {
@@ -165,9 +170,11 @@ std::function<int()> addInfoCommand(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto camera = std::make_shared<std::string>();
   auto cameraOptions = std::make_shared<CameraOptions>();
-  CLI::App* cmd = app.add_subcommand("info", "Describe a glTF scene: triangles, bounds, cameras, animations, materials, render plan");
+  CLI::App* cmd = app.add_subcommand(
+      "info", "Describe a glTF scene: triangles, bounds, cameras, animations, materials, render plan");
   cmd->add_option("scene", *path, "glTF 2.0 scene (.gltf or .glb)")->required();
-  cmd->add_option("--camera", *camera, "camera JSON to plan for (default: the scene's first glTF camera, else an automatic framing)");
+  cmd->add_option("--camera", *camera,
+                  "camera JSON to plan for (default: the scene's first glTF camera, else an automatic framing)");
   addCameraNodeOption(*cmd, *cameraOptions);
   return [cmd, path, camera, cameraOptions]() { return cmd->parsed() ? runInfo(*path, *camera, *cameraOptions) : -1; };
 }

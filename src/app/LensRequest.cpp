@@ -14,17 +14,23 @@ LensRequest lensRequestFor(const std::string& file, const SelectedCamera& select
   const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };
   if (camera.view.projection != Projection::Perspective) refuse("a real lens needs a perspective camera");
   if (!camera.lens.effects.isZero())
-    refuse("the camera's lens effects (distortion, chromatic, field_curvature, vignetting) stand for a lens; the prescription has its own: "
-           "remove them from the camera");
-  if (camera.lens.barrel.present()) refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
+    refuse(
+        "the camera's lens effects (distortion, chromatic, field_curvature, vignetting) stand for a lens; the "
+        "prescription has its own: "
+        "remove them from the camera");
+  if (camera.lens.barrel.present())
+    refuse("the camera's \"barrel\" stands for a lens's rims; the prescription has its own: remove it");
   if (!camera.lens.aperture.isRound()) refuse("the prescription's stop is round: remove --blades and --squeeze");
   const Window& w = camera.view.window;
-  const double centreU = 0.5 * (w.umin + w.umax) - camera.view.prp.x, centreV = 0.5 * (w.vmin + w.vmax) - camera.view.prp.y;
+  const double centreU = 0.5 * (w.umin + w.umax) - camera.view.prp.x,
+               centreV = 0.5 * (w.vmin + w.vmax) - camera.view.prp.y;
   if (std::abs(centreU) > 1e-9 * w.width() || std::abs(centreV) > 1e-9 * w.height())
-    refuse("the camera's window is shifted off its axis (a shift lens); a prescription's sensor is centred on the axis");
+    refuse(
+        "the camera's window is shifted off its axis (a shift lens); a prescription's sensor is centred on the axis");
   LensRequest r;
   r.lens = std::make_shared<LensPrescription>(parseLensPrescription(readTextFile(file, "lens file"), file));
-  r.settings.sensorMm = selected.physical ? selected.physical->sensorMm : glm::dvec2(36.0, 36.0 * w.height() / w.width());
+  r.settings.sensorMm =
+      selected.physical ? selected.physical->sensorMm : glm::dvec2(36.0, 36.0 * w.height() / w.width());
   if (selected.physical && std::isfinite(selected.physical->fNumber)) r.settings.fNumber = selected.physical->fNumber;
   r.settings.focusDistance = camera.focusDistance();
   const ViewBasis basis = viewBasis(camera.view);
@@ -51,7 +57,8 @@ double fitErrorPx(const FittedLens& fit, const LensRequest& r, int widthPx) {
 }
 
 Camera fittedCameraFor(const LensRequest& r, const FittedLens& fit, const Camera& camera, const std::string& file) {
-  return cameraForFittedLens(camera, fit, r.settings.sensorMm, r.pose.worldPerMm, cat(camera.source, " through ", file, " (fitted)"));
+  return cameraForFittedLens(camera, fit, r.settings.sensorMm, r.pose.worldPerMm,
+                             cat(camera.source, " through ", file, " (fitted)"));
 }
 
 std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& fitted) {
@@ -64,7 +71,8 @@ std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& 
   };
   const LensEffects& e = fitted.lens.effects;
   without("distortion", !e.distortion.isZero(), [](Camera& c) { c.lens.effects.distortion = {}; });
-  without("colour", e.chromatic.hasLateral() || e.chromatic.hasAxial(), [](Camera& c) { c.lens.effects.chromatic = {}; });
+  without("colour", e.chromatic.hasLateral() || e.chromatic.hasAxial(),
+          [](Camera& c) { c.lens.effects.chromatic = {}; });
   without("field-curvature", !e.fieldCurvature.isZero(), [](Camera& c) { c.lens.effects.fieldCurvature = {}; });
   without("barrel", fitted.lens.barrel.present(), [](Camera& c) { c.lens.barrel = {}; });
   without("vignetting", !e.vignetting.isZero(), [](Camera& c) { c.lens.effects.vignetting = {}; });

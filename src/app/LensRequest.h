@@ -36,7 +36,8 @@ double fitErrorPx(const FittedLens& fit, const LensRequest& request, int widthPx
 
 // The thin-lens camera fitted to the lens, at `camera`'s pose (camera/LensFitCamera.h): what the
 // frame's real-lens map (camera/ImageMap.h, RealLensMap) holds as its real-time form, fitted().
-Camera fittedCameraFor(const LensRequest& request, const FittedLens& fit, const Camera& camera, const std::string& file);
+Camera fittedCameraFor(const LensRequest& request, const FittedLens& fit, const Camera& camera,
+                       const std::string& file);
 
 // The fitted camera with each of its effects left out in turn, named ("distortion", "barrel",
 // ...): what each effect of the fit is worth against the exact lens (sweep --lens). Effects the

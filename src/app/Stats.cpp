@@ -21,12 +21,15 @@ nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("i
 
 // The camera's lens: focus, aperture and its shape, the barrel, and the physical camera it came from.
 nlohmann::json lensJson(const RunStats& s) {
-  nlohmann::json j = {{"focus_distance", distanceJson(s.focusDistance)}, {"aperture_radius", s.apertureRadius},
-                      {"aperture", {{"shape", describeAperture(s.aperture)}, {"blades", s.aperture.blades},
-                                    {"rotation_deg", s.aperture.rotationDeg}, {"roundness", s.aperture.roundness},
-                                    {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
-  if (s.barrel.present())
-    j["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
+  nlohmann::json j = {{"focus_distance", distanceJson(s.focusDistance)},
+                      {"aperture_radius", s.apertureRadius},
+                      {"aperture",
+                       {{"shape", describeAperture(s.aperture)},
+                        {"blades", s.aperture.blades},
+                        {"rotation_deg", s.aperture.rotationDeg},
+                        {"roundness", s.aperture.roundness},
+                        {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
+  if (s.barrel.present()) j["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
   if (s.physical) {
     const PhysicalCamera& p = *s.physical;
     j["focal_length_mm"] = p.focalLengthMm;
@@ -42,8 +45,11 @@ nlohmann::json lensJson(const RunStats& s) {
 // the radiance before them.
 nlohmann::json displayJson(const RunStats& s) {
   const Exposure& e = s.exposure;
-  nlohmann::json d = {{"exposure_stops", e.stops}, {"exposure_scale", e.scale}, {"exposure_source", e.source},
-                      {"exposure", describe(e)}, {"view_transform", viewTransformName(s.viewTransform)}};
+  nlohmann::json d = {{"exposure_stops", e.stops},
+                      {"exposure_scale", e.scale},
+                      {"exposure_source", e.source},
+                      {"exposure", describe(e)},
+                      {"view_transform", viewTransformName(s.viewTransform)}};
   if (e.ev100) {
     d["ev100"] = *e.ev100;
     d["shutter_s"] = *e.shutterSeconds;
@@ -56,7 +62,8 @@ nlohmann::json displayJson(const RunStats& s) {
 // The frame plan: its passes with why, the aperture samples and the blur they were chosen for.
 nlohmann::json planJson(const FramePlan& plan) {
   nlohmann::json passes = nlohmann::json::array();
-  for (const PlannedPass& p : plan.passes) passes.push_back({{"name", p.name}, {"why", p.why}, {"variants", p.variants}});
+  for (const PlannedPass& p : plan.passes)
+    passes.push_back({{"name", p.name}, {"why", p.why}, {"variants", p.variants}});
   nlohmann::json j = {{"passes", passes},
                       {"aperture_samples", plan.apertureSamples},
                       {"aperture_samples_why", plan.samplesWhy},
@@ -70,8 +77,12 @@ nlohmann::json planJson(const FramePlan& plan) {
     const VisibleBlurSummary& v = *plan.visible;
     j["visible_blur"] = {
         {"prepass_size", {v.prepass.widthPx, v.prepass.heightPx}},
-        {"fraction_of_pixels", {{"coc_le_1px", v.fractions[0]}, {"coc_1_to_4px", v.fractions[1]}, {"coc_4_to_16px", v.fractions[2]},
-                                {"coc_16_to_64px", v.fractions[3]}, {"coc_over_64px", v.fractions[4]}}},
+        {"fraction_of_pixels",
+         {{"coc_le_1px", v.fractions[0]},
+          {"coc_1_to_4px", v.fractions[1]},
+          {"coc_4_to_16px", v.fractions[2]},
+          {"coc_16_to_64px", v.fractions[3]},
+          {"coc_over_64px", v.fractions[4]}}},
         {"coc_px_percentiles", {{"p50", v.p50Px}, {"p90", v.p90Px}, {"p99", v.p99Px}, {"max", v.maxPx}}},
         {"bounds_coc_max_px", v.boundsCocMaxPx},
         {"bounds_aperture_samples", v.boundsSamples}};
@@ -94,9 +105,14 @@ std::string toJson(const RunStats& s) {
   j["display"] = displayJson(s);
   if (s.environment) {
     const EnvironmentSummary& e = *s.environment;
-    j["environment"] = {{"file", e.file}, {"intensity", e.intensity}, {"rotation_deg", e.rotationDegrees},
-                        {"width", e.widthPx}, {"height", e.heightPx}, {"specular_levels", e.specularLevels},
-                        {"from_cache", e.fromCache}, {"load_seconds", e.seconds}};
+    j["environment"] = {{"file", e.file},
+                        {"intensity", e.intensity},
+                        {"rotation_deg", e.rotationDegrees},
+                        {"width", e.widthPx},
+                        {"height", e.heightPx},
+                        {"specular_levels", e.specularLevels},
+                        {"from_cache", e.fromCache},
+                        {"load_seconds", e.seconds}};
   }
   j["width"] = s.size.widthPx;
   j["height"] = s.size.heightPx;
@@ -112,10 +128,13 @@ std::string toJson(const RunStats& s) {
   j["plan"] = planJson(s.plan);
   if (s.estimate) {
     const FrameEstimate& e = *s.estimate;
-    j["estimate"] = {{"psnr", e.psnrDb}, {"rmse", e.rmse}, {"target_met", e.targetMet},
+    j["estimate"] = {{"psnr", e.psnrDb},
+                     {"rmse", e.rmse},
+                     {"target_met", e.targetMet},
                      {"against", "the image's own converged limit (two independent sample streams)"}};
-    j["samples"] = {{"min", e.minSamples}, {"mean", e.meanSamples}, {"max", e.maxSamples}, {"tiles", e.tiles}, {"rounds", e.rounds},
-                    {"allocation", e.wholeFrame ? "uniform" : "per tile"}};
+    j["samples"] = {{"min", e.minSamples}, {"mean", e.meanSamples},
+                    {"max", e.maxSamples}, {"tiles", e.tiles},
+                    {"rounds", e.rounds},  {"allocation", e.wholeFrame ? "uniform" : "per tile"}};
   }
   return j.dump(2) + "\n";
 }

@@ -24,19 +24,19 @@ struct RunStats {
   std::string renderer;
   std::size_t triangles = 0;
   FramePlan plan;
-  double seconds = 0.0;          // the whole command, from start to the image written
-  double contextSeconds = 0.0;   // creating the GL context
-  double setupSeconds = 0.0;     // uploading the scene and compiling shaders
-  double renderSeconds = 0.0;    // the frame, GPU work finished (glFinish), with read-back
-  double writeSeconds = 0.0;     // encoding and writing the image
-  double prepassSeconds = 0.0;   // the pinhole depth pre-pass and its blur map (part of renderSeconds)
+  double seconds = 0.0;                   // the whole command, from start to the image written
+  double contextSeconds = 0.0;            // creating the GL context
+  double setupSeconds = 0.0;              // uploading the scene and compiling shaders
+  double renderSeconds = 0.0;             // the frame, GPU work finished (glFinish), with read-back
+  double writeSeconds = 0.0;              // encoding and writing the image
+  double prepassSeconds = 0.0;            // the pinhole depth pre-pass and its blur map (part of renderSeconds)
   std::optional<FrameEstimate> estimate;  // with --target-psnr
   // The lens as rendered (after --focus-distance / --focus-at): "lens" in the JSON.
-  double focusDistance = 0.0;             // from the PRP along the view direction; +infinity allowed
-  double apertureRadius = 0.0;            // world units; 0 = a pinhole
-  ApertureShape aperture;                 // its shape (lens/ApertureShape.h)
-  LensBarrel barrel;                      // the barrel in front of it (lens/LensBarrel.h)
-  std::optional<PhysicalCamera> physical; // focal length, f-number, sensor, eye, target when there is one
+  double focusDistance = 0.0;              // from the PRP along the view direction; +infinity allowed
+  double apertureRadius = 0.0;             // world units; 0 = a pinhole
+  ApertureShape aperture;                  // its shape (lens/ApertureShape.h)
+  LensBarrel barrel;                       // the barrel in front of it (lens/LensBarrel.h)
+  std::optional<PhysicalCamera> physical;  // focal length, f-number, sensor, eye, target when there is one
   // How PNG output shows the radiance (app/ExposureOptions.h): "display" in the JSON.
   Exposure exposure;
   ViewTransform viewTransform = ViewTransform::None;

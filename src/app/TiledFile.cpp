@@ -15,7 +15,8 @@
 
 namespace lenslab {
 
-TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& plan, const std::filesystem::path& out, int tileSizePx) {
+TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& plan, const std::filesystem::path& out,
+                      int tileSizePx) {
   TileMemory memory;
   std::string extension = out.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -23,9 +24,9 @@ TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& pla
   return planTiles(camera, size, plan, queryRenderTargetLimits(), tileSizePx, &memory);
 }
 
-void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, const TilePlan& tiles,
-                       OutputSet& outputs, const std::filesystem::path& out, const DisplayEncoding& display, RunStats& stats,
-                       ProgressReporter& progress) {
+void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size,
+                       const TilePlan& tiles, OutputSet& outputs, const std::filesystem::path& out,
+                       const DisplayEncoding& display, RunStats& stats, ProgressReporter& progress) {
 #ifdef __GLIBC__
   // The tiles' buffers (tables, targets, read-backs) are 5 to 30 MB each and differ a little in
   // size from tile to tile; glibc's dynamic mmap threshold would put them on the heap after the
@@ -43,23 +44,26 @@ void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan
   // None for a silent reporter (--quiet): the lens tables are then built in one parallel pass.
   TileProgress tileProgress;
   if (progress.style() != ProgressReporter::Style::Silent)
-    tileProgress = [&](std::int64_t done, std::int64_t total, const std::string& note) { progress.update(done, total, note); };
-  renderTiles(renderer, camera, plan, size, tiles,
-              [&](const PixelRect& rect, const Image& pixels) {
-                // Said at every tile: the writer takes it, and one that completes a strip of rows
-                // has it written now (seconds for a large PNG).
-                progress.setDetail(writing);
-                const auto w = std::chrono::steady_clock::now();
-                if (display.isIdentity()) {
-                  writer.add(rect.x0, rect.y0, pixels);
-                } else {
-                  Image shown = pixels;
-                  applyDisplayForFile(out, shown, display);
-                  writer.add(rect.x0, rect.y0, shown);
-                }
-                writeSeconds += secondsSince(w);
-              },
-              tileProgress);
+    tileProgress = [&](std::int64_t done, std::int64_t total, const std::string& note) {
+      progress.update(done, total, note);
+    };
+  renderTiles(
+      renderer, camera, plan, size, tiles,
+      [&](const PixelRect& rect, const Image& pixels) {
+        // Said at every tile: the writer takes it, and one that completes a strip of rows
+        // has it written now (seconds for a large PNG).
+        progress.setDetail(writing);
+        const auto w = std::chrono::steady_clock::now();
+        if (display.isIdentity()) {
+          writer.add(rect.x0, rect.y0, pixels);
+        } else {
+          Image shown = pixels;
+          applyDisplayForFile(out, shown, display);
+          writer.add(rect.x0, rect.y0, shown);
+        }
+        writeSeconds += secondsSince(w);
+      },
+      tileProgress);
   const auto w = std::chrono::steady_clock::now();
   writer.finish();
   stats.writeSeconds = writeSeconds + secondsSince(w);

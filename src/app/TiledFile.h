@@ -20,12 +20,13 @@ class OutputSet;
 // The tile plan for writing `out`: a frame whose render would hold more than a tile's budget is
 // tiled, and a tile row is no taller than the writer's strip budget allows (which depends on the
 // file's format). `tileSizePx` 0: tile only when it must.
-TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& plan, const std::filesystem::path& out, int tileSizePx);
+TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& plan, const std::filesystem::path& out,
+                      int tileSizePx);
 
 // Renders `plan` in `tiles` and writes them to `out`'s temporary file in `outputs`, each through
 // `display`. Sets stats' render and write times and adds the "tiles" pass to stats.plan.
-void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, const TilePlan& tiles,
-                       OutputSet& outputs, const std::filesystem::path& out, const DisplayEncoding& display, RunStats& stats,
-                       ProgressReporter& progress);
+void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size,
+                       const TilePlan& tiles, OutputSet& outputs, const std::filesystem::path& out,
+                       const DisplayEncoding& display, RunStats& stats, ProgressReporter& progress);
 
 }  // namespace lenslab

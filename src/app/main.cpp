@@ -14,7 +14,8 @@ namespace {
 
 std::vector<std::string> commandNames(const CLI::App& app) {
   std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
   return names;
 }
 
@@ -86,12 +87,13 @@ int main(int argc, char** argv) {
   // Usage errors in one line, like every other error lenslab reports.
   app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
     if (dynamic_cast<const CLI::ExtrasError*>(&e))
-      if (const std::string message = unknownOptionMessage(*failed); !message.empty()) return "lenslab: error: " + message + "\n";
+      if (const std::string message = unknownOptionMessage(*failed); !message.empty())
+        return "lenslab: error: " + message + "\n";
     return std::string("lenslab: error: ") + e.what() + " (see --help)\n";
   });
-  std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app), lenslab::addRaycastCommand(app),
-                                                lenslab::addCaptureCommand(app),
-                                                lenslab::addSweepCommand(app), lenslab::addInfoCommand(app), lenslab::addLensCommand(app),
+  std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app),  lenslab::addRaycastCommand(app),
+                                                lenslab::addCaptureCommand(app), lenslab::addSweepCommand(app),
+                                                lenslab::addInfoCommand(app),    lenslab::addLensCommand(app),
                                                 lenslab::addViewCommand(app)};
   if (const std::string message = unknownCommandMessage(app, argc, argv); !message.empty()) {
     std::cerr << "lenslab: error: " << message << " (see --help)\n";

@@ -11,7 +11,9 @@ double framingDistance(double radius, double focalLength, double sensorSide) {
   // g(D) = r/√(D² − r²) − s(D − f)/(2fD) falls from +∞ (or a positive value at D = f) to
   // −s/(2f): one root, found by bisection between the bounds below (halving in log scale while
   // the interval spans decades, so that 1e-9 and 1e9 take the same effort).
-  const auto g = [&](double d) { return radius / std::sqrt((d - radius) * (d + radius)) - sensorSide * (d - focalLength) / (2.0 * focalLength * d); };
+  const auto g = [&](double d) {
+    return radius / std::sqrt((d - radius) * (d + radius)) - sensorSide * (d - focalLength) / (2.0 * focalLength * d);
+  };
   double lo = std::max(radius, focalLength);
   double hi = 2.0 * lo;
   while (g(hi) > 0.0) hi *= 2.0;
@@ -49,8 +51,8 @@ SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focal
     // have to be valid.
     c.nearDistance = std::max(distance - r, distance * 1e-4) * 0.5;
     const double magnification = f / (distance - f);
-    std::string source = cat("automatic framing: the scene's bounding sphere (radius ", radius, ") fills the frame's ", across,
-                             " at ", distance, ", ", lens, ", focused on its centre");
+    std::string source = cat("automatic framing: the scene's bounding sphere (radius ", radius, ") fills the frame's ",
+                             across, " at ", distance, ", ", lens, ", focused on its centre");
     if (magnification > 0.1) source += cat(" (a close-up at magnification ", magnification, ")");
     return {toCamera(c, source), c};
   }
@@ -71,9 +73,11 @@ SelectedCamera frameSphere(const glm::dvec3& center, double radius, double focal
   // about side / (2r); life size shows `side`, so a sensor no larger than the sphere is the cure.
   selected.camera = cameraFocusedOnViewPlane(
       spec, 0.0,
-      cat("automatic framing: the scene (bounding sphere radius ", radius, ") would need a ", lens, " lens at magnification ",
-          f / (distance - f), ", beyond life size (1), so a pinhole with that lens's field of view frames it (no focus, no blur); "
-          "a sensor no larger than the sphere (--sensor ", 2.0 * r / kMetresPerMillimetre, "x", 2.0 * r / kMetresPerMillimetre,
+      cat("automatic framing: the scene (bounding sphere radius ", radius, ") would need a ", lens,
+          " lens at magnification ", f / (distance - f),
+          ", beyond life size (1), so a pinhole with that lens's field of view frames it (no focus, no blur); "
+          "a sensor no larger than the sphere (--sensor ",
+          2.0 * r / kMetresPerMillimetre, "x", 2.0 * r / kMetresPerMillimetre,
           " or smaller) or --eye and --target give a lens"));
   return selected;
 }

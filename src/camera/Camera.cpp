@@ -18,7 +18,8 @@ Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std
   return c;
 }
 
-ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx, int defaultWidthPx) {
+ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx,
+                           int defaultWidthPx) {
   if (!camera.calibratedSize || (widthPx && heightPx))
     return resolveImageSize(camera.view.window, widthPx, heightPx, defaultWidthPx);
   // A calibrated camera's pixels need not be square (fx ≠ fy): scale its own size.
@@ -28,7 +29,8 @@ ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std
   return resolveImageSize(aspect, "the calibrated image's", widthPx, heightPx);
 }
 
-std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx, ImageSize size) {
+std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx,
+                              ImageSize size) {
   const bool widthGiven = widthPx.has_value(), heightGiven = heightPx.has_value();
   if (!camera.calibratedSize)
     return pixelShapeWarning(camera.view.window.width() / camera.view.window.height(), size, widthGiven, heightGiven);
@@ -39,8 +41,9 @@ std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, 
   // The pixel shape of `size` against that of the calibrated image: the same window, so the
   // stretch between them is the ratio of the two image aspects.
   return pixelShapeWarning(static_cast<double>(own.widthPx) / own.heightPx, size, widthGiven, heightGiven,
-                           std::abs(ownStretch) <= kSquarePixelTolerance ? std::string()
-                                                                         : cat("the calibrated ", own.widthPx, "x", own.heightPx, " image"));
+                           std::abs(ownStretch) <= kSquarePixelTolerance
+                               ? std::string()
+                               : cat("the calibrated ", own.widthPx, "x", own.heightPx, " image"));
 }
 
 double viewPlaneDistanceFor(double focusDistance, double nearDistance) {
@@ -52,7 +55,8 @@ double Camera::focusDistance() const {
   return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
 }
 
-ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset, double inverseFocusShift) {
+ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixelOffset,
+                         double inverseFocusShift) {
   ViewSpec v = camera.view;
   v.prp.x += lensOffset.x;
   v.prp.y += lensOffset.y;
@@ -78,10 +82,12 @@ ViewSpec viewThroughLens(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2
 }
 
 double cocDiameterOnWindow(const Camera& camera, double depth, double inverseFocusShift) {
-  const double r = camera.lens.apertureRadius * (camera.lens.aperture.isRound() ? 1.0 : apertureReach(camera.lens.aperture));
+  const double r =
+      camera.lens.apertureRadius * (camera.lens.aperture.isRound() ? 1.0 : apertureReach(camera.lens.aperture));
   const double d = camera.view.prp.z;
   // Parallel: the ray from lens offset s meets depth z at s·(1 − z/z_f) from where the pinhole's does.
-  if (camera.view.projection == Projection::Parallel) return 2.0 * r * std::abs(1.0 - depth * camera.inverseFocusDistance());
+  if (camera.view.projection == Projection::Parallel)
+    return 2.0 * r * std::abs(1.0 - depth * camera.inverseFocusDistance());
   return 2.0 * r * d * std::abs(camera.inverseFocusDistance() + inverseFocusShift - 1.0 / depth);
 }
 

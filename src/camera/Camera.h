@@ -29,7 +29,7 @@ struct Camera {
   // distance 1/z_f (0 at infinity) and the window travels by 1 − d/z_f of each lens offset (see
   // viewThroughLens), so a huge focus distance tends to infinity focus smoothly.
   std::optional<double> inverseFocusOffPlane;
-  std::string source;           // "assets/rows/camera.json", "glTF camera 0 (Main)", ...
+  std::string source;  // "assets/rows/camera.json", "glTF camera 0 (Main)", ...
   // The camera's file left near / far open: withDepthRangeFitted (camera/DepthRange.h) fits them
   // to the scene before rendering, so that the depth buffer's precision lands where the scene is.
   bool nearFromScene = false;
@@ -52,7 +52,8 @@ ImageSize resolveImageSize(const Camera& camera, std::optional<int> widthPx, std
 // The warning for `size` (resolveImageSize's answer to the sides given) when it stretches the
 // camera's pixels: out of square, or for a calibrated camera out of its calibrated shape
 // (pixelShapeWarning in camera/ImageSize.h); empty when they keep their shape.
-std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx, ImageSize size);
+std::string pixelShapeWarning(const Camera& camera, std::optional<int> widthPx, std::optional<int> heightPx,
+                              ImageSize size);
 
 // A camera whose plane of focus is its view plane.
 Camera cameraFocusedOnViewPlane(const ViewSpec& view, double apertureRadius, std::string source);

@@ -12,8 +12,10 @@ namespace {
 
 // The segment [k, k + 1] holding t, and where in it (0 … 1).
 std::pair<std::size_t, double> segmentAt(const std::vector<PathKey>& keys, double t) {
-  const auto after = std::upper_bound(keys.begin(), keys.end(), t, [](double v, const PathKey& k) { return v < k.timeSeconds; });
-  const std::size_t k = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(after - keys.begin() - 1, 0, static_cast<std::ptrdiff_t>(keys.size()) - 2));
+  const auto after =
+      std::upper_bound(keys.begin(), keys.end(), t, [](double v, const PathKey& k) { return v < k.timeSeconds; });
+  const std::size_t k = static_cast<std::size_t>(
+      std::clamp<std::ptrdiff_t>(after - keys.begin() - 1, 0, static_cast<std::ptrdiff_t>(keys.size()) - 2));
   const double u = (t - keys[k].timeSeconds) / (keys[k + 1].timeSeconds - keys[k].timeSeconds);
   return {k, std::clamp(u, 0.0, 1.0)};
 }
@@ -33,7 +35,8 @@ double lerpDistance(double a, double b, double u) {
 glm::dvec3 pointOr(const std::vector<glm::dvec3>& p, std::ptrdiff_t i) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.size());
   if (i < 0) return 2.0 * p[0] - p[std::min<std::ptrdiff_t>(1, n - 1)];
-  if (i >= n) return 2.0 * p[static_cast<std::size_t>(n - 1)] - p[static_cast<std::size_t>(std::max<std::ptrdiff_t>(n - 2, 0))];
+  if (i >= n)
+    return 2.0 * p[static_cast<std::size_t>(n - 1)] - p[static_cast<std::size_t>(std::max<std::ptrdiff_t>(n - 2, 0))];
   return p[static_cast<std::size_t>(i)];
 }
 
@@ -67,10 +70,15 @@ void validateFrames(const CameraPath& path, std::string_view where) {
     const double distance = glm::length(c.target - c.eye);
     const double scale = std::max({glm::length(c.eye), glm::length(c.target), 1.0});
     if (!(distance > 1e-9 * scale))
-      throw InputError(cat(at, ": eye meets target (the path's eye passes through its target there); move the keys' eye or target apart"));
-    if (!(glm::length(c.up) > 0.0) || glm::length(glm::cross(glm::normalize(c.up), (c.target - c.eye) / distance)) < 1e-9)
-      throw InputError(cat(at, ": up is parallel to the view direction (or the keys' ups turn by 180° and cancel); add a key "
-                               "between them or give an up across the view"));
+      throw InputError(cat(
+          at,
+          ": eye meets target (the path's eye passes through its target there); move the keys' eye or target apart"));
+    if (!(glm::length(c.up) > 0.0) ||
+        glm::length(glm::cross(glm::normalize(c.up), (c.target - c.eye) / distance)) < 1e-9)
+      throw InputError(
+          cat(at,
+              ": up is parallel to the view direction (or the keys' ups turn by 180° and cancel); add a key "
+              "between them or give an up across the view"));
     validate(c, at);
   }
 }
@@ -90,16 +98,20 @@ int CameraPath::frameCount() const {
 }
 
 void validate(const CameraPath& path, std::string_view where) {
-  if (!(path.fps > 0.0) || !std::isfinite(path.fps)) throw InputError(cat(where, ": fps ", path.fps, " must be a positive number of frames per second"));
-  if (path.keys.empty()) throw InputError(cat(where, ": keys: give at least one key ({\"time\": 0, <a camera in the physical form>})"));
+  if (!(path.fps > 0.0) || !std::isfinite(path.fps))
+    throw InputError(cat(where, ": fps ", path.fps, " must be a positive number of frames per second"));
+  if (path.keys.empty())
+    throw InputError(cat(where, ": keys: give at least one key ({\"time\": 0, <a camera in the physical form>})"));
   for (std::size_t i = 0; i < path.keys.size(); ++i) {
     const double t = path.keys[i].timeSeconds;
-    if (!std::isfinite(t) || t < 0.0) throw InputError(cat(where, ": keys[", i, "].time ", t, " must be a finite time in seconds, 0 or more"));
+    if (!std::isfinite(t) || t < 0.0)
+      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be a finite time in seconds, 0 or more"));
     if (i > 0 && !(t > path.keys[i - 1].timeSeconds))
-      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be later than keys[", i - 1, "].time ", path.keys[i - 1].timeSeconds,
-                           " (keys in order, no time twice)"));
+      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be later than keys[", i - 1, "].time ",
+                           path.keys[i - 1].timeSeconds, " (keys in order, no time twice)"));
     if (std::isinf(path.keys[i].camera.fNumber) != std::isinf(path.keys[0].camera.fNumber))
-      throw InputError(cat(where, ": keys[", i, "].f_number: a pinhole (no f_number) and a lens cannot be interpolated in stops; "
+      throw InputError(cat(where, ": keys[", i,
+                           "].f_number: a pinhole (no f_number) and a lens cannot be interpolated in stops; "
                            "give every key an f_number, or none"));
     validate(path.keys[i].camera, cat(where, ": keys[", i, "]"));
   }
@@ -112,7 +124,9 @@ glm::dvec3 centripetalCatmullRom(const glm::dvec3& p0, const glm::dvec3& p1, con
                                  double u) {
   // Barry–Goldman's pyramid with knots spaced by √|p_i+1 − p_i|. Coincident points get a tiny
   // spacing, which leaves the segment its straight line.
-  const auto spacing = [](const glm::dvec3& a, const glm::dvec3& b) { return std::max(std::sqrt(glm::length(b - a)), 1e-12); };
+  const auto spacing = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return std::max(std::sqrt(glm::length(b - a)), 1e-12);
+  };
   const double t0 = 0.0, t1 = t0 + spacing(p0, p1), t2 = t1 + spacing(p1, p2), t3 = t2 + spacing(p2, p3);
   if (glm::length(p2 - p1) == 0.0) return p1;
   const double t = lerp(t1, t2, u);
@@ -150,7 +164,8 @@ double monotoneCubic(const std::vector<double>& x, const std::vector<double>& y,
   }
   const std::size_t k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin()) - 1;
   const double h = x[k + 1] - x[k], u = (at - x[k]) / h;
-  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+               h11 = u * u * (u - 1);
   return h00 * y[k] + h10 * h * m[k] + h01 * y[k + 1] + h11 * h * m[k + 1];
 }
 
@@ -187,10 +202,12 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   // Up: interpolated, then the part along the view direction removed (a camera rolls only as the
   // keys say).
   c.up = orthonormalUp(c, lerp(orthonormalUp(a, a.up), orthonormalUp(b, b.up), u));
-  const double inverse = smooth ? monotoneCubic(times, inverseFocus, timeSeconds) : lerp(inverseFocus[k], inverseFocus[k + 1], u);
+  const double inverse =
+      smooth ? monotoneCubic(times, inverseFocus, timeSeconds) : lerp(inverseFocus[k], inverseFocus[k + 1], u);
   c.focusDistance = inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
-  c.fNumber = std::isinf(a.fNumber) ? a.fNumber
-              : std::exp2(smooth ? monotoneCubic(times, stops, timeSeconds) : lerp(stops[k], stops[k + 1], u));
+  c.fNumber = std::isinf(a.fNumber)
+                  ? a.fNumber
+                  : std::exp2(smooth ? monotoneCubic(times, stops, timeSeconds) : lerp(stops[k], stops[k + 1], u));
   c.focalLengthMm = lerp(a.focalLengthMm, b.focalLengthMm, u);
   c.sensorMm = glm::dvec2(lerp(a.sensorMm.x, b.sensorMm.x, u), lerp(a.sensorMm.y, b.sensorMm.y, u));
   c.nearDistance = lerp(a.nearDistance, b.nearDistance, u);

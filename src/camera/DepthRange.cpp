@@ -34,13 +34,15 @@ Camera withDepthRangeFitted(const Camera& camera, const Bounds& bounds) {
   // scene is drawn nowhere (a given near of 1e-100 before a scene 5 away rendered only the sky).
   if (!camera.nearFromScene && d.farthest > 0.0 && v.nearDistance < 1e-30 * d.farthest)
     throw InputError(cat(camera.source, ": near is ", v.nearDistance, " with the scene reaching ", d.farthest,
-                         " away; depth keeps 1e-30 of that at most: give near >= ", 1e-30 * d.farthest, " or leave it out"));
+                         " away; depth keeps 1e-30 of that at most: give near >= ", 1e-30 * d.farthest,
+                         " or leave it out"));
   if (!(camera.nearFromScene || camera.farFromScene)) return c;
   // A margin of 1 % of the depth range, and at least 1e-6 of the distance and of the scene's size:
   // a scene with no depth (a plane facing the camera) still gets a range wider than the float
   // rounding (~6e-8 of the coordinates) of the depths its vertices are drawn at.
-  const double margin = std::max({0.01 * (d.farthest - d.nearest), 1e-6 * std::max(std::abs(d.nearest), std::abs(d.farthest)),
-                                  1e-6 * glm::length(bounds.size())});
+  const double margin =
+      std::max({0.01 * (d.farthest - d.nearest), 1e-6 * std::max(std::abs(d.nearest), std::abs(d.farthest)),
+                1e-6 * glm::length(bounds.size())});
   // An open near is also kept above 1e-6 of the scene's depth: clipping works in float, and a
   // surface that passes beside the camera clips at a w whose rounding (~6e-8 of the coordinates)
   // must stay below near, or the clipped vertex projects anywhere (PRP n = 1e-7 with the default
@@ -54,7 +56,8 @@ Camera withDepthRangeFitted(const Camera& camera, const Bounds& bounds) {
     const double inside = std::min(v.nearDistance, 1e-3 * glm::length(bounds.size()));
     v.nearDistance = std::max(d.nearest - margin > 0.0 ? d.nearest - margin : inside, clipFloor);
   }
-  if (camera.farFromScene && d.farthest + margin > v.nearDistance) v.farDistance = std::min(v.farDistance, d.farthest + margin);
+  if (camera.farFromScene && d.farthest + margin > v.nearDistance)
+    v.farDistance = std::min(v.farDistance, d.farthest + margin);
   return c;
 }
 

@@ -24,7 +24,8 @@ Exposure resolveExposure(const ExposureRequest& r, const SelectedCamera& selecte
   Exposure e;
   if (r.stops) {
     if (r.shutterSeconds || r.iso)
-      throw InputError(cat("--exposure sets the exposure in stops; --shutter and --iso set it physically: give one or the other"));
+      throw InputError(
+          cat("--exposure sets the exposure in stops; --shutter and --iso set it physically: give one or the other"));
     e.stops = checkedNumber("--exposure", *r.stops, kExposureStopsRange);
     e.scale = exposureScaleForStops(e.stops);
     e.source = "--exposure";
@@ -37,14 +38,16 @@ Exposure resolveExposure(const ExposureRequest& r, const SelectedCamera& selecte
   const char* isoName = r.iso ? "--iso" : "iso";
   if (!shutter && !iso) return e;
   if (!shutter)
-    throw InputError(cat(isoName, ": an ISO exposes the image only with a shutter time: give --shutter SECONDS (or the camera "
-                                  "file's shutter_s) too, or --exposure EV"));
+    throw InputError(cat(isoName,
+                         ": an ISO exposes the image only with a shutter time: give --shutter SECONDS (or the camera "
+                         "file's shutter_s) too, or --exposure EV"));
   checkedNumber(shutterName, *shutter, kShutterSecondsRange);
   if (iso) checkedNumber(isoName, *iso, kIsoRange);
   if (!p || !std::isfinite(p->fNumber))
-    throw InputError(cat(shutterName, ": a physical exposure needs the lens's f-number, and ", selected.camera.source,
-                         p ? " is a pinhole" : " is not in the physical form",
-                         ": give --f-number N (with --focal-length for a lecture or OpenCV camera), or --exposure EV instead"));
+    throw InputError(
+        cat(shutterName, ": a physical exposure needs the lens's f-number, and ", selected.camera.source,
+            p ? " is a pinhole" : " is not in the physical form",
+            ": give --f-number N (with --focal-length for a lecture or OpenCV camera), or --exposure EV instead"));
   e.shutterSeconds = shutter;
   e.iso = iso.value_or(100.0);
   e.fNumber = p->fNumber;
@@ -61,9 +64,12 @@ std::string describe(const Exposure& e) {
     // Shutter times under a second as photographers write them: 1/125 s.
     const double t = *e.shutterSeconds;
     char shutter[40];
-    if (t < 1.0) std::snprintf(shutter, sizeof shutter, "1/%.4g s", 1.0 / t);
-    else std::snprintf(shutter, sizeof shutter, "%.4g s", t);
-    std::snprintf(text, sizeof text, "f/%.3g, %s, ISO %.6g: EV100 %.3g, scale %.3g", *e.fNumber, shutter, *e.iso, *e.ev100, e.scale);
+    if (t < 1.0)
+      std::snprintf(shutter, sizeof shutter, "1/%.4g s", 1.0 / t);
+    else
+      std::snprintf(shutter, sizeof shutter, "%.4g s", t);
+    std::snprintf(text, sizeof text, "f/%.3g, %s, ISO %.6g: EV100 %.3g, scale %.3g", *e.fNumber, shutter, *e.iso,
+                  *e.ev100, e.scale);
   } else {
     std::snprintf(text, sizeof text, "%+.3g EV%s", e.stops, e.source == "--exposure" ? " (--exposure)" : "");
   }

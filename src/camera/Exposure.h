@@ -44,11 +44,11 @@ struct ExposureRequest {
 
 // The exposure a run applies to its PNG and its display, and where it came from.
 struct Exposure {
-  double scale = 1.0;            // linear values are multiplied by it
-  double stops = 0.0;            // log2(scale)
-  std::optional<double> ev100;   // when set physically
+  double scale = 1.0;                                  // linear values are multiplied by it
+  double stops = 0.0;                                  // log2(scale)
+  std::optional<double> ev100;                         // when set physically
   std::optional<double> shutterSeconds, iso, fNumber;  // the physical settings used
-  std::string source = "none";   // "none", "--exposure", or "physical"
+  std::string source = "none";                         // "none", "--exposure", or "physical"
 };
 
 // Which exposure applies, in this order: --exposure (stops) wins over the camera's physical

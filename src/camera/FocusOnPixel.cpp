@@ -8,8 +8,8 @@
 
 namespace lenslab {
 
-SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm::dvec2 pixel, const DepthAtPixel& depthAt,
-                            const std::string& asked) {
+SelectedCamera focusOnPixel(const SelectedCamera& selected, ImageSize size, glm::dvec2 pixel,
+                            const DepthAtPixel& depthAt, const std::string& asked) {
   const Camera& camera = selected.camera;
   const int x = static_cast<int>(std::floor(pixel.x)), y = static_cast<int>(std::floor(pixel.y));
   if (x < 0 || y < 0 || x >= size.widthPx || y >= size.heightPx)

@@ -20,9 +20,8 @@ ViewSpec placed(const glm::dmat4& worldFromCamera, double focusDistance) {
 
 }  // namespace
 
-ViewSpec viewSpecFromGltfPerspective(const glm::dmat4& worldFromCamera, double yfovRadians,
-                                     double aspectRatio, double znear, double zfar,
-                                     double focusDistance) {
+ViewSpec viewSpecFromGltfPerspective(const glm::dmat4& worldFromCamera, double yfovRadians, double aspectRatio,
+                                     double znear, double zfar, double focusDistance) {
   ViewSpec spec = placed(worldFromCamera, focusDistance);
   spec.projection = Projection::Perspective;
   const double halfHeight = focusDistance * std::tan(0.5 * yfovRadians);
@@ -33,8 +32,8 @@ ViewSpec viewSpecFromGltfPerspective(const glm::dmat4& worldFromCamera, double y
   return spec;
 }
 
-ViewSpec viewSpecFromGltfOrthographic(const glm::dmat4& worldFromCamera, double xmag, double ymag,
-                                      double znear, double zfar, double focusDistance) {
+ViewSpec viewSpecFromGltfOrthographic(const glm::dmat4& worldFromCamera, double xmag, double ymag, double znear,
+                                      double zfar, double focusDistance) {
   ViewSpec spec = placed(worldFromCamera, focusDistance);
   spec.projection = Projection::Parallel;
   spec.window = {-xmag, -ymag, xmag, ymag};

@@ -9,12 +9,11 @@
 namespace lenslab {
 
 // Perspective: window half-height = focusDistance·tan(yfov/2), half-width = aspect × that.
-ViewSpec viewSpecFromGltfPerspective(const glm::dmat4& worldFromCamera, double yfovRadians,
-                                     double aspectRatio, double znear, double zfar,
-                                     double focusDistance);
+ViewSpec viewSpecFromGltfPerspective(const glm::dmat4& worldFromCamera, double yfovRadians, double aspectRatio,
+                                     double znear, double zfar, double focusDistance);
 
 // Orthographic: window [−xmag, xmag] × [−ymag, ymag], DOP = −n (PRP over the window centre).
-ViewSpec viewSpecFromGltfOrthographic(const glm::dmat4& worldFromCamera, double xmag, double ymag,
-                                      double znear, double zfar, double focusDistance);
+ViewSpec viewSpecFromGltfOrthographic(const glm::dmat4& worldFromCamera, double xmag, double ymag, double znear,
+                                      double zfar, double focusDistance);
 
 }  // namespace lenslab

@@ -27,7 +27,8 @@ Camera withoutEffects(Camera camera) {
 
 }  // namespace
 
-ThinLensMap::ThinLensMap(const Camera& camera, ImageSize size) : ThinLensMap(camera, size, Overscan{camera, size, {0, 0}}) {}
+ThinLensMap::ThinLensMap(const Camera& camera, ImageSize size)
+    : ThinLensMap(camera, size, Overscan{camera, size, {0, 0}}) {}
 
 ThinLensMap::ThinLensMap(const Camera& camera, ImageSize size, Overscan overscan)
     : ImageMap(camera, size),
@@ -37,7 +38,9 @@ ThinLensMap::ThinLensMap(const Camera& camera, ImageSize size, Overscan overscan
       // Three rays per sample when the channels differ (lateral or axial colour), else one for all.
       rayChannels_(camera.lens.effects.chromatic.hasLateral() || camera.lens.effects.chromatic.hasAxial() ? 3 : 1) {}
 
-ThinLensMap ThinLensMap::truePerspective(const Camera& camera, ImageSize size) { return ThinLensMap(withoutEffects(camera), size); }
+ThinLensMap ThinLensMap::truePerspective(const Camera& camera, ImageSize size) {
+  return ThinLensMap(withoutEffects(camera), size);
+}
 
 glm::dvec2 ThinLensMap::windowFromPixel(glm::dvec2 pixel) const {
   return lenslab::windowFromPixel(camera_.view.window, pixel, size_.widthPx, size_.heightPx);
@@ -47,7 +50,9 @@ glm::dvec2 ThinLensMap::pixelFromWindow(glm::dvec2 uv) const {
   return lenslab::pixelFromWindow(camera_.view.window, uv, size_.widthPx, size_.heightPx);
 }
 
-glm::dvec2 ThinLensMap::normalisedFromPixel(glm::dvec2 pixel) const { return normalisedFromWindow(camera_.view, windowFromPixel(pixel)); }
+glm::dvec2 ThinLensMap::normalisedFromPixel(glm::dvec2 pixel) const {
+  return normalisedFromWindow(camera_.view, windowFromPixel(pixel));
+}
 
 glm::dvec2 ThinLensMap::pixelFromNormalised(glm::dvec2 normalised) const {
   return pixelFromWindow(windowFromNormalised(camera_.view, normalised));
@@ -59,9 +64,10 @@ glm::dvec2 ThinLensMap::undistortNormalised(Channel c, glm::dvec2 distorted, glm
     // The inverse follows the branch that contains the centre (continuation, LensEffects.cpp), so it
     // fails only where that branch folds; validateLensEffects refuses folds inside the image, so
     // this is a point the lens cannot show.
-    throw InputError(cat(camera_.source, ": distortion: no true position on the lens's branch lands at normalised (",
-                         distorted.x, ", ", distorted.y,
-                         ") (the distortion folds before it); use weaker distortion coefficients or a narrower field of view"));
+    throw InputError(
+        cat(camera_.source, ": distortion: no true position on the lens's branch lands at normalised (", distorted.x,
+            ", ", distorted.y,
+            ") (the distortion folds before it); use weaker distortion coefficients or a narrower field of view"));
   }
   return *undistorted;
 }
@@ -69,7 +75,8 @@ glm::dvec2 ThinLensMap::undistortNormalised(Channel c, glm::dvec2 distorted, glm
 ChannelSample ThinLensMap::undistorted(Channel c, glm::dvec2 pixel, std::optional<glm::dvec2> guess) const {
   const glm::dvec2 distorted = normalisedFromPixel(pixel);
   ChannelSample s;
-  s.normalised = camera_.lens.effects.needsRemap() ? undistortNormalised(c, distorted, guess.value_or(distorted)) : distorted;
+  s.normalised =
+      camera_.lens.effects.needsRemap() ? undistortNormalised(c, distorted, guess.value_or(distorted)) : distorted;
   s.pixel = pixelFromNormalised(s.normalised);
   s.inverseFocusShift = camera_.lens.effects.inverseFocusShift(c, s.normalised);
   return s;
@@ -90,8 +97,8 @@ glm::dvec2 ThinLensMap::renderPixelFromOutput(glm::dvec2 pixel) const {
 
 glm::dvec2 ThinLensMap::outputFromRenderPixel(glm::dvec2 renderPixel) const {
   const Overscan& o = overscan_;
-  const glm::dvec2 n = normalisedFromWindow(o.camera.view, lenslab::windowFromPixel(o.camera.view.window, renderPixel, o.size.widthPx,
-                                                                                    o.size.heightPx));
+  const glm::dvec2 n = normalisedFromWindow(
+      o.camera.view, lenslab::windowFromPixel(o.camera.view.window, renderPixel, o.size.widthPx, o.size.heightPx));
   return pixelFromNormalised(camera_.lens.effects.distortChannel(Channel::Green, n));
 }
 
@@ -113,7 +120,8 @@ glm::dvec2 ThinLensMap::normalisedAtRenderCorner() const {
 
 glm::dvec2 ThinLensMap::normalisedPerRenderPixel() const {
   const Window& w = overscan_.camera.view.window;
-  return glm::dvec2(w.width() / overscan_.size.widthPx, w.height() / overscan_.size.heightPx) / overscan_.camera.view.prp.z;
+  return glm::dvec2(w.width() / overscan_.size.widthPx, w.height() / overscan_.size.heightPx) /
+         overscan_.camera.view.prp.z;
 }
 
 double ThinLensMap::gainAt(glm::dvec2 pixel) const {
@@ -134,7 +142,8 @@ const ThinLensMap& RealLensMap::fitted() const {
   return *fitted_;
 }
 
-std::optional<CameraRay> RealLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* /*near*/) const {
+std::optional<CameraRay> RealLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                                          const CameraRay* /*near*/) const {
   const std::optional<LensCamera::WorldRay> w = lens_.ray(pixel, size_.widthPx, size_.heightPx, lens, channel);
   if (!w) return std::nullopt;  // stopped by a rim or the stop
   CameraRay r;
@@ -147,7 +156,8 @@ std::optional<CameraRay> RealLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int
 }
 
 Ray RealLensMap::footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const {
-  const std::optional<LensCamera::WorldRay> n = lens_.ray(r.pixel + offsetPx, size_.widthPx, size_.heightPx, r.lensPoint, r.channel);
+  const std::optional<LensCamera::WorldRay> n =
+      lens_.ray(r.pixel + offsetPx, size_.widthPx, size_.heightPx, r.lensPoint, r.channel);
   // A neighbour the lens stops: no footprint that way.
   return n ? Ray{n->origin, n->direction, 0.0, std::numeric_limits<double>::infinity()} : r.ray;
 }

@@ -36,7 +36,7 @@ namespace lenslab {
 // right, top = bottom); a tile's overscan (plan/TilePlan.h) may be cut short where the full image's
 // ends, so in general `padPx` is where the image's pixel (0, 0) corner sits in the render (left, top).
 struct Overscan {
-  Camera camera;     // lens effects still attached (the raster path needs the axial/curvature parts)
+  Camera camera;  // lens effects still attached (the raster path needs the axial/curvature parts)
   ImageSize size;
   glm::ivec2 padPx{0, 0};
 };
@@ -59,9 +59,9 @@ using RowProgress = std::function<void(int rowsDone, int rows)>;
 // lens and size where it is not). Everything in GL orientation (x right, y up, origin at the
 // bottom-left corner), output positions in output pixels.
 struct ForwardTable {
-  ImageSize size;                    // the overscan render's
-  std::vector<glm::vec4> position;   // per texel, GL row order: distorted x, y; |det J|; 0
-  std::vector<glm::vec4> jacobian;   // per texel: ∂position/∂x (x, y), ∂position/∂y (z, w)
+  ImageSize size;                   // the overscan render's
+  std::vector<glm::vec4> position;  // per texel, GL row order: distorted x, y; |det J|; 0
+  std::vector<glm::vec4> jacobian;  // per texel: ∂position/∂x (x, y), ∂position/∂y (z, w)
   // How far (view pixels, per axis) from the pre-image of an output pixel's centre a texel centre
   // can be and still have a jittered sample land in that pixel: the largest half-extent of an
   // output pixel's pre-image, plus one pixel for the jitter and the texel centre.
@@ -80,15 +80,15 @@ struct ChannelSample {
 
 // One ray a map casts for one sample of one channel.
 struct CameraRay {
-  Ray ray;                       // world
-  double weight = 1.0;           // relative illumination (a real lens's pupil sample); 1 for a thin lens
-  bool blocked = false;          // the thin lens's barrel stops it: no light, and it counts as uncovered
-  glm::dvec2 pixel{0.0};         // the film point it leaves, in the map's own image (thin lens: the true
-                                 // perspective position; texture footprints are measured around it)
-  glm::dvec2 lensPoint{0.0};     // thin lens: the lens offset (u, v; world units); real lens: the pupil sample
-  int channel = 1;               // 0 red, 1 green, 2 blue
+  Ray ray;                    // world
+  double weight = 1.0;        // relative illumination (a real lens's pupil sample); 1 for a thin lens
+  bool blocked = false;       // the thin lens's barrel stops it: no light, and it counts as uncovered
+  glm::dvec2 pixel{0.0};      // the film point it leaves, in the map's own image (thin lens: the true
+                              // perspective position; texture footprints are measured around it)
+  glm::dvec2 lensPoint{0.0};  // thin lens: the lens offset (u, v; world units); real lens: the pupil sample
+  int channel = 1;            // 0 red, 1 green, 2 blue
   double inverseFocusShift = 0.0;
-  glm::dvec2 normalised{0.0};    // thin lens: the true perspective normalised position
+  glm::dvec2 normalised{0.0};  // thin lens: the true perspective normalised position
 };
 
 // How a map reads its lens samples: points of the unit disk (the thin lens's aperture, shaped by
@@ -114,7 +114,8 @@ class ImageMap {
   // sample `lens` (lensDomain()) for channel 0..2 (1 when rayChannels() is 1); nullopt where the
   // sample lies outside what the lens passes (a real lens's stop and rims): it brings no light and
   // does not count toward the pixel's coverage.
-  virtual std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near = nullptr) const = 0;
+  virtual std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                                       const CameraRay* near = nullptr) const = 0;
   // The same sample's ray from `offsetPx` over on the map's film (texture footprints: ray differentials).
   virtual Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const = 0;
   // What the pixel's light is multiplied by after the samples' mean (a thin lens's vignetting).
@@ -179,7 +180,8 @@ class ThinLensMap final : public ImageMap {
   LensDomain lensDomain() const override { return LensDomain::Disk; }
   int rayChannels() const override { return rayChannels_; }
   std::optional<CameraRay> start(glm::dvec2 pixel, int channel) const override;
-  std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near = nullptr) const override;
+  std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                               const CameraRay* near = nullptr) const override;
   // Inline: the ray caster's loop, compiled for this map (RayCaster::render), calls it for every
   // texture lookup's ray differentials.
   Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override {
@@ -216,13 +218,14 @@ class ThinLensMap final : public ImageMap {
   glm::dvec2 undistortNormalised(Channel c, glm::dvec2 distorted, glm::dvec2 guess) const;
 
   Overscan overscan_;
-  Camera rayCamera_;      // the camera the rays are built with: its lens effects applied by the map, per ray
+  Camera rayCamera_;        // the camera the rays are built with: its lens effects applied by the map, per ray
   bool movesRays_ = false;  // effects besides vignetting: each ray goes through the inverse lens model
   int rayChannels_ = 1;
 };
 
 // Inline, as footprintRay: the ray caster's loop calls it for every ray.
-inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near) const {
+inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                                                 const CameraRay* near) const {
   std::optional<CameraRay> out(std::in_place);  // built in place: this runs for every ray
   CameraRay& r = *out;
   r.channel = channel;
@@ -231,7 +234,8 @@ inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 le
   if (movesRays_) {
     // Exactly, per ray: the true perspective position that the inverse lens model gives for this
     // point of the distorted image, focused on that channel's (and that radius's) plane of focus.
-    const ChannelSample s = undistorted(static_cast<Channel>(channel), pixel, near ? std::optional(near->normalised) : std::nullopt);
+    const ChannelSample s =
+        undistorted(static_cast<Channel>(channel), pixel, near ? std::optional(near->normalised) : std::nullopt);
     r.pixel = s.pixel;
     r.normalised = s.normalised;
     r.inverseFocusShift = s.inverseFocusShift;
@@ -245,7 +249,8 @@ inline std::optional<CameraRay> ThinLensMap::ray(glm::dvec2 pixel, glm::dvec2 le
   if (rayCamera_.lens.hasBarrel()) {
     const glm::dvec2 w = lenslab::windowFromPixel(rayCamera_.view.window, r.pixel, size_.widthPx, size_.heightPx);
     const glm::dvec2 normalised = (w - glm::dvec2(rayCamera_.view.prp)) / rayCamera_.view.prp.z;
-    r.blocked = !throughBarrel(rayCamera_.lens.barrel, r.lensPoint, normalised, rayCamera_.inverseFocusDistance() + r.inverseFocusShift);
+    r.blocked = !throughBarrel(rayCamera_.lens.barrel, r.lensPoint, normalised,
+                               rayCamera_.inverseFocusDistance() + r.inverseFocusShift);
   }
   return out;
 }
@@ -264,7 +269,8 @@ class RealLensMap final : public ImageMap {
 
   LensDomain lensDomain() const override { return LensDomain::Square; }
   int rayChannels() const override { return lens_.dispersion() ? 3 : 1; }
-  std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* near = nullptr) const override;
+  std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                               const CameraRay* near = nullptr) const override;
   Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override;
 
  private:

@@ -11,8 +11,7 @@ namespace {
 
 int checked(const char* option, int value) {
   if (value < 1 || value > kMaxImageSidePx)
-    throw InputError(cat("--", option, " is ", value, "; give a whole number of pixels from 1 to ",
-                         kMaxImageSidePx));
+    throw InputError(cat("--", option, " is ", value, "; give a whole number of pixels from 1 to ", kMaxImageSidePx));
   return value;
 }
 
@@ -58,7 +57,8 @@ SquareSides squareSidesNear(double aspect, int given, bool byWidth, int reach) {
   SquareSides s;
   for (int d = 1; d <= reach && (!s.below || !s.above); ++d) {
     if (!s.below && given - d >= 1 && square(aspect, sizeFrom(aspect, given - d, byWidth))) s.below = given - d;
-    if (!s.above && given + d <= kMaxImageSidePx && square(aspect, sizeFrom(aspect, given + d, byWidth))) s.above = given + d;
+    if (!s.above && given + d <= kMaxImageSidePx && square(aspect, sizeFrom(aspect, given + d, byWidth)))
+      s.above = given + d;
   }
   return s;
 }
@@ -77,12 +77,15 @@ double pixelStretch(double aspect, ImageSize size) {
   return static_cast<double>(size.widthPx) / (static_cast<double>(size.heightPx) * aspect) - 1.0;
 }
 
-std::string pixelShapeWarning(double aspect, ImageSize size, bool widthGiven, bool heightGiven, const std::string& shapeOf) {
+std::string pixelShapeWarning(double aspect, ImageSize size, bool widthGiven, bool heightGiven,
+                              const std::string& shapeOf) {
   if (!(aspect > 0.0) || !std::isfinite(aspect) || square(aspect, size)) return {};
   const double stretch = pixelStretch(aspect, size);
   // A pixel's height over its width is 1 + stretch.
-  const std::string how = stretch > 0.0 ? cat(percent(stretch), " % taller") : cat(percent(1.0 / (1.0 + stretch) - 1.0), " % wider");
-  const std::string against = shapeOf.empty() ? (stretch > 0.0 ? " than wide" : " than tall") : cat(" than in ", shapeOf);
+  const std::string how =
+      stretch > 0.0 ? cat(percent(stretch), " % taller") : cat(percent(1.0 / (1.0 + stretch) - 1.0), " % wider");
+  const std::string against =
+      shapeOf.empty() ? (stretch > 0.0 ? " than wide" : " than tall") : cat(" than in ", shapeOf);
   char ratio[32];
   std::snprintf(ratio, sizeof ratio, "%.4g", aspect);
   std::string text = cat(size.widthPx, "x", size.heightPx, " makes pixels ", how, against,
@@ -94,17 +97,21 @@ std::string pixelShapeWarning(double aspect, ImageSize size, bool widthGiven, bo
   const auto option = [&](int side) {
     const ImageSize s = sizeFrom(aspect, side, byWidth);
     if (widthGiven && heightGiven) return cat("--width ", s.widthPx, " --height ", s.heightPx);
-    return byWidth ? cat("--width ", side, " (", s.heightPx, " high)") : cat("--height ", side, " (", s.widthPx, " wide)");
+    return byWidth ? cat("--width ", side, " (", s.heightPx, " high)")
+                   : cat("--height ", side, " (", s.widthPx, " wide)");
   };
-  if (near.below && near.above) text += cat("; ", option(*near.below), " or ", option(*near.above), keeps);
-  else if (near.below || near.above) text += cat("; ", option(near.below ? *near.below : *near.above), keeps);
+  if (near.below && near.above)
+    text += cat("; ", option(*near.below), " or ", option(*near.above), keeps);
+  else if (near.below || near.above)
+    text += cat("; ", option(near.below ? *near.below : *near.above), keeps);
   if (widthGiven && heightGiven) text += " (or give only --width or --height: the other side follows)";
   return text;
 }
 
 ImageSize resolveImageSize(double aspect, std::string_view aspectSource, std::optional<int> widthPx,
                            std::optional<int> heightPx, int defaultWidthPx) {
-  if (widthPx && heightPx) return checkedTotal({checked("width", *widthPx), checked("height", *heightPx)}, aspect, aspectSource);
+  if (widthPx && heightPx)
+    return checkedTotal({checked("width", *widthPx), checked("height", *heightPx)}, aspect, aspectSource);
   if (heightPx) {
     const int h = checked("height", *heightPx);
     return checkedTotal({derived(h * aspect, "--height", h, "width", aspect, aspectSource), h}, aspect, aspectSource);
@@ -114,14 +121,17 @@ ImageSize resolveImageSize(double aspect, std::string_view aspectSource, std::op
       !square(aspect, sizeFrom(aspect, w, true))) {
     // Nobody asked for this width: take the nearest that keeps pixels square.
     const SquareSides near = squareSidesNear(aspect, w, true, std::max(1, w / 10));
-    if (near.below && near.above) w = w - *near.below <= *near.above - w ? *near.below : *near.above;
-    else if (near.below || near.above) w = near.below ? *near.below : *near.above;
+    if (near.below && near.above)
+      w = w - *near.below <= *near.above - w ? *near.below : *near.above;
+    else if (near.below || near.above)
+      w = near.below ? *near.below : *near.above;
   }
   const char* option = widthPx ? "--width" : "the default --width";
   return checkedTotal({w, derived(w / aspect, option, w, "height", aspect, aspectSource)}, aspect, aspectSource);
 }
 
-ImageSize resolveImageSize(const Window& window, std::optional<int> widthPx, std::optional<int> heightPx, int defaultWidthPx) {
+ImageSize resolveImageSize(const Window& window, std::optional<int> widthPx, std::optional<int> heightPx,
+                           int defaultWidthPx) {
   return resolveImageSize(window.width() / window.height(), "the window's", widthPx, heightPx, defaultWidthPx);
 }
 

@@ -28,16 +28,16 @@ OpenCvIntrinsics intrinsicsOf(const ViewSpec& view, ImageSize size);
 // right (u), y down (−v) and z forward (−n, the optical axis), its origin the PRP. With K from
 // intrinsicsOf, (x/z·fx + cx, y/z·fy + cy) is OpenCV's pixel of X: lenslab's pixel minus ½.
 struct OpenCvPose {
-  RotationRows rows;               // R, row by row
-  glm::dvec3 translation{0.0};     // t
+  RotationRows rows;            // R, row by row
+  glm::dvec3 translation{0.0};  // t
 };
 OpenCvPose poseOf(const ViewSpec& view);
 
 // Where a pinhole stands and looks, in the lecture's terms.
 struct PinholePlacement {
-  glm::dvec3 eye{0.0};               // the PRP (the pinhole), world
-  glm::dvec3 vpn{0.0, 0.0, 1.0};     // toward the viewer: the camera looks along −VPN
-  glm::dvec3 vup{0.0, 1.0, 0.0};     // up in the image
+  glm::dvec3 eye{0.0};            // the PRP (the pinhole), world
+  glm::dvec3 vpn{0.0, 0.0, 1.0};  // toward the viewer: the camera looks along −VPN
+  glm::dvec3 vup{0.0, 1.0, 0.0};  // up in the image
 };
 
 // The placement of an OpenCV pose: the PRP is the camera centre −Rᵀt; OpenCV's z looks forward, so

@@ -7,7 +7,8 @@
 
 namespace lenslab {
 
-Camera cameraForFittedLens(const Camera& like, const FittedLens& fit, glm::dvec2 sensorMm, double worldPerMm, std::string source) {
+Camera cameraForFittedLens(const Camera& like, const FittedLens& fit, glm::dvec2 sensorMm, double worldPerMm,
+                           std::string source) {
   if (!fit.usable) throw InputError(cat(source, ": no real-time camera holds this lens: ", fit.why));
   const double focusDistance = fit.inverseFocusPerMm > 0.0 ? worldPerMm / fit.inverseFocusPerMm : INFINITY;
   Camera camera = refocused(like, focusDistance, source);

@@ -14,6 +14,7 @@ namespace lenslab {
 
 // `like`'s pose (VRP, VPN, VUP, the PRP's place across the view plane), everything else from the
 // fit. `worldPerMm`: the scene's units per millimetre (metres: 1e-3). The fit must be usable.
-Camera cameraForFittedLens(const Camera& like, const FittedLens& fit, glm::dvec2 sensorMm, double worldPerMm, std::string source);
+Camera cameraForFittedLens(const Camera& like, const FittedLens& fit, glm::dvec2 sensorMm, double worldPerMm,
+                           std::string source);
 
 }  // namespace lenslab

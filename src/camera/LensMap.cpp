@@ -58,10 +58,12 @@ NormalisedRect normalisedWindow(const ViewSpec& view) {
 
 std::vector<double> extremeFocusShifts(const Camera& camera) {
   const LensEffects& e = camera.lens.effects;
-  const double corner = camera.view.projection == Projection::Perspective ? normalisedWindow(camera.view).cornerRadius() : 0.0;
+  const double corner =
+      camera.view.projection == Projection::Perspective ? normalisedWindow(camera.view).cornerRadius() : 0.0;
   std::vector<double> shifts;
   for (const double channel : {0.0, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue})
-    for (const double curve : {0.0, e.fieldCurvature.inverseFocusPerRadius2 * corner * corner}) shifts.push_back(channel + curve);
+    for (const double curve : {0.0, e.fieldCurvature.inverseFocusPerRadius2 * corner * corner})
+      shifts.push_back(channel + curve);
   return shifts;
 }
 
@@ -69,8 +71,9 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   const LensEffects& e = camera.lens.effects;
   if (e.isZero()) return;
   if (camera.view.projection != Projection::Perspective)
-    throw InputError(cat(where, ": distortion, chromatic aberration, field curvature and vignetting need a perspective "
-                                "projection (they act on the angle from the optical axis); this camera is parallel"));
+    throw InputError(cat(where,
+                         ": distortion, chromatic aberration, field curvature and vignetting need a perspective "
+                         "projection (they act on the angle from the optical axis); this camera is parallel"));
   const Distortion& d = e.distortion;
   for (const double v : {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed,
                          e.chromatic.lateralBlue, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue,
@@ -88,11 +91,14 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
                          "% of the way from the centre to the farthest corner (radius ", filmCorner,
                          "); the gain 1 + a1 r^2 + a2 r^4 + a3 r^6 must stay above 0 over the whole image"));
   }
-  if (const double largest = vignettingLargestGain(e.vignetting, filmCorner * filmCorner); !(largest <= kMaxVignettingGain)) {
+  if (const double largest = vignettingLargestGain(e.vignetting, filmCorner * filmCorner);
+      !(largest <= kMaxVignettingGain)) {
     const Vignetting& g = e.vignetting;
-    throw InputError(cat(where, ": vignetting (a1 = ", g.a1, ", a2 = ", g.a2, ", a3 = ", g.a3, ") reaches gain ", largest,
-                         " inside the image (out to normalised radius ", filmCorner, "); the gain 1 + a1 r^2 + a2 r^4 + a3 r^6 "
-                         "is relative to the centre's 1 and must stay at most ", kMaxVignettingGain));
+    throw InputError(cat(where, ": vignetting (a1 = ", g.a1, ", a2 = ", g.a2, ", a3 = ", g.a3, ") reaches gain ",
+                         largest, " inside the image (out to normalised radius ", filmCorner,
+                         "); the gain 1 + a1 r^2 + a2 r^4 + a3 r^6 "
+                         "is relative to the centre's 1 and must stay at most ",
+                         kMaxVignettingGain));
   }
   // Each plane of focus the effects add (a channel's, the curved surface's at the corner) must be
   // one the lens can form an image of: beyond its focal length. Without a focal length, beyond the
@@ -107,17 +113,20 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
                                               e.fieldCurvature.inverseFocusPerRadius2 * corner * corner}}) {
     const double inverse = phi + shift;
     if (shift == 0.0 || !(nearest > 0.0) || !(inverse * nearest >= 1.0)) continue;
-    throw InputError(cat(where, ": ", name, " is ", 1.0 / inverse, "; it must be beyond ",
-                         focalLength ? cat("the focal length (", *focalLength, " world units), or the lens forms no real image there")
-                                     : cat("the aperture radius (", camera.lens.apertureRadius, " world units): no lens is faster than "
-                                           "f/0.5, so none with this aperture forms a real image nearer"),
-                         "; \"infinity\" is allowed"));
+    throw InputError(cat(
+        where, ": ", name, " is ", 1.0 / inverse, "; it must be beyond ",
+        focalLength ? cat("the focal length (", *focalLength, " world units), or the lens forms no real image there")
+                    : cat("the aperture radius (", camera.lens.apertureRadius,
+                          " world units): no lens is faster than "
+                          "f/0.5, so none with this aperture forms a real image nearer"),
+        "; \"infinity\" is allowed"));
   }
-  for (const auto& [name, value] : {std::pair{"lateral_red", e.chromatic.lateralRed},
-                                    std::pair{"lateral_blue", e.chromatic.lateralBlue}})
+  for (const auto& [name, value] :
+       {std::pair{"lateral_red", e.chromatic.lateralRed}, std::pair{"lateral_blue", e.chromatic.lateralBlue}})
     if (!(std::abs(value) < 0.5))
-      throw InputError(cat(where, ": chromatic.", name, " = ", value,
-                           " is a relative magnification of the channel; use a value in (-0.5, 0.5), typically below 0.01"));
+      throw InputError(
+          cat(where, ": chromatic.", name, " = ", value,
+              " is a relative magnification of the channel; use a value in (-0.5, 0.5), typically below 0.01"));
   // The distorted region to check: the window, and for lateral colour the part of green's image
   // that each channel's window shows (scaled by 1 / (1 + lateral)).
   const NormalisedRect rect = normalisedWindow(camera.view);
@@ -129,12 +138,12 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   }
   if (const auto fold = findFoldOver(d, lo, hi)) {
     const double along = glm::length(fold->distorted) / rect.cornerRadius();
-    throw InputError(cat(where, ": distortion folds over inside the image: at normalised radius ",
-                         glm::length(fold->undistorted), " (true position ", fold->undistorted.x, ", ", fold->undistorted.y,
-                         "), ", std::lround(100.0 * along),
-                         "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
-                         "so two points of the scene would land on one pixel (k1 = ", d.k1, ", k2 = ", d.k2,
-                         ", k3 = ", d.k3, "); use weaker coefficients or a narrower field of view"));
+    throw InputError(
+        cat(where, ": distortion folds over inside the image: at normalised radius ", glm::length(fold->undistorted),
+            " (true position ", fold->undistorted.x, ", ", fold->undistorted.y, "), ", std::lround(100.0 * along),
+            "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
+            "so two points of the scene would land on one pixel (k1 = ",
+            d.k1, ", k2 = ", d.k2, ", k3 = ", d.k3, "); use weaker coefficients or a narrower field of view"));
   }
 }
 
@@ -145,7 +154,8 @@ double ThinLensMap::forwardLinearisationErrorPx() const {
   // Pixel (image orientation) → normalised, and back: the rendered view has the image's pitch.
   const auto normalised = [&](glm::dvec2 pixel) { return normalisedFromPixel(pixel); };
   const auto pixel = [&](glm::dvec2 n) { return pixelFromNormalised(n); };
-  const double scale = 1.0 + std::max({0.0, std::abs(effects.chromatic.lateralRed), std::abs(effects.chromatic.lateralBlue)});
+  const double scale =
+      1.0 + std::max({0.0, std::abs(effects.chromatic.lateralRed), std::abs(effects.chromatic.lateralBlue)});
   // Where the lens puts the view's point q (view pixels), in output pixels.
   const auto forward = [&](glm::dvec2 q) { return pixel(effects.distortion.distort(normalised(q))); };
   // The error is smooth over the image: a grid of up to 129 × 129 points, the border included.
@@ -180,16 +190,25 @@ void ThinLensMap::validateForwardLinearisation() const {
   if (errorPx <= kMaxForwardLinearisationErrorPx) return;
   const Distortion& d = camera.lens.effects.distortion;
   std::string coefficients;
-  for (const auto& [name, value] : {std::pair{"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"p1", d.p1}, {"p2", d.p2}, {"alpha", d.alpha},
-                                    {"beta", d.beta}, {"gamma", d.gamma}})
+  for (const auto& [name, value] : {std::pair{"k1", d.k1},
+                                    {"k2", d.k2},
+                                    {"k3", d.k3},
+                                    {"p1", d.p1},
+                                    {"p2", d.p2},
+                                    {"alpha", d.alpha},
+                                    {"beta", d.beta},
+                                    {"gamma", d.gamma}})
     if (value != 0.0) coefficients += cat(coefficients.empty() ? "" : ", ", name, " = ", value);
   // The error shrinks in proportion to the pixel pitch (a second-order term over one pixel).
   const double widthFor = std::ceil(size.widthPx * errorPx / kMaxForwardLinearisationErrorPx);
-  throw InputError(cat(camera.source, ": distortion (", coefficients, ") bends ", size.widthPx, "x", size.heightPx,
-                       " px so sharply that the raster, which carries each rendered pixel's samples by the lens's linear map "
-                       "over that pixel, would land them up to ", errorPx, " px from where the lens puts them (the limit is ",
-                       kMaxForwardLinearisationErrorPx, " px at any resolution: further, they fall in the wrong pixel); render at "
-                       "about --width ", widthFor, " or more, use weaker coefficients, or lenslab raycast (exact per ray)"));
+  throw InputError(
+      cat(camera.source, ": distortion (", coefficients, ") bends ", size.widthPx, "x", size.heightPx,
+          " px so sharply that the raster, which carries each rendered pixel's samples by the lens's linear map "
+          "over that pixel, would land them up to ",
+          errorPx, " px from where the lens puts them (the limit is ", kMaxForwardLinearisationErrorPx,
+          " px at any resolution: further, they fall in the wrong pixel); render at "
+          "about --width ",
+          widthFor, " or more, use weaker coefficients, or lenslab raycast (exact per ray)"));
 }
 
 ThinLensMap ThinLensMap::overscanned() const {
@@ -220,7 +239,8 @@ ThinLensMap ThinLensMap::overscanned() const {
   // Two more pixels for the lens pass's footprint (the per-view gather reaches about 1.5 texels,
   // the field-curvature warp's Catmull–Rom 2); the same on both sides keeps the window's centre.
   const double padX = std::max(-lo.x, hi.x - width), padY = std::max(-lo.y, hi.y - height);
-  o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2, static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
+  o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2,
+             static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
   o.size = {width + 2 * o.padPx.x, height + 2 * o.padPx.y};
   // No limit on the size here: a render larger than one GL target is made in tiles (plan/TilePlan.h).
   const glm::dvec2 pitch(w.width() / width, w.height() / height);
@@ -264,10 +284,13 @@ RemapTable ThinLensMap::remapTable(const RowProgress& progress) const {
   for (const Channel c : channels) {
     std::vector<glm::vec2> map(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     const int done = static_cast<int>(table.channels.size()) * height;
-    forEachSlice(height, [&](int first, int last) {
-      fillRemapRows(c, first, last, &map[static_cast<std::size_t>(first) * static_cast<std::size_t>(width)]);
-      if (progress) progress(done + last, rows);
-    }, progress ? 0 : height);
+    forEachSlice(
+        height,
+        [&](int first, int last) {
+          fillRemapRows(c, first, last, &map[static_cast<std::size_t>(first) * static_cast<std::size_t>(width)]);
+          if (progress) progress(done + last, rows);
+        },
+        progress ? 0 : height);
     table.channels.push_back(std::move(map));
   }
   return table;
@@ -292,7 +315,8 @@ double ThinLensMap::fillForwardRows(int firstRow, int lastRow, glm::vec4* positi
         const glm::dvec2 dx = forward(q + glm::dvec2(0.5, 0.0)) - forward(q - glm::dvec2(0.5, 0.0));
         const glm::dvec2 dy = forward(q + glm::dvec2(0.0, 0.5)) - forward(q - glm::dvec2(0.0, 0.5));
         const double det = dx.x * dy.y - dy.x * dx.y;
-        const std::size_t i = static_cast<std::size_t>(band) * static_cast<std::size_t>(viewWidth) + static_cast<std::size_t>(x);
+        const std::size_t i =
+            static_cast<std::size_t>(band) * static_cast<std::size_t>(viewWidth) + static_cast<std::size_t>(x);
         position[i] = glm::vec4(p.x, p.y, std::abs(det), 0.0);
         jacobian[i] = glm::vec4(dx.x, dx.y, dy.x, dy.y);
         // The pre-image of an output pixel ([-½, ½]² about p) is J⁻¹ of it: its half-extent per axis.
@@ -329,11 +353,14 @@ ForwardTable ThinLensMap::forwardTable(const RowProgress& progress) const {
   table.position.resize(texels);
   table.jacobian.resize(texels);
   double halfExtent = 0.0;
-  forEachSlice(viewHeight, [&](int first, int last) {
-    const std::size_t at = static_cast<std::size_t>(first) * static_cast<std::size_t>(viewWidth);
-    halfExtent = std::max(halfExtent, fillForwardRows(first, last, &table.position[at], &table.jacobian[at]));
-    if (progress) progress(last, viewHeight);
-  }, progress ? 0 : viewHeight);
+  forEachSlice(
+      viewHeight,
+      [&](int first, int last) {
+        const std::size_t at = static_cast<std::size_t>(first) * static_cast<std::size_t>(viewWidth);
+        halfExtent = std::max(halfExtent, fillForwardRows(first, last, &table.position[at], &table.jacobian[at]));
+        if (progress) progress(last, viewHeight);
+      },
+      progress ? 0 : viewHeight);
   table.reachPx = forwardReachPx(halfExtent);
   table.principalPointPx = forwardPrincipalPointPx();
   return table;

@@ -26,7 +26,8 @@ namespace lenslab {
 // of focus no nearer than `focalLength` (world units; without one, the aperture radius), or a
 // distortion that folds over inside the image (see findFoldOver); the message says which field,
 // what it is and what to change.
-void validateLensEffects(const Camera& camera, const std::string& where, std::optional<double> focalLength = std::nullopt);
+void validateLensEffects(const Camera& camera, const std::string& where,
+                         std::optional<double> focalLength = std::nullopt);
 
 // The normalised-coordinate rectangle covered by the camera's window.
 struct NormalisedRect {

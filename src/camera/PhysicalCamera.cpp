@@ -10,9 +10,7 @@
 namespace lenslab {
 namespace {
 
-bool finite(const glm::dvec3& a) {
-  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
-}
+bool finite(const glm::dvec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 
 [[noreturn]] void fail(std::string_view where, const std::string& message) {
   throw InputError(cat(where, ": ", message));
@@ -32,8 +30,9 @@ void validate(const PhysicalCamera& c, std::string_view where) {
   // radius reaches the focal length); below that the "lens" is an aperture of any size, and at
   // f/1e-320 a radius past every float.
   if (!(c.fNumber >= 0.5))
-    fail(where, cat("f_number is ", c.fNumber, "; no lens in air is faster than f/0.5: give 0.5 or more (e.g. 2.8), "
-                                               "or leave it out for a pinhole"));
+    fail(where, cat("f_number is ", c.fNumber,
+                    "; no lens in air is faster than f/0.5: give 0.5 or more (e.g. 2.8), "
+                    "or leave it out for a pinhole"));
   const glm::dvec3 forward = c.target - c.eye;
   const double distance = glm::length(forward);
   if (!(distance > 0.0)) fail(where, "eye and target are the same point; the view direction is undefined");
@@ -42,8 +41,8 @@ void validate(const PhysicalCamera& c, std::string_view where) {
     fail(where, "up is parallel to the view direction (target - eye); give an up direction across it");
   const double f = c.focalLengthMm * kMetresPerMillimetre;
   if (std::isnan(c.focusDistance) || !(c.focusDistance > f))
-    fail(where, cat("focus_distance is ", c.focusDistance, "; it must be beyond the focal length (",
-                    f, " world units), or the lens forms no real image; \"infinity\" is allowed"));
+    fail(where, cat("focus_distance is ", c.focusDistance, "; it must be beyond the focal length (", f,
+                    " world units), or the lens forms no real image; \"infinity\" is allowed"));
   if (!(std::isfinite(c.nearDistance) && c.nearDistance > 0.0))
     fail(where, cat("near is ", c.nearDistance, "; give a positive distance"));
   if (std::isnan(c.farDistance) || !(c.farDistance > c.nearDistance))

@@ -22,15 +22,15 @@
 namespace lenslab {
 
 struct PhysicalCamera {
-  glm::dvec3 eye{0.0, 0.0, 5.0};         // lens centre, world
-  glm::dvec3 target{0.0};                // a point the camera looks at, world
-  glm::dvec3 up{0.0, 1.0, 0.0};          // world up
-  double focalLengthMm = 35.0;           // f
-  glm::dvec2 sensorMm{36.0, 24.0};       // sensor width, height
+  glm::dvec3 eye{0.0, 0.0, 5.0};                             // lens centre, world
+  glm::dvec3 target{0.0};                                    // a point the camera looks at, world
+  glm::dvec3 up{0.0, 1.0, 0.0};                              // world up
+  double focalLengthMm = 35.0;                               // f
+  glm::dvec2 sensorMm{36.0, 24.0};                           // sensor width, height
   double fNumber = std::numeric_limits<double>::infinity();  // N; infinity = pinhole
-  double focusDistance = 5.0;            // z_f: distance from the lens to the plane of focus, world;
-                                         // +infinity allowed
-  double nearDistance = 0.05;            // world
+  double focusDistance = 5.0;  // z_f: distance from the lens to the plane of focus, world;
+                               // +infinity allowed
+  double nearDistance = 0.05;  // world
   double farDistance = std::numeric_limits<double>::infinity();
   // The exposure as a photographer sets it beside the f-number (camera/Exposure.h); none: the
   // image is not exposed physically.

@@ -8,8 +8,7 @@ namespace lenslab {
 // GLM matrices are column-major: m[column][row].
 namespace {
 
-glm::dmat4 fromRows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4& r2,
-                    const glm::dvec4& r3) {
+glm::dmat4 fromRows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4& r2, const glm::dvec4& r3) {
   return glm::transpose(glm::dmat4(r0, r1, r2, r3));
 }
 
@@ -18,25 +17,22 @@ glm::dmat4 fromRows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4
 glm::dmat4 viewFromWorld(const ViewSpec& spec) {
   const ViewBasis b = viewBasis(spec);
   // Rows are u, v, n: the rotation that takes world directions into VRC, after moving VRP to 0.
-  return fromRows({b.u, -glm::dot(b.u, spec.vrp)}, {b.v, -glm::dot(b.v, spec.vrp)},
-                  {b.n, -glm::dot(b.n, spec.vrp)}, {0.0, 0.0, 0.0, 1.0});
+  return fromRows({b.u, -glm::dot(b.u, spec.vrp)}, {b.v, -glm::dot(b.v, spec.vrp)}, {b.n, -glm::dot(b.n, spec.vrp)},
+                  {0.0, 0.0, 0.0, 1.0});
 }
 
 glm::dmat4 worldFromView(const ViewSpec& spec) {
   const ViewBasis b = viewBasis(spec);
-  return glm::dmat4(glm::dvec4(b.u, 0.0), glm::dvec4(b.v, 0.0), glm::dvec4(b.n, 0.0),
-                    glm::dvec4(spec.vrp, 1.0));
+  return glm::dmat4(glm::dvec4(b.u, 0.0), glm::dvec4(b.v, 0.0), glm::dvec4(b.n, 0.0), glm::dvec4(spec.vrp, 1.0));
 }
 
 glm::dmat4 eyeFromView(const ViewSpec& spec) {
   const glm::dvec3& p = spec.prp;
-  return fromRows({1.0, 0.0, 0.0, -p.x}, {0.0, 1.0, 0.0, -p.y}, {0.0, 0.0, -1.0, p.z},
-                  {0.0, 0.0, 0.0, 1.0});
+  return fromRows({1.0, 0.0, 0.0, -p.x}, {0.0, 1.0, 0.0, -p.y}, {0.0, 0.0, -1.0, p.z}, {0.0, 0.0, 0.0, 1.0});
 }
 
 glm::dmat4 lecturePerspective(double f) {
-  return fromRows({1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0},
-                  {0.0, 0.0, 1.0 / f, 0.0});
+  return fromRows({1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}, {0.0, 0.0, 1.0 / f, 0.0});
 }
 
 glm::dmat4 clipFromEye(const ViewSpec& spec) {
@@ -53,8 +49,8 @@ glm::dmat4 clipFromEye(const ViewSpec& spec) {
     //   x_ndc = sx·(PRP.u + h.x/h.w − umin) − 1, so x_clip = sx·h.x + (sx·(PRP.u − umin) − 1)·h.w
     const double ox = sx * (spec.prp.x - w.umin) - 1.0;
     const double oy = sy * (spec.prp.y - w.vmin) - 1.0;
-    const glm::dmat4 ndcFromImage = fromRows({sx, 0.0, 0.0, ox}, {0.0, sy, 0.0, oy},
-                                             {0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 1.0});
+    const glm::dmat4 ndcFromImage =
+        fromRows({sx, 0.0, 0.0, ox}, {0.0, sy, 0.0, oy}, {0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 1.0});
     glm::dmat4 clip = ndcFromImage * lecturePerspective(f);
     // z row (eye coordinates, scaled like w = Z/f): z_clip / w_clip = A + B / Z.
     double a = 0.0;
@@ -78,32 +74,26 @@ glm::dmat4 clipFromEye(const ViewSpec& spec) {
   const double shearV = -(cw.y - spec.prp.y) / pn;
   const double depthScale = -1.0 / (farZ - nearZ);
   return fromRows({sx, 0.0, sx * shearU, sx * (cw.x - w.umin) - 1.0},
-                  {0.0, sy, sy * shearV, sy * (cw.y - w.vmin) - 1.0},
-                  {0.0, 0.0, depthScale, farZ / (farZ - nearZ)}, {0.0, 0.0, 0.0, 1.0});
+                  {0.0, sy, sy * shearV, sy * (cw.y - w.vmin) - 1.0}, {0.0, 0.0, depthScale, farZ / (farZ - nearZ)},
+                  {0.0, 0.0, 0.0, 1.0});
 }
 
-glm::dmat4 clipFromWorld(const ViewSpec& spec) {
-  return clipFromEye(spec) * eyeFromView(spec) * viewFromWorld(spec);
-}
+glm::dmat4 clipFromWorld(const ViewSpec& spec) { return clipFromEye(spec) * eyeFromView(spec) * viewFromWorld(spec); }
 
 glm::dvec2 ndcFromWindow(const Window& window, glm::dvec2 uv) {
-  return {2.0 * (uv.x - window.umin) / window.width() - 1.0,
-          2.0 * (uv.y - window.vmin) / window.height() - 1.0};
+  return {2.0 * (uv.x - window.umin) / window.width() - 1.0, 2.0 * (uv.y - window.vmin) / window.height() - 1.0};
 }
 
 glm::dvec2 windowFromNdc(const Window& window, glm::dvec2 ndc) {
-  return {window.umin + 0.5 * (ndc.x + 1.0) * window.width(),
-          window.vmin + 0.5 * (ndc.y + 1.0) * window.height()};
+  return {window.umin + 0.5 * (ndc.x + 1.0) * window.width(), window.vmin + 0.5 * (ndc.y + 1.0) * window.height()};
 }
 
 glm::dvec2 pixelFromWindow(const Window& window, glm::dvec2 uv, int widthPx, int heightPx) {
-  return {(uv.x - window.umin) / window.width() * widthPx,
-          (window.vmax - uv.y) / window.height() * heightPx};
+  return {(uv.x - window.umin) / window.width() * widthPx, (window.vmax - uv.y) / window.height() * heightPx};
 }
 
 glm::dvec2 windowFromPixel(const Window& window, glm::dvec2 pixel, int widthPx, int heightPx) {
-  return {window.umin + pixel.x / widthPx * window.width(),
-          window.vmax - pixel.y / heightPx * window.height()};
+  return {window.umin + pixel.x / widthPx * window.width(), window.vmax - pixel.y / heightPx * window.height()};
 }
 
 glm::dvec2 normalisedFromWindow(const ViewSpec& spec, glm::dvec2 uv) {

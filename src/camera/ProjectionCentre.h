@@ -9,8 +9,8 @@
 namespace lenslab {
 
 struct ProjectionCentre {
-  bool atInfinity = false;                // a parallel projection
-  glm::dvec3 point{0.0};                  // the eye, world (perspective only)
+  bool atInfinity = false;                 // a parallel projection
+  glm::dvec3 point{0.0};                   // the eye, world (perspective only)
   glm::dvec3 towardViewer{0.0, 0.0, 1.0};  // unit (parallel only): the way back along the view rays
 };
 

@@ -30,6 +30,7 @@ Ray primaryRay(const ViewSpec& spec, glm::dvec2 uv);
 // rays of one pixel meet on the plane of focus (the lecture's "fire rays from every lens surface
 // point toward this point").
 // `inverseFocusShift` as for viewThroughLens.
-Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size, double inverseFocusShift = 0.0);
+Ray lensRay(const Camera& camera, glm::dvec2 lensOffset, glm::dvec2 pixel, ImageSize size,
+            double inverseFocusShift = 0.0);
 
 }  // namespace lenslab

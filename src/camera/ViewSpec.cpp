@@ -10,9 +10,7 @@
 namespace lenslab {
 namespace {
 
-bool finite(const glm::dvec3& a) {
-  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
-}
+bool finite(const glm::dvec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 
 [[noreturn]] void fail(std::string_view where, std::string_view message) {
   throw InputError(cat(where, ": ", message));
@@ -33,8 +31,7 @@ void validate(const ViewSpec& spec, std::string_view where) {
   if (!finite(spec.vup)) fail(where, "vup must be three finite numbers");
   if (!finite(spec.prp)) fail(where, "prp must be three finite numbers");
   const Window& w = spec.window;
-  if (!(std::isfinite(w.umin) && std::isfinite(w.vmin) && std::isfinite(w.umax) &&
-        std::isfinite(w.vmax)))
+  if (!(std::isfinite(w.umin) && std::isfinite(w.vmin) && std::isfinite(w.umax) && std::isfinite(w.vmax)))
     fail(where, "window must be four finite numbers [umin, vmin, umax, vmax]");
 
   const double vpnLength = glm::length(spec.vpn);
@@ -43,15 +40,23 @@ void validate(const ViewSpec& spec, std::string_view where) {
   if (!(vupLength > 0.0)) fail(where, "vup is the zero vector; give an up direction not parallel to vpn");
   // sin of the angle between VUP and VPN: u = VUP × n is undefined when they are parallel.
   const double sine = glm::length(glm::cross(spec.vup / vupLength, spec.vpn / vpnLength));
-  if (sine < 1e-9) fail(where, "vup is parallel to vpn, so the view plane's u axis is undefined; give an up direction not parallel to vpn");
+  if (sine < 1e-9)
+    fail(where,
+         "vup is parallel to vpn, so the view plane's u axis is undefined; give an up direction not parallel to vpn");
 
-  if (!(w.umax > w.umin)) fail(where, cat("window is empty or inverted: umax (", w.umax, ") must exceed umin (", w.umin, ")"));
-  if (!(w.vmax > w.vmin)) fail(where, cat("window is empty or inverted: vmax (", w.vmax, ") must exceed vmin (", w.vmin, ")"));
+  if (!(w.umax > w.umin))
+    fail(where, cat("window is empty or inverted: umax (", w.umax, ") must exceed umin (", w.umin, ")"));
+  if (!(w.vmax > w.vmin))
+    fail(where, cat("window is empty or inverted: vmax (", w.vmax, ") must exceed vmin (", w.vmin, ")"));
 
   const double prpN = spec.prp.z;
   if (spec.projection == Projection::Perspective) {
-    if (prpN == 0.0) fail(where, "prp lies on the view plane (prp.n = 0); a perspective projection needs the PRP at n > 0, on the viewer's side");
-    if (prpN < 0.0) fail(where, cat("prp.n is ", prpN, "; the PRP must be on the viewer's side of the view plane (n > 0)"));
+    if (prpN == 0.0)
+      fail(where,
+           "prp lies on the view plane (prp.n = 0); a perspective projection needs the PRP at n > 0, on the viewer's "
+           "side");
+    if (prpN < 0.0)
+      fail(where, cat("prp.n is ", prpN, "; the PRP must be on the viewer's side of the view plane (n > 0)"));
     if (prpN < kMinPrpDistance)
       fail(where, cat("prp.n is ", prpN, "; the PRP must be at least ", kMinPrpDistance, " from the view plane"));
     if (!(spec.nearDistance > 0.0) || !std::isfinite(spec.nearDistance))
@@ -59,8 +64,8 @@ void validate(const ViewSpec& spec, std::string_view where) {
     // Window corners (from the PRP's foot) up to kMaxWindowSlope × PRP.n: a half-angle of 89.9994°.
     // Beyond, the projection is all but degenerate (every pixel looks along the view plane) and
     // float clipping cannot keep a near plane that leaves anything in view.
-    const double reach = std::max({std::abs(w.umin - spec.prp.x), std::abs(w.umax - spec.prp.x), std::abs(w.vmin - spec.prp.y),
-                                   std::abs(w.vmax - spec.prp.y)});
+    const double reach = std::max({std::abs(w.umin - spec.prp.x), std::abs(w.umax - spec.prp.x),
+                                   std::abs(w.vmin - spec.prp.y), std::abs(w.vmax - spec.prp.y)});
     if (!(reach <= kMaxWindowSlope * prpN))
       fail(where, cat("the window reaches ", reach, " from the PRP's foot at PRP distance ", prpN,
                       ", a field of view of nearly 180 degrees; keep it within ", kMaxWindowSlope,
@@ -68,11 +73,13 @@ void validate(const ViewSpec& spec, std::string_view where) {
     const double side = std::min(w.width(), w.height());
     if (side < kMinWindowSlope * prpN)
       fail(where, cat("the field of view is ", side / prpN, " rad (a window side of ", side, " at PRP distance ", prpN,
-                      "); the narrowest lenslab draws is ", kMinWindowSlope, " rad (a shorter focal length, larger sensor or wider yfov)"));
+                      "); the narrowest lenslab draws is ", kMinWindowSlope,
+                      " rad (a shorter focal length, larger sensor or wider yfov)"));
   } else {
-    if (!(prpN > 0.0)) fail(where, cat("prp.n is ", prpN, "; a parallel projection needs n > 0 so that DOP = CW - PRP points into the scene"));
-    if (!std::isfinite(spec.nearDistance))
-      fail(where, "near must be a finite number");
+    if (!(prpN > 0.0))
+      fail(where,
+           cat("prp.n is ", prpN, "; a parallel projection needs n > 0 so that DOP = CW - PRP points into the scene"));
+    if (!std::isfinite(spec.nearDistance)) fail(where, "near must be a finite number");
     if (!std::isfinite(spec.farDistance))
       fail(where, "far must be finite for a parallel projection (its depth is linear)");
   }

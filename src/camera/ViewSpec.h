@@ -39,12 +39,12 @@ constexpr double kDefaultNearPerViewPlaneDistance = 1e-3;
 
 struct ViewSpec {
   Projection projection = Projection::Perspective;
-  glm::dvec3 vrp{0.0};              // View Reference Point: origin of the view plane's (u, v), world
-  glm::dvec3 vpn{0.0, 0.0, 1.0};    // View Plane Normal, world; points toward the viewer
-  glm::dvec3 vup{0.0, 1.0, 0.0};    // View UP, world; its projection on the view plane is +v
-  glm::dvec3 prp{0.0, 0.0, 1.0};    // Projection Reference Point (focal point), in VRC (u, v, n)
-  Window window;                    // on the view plane, VRC units
-  double nearDistance = kDefaultNearPerViewPlaneDistance;  // from the PRP along −n, world units (PRP.n is 1)
+  glm::dvec3 vrp{0.0};            // View Reference Point: origin of the view plane's (u, v), world
+  glm::dvec3 vpn{0.0, 0.0, 1.0};  // View Plane Normal, world; points toward the viewer
+  glm::dvec3 vup{0.0, 1.0, 0.0};  // View UP, world; its projection on the view plane is +v
+  glm::dvec3 prp{0.0, 0.0, 1.0};  // Projection Reference Point (focal point), in VRC (u, v, n)
+  Window window;                  // on the view plane, VRC units
+  double nearDistance = kDefaultNearPerViewPlaneDistance;        // from the PRP along −n, world units (PRP.n is 1)
   double farDistance = std::numeric_limits<double>::infinity();  // from the PRP along −n
 };
 

@@ -3,7 +3,6 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
-
 namespace lenslab {
 
 const std::vector<std::string>& aovNames() {
@@ -22,10 +21,14 @@ std::vector<std::string> AovSelection::names() const {
 AovSelection parseAovs(const std::vector<std::string>& names, const std::string& option) {
   AovSelection s;
   for (const std::string& name : names) {
-    if (name == "depth") s.depth = true;
-    else if (name == "normal") s.normal = true;
-    else if (name == "albedo") s.albedo = true;
-    else if (name == "instance") s.instance = true;
+    if (name == "depth")
+      s.depth = true;
+    else if (name == "normal")
+      s.normal = true;
+    else if (name == "albedo")
+      s.albedo = true;
+    else if (name == "instance")
+      s.instance = true;
     else {
       std::string valid;
       for (const std::string& n : aovNames()) valid += (valid.empty() ? "" : ", ") + n;

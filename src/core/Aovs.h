@@ -41,10 +41,11 @@ constexpr int kMaxExactInstance = 1 << 24;
 struct AovImages {
   int widthPx = 0;
   int heightPx = 0;
-  std::vector<float> depth;     // 1 a pixel; +infinity where nothing is hit (OpenEXR's Z)
-  std::vector<float> normal;    // 3 a pixel (x, y, z in camera space), unit; 0, 0, 0 where nothing is hit
-  std::vector<float> albedo;    // 3 a pixel, linear RGB; 0, 0, 0 where nothing is hit
-  std::vector<float> instance;  // 1 a pixel, an exact integer (float holds them to 2^24); kNoSurfaceInstance where nothing is hit
+  std::vector<float> depth;   // 1 a pixel; +infinity where nothing is hit (OpenEXR's Z)
+  std::vector<float> normal;  // 3 a pixel (x, y, z in camera space), unit; 0, 0, 0 where nothing is hit
+  std::vector<float> albedo;  // 3 a pixel, linear RGB; 0, 0, 0 where nothing is hit
+  std::vector<float>
+      instance;  // 1 a pixel, an exact integer (float holds them to 2^24); kNoSurfaceInstance where nothing is hit
 };
 
 }  // namespace lenslab

@@ -68,9 +68,10 @@ fs::path assetDirectory() {
     if (fs::is_directory(installed, error)) return installed;
   }
   if (insideBuildTree(exe)) return fs::path(LENSLAB_SOURCE_DIR) / "assets";
-  throw InputError("bundled scenes: no assets folder at " +
-                   (installed.empty() ? std::string("<executable>/" LENSLAB_DATA_FROM_BIN "/assets") : installed.string()) +
-                   "; set LENSLAB_ASSET_DIR to lenslab's assets/ folder, or name a scene file");
+  throw InputError(
+      "bundled scenes: no assets folder at " +
+      (installed.empty() ? std::string("<executable>/" LENSLAB_DATA_FROM_BIN "/assets") : installed.string()) +
+      "; set LENSLAB_ASSET_DIR to lenslab's assets/ folder, or name a scene file");
 }
 
 }  // namespace lenslab

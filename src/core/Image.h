@@ -22,7 +22,10 @@ struct Image {
   }
   void set(int x, int y, const glm::vec4& c) {
     float* p = &rgba[offset(x, y)];
-    p[0] = c.r; p[1] = c.g; p[2] = c.b; p[3] = c.a;
+    p[0] = c.r;
+    p[1] = c.g;
+    p[2] = c.b;
+    p[3] = c.a;
   }
 };
 

@@ -41,13 +41,16 @@ std::string readInputFile(const fs::path& file, const std::string& what, std::ui
   // The limit holds while reading too: a file that grows after the size was taken stops here.
   while (const std::size_t n = std::fread(chunk, 1, sizeof chunk, f.get())) {
     if (n > maxBytes - bytes.size())
-      throw InputError(cat(name, ": the ", what, " has more than ", sizeInWords(maxBytes), "; lenslab reads at most that"));
+      throw InputError(
+          cat(name, ": the ", what, " has more than ", sizeInWords(maxBytes), "; lenslab reads at most that"));
     bytes.append(chunk, n);
   }
   if (std::ferror(f.get())) throw InputError(cat(name, ": cannot read the ", what, ": ", std::strerror(errno)));
   return bytes;
 }
 
-std::string readTextFile(const fs::path& file, const std::string& what) { return readInputFile(file, what, kMaxTextFileBytes); }
+std::string readTextFile(const fs::path& file, const std::string& what) {
+  return readInputFile(file, what, kMaxTextFileBytes);
+}
 
 }  // namespace lenslab

@@ -28,7 +28,8 @@ Image readDefaultFramebuffer(int widthPx, int heightPx) {
   for (int y = 0; y < heightPx; ++y) {
     for (int x = 0; x < widthPx; ++x) {
       // GL rows start at the bottom.
-      const unsigned char* p = &rgba[(static_cast<std::size_t>(heightPx - 1 - y) * width + static_cast<std::size_t>(x)) * 4];
+      const unsigned char* p =
+          &rgba[(static_cast<std::size_t>(heightPx - 1 - y) * width + static_cast<std::size_t>(x)) * 4];
       image.set(x, y, {p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f, 1.0f});
     }
   }

@@ -38,10 +38,9 @@ EGLContext makeCurrentContext(EGLDisplay display) {
     eglTerminate(display);
     return EGL_NO_CONTEXT;
   }
-  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
-                               EGL_CONTEXT_MINOR_VERSION, 5,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                               EGL_NONE};
+  const EGLint attributes[] = {
+      EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
   if (context == EGL_NO_CONTEXT) {
     eglTerminate(display);
@@ -73,7 +72,8 @@ F eglProc(const char* name) {
 std::unique_ptr<GlContext> createEglContext() {
   auto getPlatformDisplay = eglProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
   auto queryDevices = eglProc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
-  if (!getPlatformDisplay) throw std::runtime_error("EGL: eglGetPlatformDisplayEXT is missing (is libEGL from Mesa or glvnd installed?)");
+  if (!getPlatformDisplay)
+    throw std::runtime_error("EGL: eglGetPlatformDisplayEXT is missing (is libEGL from Mesa or glvnd installed?)");
 
   // Prefer a hardware device; keep the first software one as a fallback.
   if (queryDevices) {
@@ -97,7 +97,8 @@ std::unique_ptr<GlContext> createEglContext() {
   EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   EGLContext context = makeCurrentContext(display);
   if (context == EGL_NO_CONTEXT)
-    throw std::runtime_error("EGL: no device or surfaceless display gives an OpenGL 4.5 core context; try --backend osmesa");
+    throw std::runtime_error(
+        "EGL: no device or surfaceless display gives an OpenGL 4.5 core context; try --backend osmesa");
   loadGlFunctions(reinterpret_cast<GlProc (*)(const char*)>(&eglGetProcAddress), "EGL");
   return std::make_unique<EglContext>(display, context);
 }

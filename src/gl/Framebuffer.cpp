@@ -24,9 +24,8 @@ RenderTarget::RenderTarget(int widthPx, int heightPx)
   glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   const GLenum status = glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("render target " + std::to_string(width_) + "x" +
-                             std::to_string(height_) + " is incomplete (status " +
-                             std::to_string(status) + ")");
+    throw std::runtime_error("render target " + std::to_string(width_) + "x" + std::to_string(height_) +
+                             " is incomplete (status " + std::to_string(status) + ")");
 }
 
 void DrawTarget::bind() const {
@@ -37,8 +36,8 @@ void DrawTarget::bind() const {
 Image RenderTarget::readColor() const {
   Image image(width_, height_);
   std::vector<float> bottomUp(image.rgba.size());
-  glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT,
-                    static_cast<GLsizei>(bottomUp.size() * sizeof(float)), bottomUp.data());
+  glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+                    bottomUp.data());
   const std::size_t row = static_cast<std::size_t>(width_) * 4;
   for (int y = 0; y < height_; ++y)
     std::memcpy(&image.rgba[static_cast<std::size_t>(y) * row],
@@ -48,13 +47,13 @@ Image RenderTarget::readColor() const {
 
 std::vector<float> RenderTarget::readDepth() const {
   std::vector<float> bottomUp(static_cast<std::size_t>(width_) * height_);
-  glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    static_cast<GLsizei>(bottomUp.size() * sizeof(float)), bottomUp.data());
+  glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+                    bottomUp.data());
   std::vector<float> topDown(bottomUp.size());
   const std::size_t row = static_cast<std::size_t>(width_);
   for (int y = 0; y < height_; ++y)
-    std::memcpy(&topDown[static_cast<std::size_t>(y) * row],
-                &bottomUp[static_cast<std::size_t>(height_ - 1 - y) * row], row * sizeof(float));
+    std::memcpy(&topDown[static_cast<std::size_t>(y) * row], &bottomUp[static_cast<std::size_t>(height_ - 1 - y) * row],
+                row * sizeof(float));
   return topDown;
 }
 

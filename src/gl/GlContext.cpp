@@ -7,9 +7,7 @@
 
 namespace lenslab {
 
-const char* backendName(Backend backend) {
-  return backend == Backend::OSMesa ? "osmesa" : "egl";
-}
+const char* backendName(Backend backend) { return backend == Backend::OSMesa ? "osmesa" : "egl"; }
 
 namespace {
 

@@ -9,7 +9,7 @@ namespace lenslab::gl {
 
 class ImageTexture {
  public:
-  ImageTexture() = default;  // empty: no texture
+  ImageTexture() = default;                 // empty: no texture
   ImageTexture(int widthPx, int heightPx);  // needs a current context
 
   explicit operator bool() const { return static_cast<bool>(texture_); }

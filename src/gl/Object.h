@@ -40,27 +40,51 @@ class Object {
 };
 
 struct BufferKind {
-  static GLuint create() { GLuint id = 0; glCreateBuffers(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteBuffers(1, &id); }
 };
 struct VertexArrayKind {
-  static GLuint create() { GLuint id = 0; glCreateVertexArrays(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
 };
 struct Texture2DKind {
-  static GLuint create() { GLuint id = 0; glCreateTextures(GL_TEXTURE_2D, 1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteTextures(1, &id); }
 };
 struct Texture2DArrayKind {
-  static GLuint create() { GLuint id = 0; glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteTextures(1, &id); }
 };
 struct SamplerKind {
-  static GLuint create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
 };
 struct FramebufferKind {
-  static GLuint create() { GLuint id = 0; glCreateFramebuffers(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); }
 };
 struct ProgramKind {

@@ -24,7 +24,8 @@ struct OsmesaLibrary {
     for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
       if ((handle = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
     if (!handle) return;
-    createContextAttribs = reinterpret_cast<decltype(createContextAttribs)>(dlsym(handle, "OSMesaCreateContextAttribs"));
+    createContextAttribs =
+        reinterpret_cast<decltype(createContextAttribs)>(dlsym(handle, "OSMesaCreateContextAttribs"));
     makeCurrent = reinterpret_cast<decltype(makeCurrent)>(dlsym(handle, "OSMesaMakeCurrent"));
     destroyContext = reinterpret_cast<decltype(destroyContext)>(dlsym(handle, "OSMesaDestroyContext"));
     getProcAddress = reinterpret_cast<decltype(getProcAddress)>(dlsym(handle, "OSMesaGetProcAddress"));
@@ -46,11 +47,16 @@ class OsmesaContext final : public GlContext {
   OsmesaContext() {
     if (!osmesa().ok())
       throw std::runtime_error("OSMesa: cannot open libOSMesa.so.8 (install libosmesa6, or use --backend egl)");
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                              OSMESA_DEPTH_BITS, 0,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                              OSMESA_CONTEXT_MINOR_VERSION, 5,
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              0,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              4,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              5,
                               0};
     context_ = osmesa().createContextAttribs(attributes, nullptr);
     if (!context_) throw std::runtime_error("OSMesa: could not create an OpenGL 4.5 core context");

@@ -167,12 +167,12 @@ Program buildProgram(const fs::path& vertexPath, const fs::path& fragmentPath,
 }
 
 Program buildProgramWithGeometry(const fs::path& vertexPath, const fs::path& geometryPath, const fs::path& fragmentPath,
-                     const std::vector<std::string>& defines) {
+                                 const std::vector<std::string>& defines) {
   const Shader vs = compile(GL_VERTEX_SHADER, vertexPath, defines);
   const Shader gs = compile(GL_GEOMETRY_SHADER, geometryPath, defines);
   const Shader fsh = compile(GL_FRAGMENT_SHADER, fragmentPath, defines);
-  return link({&vs, &gs, &fsh},
-              vertexPath.generic_string() + " + " + geometryPath.generic_string() + " + " + fragmentPath.generic_string());
+  return link({&vs, &gs, &fsh}, vertexPath.generic_string() + " + " + geometryPath.generic_string() + " + " +
+                                    fragmentPath.generic_string());
 }
 
 }  // namespace lenslab::gl

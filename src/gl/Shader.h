@@ -14,27 +14,26 @@
 namespace lenslab::gl {
 
 struct ShaderSource {
-  std::string text;                     // expanded, ready for glShaderSource
-  std::vector<std::string> files;       // index = the source-string number in #line directives
+  std::string text;                // expanded, ready for glShaderSource
+  std::vector<std::string> files;  // index = the source-string number in #line directives
 };
 
 // Reads `relativePath` (e.g. "scene/scene.frag") and expands includes. `defines` are inserted
 // after the #version line as "#define NAME" (used for shader variants). The first form reads where
 // shaderDirectory() (core/DataPaths.h) says; the second from `folder`, or from the compiled-in
 // copies when `folder` is nullopt.
-ShaderSource loadShaderSource(const std::filesystem::path& relativePath,
-                              const std::vector<std::string>& defines = {});
+ShaderSource loadShaderSource(const std::filesystem::path& relativePath, const std::vector<std::string>& defines = {});
 ShaderSource loadShaderSource(const std::filesystem::path& relativePath, const std::vector<std::string>& defines,
                               const std::optional<std::filesystem::path>& folder);
 
 // Rewrites "0(12) : error ..." in a driver log to "scene/scene.frag:12: error ...".
 std::string annotateInfoLog(const std::string& log, const std::vector<std::string>& files);
 
-Program buildProgram(const std::filesystem::path& vertexPath,
-                     const std::filesystem::path& fragmentPath,
+Program buildProgram(const std::filesystem::path& vertexPath, const std::filesystem::path& fragmentPath,
                      const std::vector<std::string>& defines = {});
 // With a geometry shader between the two.
 Program buildProgramWithGeometry(const std::filesystem::path& vertexPath, const std::filesystem::path& geometryPath,
-                                 const std::filesystem::path& fragmentPath, const std::vector<std::string>& defines = {});
+                                 const std::filesystem::path& fragmentPath,
+                                 const std::vector<std::string>& defines = {});
 
 }  // namespace lenslab::gl

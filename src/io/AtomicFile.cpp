@@ -32,7 +32,8 @@ fs::path temporaryFor(const fs::path& target) {
   static const unsigned token = std::random_device{}();
   std::string extension = target.extension().string();
   if (extension.size() > 16) extension.clear();  // not an image's: the name stays short
-  return folderOf(target) / cat(".lenslab-", ::getpid(), "-", std::hex, token, std::dec, "-", counter++, ".tmp", extension);
+  return folderOf(target) /
+         cat(".lenslab-", ::getpid(), "-", std::hex, token, std::dec, "-", counter++, ".tmp", extension);
 }
 
 InputError cannotWrite(const fs::path& target, int error) {
@@ -167,8 +168,8 @@ void OutputSet::commit() {
   for (const fs::path& f : folders)
     if (const int error = syncFolder(f); error != 0) {
       undo();
-      throw InputError(cat(f.string(), ": cannot sync the folder after writing into it: ",
-                           std::system_category().message(error)));
+      throw InputError(
+          cat(f.string(), ": cannot sync the folder after writing into it: ", std::system_category().message(error)));
     }
   committed_ = true;
   for (const Entry& e : entries_) forgetRemoveOnInterrupt(e.interruptHandle);

@@ -49,7 +49,7 @@ class OutputSet {
   struct Entry {
     std::filesystem::path target;
     std::filesystem::path temporary;
-    bool streamed = false;  // written by someone else: fsync'ed at commit()
+    bool streamed = false;              // written by someone else: fsync'ed at commit()
     std::uint64_t interruptHandle = 0;  // the temporary file in io/Interrupt.h's list
   };
   std::vector<Entry> entries_;

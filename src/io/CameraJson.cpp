@@ -50,7 +50,8 @@ void parseCommon(const JsonReader& r, CameraFile& file) {
 
 CameraFile parseCameraJson(const std::string& text, const std::string& where) {
   const json root = parseJsonDocument(text, where);
-  if (!root.is_object()) throw InputError(cat(where, ": a camera file must hold a JSON object, not ", root.type_name()));
+  if (!root.is_object())
+    throw InputError(cat(where, ": a camera file must hold a JSON object, not ", root.type_name()));
 
   const JsonReader reader(root, where);
   const std::set<std::string> common = commonKeys();
@@ -72,23 +73,25 @@ CameraFile parseCameraJson(const std::string& text, const std::string& where) {
     const bool inLecture = kLectureKeys.count(key) > 0;
     const bool inPhysical = kPhysicalKeys.count(key) > 0;
     if (!inLecture && !inPhysical)
-      throw InputError(cat(where, ": unknown key \"", excerpt(key), "\"; the lecture form takes ", joinedKeys(kLectureKeys),
-                           "; the physical form takes ", joinedKeys(kPhysicalKeys), "; the OpenCV form (chosen by ",
-                           joinedKeys(kOpenCvOnlyKeys), ") takes ", joinedKeys(kOpenCvFormKeys), "; any form takes ",
-                           joinedKeys(common)));
+      throw InputError(cat(where, ": unknown key \"", excerpt(key), "\"; the lecture form takes ",
+                           joinedKeys(kLectureKeys), "; the physical form takes ", joinedKeys(kPhysicalKeys),
+                           "; the OpenCV form (chosen by ", joinedKeys(kOpenCvOnlyKeys), ") takes ",
+                           joinedKeys(kOpenCvFormKeys), "; any form takes ", joinedKeys(common)));
     if (inLecture && !inPhysical) lecture = true;
     if (inPhysical && !inLecture) physical = true;
   }
   if (lecture && physical)
-    throw InputError(cat(where, ": mixes the lecture form (vrp, vpn, prp, window, ...) with the physical form "
-                                "(eye, target, focal_length_mm, ...); use one"));
+    throw InputError(cat(where,
+                         ": mixes the lecture form (vrp, vpn, prp, window, ...) with the physical form "
+                         "(eye, target, focal_length_mm, ...); use one"));
   if (physical || lecture) {
     CameraFile file = physical ? parsePhysical(reader) : parseLecture(reader);
     parseCommon(reader, file);
     return file;
   }
-  throw InputError(cat(where, ": no camera in it; give the lecture form (vrp, vpn, prp, window) or the "
-                              "physical form (eye, target, focal_length_mm, ...)"));
+  throw InputError(cat(where,
+                       ": no camera in it; give the lecture form (vrp, vpn, prp, window) or the "
+                       "physical form (eye, target, focal_length_mm, ...)"));
 }
 
 CameraFile loadCameraJson(const std::filesystem::path& file) {

@@ -44,7 +44,7 @@ namespace lenslab {
 
 struct CameraFile {
   enum class Form { Lecture, Physical, Intrinsics };
-  Form form = Form::Lecture;               // which of the three forms the file is in
+  Form form = Form::Lecture;  // which of the three forms the file is in
   Camera camera;
   std::optional<PhysicalCamera> physical;  // when given in the physical form
 };

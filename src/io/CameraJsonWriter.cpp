@@ -59,9 +59,12 @@ std::string toCameraJson(const Camera& camera) {
   j["window"] = {s.window.umin, s.window.vmin, s.window.umax, s.window.vmax};
   j["near"] = s.nearDistance;
   if (camera.lens.apertureRadius > 0.0) j["aperture_radius"] = camera.lens.apertureRadius;
-  if (camera.inverseFocusOffPlane) j["focus_distance"] = camera.focusAtInfinity() ? json("infinity") : json(camera.focusDistance());
-  if (std::isinf(s.farDistance)) j["far"] = "infinity";
-  else j["far"] = s.farDistance;
+  if (camera.inverseFocusOffPlane)
+    j["focus_distance"] = camera.focusAtInfinity() ? json("infinity") : json(camera.focusDistance());
+  if (std::isinf(s.farDistance))
+    j["far"] = "infinity";
+  else
+    j["far"] = s.farDistance;
   if (camera.calibratedSize) j["image_size"] = {camera.calibratedSize->widthPx, camera.calibratedSize->heightPx};
   writeEffects(camera, j);
   return j.dump(2) + "\n";
@@ -75,7 +78,8 @@ std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const Lens& l
   j["eye"] = {physical.eye.x, physical.eye.y, physical.eye.z};
   j["target"] = {physical.target.x, physical.target.y, physical.target.z};
   j["up"] = {physical.up.x, physical.up.y, physical.up.z};
-  j["intrinsics"] = {{"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}, {"width", k.widthPx}, {"height", k.heightPx}};
+  j["intrinsics"] = {{"fx", k.fx}, {"fy", k.fy},         {"cx", k.cx},
+                     {"cy", k.cy}, {"width", k.widthPx}, {"height", k.heightPx}};
   j["focus_distance"] = std::isinf(physical.focusDistance) ? json("infinity") : json(physical.focusDistance);
   if (camera.lens.apertureRadius > 0.0) j["aperture_radius"] = camera.lens.apertureRadius;
   if (writeNear) j["near"] = physical.nearDistance;
@@ -83,9 +87,9 @@ std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const Lens& l
   writeEffects(camera, j);
   // OpenCV's distCoeffs as an array where the lens is all OpenCV's (the lecture's series is not).
   const Distortion& d = camera.lens.effects.distortion;
-  if (!d.isZero() && d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  if (!d.isZero() && d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0)
+    j["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
   return j.dump(2) + "\n";
 }
-
 
 }  // namespace lenslab

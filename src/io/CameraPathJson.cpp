@@ -10,17 +10,18 @@
 
 #include <nlohmann/json.hpp>
 
-
 namespace lenslab {
 
 using json = nlohmann::json;
 
 CameraPath parseCameraPath(const std::string& text, const std::string& where) {
   const json root = parseJsonDocument(text, where);
-  if (!root.is_object()) throw InputError(cat(where, ": a camera path must hold a JSON object, not ", root.type_name()));
+  if (!root.is_object())
+    throw InputError(cat(where, ": a camera path must hold a JSON object, not ", root.type_name()));
   for (const auto& item : root.items())
     if (item.key() != "fps" && item.key() != "keys" && item.key() != "frames" && item.key() != "interpolation")
-      throw InputError(cat(where, ": unknown key \"", excerpt(item.key()), "\"; a camera path takes fps, keys, frames, interpolation"));
+      throw InputError(cat(where, ": unknown key \"", excerpt(item.key()),
+                           "\"; a camera path takes fps, keys, frames, interpolation"));
 
   CameraPath path;
   if (!root.contains("fps")) throw InputError(cat(where, ": fps: required (frames per second, e.g. 24)"));
@@ -34,35 +35,45 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
   }
   if (root.contains("interpolation")) {
     const json& mode = root["interpolation"];
-    if (mode == "smooth") path.interpolation = PathInterpolation::Smooth;
-    else if (mode == "linear") path.interpolation = PathInterpolation::Linear;
-    else throw InputError(cat(where, ": interpolation ", excerpt(mode.dump()), ": use \"smooth\" or \"linear\""));
+    if (mode == "smooth")
+      path.interpolation = PathInterpolation::Smooth;
+    else if (mode == "linear")
+      path.interpolation = PathInterpolation::Linear;
+    else
+      throw InputError(cat(where, ": interpolation ", excerpt(mode.dump()), ": use \"smooth\" or \"linear\""));
   }
   if (!root.contains("keys") || !root["keys"].is_array())
-    throw InputError(cat(where, ": keys: give an array of keys, each {\"time\": seconds, <a camera in the physical form>}"));
+    throw InputError(
+        cat(where, ": keys: give an array of keys, each {\"time\": seconds, <a camera in the physical form>}"));
   const json& keys = root["keys"];
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::string name = cat(where, ": keys[", i, "]");
-    if (!keys[i].is_object()) throw InputError(cat(name, ": give an object {\"time\": seconds, <a camera in the physical form>}"));
+    if (!keys[i].is_object())
+      throw InputError(cat(name, ": give an object {\"time\": seconds, <a camera in the physical form>}"));
     json camera = keys[i];
-    if (!camera.contains("time") || !camera["time"].is_number()) throw InputError(cat(name, ".time: required, in seconds"));
+    if (!camera.contains("time") || !camera["time"].is_number())
+      throw InputError(cat(name, ".time: required, in seconds"));
     PathKey key;
     key.timeSeconds = camera["time"].get<double>();
     camera.erase("time");
     const CameraFile file = parseCameraJson(camera.dump(), name);
     if (!file.physical)
-      throw InputError(cat(name, ": give the camera in the physical form (eye, target, up, focal_length_mm, sensor_mm, f_number, "
-                               "focus_distance, near, far): a path interpolates those"));
+      throw InputError(
+          cat(name,
+              ": give the camera in the physical form (eye, target, up, focal_length_mm, sensor_mm, f_number, "
+              "focus_distance, near, far): a path interpolates those"));
     key.camera = *file.physical;
     if (camera.contains("near")) path.nearFromScene = false;
     if (camera.contains("far")) path.farFromScene = false;
     key.lens = file.camera.lens;
     // The iris and the lens's squeeze do not change along a shot: one shape for every key.
     if (!path.keys.empty() && key.lens.aperture != path.keys.front().lens.aperture)
-      throw InputError(cat(name, ": \"aperture\" is ", describeAperture(key.lens.aperture), " where the first key's is ",
-                           describeAperture(path.keys.front().lens.aperture), "; every key of a path takes the same aperture shape"));
+      throw InputError(cat(name, ": \"aperture\" is ", describeAperture(key.lens.aperture),
+                           " where the first key's is ", describeAperture(path.keys.front().lens.aperture),
+                           "; every key of a path takes the same aperture shape"));
     if (!path.keys.empty() && key.lens.barrel != path.keys.front().lens.barrel)
-      throw InputError(cat(name, ": \"barrel\" differs from the first key's; every key of a path takes the same lens barrel"));
+      throw InputError(
+          cat(name, ": \"barrel\" differs from the first key's; every key of a path takes the same lens barrel"));
     path.keys.push_back(key);
   }
   validate(path, where);

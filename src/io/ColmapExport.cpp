@@ -19,9 +19,11 @@ std::string shortest(double value) {
 
 }  // namespace
 
-ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std::uint32_t id, const std::string& where) {
+ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std::uint32_t id,
+                            const std::string& where) {
   if (d.alpha != 0.0 || d.gamma != 0.0)
-    throw InputError(cat(where, ": the lens has the lecture's odd-power distortion (alpha ", d.alpha, ", gamma ", d.gamma,
+    throw InputError(cat(where, ": the lens has the lecture's odd-power distortion (alpha ", d.alpha, ", gamma ",
+                         d.gamma,
                          "), which no COLMAP camera model holds; give the distortion as OpenCV's k1, k2, p1, p2, k3"));
   ColmapCamera c;
   c.id = id;
@@ -46,7 +48,8 @@ ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_
                           const std::string& where) {
   if (name.empty()) throw InputError(cat(where, ": the image name is empty, which COLMAP's text format cannot hold"));
   if (name.find_first_of(" \t\r\n") != std::string::npos)
-    throw InputError(cat(where, ": the image name ", name, " holds a space, which COLMAP's text format cannot hold (it "
+    throw InputError(cat(where, ": the image name ", name,
+                         " holds a space, which COLMAP's text format cannot hold (it "
                          "reads NAME up to the first)"));
   ColmapImage image;
   image.id = id;
@@ -58,8 +61,9 @@ ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_
 }
 
 std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras) {
-  std::string text = cat("# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n",
-                         "# Number of cameras: ", cameras.size(), "\n");
+  std::string text =
+      cat("# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n",
+          "# Number of cameras: ", cameras.size(), "\n");
   for (const ColmapCamera& c : cameras) {
     text += cat(c.id, " ", c.model, " ", c.widthPx, " ", c.heightPx);
     for (const double p : c.params) {
@@ -72,15 +76,15 @@ std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras) {
 }
 
 std::string colmapImagesText(const std::vector<ColmapImage>& images) {
-  std::string text = cat("# Image list with two lines of data per image:\n",
-                         "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n",
-                         "#   POINTS2D[] as (X, Y, POINT3D_ID)\n", "# Number of images: ", images.size(),
-                         ", mean observations per image: 0\n");
+  std::string text =
+      cat("# Image list with two lines of data per image:\n",
+          "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n", "#   POINTS2D[] as (X, Y, POINT3D_ID)\n",
+          "# Number of images: ", images.size(), ", mean observations per image: 0\n");
   for (const ColmapImage& i : images) {
     const glm::dquat& q = i.rotation;
     text += cat(i.id, " ", shortest(q.w), " ", shortest(q.x), " ", shortest(q.y), " ", shortest(q.z), " ",
-                shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ", i.cameraId,
-                " ", i.name, "\n\n");  // and its POINTS2D line, empty
+                shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ",
+                i.cameraId, " ", i.name, "\n\n");  // and its POINTS2D line, empty
   }
   return text;
 }

@@ -195,13 +195,14 @@ std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std:
     c.model = std::string(f[1]);
     const std::uint64_t width = whole(f[2], where, "WIDTH", std::numeric_limits<int>::max());
     const std::uint64_t height = whole(f[3], where, "HEIGHT", std::numeric_limits<int>::max());
-    if (width < 1 || height < 1) where.fail(cat("camera ", c.id, " is ", width, "x", height, " pixels; give a size of at least 1x1"));
+    if (width < 1 || height < 1)
+      where.fail(cat("camera ", c.id, " is ", width, "x", height, " pixels; give a size of at least 1x1"));
     c.widthPx = static_cast<int>(width);
     c.heightPx = static_cast<int>(height);
     for (std::size_t p = 4; p < f.size(); ++p) c.params.push_back(number(f[p], where, cat("parameter ", p - 3)));
     if (const ModelInfo* m = modelInfo(c.model); m && c.params.size() != m->count)
-      where.fail(cat("camera ", c.id, " is ", m->name, ", which takes ", m->count, " parameters (", m->params, "), not ",
-                     c.params.size()));
+      where.fail(cat("camera ", c.id, " is ", m->name, ", which takes ", m->count, " parameters (", m->params,
+                     "), not ", c.params.size()));
     ids.add(c.id, where);
     cameras.push_back(std::move(c));
   }
@@ -217,16 +218,20 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
     const Where& where = line->where;
     const std::vector<std::string_view> f = fields(line->text);
     if (f.size() != 10)
-      where.fail(cat("an image line is IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME (10 fields); this one has ", f.size(),
+      where.fail(cat("an image line is IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME (10 fields); this one has ",
+                     f.size(),
                      f.size() > 10 ? " (a NAME cannot hold spaces: COLMAP reads it only up to the first)" : ""));
     ColmapImage image;
     image.line = where.line;
     image.id = static_cast<std::uint32_t>(whole(f[0], where, "IMAGE_ID", kMaxId));
-    const glm::dquat q(number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"), number(f[4], where, "QZ"));
+    const glm::dquat q(number(f[1], where, "QW"), number(f[2], where, "QX"), number(f[3], where, "QY"),
+                       number(f[4], where, "QZ"));
     const double length = glm::length(q);
     if (!(std::abs(length - 1.0) <= kQuaternionLengthTolerance))
-      where.fail(cat("image ", image.id, "'s quaternion QW QX QY QZ has length ", length, "; COLMAP writes unit quaternions "
-                     "(lengths within ", kQuaternionLengthTolerance, " of 1 are normalised)"));
+      where.fail(cat("image ", image.id, "'s quaternion QW QX QY QZ has length ", length,
+                     "; COLMAP writes unit quaternions "
+                     "(lengths within ",
+                     kQuaternionLengthTolerance, " of 1 are normalised)"));
     image.rotation = q / length;
     image.translation = {number(f[5], where, "TX"), number(f[6], where, "TY"), number(f[7], where, "TZ")};
     image.cameraId = static_cast<std::uint32_t>(whole(f[8], where, "CAMERA_ID", kMaxId));
@@ -237,10 +242,12 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
     // the points, but a line that cannot be one means the two-line layout is broken.
     if (const std::optional<DataLines::Line> points = lines.following()) {
       if (!points->text.empty() && points->text.front() == '#')
-        points->where.fail(cat("image ", image.id, "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
+        points->where.fail(cat("image ", image.id,
+                               "'s POINTS2D line (X Y POINT3D_ID triples, or empty) is a comment; each "
                                "image takes two lines"));
       if (const std::size_t n = fieldCount(points->text); n % 3 != 0)
-        points->where.fail(cat("image ", image.id, "'s POINTS2D line holds ", n, " fields, not X Y POINT3D_ID triples; each "
+        points->where.fail(cat("image ", image.id, "'s POINTS2D line holds ", n,
+                               " fields, not X Y POINT3D_ID triples; each "
                                "image takes two lines (the second may be empty)"));
     }
     images.push_back(std::move(image));
@@ -251,7 +258,8 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
 ColmapModel readColmapModel(const fs::path& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error))
-    throw InputError(cat("--colmap ", dir.string(), ": not a folder; give the folder of a COLMAP text model (cameras.txt, "
+    throw InputError(cat("--colmap ", dir.string(),
+                         ": not a folder; give the folder of a COLMAP text model (cameras.txt, "
                          "images.txt)"));
   ColmapModel model;
   model.camerasFile = (dir / "cameras.txt").string();
@@ -261,7 +269,8 @@ ColmapModel readColmapModel(const fs::path& dir) {
     if (!fs::exists(text, error) && fs::exists(dir / cat(name, ".bin"), error))
       throw InputError(cat(text.string(), ": missing; ", dir.string(), " holds COLMAP's binary model (", name,
                            ".bin), and lenslab reads the text format: convert it with colmap model_converter "
-                           "--input_path ", dir.string(), " --output_path ", dir.string(), " --output_type TXT"));
+                           "--input_path ",
+                           dir.string(), " --output_path ", dir.string(), " --output_type TXT"));
   }
   model.cameras = parseColmapCameras(readTextFile(model.camerasFile, "COLMAP cameras file"), model.camerasFile);
   model.images = parseColmapImages(readTextFile(model.imagesFile, "COLMAP images file"), model.imagesFile);
@@ -278,10 +287,11 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
   const Where where{file, c.line};
   const ModelInfo* m = modelInfo(c.model);
   if (!m)
-    where.fail(cat("camera ", c.id, " is ", c.model, ", a model lenslab does not render; it renders ", kColmapModelsRendered));
+    where.fail(
+        cat("camera ", c.id, " is ", c.model, ", a model lenslab does not render; it renders ", kColmapModelsRendered));
   if (c.widthPx > kMaxImageSidePx || c.heightPx > kMaxImageSidePx)
-    where.fail(cat("camera ", c.id, " is ", c.widthPx, "x", c.heightPx, " pixels; lenslab renders at most ", kMaxImageSidePx,
-                   " a side"));
+    where.fail(cat("camera ", c.id, " is ", c.widthPx, "x", c.heightPx, " pixels; lenslab renders at most ",
+                   kMaxImageSidePx, " a side"));
   const std::vector<double>& p = c.params;
   OpenCvLens lens;
   OpenCvIntrinsics& k = lens.intrinsics;
@@ -300,12 +310,14 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
     if (i < std::size(coefficients))
       *coefficients[i] = value;
     else if (value != 0.0)
-      where.fail(cat("camera ", c.id, " is ", m->name, " with k", i - 1, " = ", value, "; lenslab renders its rational "
-                     "terms k4, k5, k6 only at 0 (it renders ", kColmapModelsRendered, ")"));
+      where.fail(cat("camera ", c.id, " is ", m->name, " with k", i - 1, " = ", value,
+                     "; lenslab renders its rational "
+                     "terms k4, k5, k6 only at 0 (it renders ",
+                     kColmapModelsRendered, ")"));
   }
   if (!(k.fx > 0.0) || !(k.fy > 0.0))
-    where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (", m->name,
-                   " takes ", m->params, ")"));
+    where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (",
+                   m->name, " takes ", m->params, ")"));
   return lens;
 }
 
@@ -317,8 +329,8 @@ OpenCvPose poseOf(const ColmapImage& image) {
 }
 
 Camera colmapImageCamera(const ColmapModel& model, const std::string& name) {
-  const auto image = std::find_if(model.images.begin(), model.images.end(),
-                                  [&](const ColmapImage& i) { return i.name == name; });
+  const auto image =
+      std::find_if(model.images.begin(), model.images.end(), [&](const ColmapImage& i) { return i.name == name; });
   if (image == model.images.end()) {
     if (model.images.empty()) throw InputError(cat("--image ", name, ": ", model.imagesFile, " holds no images"));
     // The one image whose file name matches, when the request left out its folder.
@@ -326,13 +338,14 @@ Camera colmapImageCamera(const ColmapModel& model, const std::string& name) {
     for (const ColmapImage& i : model.images)
       if (fs::path(i.name).filename() == fs::path(name).filename()) sameFile.push_back(i.name);
     if (sameFile.size() == 1)
-      throw InputError(cat("--image ", name, ": ", model.imagesFile, " has no image named so; did you mean ", sameFile[0], "?"));
+      throw InputError(
+          cat("--image ", name, ": ", model.imagesFile, " has no image named so; did you mean ", sameFile[0], "?"));
     std::string some;
     const std::size_t shown = std::min<std::size_t>(model.images.size(), 5);
     for (std::size_t i = 0; i < shown; ++i) some += (i ? ", " : "") + model.images[i].name;
     throw InputError(cat("--image ", name, ": ", model.imagesFile, " has no image named so; its ", model.images.size(),
-                         " image", model.images.size() == 1 ? "" : "s", " include", model.images.size() == 1 ? "s " : " ",
-                         some, model.images.size() > shown ? ", ..." : ""));
+                         " image", model.images.size() == 1 ? "" : "s", " include",
+                         model.images.size() == 1 ? "s " : " ", some, model.images.size() > shown ? ", ..." : ""));
   }
   const OpenCvLens lens = lensOf(cameraOf(model, *image), model.camerasFile);
   return pinholeFromOpenCv(lens.intrinsics, lens.distortion, poseOf(*image),

@@ -29,7 +29,7 @@ namespace lenslab {
 // One line of cameras.txt: CAMERA_ID MODEL WIDTH HEIGHT PARAMS[].
 struct ColmapCamera {
   std::uint32_t id = 0;
-  std::string model;           // "PINHOLE", "OPENCV", ...
+  std::string model;  // "PINHOLE", "OPENCV", ...
   int widthPx = 0;
   int heightPx = 0;
   std::vector<double> params;  // in the model's order, e.g. fx, fy, cx, cy for PINHOLE
@@ -42,7 +42,7 @@ struct ColmapImage {
   glm::dquat rotation;          // unit length (normalised when read)
   glm::dvec3 translation{0.0};  // t
   std::uint32_t cameraId = 0;
-  std::string name;             // relative to the image folder
+  std::string name;  // relative to the image folder
   int line = 0;
 };
 

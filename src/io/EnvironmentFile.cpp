@@ -32,7 +32,8 @@ std::string oneLine(std::string s) {
 
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -96,12 +97,14 @@ bool takeImage(std::string_view& in, EnvironmentImage& image) {
 EnvironmentImage readEnvironmentImage(const fs::path& path) {
   const std::string ext = lowerExtension(path);
   if (ext != ".hdr" && ext != ".exr")
-    throw InputError(cat(path.string(), ": an environment is a .hdr or .exr file (equirectangular, linear radiance), not '", ext, "'"));
+    throw InputError(cat(
+        path.string(), ": an environment is a .hdr or .exr file (equirectangular, linear radiance), not '", ext, "'"));
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) throw InputError(cat(path.string(), ": cannot read the environment: ", oneLine(OIIO::geterror())));
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels != 3 && spec.nchannels != 4)
-    throw InputError(cat(path.string(), ": the environment has ", spec.nchannels, " channels; it must have 3 (RGB) or 4 (RGBA)"));
+    throw InputError(
+        cat(path.string(), ": the environment has ", spec.nchannels, " channels; it must have 3 (RGB) or 4 (RGBA)"));
   if (spec.width != 2 * spec.height || spec.height < 2)
     throw InputError(cat(path.string(), ": the environment is ", spec.width, " × ", spec.height,
                          "; an equirectangular image is twice as wide as high, at least 4 × 2"));
@@ -159,11 +162,13 @@ std::optional<PrefilteredEnvironment> decodeEnvironmentCache(const std::string& 
   body.remove_prefix(keySize);
   PrefilteredEnvironment maps;
   std::int32_t levels = 0;
-  if (!takeImage(body, maps.background) || !takeImage(body, maps.diffuse) || !take(body, levels) || levels < 1 || levels > 64)
+  if (!takeImage(body, maps.background) || !takeImage(body, maps.diffuse) || !take(body, levels) || levels < 1 ||
+      levels > 64)
     return std::nullopt;
   maps.specular.resize(static_cast<std::size_t>(levels));
   for (EnvironmentImage& level : maps.specular)
-    if (!takeImage(body, level) || level.width != maps.specular.front().width || level.height != maps.specular.front().height)
+    if (!takeImage(body, level) || level.width != maps.specular.front().width ||
+        level.height != maps.specular.front().height)
       return std::nullopt;
   if (!body.empty()) return std::nullopt;
   return maps;
@@ -198,7 +203,8 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
   } else {
     loaded.warning = "environment cache: neither XDG_CACHE_HOME nor HOME is set, so the prefiltered maps are not kept";
   }
-  loaded.maps = std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(readEnvironmentImage(path), settings));
+  loaded.maps =
+      std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(readEnvironmentImage(path), settings));
   if (entry) {
     try {
       std::error_code ec;
@@ -213,7 +219,8 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
   return loaded;
 }
 
-std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request, std::ostream& warnings) {
+std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request,
+                                                   std::ostream& warnings) {
   if (request.file.empty()) return std::nullopt;
   if (!(request.intensity >= 0.0) || !std::isfinite(request.intensity))
     throw InputError(cat("--environment-intensity ", request.intensity, ": give a finite number ≥ 0"));

@@ -62,7 +62,8 @@ struct EnvironmentSummary {
 
 // Loads the requested environment (the cache in environmentCacheFolder()) into scene.environment;
 // nothing without a file. The cache's warning, if any, goes to `warnings` as one line.
-std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request, std::ostream& warnings);
+std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const EnvironmentRequest& request,
+                                                   std::ostream& warnings);
 
 // The bytes of a cache entry and back (for tests): `key` names what it was made from; read
 // returns nullopt when the bytes are not a whole entry of that key.

@@ -34,7 +34,8 @@ Conversion findConversion(const std::string& pattern, const std::string& option)
     while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && c.width < 100)
       c.width = c.width * 10 + (pattern[j++] - '0');
     if (j >= pattern.size() || pattern[j] != 'd' || c.width > 32)
-      throw InputError(cat(option, " ", pattern, ": only %d, %Nd or %0Nd (N ≤ 32) may follow a % (write %% for a % sign)"));
+      throw InputError(
+          cat(option, " ", pattern, ": only %d, %Nd or %0Nd (N ≤ 32) may follow a % (write %% for a % sign)"));
     c.end = j + 1;
     if (found.begin != std::string::npos)
       throw InputError(cat(option, " ", pattern, ": give one frame number (one %d), not two"));
@@ -42,8 +43,9 @@ Conversion findConversion(const std::string& pattern, const std::string& option)
     i = j;
   }
   if (found.begin == std::string::npos)
-    throw InputError(cat(option, " ", pattern, ": give a pattern with one %d for the frame number, e.g. frames/frame_%04d.exr, so that "
-                                               "frames do not overwrite each other"));
+    throw InputError(cat(option, " ", pattern,
+                         ": give a pattern with one %d for the frame number, e.g. frames/frame_%04d.exr, so that "
+                         "frames do not overwrite each other"));
   return found;
 }
 
@@ -61,7 +63,8 @@ void checkFramePattern(const std::string& pattern, const std::string& option) { 
 std::string formatFramePath(const std::string& pattern, int frame) {
   const Conversion c = findConversion(pattern, "--out");
   std::string number = std::to_string(frame);
-  if (static_cast<int>(number.size()) < c.width) number.insert(0, static_cast<std::size_t>(c.width) - number.size(), c.zeros ? '0' : ' ');
+  if (static_cast<int>(number.size()) < c.width)
+    number.insert(0, static_cast<std::size_t>(c.width) - number.size(), c.zeros ? '0' : ' ');
   std::string out;
   for (std::size_t i = 0; i < pattern.size(); ++i) {
     if (i == c.begin) {
@@ -78,9 +81,10 @@ std::string formatFramePath(const std::string& pattern, int frame) {
 }
 
 FrameRange parseFrameRange(const std::string& text, int frameCount) {
-  const std::string usage = cat("--frames ", text, ": give A:B (inclusive), A:, :B or one frame N, within 0:", frameCount - 1,
-                                " (the path has ", frameCount, " frame", frameCount == 1 ? "" : "s",
-                                "), and :STEP after a range for every STEP-th frame (e.g. 0:", frameCount - 1, ":12)");
+  const std::string usage =
+      cat("--frames ", text, ": give A:B (inclusive), A:, :B or one frame N, within 0:", frameCount - 1,
+          " (the path has ", frameCount, " frame", frameCount == 1 ? "" : "s",
+          "), and :STEP after a range for every STEP-th frame (e.g. 0:", frameCount - 1, ":12)");
   FrameRange r{0, frameCount - 1, 1};
   const auto colon = text.find(':');
   if (colon == std::string::npos) {
@@ -92,8 +96,10 @@ FrameRange parseFrameRange(const std::string& text, int frameCount) {
     if (second != std::string::npos) {
       const std::string step = text.substr(second + 1);
       // The step's own message: 0, a negative or a fraction is the likely slip, not the range.
-      const std::string stepUsage = cat("--frames ", text, ": the step after the second colon must be a whole number of "
-                                        "frames, 1 or more (e.g. 0:", frameCount - 1, ":12 for every 12th frame)");
+      const std::string stepUsage = cat("--frames ", text,
+                                        ": the step after the second colon must be a whole number of "
+                                        "frames, 1 or more (e.g. 0:",
+                                        frameCount - 1, ":12 for every 12th frame)");
       if (step.find(':') != std::string::npos) throw InputError(usage);
       r.step = parseInt(step, stepUsage);
       if (r.step < 1) throw InputError(stepUsage);
@@ -108,7 +114,8 @@ FrameRange parseFrameRange(const std::string& text, int frameCount) {
 }
 
 Shard parseShard(const std::string& text) {
-  const std::string usage = cat("--shard ", text, ": give I/N, this process's index I from 0 to N-1 of N processes (e.g. 0/4)");
+  const std::string usage =
+      cat("--shard ", text, ": give I/N, this process's index I from 0 to N-1 of N processes (e.g. 0/4)");
   const auto slash = text.find('/');
   if (slash == std::string::npos) throw InputError(usage);
   Shard s{parseInt(text.substr(0, slash), usage), parseInt(text.substr(slash + 1), usage)};

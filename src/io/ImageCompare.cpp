@@ -25,13 +25,13 @@ OIIO::ImageBuf wrap(const Image& image) {
 
 ImageDifference compareImages(const Image& a, const Image& b, double threshold) {
   if (a.width != b.width || a.height != b.height)
-    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" +
-                                std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
-                                std::to_string(b.height));
+    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                                " vs " + std::to_string(b.width) + "x" + std::to_string(b.height));
   // OpenImageIO's comparison (what `idiff` reports), over the colour channels only: alpha is
   // coverage and is compared where a test means to.
   const OIIO::ROI colour(0, a.width, 0, a.height, 0, 1, 0, 3);
-  const auto r = OIIO::ImageBufAlgo::compare(wrap(a), wrap(b), static_cast<float>(threshold), static_cast<float>(threshold), colour);
+  const auto r = OIIO::ImageBufAlgo::compare(wrap(a), wrap(b), static_cast<float>(threshold),
+                                             static_cast<float>(threshold), colour);
   ImageDifference d;
   d.maxAbs = r.maxerror;
   d.rmse = r.rms_error;

@@ -5,10 +5,10 @@
 namespace lenslab {
 
 struct ImageDifference {
-  double maxAbs = 0.0;          // largest channel difference
-  double rmse = 0.0;            // root mean square over all RGB values
-  double psnrDb = 0.0;          // 10·log10(peak² / mse), peak = 1; +inf when identical
-  double fractionOver = 0.0;    // fraction of pixels with any channel differing by more than threshold
+  double maxAbs = 0.0;        // largest channel difference
+  double rmse = 0.0;          // root mean square over all RGB values
+  double psnrDb = 0.0;        // 10·log10(peak² / mse), peak = 1; +inf when identical
+  double fractionOver = 0.0;  // fraction of pixels with any channel differing by more than threshold
 };
 
 // Throws std::invalid_argument when the sizes differ.

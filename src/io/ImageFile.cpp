@@ -19,7 +19,8 @@ namespace {
 
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -44,15 +45,13 @@ void applyDisplayForFile(const fs::path& path, Image& image, const DisplayEncodi
   }
 }
 
-float linearFromSrgb(float x) {
-  return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-}
+float linearFromSrgb(float x) { return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f); }
 
 void checkImageExtension(const fs::path& path) {
   const std::string ext = lowerExtension(path);
   if (ext != ".png" && ext != ".exr")
-    throw InputError(cat(path.string(), ": unsupported image type '", ext,
-                         "'; use .png (8-bit sRGB) or .exr (linear float)"));
+    throw InputError(
+        cat(path.string(), ": unsupported image type '", ext, "'; use .png (8-bit sRGB) or .exr (linear float)"));
 }
 
 std::string encodeImage(const fs::path& path, const Image& image, const std::vector<float>* depthZ) {
@@ -69,13 +68,15 @@ std::string encodeImage(const fs::path& path, const Image& image, const std::vec
     throw InputError(cat(path.string(), ": channels ", names, " need .exr (PNG holds 8-bit colour only)"));
   }
   for (const ImageChannel& c : extra)
-    if (c.values.size() != image.rgba.size() / 4) throw std::logic_error("encodeImage: a channel's and the image's sizes differ");
+    if (c.values.size() != image.rgba.size() / 4)
+      throw std::logic_error("encodeImage: a channel's and the image's sizes differ");
   auto out = OIIO::ImageOutput::create(path.filename().string());  // the format, by extension
   if (!out) throw InputError(cat(path.string(), ": cannot write it: ", oneLine(OIIO::geterror())));
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput memory(bytes);
   if (!out->supports("ioproxy") || !out->set_ioproxy(&memory))
-    throw InputError(cat(path.string(), ": cannot write it: this OpenImageIO cannot encode ", lowerExtension(path), " in memory"));
+    throw InputError(
+        cat(path.string(), ": cannot write it: this OpenImageIO cannot encode ", lowerExtension(path), " in memory"));
   // PNG: RGB only, already over the background (an alpha channel would make viewers composite it
   // a second time). EXR: RGBA, A the coverage (the fraction of the pixel × aperture that sees a
   // surface); RGB includes the background over 1 − A, so with --background 0,0,0 it is
@@ -121,7 +122,8 @@ void writeImage(OutputSet& outputs, const fs::path& path, const Image& image, co
   outputs.add(path, encodeImage(path, image, depthZ));
 }
 
-void writeImage(OutputSet& outputs, const fs::path& path, const Image& image, const std::vector<ImageChannel>& channels) {
+void writeImage(OutputSet& outputs, const fs::path& path, const Image& image,
+                const std::vector<ImageChannel>& channels) {
   outputs.add(path, encodeImage(path, image, channels));
 }
 

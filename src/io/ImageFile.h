@@ -22,7 +22,8 @@ void checkImageExtension(const std::filesystem::path& path);
 // OIIO never touches the disk here, and AtomicFile's checked writes do.
 // `depthZ`, when given (width × height values, rows from the top), becomes the EXR's Z channel
 // (OpenEXR's name for depth; spec.z_channel); only .exr holds it.
-std::string encodeImage(const std::filesystem::path& path, const Image& linear, const std::vector<float>* depthZ = nullptr);
+std::string encodeImage(const std::filesystem::path& path, const Image& linear,
+                        const std::vector<float>* depthZ = nullptr);
 
 // A float channel an EXR holds beside R, G, B, A: its name (OpenEXR's, e.g. "Z", "N.X") and one
 // value a pixel, rows from the top.
@@ -33,7 +34,8 @@ struct ImageChannel {
 // As above with any number of extra channels, written in this order after R, G, B, A (readers
 // find them by name: OpenEXR itself stores channels sorted by name). A channel named "Z" is the
 // depth (spec.z_channel). Only .exr holds them; a .png with channels is refused naming them.
-std::string encodeImage(const std::filesystem::path& path, const Image& linear, const std::vector<ImageChannel>& channels);
+std::string encodeImage(const std::filesystem::path& path, const Image& linear,
+                        const std::vector<ImageChannel>& channels);
 
 // One file, whole or not at all.
 void writeImage(const std::filesystem::path& path, const Image& linear);

@@ -76,8 +76,7 @@ void installInterruptHandling() {
   ::pthread_sigmask(SIG_BLOCK, &wanted, nullptr);
   std::thread([wanted] {
     int sig = 0;
-    while (::sigwait(&wanted, &sig) != 0) {
-    }
+    while (::sigwait(&wanted, &sig) != 0) {}
     removeAndExit(sig);
   }).detach();
 }

@@ -79,9 +79,12 @@ void appendLine(const std::filesystem::path& file, const std::string& line) {
   int error = 0;
   for (std::string_view rest = bytes; !rest.empty() && error == 0;) {
     const ssize_t n = ::write(d.fd, rest.data(), rest.size());
-    if (n < 0 && errno != EINTR) error = errno;
-    else if (n == 0) error = ENOSPC;  // no progress and no reason: do not spin
-    else if (n > 0) rest.remove_prefix(static_cast<std::size_t>(n));
+    if (n < 0 && errno != EINTR)
+      error = errno;
+    else if (n == 0)
+      error = ENOSPC;  // no progress and no reason: do not spin
+    else if (n > 0)
+      rest.remove_prefix(static_cast<std::size_t>(n));
   }
   if (error == 0 && ::fsync(d.fd) != 0) error = errno;
   if (error != 0) {

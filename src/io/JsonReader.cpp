@@ -64,7 +64,9 @@ void JsonReader::require(const std::string& key, const std::string& form) const 
 
 RotationRows JsonReader::matrix3(const std::string& key, const std::string& shape) const {
   const json& v = object_.at(key);
-  const auto bad = [&] { fail(key, cat("must be a 3×3 matrix given row by row, ", shape, ", of finite numbers, not ", excerpt(v.dump()))); };
+  const auto bad = [&] {
+    fail(key, cat("must be a 3×3 matrix given row by row, ", shape, ", of finite numbers, not ", excerpt(v.dump())));
+  };
   if (!v.is_array() || v.size() != 3) bad();
   RotationRows m;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -86,10 +88,12 @@ std::string JsonReader::string(const std::string& key) const {
 
 JsonReader JsonReader::child(const std::string& key, const std::set<std::string>& allowed) const {
   const json& v = object_.at(key);
-  if (!v.is_object()) fail(key, cat("must be an object with keys among ", joinedKeys(allowed), ", not ", excerpt(v.dump())));
+  if (!v.is_object())
+    fail(key, cat("must be an object with keys among ", joinedKeys(allowed), ", not ", excerpt(v.dump())));
   for (const auto& item : v.items())
     if (allowed.count(item.key()) == 0)
-      throw InputError(cat(where_, ": unknown key \"", key, ".", excerpt(item.key()), "\"; \"", key, "\" takes ", joinedKeys(allowed)));
+      throw InputError(cat(where_, ": unknown key \"", key, ".", excerpt(item.key()), "\"; \"", key, "\" takes ",
+                           joinedKeys(allowed)));
   return JsonReader(v, where_, key + ".");
 }
 

@@ -68,7 +68,9 @@ class JsonReader final : public KeyReader {
 template <int N>
 glm::vec<N, double> JsonReader::vector(const std::string& key) const {
   const nlohmann::json& v = object_.at(key);
-  const auto bad = [&] { fail(key, "must be an array of " + std::to_string(N) + " numbers, not " + excerpt(v.dump())); };
+  const auto bad = [&] {
+    fail(key, "must be an array of " + std::to_string(N) + " numbers, not " + excerpt(v.dump()));
+  };
   if (!v.is_array() || v.size() != N) bad();
   glm::vec<N, double> out;
   for (int i = 0; i < N; ++i) {

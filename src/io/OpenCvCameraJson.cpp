@@ -14,8 +14,9 @@ namespace lenslab {
 
 // The OpenCV form: intrinsics as "intrinsics" or "K" (+ "width", "height"), the pose as eye/target/up
 // or R/t, OpenCV's distCoeffs as "dist" (or "distortion").
-const std::set<std::string> kOpenCvFormKeys = {"eye", "target", "up", "R", "t", "intrinsics", "K", "width", "height",
-                                               "dist", "focus_distance", "aperture_radius", "near", "far"};
+const std::set<std::string> kOpenCvFormKeys = {
+    "eye",  "target", "up", "R", "t", "intrinsics", "K", "width", "height", "dist", "focus_distance", "aperture_radius",
+    "near", "far"};
 // Keys that only the OpenCV form takes: any of them selects it.
 const std::set<std::string> kOpenCvOnlyKeys = {"intrinsics", "K", "R", "t", "dist"};
 
@@ -30,10 +31,12 @@ constexpr NumberRange kFocalLengthPx{.min = 1e-3, .max = 1e9, .unit = "pixels"};
 
 // fx, fy in kFocalLengthPx and a size of 1 to kMaxImageSidePx a side; `reader` and the keys name
 // them in messages.
-void checkIntrinsics(const OpenCvIntrinsics& k, const JsonReader& reader, const std::string& fxKey, const std::string& fyKey,
-                     const std::string& widthKey, const std::string& heightKey) {
-  if (const auto problem = numberProblem(k.fx, kFocalLengthPx)) reader.failNumber(fxKey, *problem, "the focal length in pixels");
-  if (const auto problem = numberProblem(k.fy, kFocalLengthPx)) reader.failNumber(fyKey, *problem, "the focal length in pixels");
+void checkIntrinsics(const OpenCvIntrinsics& k, const JsonReader& reader, const std::string& fxKey,
+                     const std::string& fyKey, const std::string& widthKey, const std::string& heightKey) {
+  if (const auto problem = numberProblem(k.fx, kFocalLengthPx))
+    reader.failNumber(fxKey, *problem, "the focal length in pixels");
+  if (const auto problem = numberProblem(k.fy, kFocalLengthPx))
+    reader.failNumber(fyKey, *problem, "the focal length in pixels");
   if (k.widthPx < 1 || k.widthPx > kMaxImageSidePx)
     reader.fail(widthKey, cat("is ", k.widthPx, "; use 1 to ", kMaxImageSidePx, " pixels"));
   if (k.heightPx < 1 || k.heightPx > kMaxImageSidePx)
@@ -43,7 +46,8 @@ void checkIntrinsics(const OpenCvIntrinsics& k, const JsonReader& reader, const 
 // "intrinsics": {"fx", "fy", "cx", "cy", "width", "height"}.
 OpenCvIntrinsics intrinsicsFromObject(const JsonReader& r) {
   if (r.has("width") || r.has("height"))
-    r.fail(r.has("width") ? "width" : "height", "goes inside \"intrinsics\" in this form (beside a \"K\" matrix it stands alone)");
+    r.fail(r.has("width") ? "width" : "height",
+           "goes inside \"intrinsics\" in this form (beside a \"K\" matrix it stands alone)");
   const JsonReader o = r.child("intrinsics", kIntrinsicsKeys);
   for (const char* key : {"fx", "fy", "cx", "cy", "width", "height"}) o.require(key, "intrinsics");
   OpenCvIntrinsics k;
@@ -52,7 +56,6 @@ OpenCvIntrinsics intrinsicsFromObject(const JsonReader& r) {
   checkIntrinsics(k, o, "fx", "fy", "width", "height");
   return k;
 }
-
 
 }  // namespace
 
@@ -64,7 +67,6 @@ ImageSize imageSizeOf(const JsonReader& r) {
   return ImageSize{static_cast<int>(size.x), static_cast<int>(size.y)};
 }
 
-
 namespace {
 
 // "K": [[fx, 0, cx], [0, fy, cy], [0, 0, 1]], with "width" and "height" (or "image_size") beside it.
@@ -72,15 +74,18 @@ namespace {
 OpenCvIntrinsics intrinsicsFromMatrix(const JsonReader& r) {
   const RotationRows m = r.matrix3("K", "[[fx, 0, cx], [0, fy, cy], [0, 0, 1]]");
   if (m[0].y != 0.0)
-    r.fail("K", cat("has skew K[0][1] = ", m[0].y, "; lenslab's window has rectangular pixels and cannot hold skew: give 0 "
+    r.fail("K", cat("has skew K[0][1] = ", m[0].y,
+                    "; lenslab's window has rectangular pixels and cannot hold skew: give 0 "
                     "(OpenCV's calibrateCamera never estimates it)"));
   if (m[1].x != 0.0) r.fail("K", cat("has K[1][0] = ", m[1].x, "; a camera matrix has 0 there"));
   if (m[2] != glm::dvec3(0.0, 0.0, 1.0))
-    r.fail("K", cat("has the last row [", m[2].x, ", ", m[2].y, ", ", m[2].z, "]; a camera matrix has [0, 0, 1] there"));
+    r.fail("K",
+           cat("has the last row [", m[2].x, ", ", m[2].y, ", ", m[2].z, "]; a camera matrix has [0, 0, 1] there"));
   OpenCvIntrinsics k;
   k.fx = m[0].x, k.fy = m[1].y, k.cx = m[0].z, k.cy = m[1].z;
   const bool hasWidthHeight = r.has("width") || r.has("height");
-  if (hasWidthHeight && r.has("image_size")) r.fail("image_size", "and \"width\"/\"height\" both give the image size; give one");
+  if (hasWidthHeight && r.has("image_size"))
+    r.fail("image_size", "and \"width\"/\"height\" both give the image size; give one");
   if (hasWidthHeight) {
     r.require("width", "OpenCV \"K\"");
     r.require("height", "OpenCV \"K\"");
@@ -91,8 +96,9 @@ OpenCvIntrinsics intrinsicsFromMatrix(const JsonReader& r) {
     k.widthPx = size.widthPx, k.heightPx = size.heightPx;
     checkIntrinsics(k, r, "K", "K", "image_size", "image_size");
   } else {
-    throw InputError(cat(r.where(), ": \"K\" needs the image size it was calibrated for: give \"width\" and \"height\" "
-                                    "(pixels), or \"image_size\": [width, height]"));
+    throw InputError(cat(r.where(),
+                         ": \"K\" needs the image size it was calibrated for: give \"width\" and \"height\" "
+                         "(pixels), or \"image_size\": [width, height]"));
   }
   return k;
 }
@@ -115,7 +121,8 @@ OpenCvPose poseFromRt(const JsonReader& r) {
     r.fail("R", cat("is not a rotation: R·Rᵀ differs from the identity by ", check.orthonormalityError, " (at most ",
                     kRotationTolerance, " is accepted); give R with at least 7 significant digits"));
   if (!(check.determinant > 0.0))
-    r.fail("R", cat("is a reflection (det R = ", check.determinant, "), not a rotation: OpenCV's camera frame is "
+    r.fail("R", cat("is a reflection (det R = ", check.determinant,
+                    "), not a rotation: OpenCV's camera frame is "
                     "right-handed (x right, y down, z forward); give det R = +1"));
   return pose;
 }
@@ -129,15 +136,17 @@ OpenCvPose poseFromRt(const JsonReader& r) {
 CameraFile parseOpenCv(const JsonReader& r) {
   if (r.has("intrinsics") && r.has("K")) r.fail("K", "and \"intrinsics\" both give the intrinsics; give one");
   if (!r.has("intrinsics") && !r.has("K"))
-    throw InputError(cat(r.where(), ": an OpenCV camera needs its intrinsics: \"K\" ([[fx, 0, cx], [0, fy, cy], [0, 0, 1]] "
-                                    "with \"width\" and \"height\") or \"intrinsics\" {fx, fy, cx, cy, width, height}"));
+    throw InputError(cat(r.where(),
+                         ": an OpenCV camera needs its intrinsics: \"K\" ([[fx, 0, cx], [0, fy, cy], [0, 0, 1]] "
+                         "with \"width\" and \"height\") or \"intrinsics\" {fx, fy, cx, cy, width, height}"));
   const bool rt = r.has("R") || r.has("t");
   const bool look = r.has("eye") || r.has("target") || r.has("up");
   if (rt && look)
     r.fail(r.has("R") ? "R" : "t", "and \"eye\"/\"target\"/\"up\" both give the pose; give R and t, or eye and target");
   if (!rt && !look)
-    throw InputError(cat(r.where(), ": an OpenCV camera needs its pose: \"R\" and \"t\" (X_cam = R·X_world + t), or "
-                                    "\"eye\" and \"target\""));
+    throw InputError(cat(r.where(),
+                         ": an OpenCV camera needs its pose: \"R\" and \"t\" (X_cam = R·X_world + t), or "
+                         "\"eye\" and \"target\""));
   const OpenCvIntrinsics k = r.has("K") ? intrinsicsFromMatrix(r) : intrinsicsFromObject(r);
 
   PinholePlacement placement;
@@ -185,6 +194,5 @@ CameraFile parseOpenCv(const JsonReader& r) {
   file.camera.calibratedSize = ImageSize{k.widthPx, k.heightPx};
   return file;
 }
-
 
 }  // namespace lenslab

@@ -41,7 +41,8 @@ int probeFolder(const fs::path& folder) {
 
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -51,7 +52,8 @@ void checkOutputPath(const fs::path& path, OutputKind kind, std::string_view opt
   if (path.empty()) throw InputError(cat(option, ": the file name is empty; give one"));
   const std::string name = cat(option, " ", path.string());
   if (kind == OutputKind::Image) checkImageExtension(path);
-  if (kind == OutputKind::Json && lowerExtension(path) != ".json") throw InputError(cat(name, ": give a .json file name"));
+  if (kind == OutputKind::Json && lowerExtension(path) != ".json")
+    throw InputError(cat(name, ": give a .json file name"));
   if (kind == OutputKind::JsonLines && lowerExtension(path) != ".jsonl" && lowerExtension(path) != ".json")
     throw InputError(cat(name, ": give a .jsonl (or .json) file name for its JSON lines"));
 
@@ -66,19 +68,23 @@ void checkOutputPath(const fs::path& path, OutputKind kind, std::string_view opt
   if (!fs::is_directory(folderStatus)) throw InputError(cat(name, ": ", folder.string(), " is not a folder"));
   // The probe's name is short; the target's may not fit (NAME_MAX, 255 bytes on most).
   const std::size_t nameBytes = path.filename().string().size();
-  if (const long nameMax = ::pathconf(folder.c_str(), _PC_NAME_MAX); nameMax > 0 && nameBytes > static_cast<std::size_t>(nameMax))
-    throw InputError(cat(name, ": the file name is ", nameBytes, " bytes; the file system in ", folder.string(), " allows ",
-                         nameMax, ": give a shorter name"));
+  if (const long nameMax = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+      nameMax > 0 && nameBytes > static_cast<std::size_t>(nameMax))
+    throw InputError(cat(name, ": the file name is ", nameBytes, " bytes; the file system in ", folder.string(),
+                         " allows ", nameMax, ": give a shorter name"));
   if (const int e = probeFolder(folder); e != 0)
-    throw InputError(cat(name, ": cannot write in the folder ", folder.string(), ": ", std::system_category().message(e)));
+    throw InputError(
+        cat(name, ": cannot write in the folder ", folder.string(), ": ", std::system_category().message(e)));
 }
 
-void checkNotInput(const fs::path& output, std::string_view option, const fs::path& input, std::string_view inputOption) {
+void checkNotInput(const fs::path& output, std::string_view option, const fs::path& input,
+                   std::string_view inputOption) {
   if (output.empty() || input.empty()) return;
   std::error_code error;
   const bool same = fs::equivalent(output, input, error);
   if (!error && same)
-    throw InputError(cat(option, " ", output.string(), ": is the ", inputOption, " file this run reads; give another name"));
+    throw InputError(
+        cat(option, " ", output.string(), ": is the ", inputOption, " file this run reads; give another name"));
 }
 
 }  // namespace lenslab

@@ -9,10 +9,10 @@
 namespace lenslab {
 
 enum class OutputKind {
-  Image,  // .png or .exr (io/ImageFile.h)
-  Json,   // .json
+  Image,      // .png or .exr (io/ImageFile.h)
+  Json,       // .json
   JsonLines,  // .jsonl or .json (capture's manifest, appended line by line)
-  Any,    // any name (the sweep's fixed report names)
+  Any,        // any name (the sweep's fixed report names)
 };
 
 // Throws InputError, one line naming the option and the file, unless: the extension suits `kind`;

@@ -8,9 +8,9 @@
 
 namespace lenslab {
 
-const std::set<std::string> kPhysicalKeys = {"eye", "target", "up", "focal_length_mm", "sensor_mm",
-                                             "f_number", "focus_distance", "near", "far",
-                                             "shutter_s", "iso"};
+const std::set<std::string> kPhysicalKeys = {
+    "eye", "target",    "up", "focal_length_mm", "sensor_mm", "f_number", "focus_distance", "near",
+    "far", "shutter_s", "iso"};
 
 CameraFile parsePhysical(const JsonReader& r) {
   r.require("eye", "physical");
@@ -27,8 +27,8 @@ CameraFile parsePhysical(const JsonReader& r) {
   if (r.has("far")) c.farDistance = r.distance("far");
   // The exposure's settings (camera/Exposure.h); what they need of the rest is checked where the
   // exposure is resolved, after the command line's options.
-  for (const auto& [key, range, field] : {std::tuple{"shutter_s", kShutterSecondsRange, &c.shutterSeconds},
-                                          std::tuple{"iso", kIsoRange, &c.iso}})
+  for (const auto& [key, range, field] :
+       {std::tuple{"shutter_s", kShutterSecondsRange, &c.shutterSeconds}, std::tuple{"iso", kIsoRange, &c.iso}})
     if (r.has(key)) {
       const double value = r.number(key);
       if (const auto problem = numberProblem(value, range)) r.failNumber(key, *problem);
@@ -44,6 +44,5 @@ CameraFile parsePhysical(const JsonReader& r) {
   validate(file.camera.view, r.where());
   return file;
 }
-
 
 }  // namespace lenslab

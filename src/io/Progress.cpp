@@ -24,8 +24,8 @@ std::string figures(std::int64_t done, std::int64_t total, std::string_view unit
                   static_cast<long long>(total), static_cast<int>(unit.size()), unit.data(), seconds,
                   seconds / static_cast<double>(done) * static_cast<double>(total - done));
   else
-    std::snprintf(text, sizeof text, "%lld/%lld %.*s, %.1f s", static_cast<long long>(done), static_cast<long long>(total),
-                  static_cast<int>(unit.size()), unit.data(), seconds);
+    std::snprintf(text, sizeof text, "%lld/%lld %.*s, %.1f s", static_cast<long long>(done),
+                  static_cast<long long>(total), static_cast<int>(unit.size()), unit.data(), seconds);
   return text;
 }
 
@@ -39,8 +39,10 @@ double progressIntervalSeconds(double defaultSeconds) {
   char* end = nullptr;
   const double seconds = std::strtod(text, &end);
   if (*end != '\0' || !(seconds >= 0.0 && seconds <= 86400.0))
-    throw InputError(cat("LENSLAB_PROGRESS_SECONDS=", text, ": give the seconds between progress lines, a number from 0 "
-                         "to 86400 (default ", kProgressIntervalSeconds, "; 0 = a line at every step)"));
+    throw InputError(cat("LENSLAB_PROGRESS_SECONDS=", text,
+                         ": give the seconds between progress lines, a number from 0 "
+                         "to 86400 (default ",
+                         kProgressIntervalSeconds, "; 0 = a line at every step)"));
   return seconds;
 }
 
@@ -53,13 +55,19 @@ std::string progressLine(std::string_view label, std::int64_t done, std::int64_t
 
 ProgressReporter::ProgressReporter(std::string label, std::string unit, bool quiet, double defaultIntervalSeconds)
     : ProgressReporter(std::move(label), std::move(unit),
-                       quiet ? Style::Silent : isTerminal(stderr) ? Style::Bar : Style::Lines,
+                       quiet                ? Style::Silent
+                       : isTerminal(stderr) ? Style::Bar
+                                            : Style::Lines,
                        quiet ? 0.0 : progressIntervalSeconds(defaultIntervalSeconds), std::cerr,
                        [start = std::chrono::steady_clock::now()] { return secondsSince(start); }) {}
 
 ProgressReporter::ProgressReporter(std::string label, std::string unit, Style style, double intervalSeconds,
                                    std::ostream& out, std::function<double()> clock)
-    : label_(std::move(label)), unit_(std::move(unit)), style_(style), interval_(intervalSeconds), out_(out),
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      style_(style),
+      interval_(intervalSeconds),
+      out_(out),
       clock_(std::move(clock)) {
   start_ = clock_();
   lastLine_ = start_;
@@ -101,7 +109,8 @@ void ProgressReporter::update(std::int64_t done, std::int64_t total, std::string
 
 void ProgressReporter::note(std::string_view line) {
   if (barShown_) {
-    out_ << "\r" << line << std::string(barLength_ > line.size() ? barLength_ - line.size() : 0, ' ') << "\n" << std::flush;
+    out_ << "\r" << line << std::string(barLength_ > line.size() ? barLength_ - line.size() : 0, ' ') << "\n"
+         << std::flush;
     barShown_ = false;
     barLength_ = 0;
     lastLine_ = -1e300;  // the bar comes back at the next update

@@ -74,9 +74,9 @@ class ProgressReporter {
   std::ostream& out_;
   std::function<double()> clock_;
   double start_ = 0.0;
-  double lastLine_ = 0.0;       // when the last line was written (Lines)
-  bool wroteAny_ = false;       // a line or a bar was written
-  bool barShown_ = false;       // a bar is on the terminal's last line
+  double lastLine_ = 0.0;  // when the last line was written (Lines)
+  bool wroteAny_ = false;  // a line or a bar was written
+  bool barShown_ = false;  // a bar is on the terminal's last line
   std::size_t barLength_ = 0;
   bool finished_ = false;
   std::int64_t done_ = 0;

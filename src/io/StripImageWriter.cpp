@@ -25,7 +25,8 @@ std::string oneLine(std::string s) {
 
 bool isPng(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".png";
 }
 
@@ -65,15 +66,17 @@ void StripImageWriter::add(int x0, int y0, const Image& block) {
     stripY0_ = y0;
     stripY1_ = y0 + block.height;
     strip_.assign(static_cast<std::size_t>(size_.widthPx) * static_cast<std::size_t>(block.height) *
-                      static_cast<std::size_t>(bytesPerPixel_), 0);
+                      static_cast<std::size_t>(bytesPerPixel_),
+                  0);
   } else if (y0 != stripY0_ || y0 + block.height != stripY1_) {
     throw std::logic_error(cat("StripImageWriter: a block at rows ", y0, " to ", y0 + block.height,
                                " is not in the strip being written (rows ", stripY0_, " to ", stripY1_, ")"));
   }
   if (x0 < 0 || x0 + block.width > size_.widthPx) throw std::logic_error("StripImageWriter: a block outside the image");
   for (int y = 0; y < block.height; ++y) {
-    std::uint8_t* row = &strip_[(static_cast<std::size_t>(y) * static_cast<std::size_t>(size_.widthPx) +
-                                 static_cast<std::size_t>(x0)) * static_cast<std::size_t>(bytesPerPixel_)];
+    std::uint8_t* row =
+        &strip_[(static_cast<std::size_t>(y) * static_cast<std::size_t>(size_.widthPx) + static_cast<std::size_t>(x0)) *
+                static_cast<std::size_t>(bytesPerPixel_)];
     const float* from = &block.rgba[block.offset(0, y)];
     if (png_) {
       // Exactly writeImage's encoding of each channel.
@@ -112,7 +115,8 @@ void StripImageWriter::finish() {
     static const unsigned char kIend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
     std::ifstream in(temporary_, std::ios::binary | std::ios::ate);
     unsigned char tail[12] = {};
-    const bool ok = in && in.tellg() >= 12 && in.seekg(-12, std::ios::end) && in.read(reinterpret_cast<char*>(tail), 12) &&
+    const bool ok = in && in.tellg() >= 12 && in.seekg(-12, std::ios::end) &&
+                    in.read(reinterpret_cast<char*>(tail), 12) &&
                     std::equal(std::begin(tail), std::end(tail), std::begin(kIend));
     if (!ok) throw InputError(cat(target_.string(), ": cannot write it: the PNG was cut short (is the disk full?)"));
   }

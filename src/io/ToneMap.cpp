@@ -60,9 +60,11 @@ glm::vec3 displayEncoded(glm::vec3 linear, const DisplayEncoding& e) {
   return {srgbFromLinear(d.r), srgbFromLinear(d.g), srgbFromLinear(d.b)};
 }
 
-DisplaySettings resolveDisplay(const ExposureRequest& request, std::string_view viewTransform, const SelectedCamera& camera) {
+DisplaySettings resolveDisplay(const ExposureRequest& request, std::string_view viewTransform,
+                               const SelectedCamera& camera) {
   const std::optional<ViewTransform> transform = viewTransformNamed(viewTransform);
-  if (!transform) throw InputError(cat("--view-transform ", excerpt(viewTransform), ": give one of ", viewTransformNames()));
+  if (!transform)
+    throw InputError(cat("--view-transform ", excerpt(viewTransform), ": give one of ", viewTransformNames()));
   DisplaySettings d;
   d.exposure = resolveExposure(request, camera);
   d.encoding.exposureScale = static_cast<float>(d.exposure.scale);

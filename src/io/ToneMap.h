@@ -53,6 +53,7 @@ struct DisplaySettings {
 };
 // Throws InputError naming the option or field (resolveExposure's), or --view-transform for an
 // unknown name.
-DisplaySettings resolveDisplay(const ExposureRequest& request, std::string_view viewTransform, const SelectedCamera& camera);
+DisplaySettings resolveDisplay(const ExposureRequest& request, std::string_view viewTransform,
+                               const SelectedCamera& camera);
 
 }  // namespace lenslab

@@ -24,7 +24,7 @@ enum class AperturePattern {
 
 const char* patternName(AperturePattern pattern);
 std::optional<AperturePattern> patternFromName(const std::string& name);
-std::string patternNames();  // "lecture17, concentric, r2, random"
+std::string patternNames();                  // "lecture17, concentric, r2, random"
 std::vector<std::string> patternNameList();  // the same, one name each, in AperturePattern's order
 
 struct LensSample {

@@ -65,13 +65,16 @@ glm::dvec2 squeezed(glm::dvec2 p, const ApertureShape& s) {
 
 std::optional<ApertureProblem> apertureShapeProblem(const ApertureShape& s) {
   if (s.blades != 0 && (s.blades < 3 || s.blades > ApertureShape::kMaxBlades))
-    return ApertureProblem{"blades", cat("is ", s.blades, "; give 0 (a circle) or 3 to ", ApertureShape::kMaxBlades, " blades")};
-  if (!std::isfinite(s.rotationDeg)) return ApertureProblem{"rotation_deg", cat("is ", s.rotationDeg, "; give an angle in degrees")};
+    return ApertureProblem{"blades",
+                           cat("is ", s.blades, "; give 0 (a circle) or 3 to ", ApertureShape::kMaxBlades, " blades")};
+  if (!std::isfinite(s.rotationDeg))
+    return ApertureProblem{"rotation_deg", cat("is ", s.rotationDeg, "; give an angle in degrees")};
   if (!(s.roundness >= 0.0 && s.roundness <= 1.0))
     return ApertureProblem{"roundness", cat("is ", s.roundness, "; give 0 (straight blades) to 1 (a circle)")};
   if (!(s.anamorphicSqueeze >= kMinSqueeze && s.anamorphicSqueeze <= kMaxSqueeze))
-    return ApertureProblem{"anamorphic_squeeze", cat("is ", s.anamorphicSqueeze, "; give a ratio from ", kMinSqueeze, " to ",
-                                                     kMaxSqueeze, " (1: none; 1.33, 1.5 and 2 are common anamorphic lenses)")};
+    return ApertureProblem{"anamorphic_squeeze",
+                           cat("is ", s.anamorphicSqueeze, "; give a ratio from ", kMinSqueeze, " to ", kMaxSqueeze,
+                               " (1: none; 1.33, 1.5 and 2 are common anamorphic lenses)")};
   return std::nullopt;
 }
 
@@ -113,7 +116,8 @@ std::vector<glm::dvec2> apertureOutline(const ApertureShape& s, int pointsPerSid
     const double normal = firstNormalAngle(s) + 2.0 * sector.alpha * k;
     for (int i = 0; i < pointsPerSide; ++i) {
       const double theta = -sector.alpha + 2.0 * sector.alpha * i / pointsPerSide;
-      out.push_back(squeezed(scale * sector.boundary(theta) * glm::dvec2(std::cos(normal + theta), std::sin(normal + theta)), s));
+      out.push_back(
+          squeezed(scale * sector.boundary(theta) * glm::dvec2(std::cos(normal + theta), std::sin(normal + theta)), s));
     }
   }
   return out;

@@ -10,13 +10,15 @@ namespace {
 // for rays that cross the plane off the rim and meet the curved surface within it.
 double searchHalf(const LensPrescription& lens) { return 0.75 * lens.surfaces.back().apertureMm; }
 
-std::optional<LensRay> traceFrom(const LensPrescription& lens, glm::dvec3 film, glm::dvec2 onRear, double rearZ, const LensTrace& trace) {
+std::optional<LensRay> traceFrom(const LensPrescription& lens, glm::dvec3 film, glm::dvec2 onRear, double rearZ,
+                                 const LensTrace& trace) {
   return traceLens(lens, {film, glm::normalize(glm::dvec3(onRear, rearZ) - film)}, true, trace);
 }
 
 }  // namespace
 
-double filmIrradianceBySearch(const LensPrescription& lens, double filmZ, double radiusMm, const LensTrace& trace, int n) {
+double filmIrradianceBySearch(const LensPrescription& lens, double filmZ, double radiusMm, const LensTrace& trace,
+                              int n) {
   const double rearZ = lens.lengthMm(), half = searchHalf(lens), d = filmZ - rearZ;
   const glm::dvec3 film(radiusMm, 0.0, filmZ);
   const double cell = 2.0 * half / n;
@@ -35,8 +37,8 @@ ExitPupil::ExitPupil(const LensPrescription& lens, double filmZ, double filmRadi
     : lens_(&lens), trace_(trace), filmZ_(filmZ), filmRadiusMm_(filmRadiusMm), rearZ_(lens.lengthMm()) {
   trace_.path = nullptr;
   const double half = searchHalf(lens);
-  constexpr int kSearch = 64;        // cells per side of the search
-  constexpr int kRadiiPerRing = 4;   // both ends and two between
+  constexpr int kSearch = 64;       // cells per side of the search
+  constexpr int kRadiiPerRing = 4;  // both ends and two between
   const double cell = 2.0 * half / kSearch;
   boxes_.resize(static_cast<std::size_t>(rings));
   for (int k = 0; k < rings; ++k) {
@@ -65,7 +67,8 @@ ExitPupil::ExitPupil(const LensPrescription& lens, double filmZ, double filmRadi
 
 const PupilBox& ExitPupil::boxAt(double radiusMm) const {
   const double t = filmRadiusMm_ > 0.0 ? radiusMm / filmRadiusMm_ : 0.0;
-  const auto k = static_cast<std::size_t>(std::clamp(t * static_cast<double>(boxes_.size()), 0.0, static_cast<double>(boxes_.size() - 1)));
+  const auto k = static_cast<std::size_t>(
+      std::clamp(t * static_cast<double>(boxes_.size()), 0.0, static_cast<double>(boxes_.size() - 1)));
   return boxes_[k];
 }
 

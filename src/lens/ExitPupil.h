@@ -63,6 +63,7 @@ class ExitPupil {
 
 // The irradiance at film radius r (dA·cos⁴α / D² over the rays that pass), by an n × n search of
 // the whole rear element's neighbourhood: slow, for the constructor's normalisation and for tests.
-double filmIrradianceBySearch(const LensPrescription& lens, double filmZ, double radiusMm, const LensTrace& trace, int n);
+double filmIrradianceBySearch(const LensPrescription& lens, double filmZ, double radiusMm, const LensTrace& trace,
+                              int n);
 
 }  // namespace lenslab

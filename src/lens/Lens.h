@@ -17,8 +17,8 @@ namespace lenslab {
 struct Lens {
   double apertureRadius = 0.0;  // world units; 0 = pinhole
   ApertureShape aperture;       // round unless the camera has blades or a squeeze (lens/ApertureShape.h)
-  LensBarrel barrel;            // the barrel's opening in front of the aperture: cat's-eye vignetting (lens/LensBarrel.h)
-  LensEffects effects;          // distortion, chromatic aberration, field curvature, vignetting (lens/LensEffects.h)
+  LensBarrel barrel;    // the barrel's opening in front of the aperture: cat's-eye vignetting (lens/LensBarrel.h)
+  LensEffects effects;  // distortion, chromatic aberration, field curvature, vignetting (lens/LensEffects.h)
 
   bool isPinhole() const { return !(apertureRadius > 0.0); }
   // Whether the barrel clips the aperture anywhere: a pinhole has no aperture to clip.

@@ -88,8 +88,9 @@ double fieldAngleAt(const Setup& s, double h, double wavelengthNm) {
     const double mid = 0.5 * (lo + hi);
     (chiefRay(s, mid, wavelengthNm) ? lo : hi) = mid;
   }
-  throw InputError(cat(s.lens.source, ": no chief ray reaches the film ", mmText(h), " off the axis; the lens covers a circle of ",
-                       mmText(lo), " radius there, so give a --sensor whose diagonal is at most ", mmText(2.0 * lo)));
+  throw InputError(cat(s.lens.source, ": no chief ray reaches the film ", mmText(h),
+                       " off the axis; the lens covers a circle of ", mmText(lo),
+                       " radius there, so give a --sensor whose diagonal is at most ", mmText(2.0 * lo)));
 }
 
 // Integrates `weight` over the rays that pass, sampled on a grid: first a coarse grid over
@@ -148,8 +149,9 @@ double rmsSpot(const Setup& s, double h, double focusDistanceMm, int n) {
   const bool atInfinity = !(focusDistanceMm > 0.0) || std::isinf(focusDistanceMm);
   // The object point on the chief ray's scene-side line, focusDistance in front of the film.
   const double objectZ = s.filmZ - focusDistanceMm;
-  const glm::dvec3 object = atInfinity ? glm::dvec3(0.0)
-                                       : chief->origin + (objectZ - chief->origin.z) / chief->direction.z * chief->direction;
+  const glm::dvec3 object = atInfinity
+                                ? glm::dvec3(0.0)
+                                : chief->origin + (objectZ - chief->origin.z) / chief->direction.z * chief->direction;
   LensTrace trace;
   trace.stopDiameterMm = s.stopDiameterMm;
   std::vector<glm::dvec2> landed;
@@ -165,10 +167,11 @@ double rmsSpot(const Setup& s, double h, double focusDistanceMm, int n) {
   // Centred where the chief ray crosses the starting plane, over twice the entrance pupil there
   // (stretched by the obliquity: the bundle is wider across the plane off-axis).
   const glm::dvec2 centre(chief->origin + (startZ - chief->origin.z) / chief->direction.z * chief->direction);
-  integrateOverPassing(centre, 2.0 * s.entrancePupilDiameterMm / std::max(0.05, -chief->direction.z), n, ray, [&](glm::dvec2, const LensRay& r) {
-    landed.push_back(onFilm(r));
-    return 1.0;
-  });
+  integrateOverPassing(centre, 2.0 * s.entrancePupilDiameterMm / std::max(0.05, -chief->direction.z), n, ray,
+                       [&](glm::dvec2, const LensRay& r) {
+                         landed.push_back(onFilm(r));
+                         return 1.0;
+                       });
   if (landed.empty()) return NAN;
   glm::dvec2 mean(0.0);
   for (const glm::dvec2& p : landed) mean += p;
@@ -219,7 +222,8 @@ void fitDistortionModels(const Setup& s, double halfDiagonal, double reference, 
     for (std::size_t i = 0; i < thetas.size(); ++i) num += heights[i] * thetas[i], den += thetas[i] * thetas[i];
     report.equidistantFocalMm = num / den;
     double sum = 0.0;
-    for (std::size_t i = 0; i < thetas.size(); ++i) sum += std::pow((report.equidistantFocalMm * thetas[i] - heights[i]) / heights[i], 2.0);
+    for (std::size_t i = 0; i < thetas.size(); ++i)
+      sum += std::pow((report.equidistantFocalMm * thetas[i] - heights[i]) / heights[i], 2.0);
     report.equidistantRmsErrorPercent = 100.0 * std::sqrt(sum / static_cast<double>(thetas.size()));
   }
 }
@@ -267,9 +271,10 @@ LensReport analyseLens(const LensPrescription& lens, const LensAnalysisOptions& 
   const Setup setup{lens, report.stopDiameterMm, lens.lengthMm() + report.filmDistanceMm, report.firstOrder.exitPupilMm,
                     report.firstOrder.entrancePupilDiameterMm};
   const double halfDiagonal = 0.5 * glm::length(o.sensorMm);
-  report.fieldOfViewDegrees = 2.0 * kDegrees *
-                              glm::dvec3(fieldAngleAt(setup, 0.5 * o.sensorMm.x, kLineDNm), fieldAngleAt(setup, 0.5 * o.sensorMm.y, kLineDNm),
-                                         fieldAngleAt(setup, halfDiagonal, kLineDNm));
+  report.fieldOfViewDegrees =
+      2.0 * kDegrees *
+      glm::dvec3(fieldAngleAt(setup, 0.5 * o.sensorMm.x, kLineDNm), fieldAngleAt(setup, 0.5 * o.sensorMm.y, kLineDNm),
+                 fieldAngleAt(setup, halfDiagonal, kLineDNm));
   report.fisheye = report.fieldOfViewDegrees.z >= 120.0;
 
   // The rectilinear reference: the paraxial focal length at this focus, h / tan θ near the axis.
@@ -282,8 +287,11 @@ LensReport analyseLens(const LensPrescription& lens, const LensAnalysisOptions& 
     f.imageHeightMm = f.fieldFraction * halfDiagonal;
     const double theta = f.imageHeightMm > 0.0 ? fieldAngleAt(setup, f.imageHeightMm, kLineDNm) : 0.0;
     f.fieldAngleDegrees = theta * kDegrees;
-    f.distortionPercent = f.imageHeightMm > 0.0 && theta < 0.5 * kPi ? 100.0 * (f.imageHeightMm / (reference * std::tan(theta)) - 1.0) : 0.0;
-    f.relativeIllumination = axialIrradiance > 0.0 ? irradiance(setup, f.imageHeightMm, o.pupilSamples) / axialIrradiance : 0.0;
+    f.distortionPercent = f.imageHeightMm > 0.0 && theta < 0.5 * kPi
+                              ? 100.0 * (f.imageHeightMm / (reference * std::tan(theta)) - 1.0)
+                              : 0.0;
+    f.relativeIllumination =
+        axialIrradiance > 0.0 ? irradiance(setup, f.imageHeightMm, o.pupilSamples) / axialIrradiance : 0.0;
     report.field.push_back(f);
   }
 
@@ -292,7 +300,8 @@ LensReport analyseLens(const LensPrescription& lens, const LensAnalysisOptions& 
   if (report.dispersion) measureColour(setup, halfDiagonal, report);
 
   const double focus = atInfinity ? INFINITY : o.focusDistanceMm;
-  report.rmsSpotMm = {rmsSpot(setup, 0.0, focus, o.pupilSamples), rmsSpot(setup, 0.5 * halfDiagonal, focus, o.pupilSamples),
+  report.rmsSpotMm = {rmsSpot(setup, 0.0, focus, o.pupilSamples),
+                      rmsSpot(setup, 0.5 * halfDiagonal, focus, o.pupilSamples),
                       rmsSpot(setup, halfDiagonal, focus, o.pupilSamples)};
   return report;
 }

@@ -29,19 +29,23 @@ bool throughBarrel(const LensBarrel& barrel, glm::dvec2 lensOffset, glm::dvec2 n
   return glm::dot(atOpening, atOpening) <= barrel.radius * barrel.radius;
 }
 
-double roundApertureThroughBarrel(const LensBarrel& barrel, double apertureRadius, glm::dvec2 normalised, double inverseFocus) {
+double roundApertureThroughBarrel(const LensBarrel& barrel, double apertureRadius, glm::dvec2 normalised,
+                                  double inverseFocus) {
   if (!barrel.present() || !(apertureRadius > 0.0)) return 1.0;
   const double seen = apertureRadius * std::abs(1.0 - barrel.distance * inverseFocus);
   if (seen == 0.0) return throughBarrel(barrel, {0.0, 0.0}, normalised, inverseFocus) ? 1.0 : 0.0;
-  return circleOverlap(seen, barrel.radius, barrel.distance * glm::length(normalised)) / (glm::pi<double>() * seen * seen);
+  return circleOverlap(seen, barrel.radius, barrel.distance * glm::length(normalised)) /
+         (glm::pi<double>() * seen * seen);
 }
 
 std::optional<BarrelProblem> barrelProblem(double distanceMm, double diameterMm) {
   if (!(std::isfinite(distanceMm) && distanceMm > 0.0 && distanceMm <= 1e4))
-    return BarrelProblem{"distance_mm", cat("is ", distanceMm, "; give the opening's distance in front of the aperture, "
-                                                               "more than 0 and at most 10000 mm")};
+    return BarrelProblem{"distance_mm", cat("is ", distanceMm,
+                                            "; give the opening's distance in front of the aperture, "
+                                            "more than 0 and at most 10000 mm")};
   if (!(std::isfinite(diameterMm) && diameterMm > 0.0 && diameterMm <= 1e4))
-    return BarrelProblem{"diameter_mm", cat("is ", diameterMm, "; give the opening's diameter, more than 0 and at most 10000 mm")};
+    return BarrelProblem{"diameter_mm",
+                         cat("is ", diameterMm, "; give the opening's diameter, more than 0 and at most 10000 mm")};
   return std::nullopt;
 }
 

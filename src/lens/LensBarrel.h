@@ -33,7 +33,8 @@ bool throughBarrel(const LensBarrel& barrel, glm::dvec2 lensOffset, glm::dvec2 n
 // The share of a round aperture of radius `apertureRadius` that shows through the barrel in
 // direction `normalised`: the area of two circles' overlap (the aperture seen in the opening's
 // plane, radius R·|1 − distance/z_f|, centred at distance·n; the opening) over the aperture's area.
-double roundApertureThroughBarrel(const LensBarrel& barrel, double apertureRadius, glm::dvec2 normalised, double inverseFocus);
+double roundApertureThroughBarrel(const LensBarrel& barrel, double apertureRadius, glm::dvec2 normalised,
+                                  double inverseFocus);
 
 // The barrel's "distance_mm" and "diameter_mm" as a camera file gives them (millimetres; world
 // units are metres): a barrel in world units, or what is wrong ("distance_mm is -3; give ...").

@@ -8,13 +8,15 @@
 
 namespace lenslab {
 
-LensCamera::LensCamera(std::shared_ptr<const LensPrescription> lens, const LensCameraSettings& settings, const LensCameraPose& pose)
+LensCamera::LensCamera(std::shared_ptr<const LensPrescription> lens, const LensCameraSettings& settings,
+                       const LensCameraPose& pose)
     : lens_(std::move(lens)), settings_(settings), pose_(pose) {
   stopDiameterMm_ = stopDiameterForFNumber(*lens_, settings.fNumber);
   entrancePupilMm_ = firstOrder(*lens_).entrancePupilMm;
   // Focusing moves the film: the object lies focusDistance in front of the entrance pupil.
   const double focusMm = settings.focusDistance / pose.worldPerMm;
-  filmDistanceMm_ = std::isinf(focusMm) ? filmDistanceForFocusMm(*lens_, INFINITY) : filmDistanceForObjectMm(*lens_, focusMm - entrancePupilMm_);
+  filmDistanceMm_ = std::isinf(focusMm) ? filmDistanceForFocusMm(*lens_, INFINITY)
+                                        : filmDistanceForObjectMm(*lens_, focusMm - entrancePupilMm_);
   const double filmZ = lens_->lengthMm() + filmDistanceMm_;
   const double halfDiagonal = 0.5 * glm::length(settings.sensorMm);
   LensTrace trace;
@@ -30,15 +32,18 @@ LensCamera::LensCamera(std::shared_ptr<const LensPrescription> lens, const LensC
   }
 }
 
-std::optional<LensCamera::WorldRay> LensCamera::ray(glm::dvec2 pixel, int widthPx, int heightPx, glm::dvec2 u, int channel) const {
+std::optional<LensCamera::WorldRay> LensCamera::ray(glm::dvec2 pixel, int widthPx, int heightPx, glm::dvec2 u,
+                                                    int channel) const {
   // The image point (mm, right and up from the sensor's centre), and the film point behind the
   // lens that sees it: the film holds the image turned by 180°.
-  const glm::dvec2 imageMm((pixel.x / widthPx - 0.5) * settings_.sensorMm.x, (0.5 - pixel.y / heightPx) * settings_.sensorMm.y);
+  const glm::dvec2 imageMm((pixel.x / widthPx - 0.5) * settings_.sensorMm.x,
+                           (0.5 - pixel.y / heightPx) * settings_.sensorMm.y);
   const std::optional<FilmRay> r = pupils_[static_cast<std::size_t>(channel)]->sample(-imageMm, u);
   if (!r) return std::nullopt;
   // Lens coordinates: x right, y up, z toward the film (backward), the entrance pupil at the eye.
   const auto world = [&](const glm::dvec3& v) { return v.x * pose_.right + v.y * pose_.up - v.z * pose_.forward; };
-  const glm::dvec3 origin = pose_.eye + pose_.worldPerMm * world(r->ray.origin - glm::dvec3(0.0, 0.0, entrancePupilMm_));
+  const glm::dvec3 origin =
+      pose_.eye + pose_.worldPerMm * world(r->ray.origin - glm::dvec3(0.0, 0.0, entrancePupilMm_));
   return WorldRay{origin, glm::normalize(world(r->ray.direction)), r->weight};
 }
 

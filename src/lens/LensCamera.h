@@ -20,11 +20,11 @@
 namespace lenslab {
 
 struct LensCameraPose {
-  glm::dvec3 eye{0.0};                      // where the entrance pupil's centre is, world
-  glm::dvec3 right{1.0, 0.0, 0.0};          // unit, world
-  glm::dvec3 up{0.0, 1.0, 0.0};             // unit, world, ⟂ right
-  glm::dvec3 forward{0.0, 0.0, -1.0};       // unit, world: right × up
-  double worldPerMm = 1e-3;                 // the scene's units per millimetre (metres: 1e-3)
+  glm::dvec3 eye{0.0};                 // where the entrance pupil's centre is, world
+  glm::dvec3 right{1.0, 0.0, 0.0};     // unit, world
+  glm::dvec3 up{0.0, 1.0, 0.0};        // unit, world, ⟂ right
+  glm::dvec3 forward{0.0, 0.0, -1.0};  // unit, world: right × up
+  double worldPerMm = 1e-3;            // the scene's units per millimetre (metres: 1e-3)
 };
 
 struct LensCameraSettings {
@@ -38,7 +38,8 @@ constexpr std::array<double, 3> kChannelWavelengthsNm = {610.0, 550.0, 465.0};
 
 class LensCamera {
  public:
-  LensCamera(std::shared_ptr<const LensPrescription> lens, const LensCameraSettings& settings, const LensCameraPose& pose);
+  LensCamera(std::shared_ptr<const LensPrescription> lens, const LensCameraSettings& settings,
+             const LensCameraPose& pose);
 
   struct WorldRay {
     glm::dvec3 origin;     // world, on the first surface

@@ -29,7 +29,8 @@ struct LensEffects {
   Vignetting vignetting;
 
   bool isZero() const {
-    return distortion.isZero() && !chromatic.hasLateral() && !chromatic.hasAxial() && fieldCurvature.isZero() && vignetting.isZero();
+    return distortion.isZero() && !chromatic.hasLateral() && !chromatic.hasAxial() && fieldCurvature.isZero() &&
+           vignetting.isZero();
   }
   // The post pass (distortion and lateral colour, both geometric remaps of the image) is needed.
   bool needsRemap() const { return !distortion.isZero() || chromatic.hasLateral(); }
@@ -43,4 +44,3 @@ struct LensEffects {
 };
 
 }  // namespace lenslab
-

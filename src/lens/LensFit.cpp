@@ -29,8 +29,8 @@ constexpr double kMaxFieldDegrees = 80.0;
 // the design matrix itself, whose condition number is the square root of the normal equations',
 // so a nearly dependent basis loses half as many digits. A rank-deficient basis (all x equal) gets
 // a basic solution: zero in the columns the pivoting finds dependent.
-std::vector<double> fitPowers(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w, int firstPower, int step,
-                              int terms) {
+std::vector<double> fitPowers(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w,
+                              int firstPower, int step, int terms) {
   double scale = 0.0;
   for (double v : x) scale = std::max(scale, std::abs(v));
   if (!(scale > 0.0)) scale = 1.0;
@@ -55,13 +55,14 @@ std::vector<double> fitPowers(const std::vector<double>& x, const std::vector<do
 // The barrel (distance, radius; mm) whose overlap with the aperture best matches the cat's-eye
 // shares measured at undistorted radii x: for each distance on a grid, the radius by golden
 // section; the best pair kept.
-std::pair<double, double> fitBarrel(const std::vector<double>& x, const std::vector<double>& share, double apertureRadiusMm, double inverseFocusPerMm,
-                                    double focalLengthMm) {
+std::pair<double, double> fitBarrel(const std::vector<double>& x, const std::vector<double>& share,
+                                    double apertureRadiusMm, double inverseFocusPerMm, double focalLengthMm) {
   const auto cost = [&](double distance, double radius) {
     const LensBarrel barrel{distance, radius};
     double sum = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const double e = roundApertureThroughBarrel(barrel, apertureRadiusMm, glm::dvec2(x[i], 0.0), inverseFocusPerMm) - share[i];
+      const double e =
+          roundApertureThroughBarrel(barrel, apertureRadiusMm, glm::dvec2(x[i], 0.0), inverseFocusPerMm) - share[i];
       sum += e * e;
     }
     return sum;
@@ -74,7 +75,8 @@ std::pair<double, double> fitBarrel(const std::vector<double>& x, const std::vec
   for (int k = 1; k <= kDistances; ++k) {
     const double distance = 4.0 * focalLengthMm * k / kDistances;
     // The opening from barely larger than nothing to wide enough never to clip.
-    double lo = 1e-3 * apertureRadiusMm, hi = apertureRadiusMm * std::abs(1.0 - distance * inverseFocusPerMm) + distance * xMax;
+    double lo = 1e-3 * apertureRadiusMm,
+           hi = apertureRadiusMm * std::abs(1.0 - distance * inverseFocusPerMm) + distance * xMax;
     const double g = 0.5 * (std::sqrt(5.0) - 1.0);
     for (int i = 0; i < 60; ++i) {
       const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
@@ -97,17 +99,22 @@ double polynomial(const Distortion& d, double x) {
 double gainAt(const glm::dvec3& a, double r2) { return vignettingPolynomial(r2, a.x, a.y, a.z); }
 
 // Where a film point's blur centre lies in the scene at the focus distance, as a tangent.
-double undistortedOf(const LensFitBundle& b, double nominalInverseFocus) { return b.meanB.y + b.meanA.y * nominalInverseFocus; }
+double undistortedOf(const LensFitBundle& b, double nominalInverseFocus) {
+  return b.meanB.y + b.meanA.y * nominalInverseFocus;
+}
 
 double imageHeight(const FittedLens& fit, double x) { return fit.focalLengthMm * polynomial(fit.distortion, x); }
 
-double fittedFocus(const FittedLens& fit, double x, double shift) { return fit.inverseFocusPerMm + shift + fit.fieldCurvaturePerMm * x * x; }
+double fittedFocus(const FittedLens& fit, double x, double shift) {
+  return fit.inverseFocusPerMm + shift + fit.fieldCurvaturePerMm * x * x;
+}
 
 // Focal length and distortion: h = F·x(1 + k1 x² + k2 x⁴ + k3 x⁶). Of the orders whose
 // distortion does not fold inside the image, the lowest that places the image within 0.05 µm
 // of the best: a telephoto's 5° field would otherwise buy a few nm with k3 in the thousands.
 // False (and fit.why) when every order folds.
-bool fitFocalAndDistortion(const std::vector<double>& xs, const std::vector<double>& hs, glm::dvec2 sensorMm, FittedLens& fit) {
+bool fitFocalAndDistortion(const std::vector<double>& xs, const std::vector<double>& hs, glm::dvec2 sensorMm,
+                           FittedLens& fit) {
   const std::vector<double> ones(xs.size(), 1.0);
   struct Candidate {
     double focal;
@@ -142,7 +149,8 @@ bool fitFocalAndDistortion(const std::vector<double>& xs, const std::vector<doub
 }
 
 // Focus and field curvature: 1/z = 1/z_f + c·x², over the field.
-void fitFocusAndFieldCurvature(const std::vector<double>& xu, const std::vector<LensFitBundle>& green, FittedLens& fit) {
+void fitFocusAndFieldCurvature(const std::vector<double>& xu, const std::vector<LensFitBundle>& green,
+                               FittedLens& fit) {
   std::vector<double> phi;
   for (const LensFitBundle& b : green) phi.push_back(b.inverseFocusPerMm);
   const std::vector<double> focus = fitPowers(xu, phi, std::vector<double>(xu.size(), 1.0), 0, 2, 2);
@@ -173,7 +181,9 @@ void fitColour(const LensFitField& field, double nominalInverseFocus, FittedLens
 // The share of the aperture the fitted barrel leaves at undistorted x (1 without a barrel).
 double barrelShare(const FittedLens& fit, double x) {
   const LensBarrel barrel{fit.barrelDistanceMm, fit.barrelRadiusMm};
-  return barrel.present() ? roundApertureThroughBarrel(barrel, 0.5 * fit.entrancePupilDiameterMm, glm::dvec2(x, 0.0), fit.inverseFocusPerMm) : 1.0;
+  return barrel.present() ? roundApertureThroughBarrel(barrel, 0.5 * fit.entrancePupilDiameterMm, glm::dvec2(x, 0.0),
+                                                       fit.inverseFocusPerMm)
+                          : 1.0;
 }
 
 // The cat's eye, then the rest of the relative illumination over the distorted radius².
@@ -182,7 +192,8 @@ void fitIllumination(const LensFitField& field, const std::vector<double>& xu, F
   double leastShare = 1.0;
   for (double v : field.catsEye) leastShare = std::min(leastShare, v);
   if (leastShare < 0.999) {
-    const auto [distance, radius] = fitBarrel(xu, field.catsEye, apertureRadius, fit.inverseFocusPerMm, fit.focalLengthMm);
+    const auto [distance, radius] =
+        fitBarrel(xu, field.catsEye, apertureRadius, fit.inverseFocusPerMm, fit.focalLengthMm);
     fit.barrelDistanceMm = distance;
     fit.barrelRadiusMm = radius;
   }
@@ -203,7 +214,8 @@ void fitIllumination(const LensFitField& field, const std::vector<double>& xu, F
 }
 
 // The errors, per effect, over the field, and the samples the report plots.
-void measureFitErrors(const LensFitField& field, const std::vector<double>& xu, double nominalInverseFocus, FittedLens& fit) {
+void measureFitErrors(const LensFitField& field, const std::vector<double>& xu, double nominalInverseFocus,
+                      FittedLens& fit) {
   const double focal = fit.focalLengthMm;
   const std::vector<LensFitBundle>& green = field.bundles[1];
   LensFitError& e = fit.error;
@@ -212,15 +224,19 @@ void measureFitErrors(const LensFitField& field, const std::vector<double>& xu, 
     const double h = field.heights[i], x = xu[i];
     e.positionUm = std::max(e.positionUm, 1000.0 * std::abs(imageHeight(fit, x) - h));
     const double r = h / focal;
-    e.illumination = std::max(e.illumination, std::abs(barrelShare(fit, x) * std::max(0.0, gainAt(fit.illuminationGain, r * r)) - green[i].share));
+    e.illumination =
+        std::max(e.illumination,
+                 std::abs(barrelShare(fit, x) * std::max(0.0, gainAt(fit.illuminationGain, r * r)) - green[i].share));
     for (int c : field.channels) {
       const LensFitBundle& b = field.bundles[static_cast<std::size_t>(c)][i];
       const double xc = undistortedOf(b, nominalInverseFocus);
       const double lateral = c == 0 ? fit.lateralRed : c == 2 ? fit.lateralBlue : 0.0;
       const double shift = c == 0 ? fit.inverseFocusShiftRedPerMm : c == 2 ? fit.inverseFocusShiftBluePerMm : 0.0;
-      if (c != 1) e.lateralColourUm = std::max(e.lateralColourUm, 1000.0 * std::abs((1.0 + lateral) * imageHeight(fit, xc) - h));
+      if (c != 1)
+        e.lateralColourUm = std::max(e.lateralColourUm, 1000.0 * std::abs((1.0 + lateral) * imageHeight(fit, xc) - h));
       // A thin lens's blur on the film for a focus error Δ(1/z): the pupil's diameter × F × |Δ(1/z)|.
-      e.focusBlurUm = std::max(e.focusBlurUm, 1000.0 * fit.entrancePupilDiameterMm * focal * std::abs(b.inverseFocusPerMm - fittedFocus(fit, xc, shift)));
+      e.focusBlurUm = std::max(e.focusBlurUm, 1000.0 * fit.entrancePupilDiameterMm * focal *
+                                                  std::abs(b.inverseFocusPerMm - fittedFocus(fit, xc, shift)));
       e.aberrationBlurUm = std::max(e.aberrationBlurUm, 1000.0 * focal * b.rmsAngle);
     }
     FittedLensSample sample;
@@ -236,7 +252,9 @@ void measureFitErrors(const LensFitField& field, const std::vector<double>& xu, 
 
 }  // namespace
 
-double LensFitError::worstUm() const { return std::max(positionUm + lateralColourUm, 0.5 * focusBlurUm + aberrationBlurUm); }
+double LensFitError::worstUm() const {
+  return std::max(positionUm + lateralColourUm, 0.5 * focusBlurUm + aberrationBlurUm);
+}
 
 FittedLens fitLens(const LensPrescription& lens, const LensFitSettings& s) {
   FittedLens fit;
@@ -247,7 +265,8 @@ FittedLens fitLens(const LensPrescription& lens, const LensFitSettings& s) {
   const double epZ = open.entrancePupilMm;
   const double focusMm = s.focusDistanceMm;
   const double nominalInverseFocus = std::isinf(focusMm) ? 0.0 : 1.0 / focusMm;
-  const double filmZ = lens.lengthMm() + (std::isinf(focusMm) ? filmDistanceForFocusMm(lens, INFINITY) : filmDistanceForObjectMm(lens, focusMm - epZ));
+  const double filmZ = lens.lengthMm() + (std::isinf(focusMm) ? filmDistanceForFocusMm(lens, INFINITY)
+                                                              : filmDistanceForObjectMm(lens, focusMm - epZ));
 
   const LensFitField field = traceLensFitField(lens, s, filmZ, stopMm, epZ);
   if (!field.why.empty()) {
@@ -262,8 +281,10 @@ FittedLens fitLens(const LensPrescription& lens, const LensFitSettings& s) {
   }
   const double maxAngle = std::atan(xu.back()) * 180.0 / kPi;
   if (!(maxAngle < kMaxFieldDegrees) || !std::isfinite(xu.back())) {
-    fit.why = cat("the field reaches ", std::round(maxAngle), "° off the axis at the sensor's corner; a rectilinear camera with distortion "
-                  "holds at most ", kMaxFieldDegrees, "°");
+    fit.why = cat("the field reaches ", std::round(maxAngle),
+                  "° off the axis at the sensor's corner; a rectilinear camera with distortion "
+                  "holds at most ",
+                  kMaxFieldDegrees, "°");
     return fit;
   }
   if (!fitFocalAndDistortion(xs, hs, s.sensorMm, fit)) return fit;

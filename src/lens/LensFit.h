@@ -44,23 +44,23 @@ struct LensFitSettings {
 
 // How far the fitted camera is from the traced lens, per effect, on the film (µm) or as a share.
 struct LensFitError {
-  double positionUm = 0.0;         // worst |fitted − traced| image height (distortion, F)
-  double lateralColourUm = 0.0;    // worst channel image-height error (0 without dispersion)
-  double focusBlurUm = 0.0;        // worst blur diameter from the fitted focus's error (field curvature, axial colour)
-  double illumination = 0.0;       // worst |fitted − traced| relative illumination
-  double aberrationBlurUm = 0.0;   // worst RMS radius of a traced bundle at its best focus: no knob holds it
+  double positionUm = 0.0;        // worst |fitted − traced| image height (distortion, F)
+  double lateralColourUm = 0.0;   // worst channel image-height error (0 without dispersion)
+  double focusBlurUm = 0.0;       // worst blur diameter from the fitted focus's error (field curvature, axial colour)
+  double illumination = 0.0;      // worst |fitted − traced| relative illumination
+  double aberrationBlurUm = 0.0;  // worst RMS radius of a traced bundle at its best focus: no knob holds it
   // The worst image-point error a user sees, µm: the larger of position + lateral colour and
   // half the focus blur + the aberrations' RMS radius.
   double worstUm() const;
 };
 
 struct FittedLensSample {
-  double imageHeightMm = 0.0;       // film point, from the centre
-  double undistorted = 0.0;         // x_u: tangent of the bundle's mean direction
-  double inverseFocusPerMm = 0.0;   // best focus, 1/mm from the entrance pupil (0: infinity)
+  double imageHeightMm = 0.0;      // film point, from the centre
+  double undistorted = 0.0;        // x_u: tangent of the bundle's mean direction
+  double inverseFocusPerMm = 0.0;  // best focus, 1/mm from the entrance pupil (0: infinity)
   double relativeIllumination = 0.0;
-  double catsEye = 0.0;             // the share of the pupil the rims leave (RI with rims / without)
-  double rmsBlurUm = 0.0;           // at the best focus, on the film
+  double catsEye = 0.0;    // the share of the pupil the rims leave (RI with rims / without)
+  double rmsBlurUm = 0.0;  // at the best focus, on the film
 };
 
 struct FittedLens {
@@ -75,9 +75,9 @@ struct FittedLens {
   Distortion distortion;                 // k1 k2 k3
   double lateralRed = 0.0, lateralBlue = 0.0;
   double inverseFocusShiftRedPerMm = 0.0, inverseFocusShiftBluePerMm = 0.0;
-  double fieldCurvaturePerMm = 0.0;      // 1/mm per x_u²
+  double fieldCurvaturePerMm = 0.0;                     // 1/mm per x_u²
   double barrelDistanceMm = 0.0, barrelRadiusMm = 0.0;  // 0 radius: no barrel
-  glm::dvec3 illuminationGain{0.0};      // a1 a2 a3 over the distorted normalised radius²
+  glm::dvec3 illuminationGain{0.0};                     // a1 a2 a3 over the distorted normalised radius²
 
   LensFitError error;
   std::vector<FittedLensSample> samples;  // green's, centre to corner

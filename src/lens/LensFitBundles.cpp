@@ -57,7 +57,8 @@ LensFitBundle traceLensFitBundle(const ExitPupil& pupil, glm::dvec2 filmMm, doub
   return out;
 }
 
-LensFitField traceLensFitField(const LensPrescription& lens, const LensFitSettings& s, double filmZ, double stopMm, double entrancePupilZ) {
+LensFitField traceLensFitField(const LensPrescription& lens, const LensFitSettings& s, double filmZ, double stopMm,
+                               double entrancePupilZ) {
   LensFitField field;
   const double halfDiagonal = 0.5 * glm::length(s.sensorMm);
 
@@ -85,7 +86,8 @@ LensFitField traceLensFitField(const LensPrescription& lens, const LensFitSettin
     const double h = halfDiagonal * k / (n - 1);
     field.heights.push_back(h);
     for (int c : field.channels) {
-      const LensFitBundle b = traceLensFitBundle(*pupils[static_cast<std::size_t>(c)], glm::dvec2(0.0, -h), entrancePupilZ, s.pupilSamples);
+      const LensFitBundle b =
+          traceLensFitBundle(*pupils[static_cast<std::size_t>(c)], glm::dvec2(0.0, -h), entrancePupilZ, s.pupilSamples);
       if (!(b.share > 0.0)) {
         // Past the image circle (a fisheye's on a larger sensor): the exact trace renders the
         // circle; no rectilinear camera holds it.

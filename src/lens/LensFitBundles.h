@@ -23,10 +23,10 @@ class ExitPupil;
 // bundle is a set of lines; where they come closest (least squares across the axis) is the scene
 // point the film point sees sharply.
 struct LensFitBundle {
-  double share = 0.0;          // relative illumination: the mean sample weight
+  double share = 0.0;  // relative illumination: the mean sample weight
   glm::dvec2 meanA{0.0}, meanB{0.0};
   double inverseFocusPerMm = 0.0;
-  double rmsAngle = 0.0;       // RMS of the rays' angular spread about their centre at that depth
+  double rmsAngle = 0.0;  // RMS of the rays' angular spread about their centre at that depth
 };
 
 // The bundle of film point `filmMm` through `pupil`, n × n samples, lines measured from the
@@ -36,16 +36,17 @@ LensFitBundle traceLensFitBundle(const ExitPupil& pupil, glm::dvec2 filmMm, doub
 // The bundles of `fieldSamples` film points from the centre out to the sensor's corner.
 struct LensFitField {
   bool dispersion = false;
-  std::vector<int> channels;                       // green (1) first; red 0 and blue 2 with dispersion
-  std::vector<double> heights;                     // film heights, mm, centre first
+  std::vector<int> channels;                          // green (1) first; red 0 and blue 2 with dispersion
+  std::vector<double> heights;                        // film heights, mm, centre first
   std::array<std::vector<LensFitBundle>, 3> bundles;  // per channel, per height; shares relative to the axis's
-  std::vector<double> catsEye;                     // green's share with the rims over with the stop alone
-  std::string why;                                 // not empty: no ray reaches some film point
+  std::vector<double> catsEye;                        // green's share with the rims over with the stop alone
+  std::string why;                                    // not empty: no ray reaches some film point
   int size() const { return static_cast<int>(heights.size()); }
 };
 
 // Traces the field for the film at `filmZ` (lens coordinates, mm), the stop opened to `stopMm`,
 // lines measured from the entrance pupil at `entrancePupilZ`.
-LensFitField traceLensFitField(const LensPrescription& lens, const LensFitSettings& s, double filmZ, double stopMm, double entrancePupilZ);
+LensFitField traceLensFitField(const LensPrescription& lens, const LensFitSettings& s, double filmZ, double stopMm,
+                               double entrancePupilZ);
 
 }  // namespace lenslab

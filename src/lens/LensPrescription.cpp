@@ -30,13 +30,16 @@ class RowReader {
   RowReader(const std::string& source, int line, int row) : source_(source), line_(line), row_(row) {}
 
   [[noreturn]] void refuse(int column, const std::string& what) const {
-    throw InputError(cat(source_, ": row ", row_, " (line ", line_, "), column ", column + 1, " (", kColumns[column], "): ", what));
+    throw InputError(
+        cat(source_, ": row ", row_, " (line ", line_, "), column ", column + 1, " (", kColumns[column], "): ", what));
   }
 
   double number(std::string_view text, int column) const {
     if (column == 0 && (text == "inf" || text == "-inf" || text == "infinity" || text == "-infinity")) return INFINITY;
     const std::optional<double> value = parseFiniteNumber(text);
-    if (!value) refuse(column, cat("'", text, "' is not a number", column == 0 ? " (give mm, 0 for the stop, inf for a plane)" : ""));
+    if (!value)
+      refuse(column,
+             cat("'", text, "' is not a number", column == 0 ? " (give mm, 0 for the stop, inf for a plane)" : ""));
     return *value;
   }
 
@@ -58,7 +61,8 @@ void refuseCrossingSurfaces(const LensPrescription& lens) {
     if (edge < -1e-9 * std::max(1.0, r))
       throw InputError(cat(lens.source, ": rows ", i + 1, " and ", i + 2, " (lines ", a.line, " and ", b.line,
                            ") cross inside their clear aperture: ", a.thicknessMm, " mm apart on the axis but ", edge,
-                           " mm at a height of ", r, " mm; column 2 (thickness_mm) is the distance from each surface to the next"));
+                           " mm at a height of ", r,
+                           " mm; column 2 (thickness_mm) is the distance from each surface to the next"));
   }
 }
 
@@ -110,7 +114,8 @@ LensPrescription parseLensPrescription(std::string_view text, const std::string&
     if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
       std::string_view comment = line.substr(hash + 1);
       while (!comment.empty() && (comment.front() == ' ' || comment.front() == '\t')) comment.remove_prefix(1);
-      while (!comment.empty() && (comment.back() == ' ' || comment.back() == '\t' || comment.back() == '\r')) comment.remove_suffix(1);
+      while (!comment.empty() && (comment.back() == ' ' || comment.back() == '\t' || comment.back() == '\r'))
+        comment.remove_suffix(1);
       if (!comment.empty()) lens.comments.emplace_back(comment);
       line = line.substr(0, hash);
     }
@@ -128,10 +133,12 @@ LensPrescription parseLensPrescription(std::string_view text, const std::string&
     s.indexAfter = r.number(f[2], 2);
     s.apertureMm = r.number(f[3], 3);
     s.abbeAfter = f.size() == 5 ? r.number(f[4], 4) : 0.0;
-    if (s.thicknessMm < 0.0) r.refuse(1, cat(s.thicknessMm, " is negative; give the axial distance to the next surface, >= 0"));
+    if (s.thicknessMm < 0.0)
+      r.refuse(1, cat(s.thicknessMm, " is negative; give the axial distance to the next surface, >= 0"));
     // (A file whose second column is each surface's distance from the one before starts so.)
     if (s.thicknessMm == 0.0 && r.number(f[2], 2) > 1.0)
-      r.refuse(1, "0 for a glass: an element needs a centre thickness > 0 (the column is the distance to the next surface)");
+      r.refuse(
+          1, "0 for a glass: an element needs a centre thickness > 0 (the column is the distance to the next surface)");
     if (s.indexAfter == 0.0) s.indexAfter = 1.0;  // pbrt's files: 0 on the stop row, meaning air
     if (!(s.indexAfter >= 1.0 && s.indexAfter <= 4.0))
       r.refuse(2, cat(s.indexAfter, " is not a refractive index; give n_d in [1, 4], or 0 or 1 for air"));
@@ -152,12 +159,16 @@ LensPrescription parseLensPrescription(std::string_view text, const std::string&
     }
     lens.surfaces.push_back(s);
   }
-  if (lens.surfaces.size() < 2) throw InputError(cat(source, ": ", lens.surfaces.size(), " surface rows; a lens needs at least the stop and one surface"));
+  if (lens.surfaces.size() < 2)
+    throw InputError(
+        cat(source, ": ", lens.surfaces.size(), " surface rows; a lens needs at least the stop and one surface"));
   if (stops != 1)
-    throw InputError(cat(source, ": ", stops, " rows have radius 0; mark exactly one row, the aperture stop, with radius 0"));
+    throw InputError(
+        cat(source, ": ", stops, " rows have radius 0; mark exactly one row, the aperture stop, with radius 0"));
   if (lens.surfaces.back().indexAfter != 1.0)
-    throw InputError(cat(source, ": row ", lens.surfaces.size(), " (line ", lens.surfaces.back().line,
-                         "), column 3 (index): the last surface must leave the light in air (0 or 1), toward the film"));
+    throw InputError(
+        cat(source, ": row ", lens.surfaces.size(), " (line ", lens.surfaces.back().line,
+            "), column 3 (index): the last surface must leave the light in air (0 or 1), toward the film"));
   refuseCrossingSurfaces(lens);
   if (withAbbe != 0 && withAbbe != glassRows)
     throw InputError(cat(source, ": ", withAbbe, " of ", glassRows,

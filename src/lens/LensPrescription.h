@@ -22,12 +22,12 @@
 namespace lenslab {
 
 struct LensSurface {
-  double radiusMm = 0.0;        // 0: the aperture stop; ±inf: a plane
-  double thicknessMm = 0.0;     // to the next surface, along the axis
-  double indexAfter = 1.0;      // n_d of the medium on the film side (1 for air)
-  double apertureMm = 0.0;      // clear diameter
-  double abbeAfter = 0.0;       // V_d of the medium on the film side; 0 when not given or air
-  int line = 0;                 // in the file, for messages
+  double radiusMm = 0.0;     // 0: the aperture stop; ±inf: a plane
+  double thicknessMm = 0.0;  // to the next surface, along the axis
+  double indexAfter = 1.0;   // n_d of the medium on the film side (1 for air)
+  double apertureMm = 0.0;   // clear diameter
+  double abbeAfter = 0.0;    // V_d of the medium on the film side; 0 when not given or air
+  int line = 0;              // in the file, for messages
   bool isStop() const { return radiusMm == 0.0; }
   bool isPlane() const;
   // 1 / radius (0 for a plane or the stop), in 1/mm.

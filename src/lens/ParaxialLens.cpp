@@ -38,8 +38,9 @@ FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDi
   // Relative to the lens's own scale: a plate's c is rounding noise next to 1/length.
   const double scale = std::max(lens.lengthMm(), lens.surfaces.front().apertureMm);
   if (!(std::abs(m.c) * scale > 1e-12))
-    throw InputError(cat(lens.source, ": the lens has no optical power (an afocal system or a flat plate); it forms no image to "
-                                      "render with"));
+    throw InputError(cat(lens.source,
+                         ": the lens has no optical power (an afocal system or a flat plate); it forms no image to "
+                         "render with"));
   FirstOrder f;
   const double length = lens.lengthMm();
   f.focalLengthMm = -1.0 / m.c;
@@ -59,7 +60,8 @@ FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDi
   f.entrancePupilDiameterMm = stopDiameter / std::abs(front.a);
   // The stop seen from the film: where the rear group's image of the stop's centre lies (d·t + b
   // = 0 after the last vertex), magnified 1/d (the matrices have determinant 1).
-  const RayTransfer rear = rayTransfer(lens, stop, lens.surfaces.size() - 1).then(refraction(lens, lens.surfaces.size() - 1));
+  const RayTransfer rear =
+      rayTransfer(lens, stop, lens.surfaces.size() - 1).then(refraction(lens, lens.surfaces.size() - 1));
   f.exitPupilMm = length - rear.b / rear.d;
   f.exitPupilDiameterMm = stopDiameter / std::abs(rear.d);
   f.fNumber = f.focalLengthMm / f.entrancePupilDiameterMm;
@@ -73,9 +75,9 @@ double stopDiameterForFNumber(const LensPrescription& lens, std::optional<double
   const double stop = openStop * (open.focalLengthMm / *fNumber) / open.entrancePupilDiameterMm;
   if (stop > openStop * (1.0 + 1e-9)) {
     const double fastest = std::ceil(open.fNumber * 100.0) / 100.0;
-    throw InputError(cat(lens.source, ": f/", *fNumber, " is faster than the design's full opening, f/", fastest, " (it needs a stop of ",
-                         std::round(stop * 1000.0) / 1000.0, " mm; the design's opens to ", openStop, " mm); give --f-number ", fastest,
-                         " or more"));
+    throw InputError(cat(lens.source, ": f/", *fNumber, " is faster than the design's full opening, f/", fastest,
+                         " (it needs a stop of ", std::round(stop * 1000.0) / 1000.0, " mm; the design's opens to ",
+                         openStop, " mm); give --f-number ", fastest, " or more"));
   }
   return stop;
 }
@@ -109,8 +111,9 @@ double filmDistanceForObjectMm(const LensPrescription& lens, double objectMm) {
   if (std::isinf(objectMm)) return -m.a / m.c;
   const double d = -(m.a * objectMm + m.b) / (m.c * objectMm + m.d);
   if (!(objectMm > 0.0) || !(d > 0.0) || !std::isfinite(d))
-    throw InputError(cat(lens.source, ": no real image of a point ", objectMm, " mm in front of the lens forms behind it; focus farther ",
-                         "(about 4 focal lengths, ", 4.0 * -1.0 / m.c, " mm, at least)"));
+    throw InputError(cat(lens.source, ": no real image of a point ", objectMm,
+                         " mm in front of the lens forms behind it; focus farther ", "(about 4 focal lengths, ",
+                         4.0 * -1.0 / m.c, " mm, at least)"));
   return d;
 }
 

@@ -13,8 +13,8 @@
 namespace lenslab {
 
 struct RayTransfer {
-  double a = 1.0, b = 0.0;  // y'    = a·y + b·nu
-  double c = 0.0, d = 1.0;  // nu'   = c·y + d·nu
+  double a = 1.0, b = 0.0;                          // y'    = a·y + b·nu
+  double c = 0.0, d = 1.0;                          // nu'   = c·y + d·nu
   RayTransfer then(const RayTransfer& next) const;  // this, followed by `next`
 };
 
@@ -25,16 +25,16 @@ RayTransfer rayTransfer(const LensPrescription& lens, std::size_t first, std::si
 RayTransfer lensTransfer(const LensPrescription& lens);
 
 struct FirstOrder {
-  double focalLengthMm = 0.0;          // effective focal length; inf for a lens of no power
-  double backFocalMm = 0.0;            // last vertex → rear focal point
-  double frontFocalMm = 0.0;           // front focal point → first vertex (positive in front of it)
-  double rearPrincipalMm = 0.0;        // position of the rear principal plane H'
-  double frontPrincipalMm = 0.0;       // position of the front principal plane H
-  double entrancePupilMm = 0.0;        // position of the stop's image seen from the scene
+  double focalLengthMm = 0.0;     // effective focal length; inf for a lens of no power
+  double backFocalMm = 0.0;       // last vertex → rear focal point
+  double frontFocalMm = 0.0;      // front focal point → first vertex (positive in front of it)
+  double rearPrincipalMm = 0.0;   // position of the rear principal plane H'
+  double frontPrincipalMm = 0.0;  // position of the front principal plane H
+  double entrancePupilMm = 0.0;   // position of the stop's image seen from the scene
   double entrancePupilDiameterMm = 0.0;
-  double exitPupilMm = 0.0;            // position of the stop's image seen from the film
+  double exitPupilMm = 0.0;  // position of the stop's image seen from the film
   double exitPupilDiameterMm = 0.0;
-  double fNumber = 0.0;                // paraxial, at infinity focus: focal length / entrance pupil
+  double fNumber = 0.0;  // paraxial, at infinity focus: focal length / entrance pupil
 };
 
 // First-order properties with the stop at `stopDiameterMm` (its row's aperture when not given).

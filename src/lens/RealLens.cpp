@@ -64,7 +64,8 @@ std::optional<glm::dvec3> refract(const glm::dvec3& incident, const glm::dvec3& 
   return glm::normalize(eta * incident + (eta * cosIncident - cosTransmitted) * normal);
 }
 
-std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ray, bool toScene, const LensTrace& options) {
+std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ray, bool toScene,
+                                 const LensTrace& options) {
   LensRay r = ray;
   const std::size_t n = lens.surfaces.size();
   const auto index = [&](double indexD, double abbe) { return indexAtWavelength(indexD, abbe, options.wavelengthNm); };
@@ -84,7 +85,8 @@ std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ra
     if (!hit->withinAperture && !options.ignoreRims) return std::nullopt;
     const double before = index(lens.indexBefore(i), i == 0 ? 0.0 : lens.surfaces[i - 1].abbeAfter);
     const double after = index(s.indexAfter, s.abbeAfter);
-    const std::optional<glm::dvec3> d = refract(r.direction, hit->normal, toScene ? after : before, toScene ? before : after);
+    const std::optional<glm::dvec3> d =
+        refract(r.direction, hit->normal, toScene ? after : before, toScene ? before : after);
     if (!d) return std::nullopt;
     r.direction = *d;
   }

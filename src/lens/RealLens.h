@@ -54,6 +54,7 @@ struct LensTrace {
   // Pictures: when given, each point where the ray meets a surface is appended.
   std::vector<glm::dvec3>* path = nullptr;
 };
-std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ray, bool toScene, const LensTrace& options = {});
+std::optional<LensRay> traceLens(const LensPrescription& lens, const LensRay& ray, bool toScene,
+                                 const LensTrace& options = {});
 
 }  // namespace lenslab

@@ -104,7 +104,8 @@ LensSample sobolPoint(std::uint32_t index, std::uint32_t seed) {
   // projection's boxes (the scramble permutes a coordinate's elementary intervals among themselves).
   double u[4];
   for (int d = 0; d < 4; ++d)
-    u[d] = toUnit(owenScramble(sobolDimension(d, index), mix(seed ^ (0x632be5abu * static_cast<std::uint32_t>(d + 1)))));
+    u[d] =
+        toUnit(owenScramble(sobolDimension(d, index), mix(seed ^ (0x632be5abu * static_cast<std::uint32_t>(d + 1)))));
   return {concentricDisk({u[0], u[1]}), glm::dvec2(u[2], u[3]) - 0.5};
 }
 
@@ -117,12 +118,14 @@ LensSample sobolSample(std::uint32_t index, std::uint32_t seed) {
   const std::uint32_t stream = index & 1u, point = index >> 1;
   const std::uint32_t base = mix(seed * 2u + stream + 0x9e3779b9u);
   const std::uint32_t s[5] = {mix(base ^ 1u), mix(base ^ 2u), mix(base ^ 3u), mix(base ^ 4u), mix(base ^ 5u)};
-  const glm::dvec2 lensU(toUnit(owenScramble(sobolDimension0(point), s[0])), toUnit(owenScramble(sobolDimension1(point), s[1])));
+  const glm::dvec2 lensU(toUnit(owenScramble(sobolDimension0(point), s[0])),
+                         toUnit(owenScramble(sobolDimension1(point), s[1])));
   // The pixel's points in another order: the index's bits scrambled from the top (nested), which
   // maps each aligned block of 2^k indices onto an aligned block — and every aligned block of 2^k
   // points of a (0, 2)-sequence is itself one point per stratum.
   const std::uint32_t shuffled = reverseBits(laineKarras(reverseBits(point), s[2]));
-  const glm::dvec2 pixelU(toUnit(owenScramble(sobolDimension0(shuffled), s[3])), toUnit(owenScramble(sobolDimension1(shuffled), s[4])));
+  const glm::dvec2 pixelU(toUnit(owenScramble(sobolDimension0(shuffled), s[3])),
+                          toUnit(owenScramble(sobolDimension1(shuffled), s[4])));
   return {concentricDisk(lensU), pixelU - 0.5};
 }
 

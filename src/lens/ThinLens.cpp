@@ -5,13 +5,9 @@
 
 namespace lenslab {
 
-double imageDistanceFromInverse(double f, double inverseFocus) {
-  return f / (1.0 - f * inverseFocus);
-}
+double imageDistanceFromInverse(double f, double inverseFocus) { return f / (1.0 - f * inverseFocus); }
 
-double magnification(double f, double inverseFocus) {
-  return f * inverseFocus / (1.0 - f * inverseFocus);
-}
+double magnification(double f, double inverseFocus) { return f * inverseFocus / (1.0 - f * inverseFocus); }
 
 double cocDiameterOnFocusPlane(double apertureRadius, double inverseFocus, double distance) {
   if (inverseFocus == 0.0) return std::numeric_limits<double>::infinity();  // the plane is at infinity
@@ -22,9 +18,7 @@ double cocDiameterOnSensor(double apertureRadius, double f, double inverseFocus,
   return 2.0 * apertureRadius * imageDistanceFromInverse(f, inverseFocus) * std::abs(inverseFocus - 1.0 / distance);
 }
 
-double hyperfocalDistance(double f, double fNumber, double sensorCoc) {
-  return f * f / (fNumber * sensorCoc) + f;
-}
+double hyperfocalDistance(double f, double fNumber, double sensorCoc) { return f * f / (fNumber * sensorCoc) + f; }
 
 DepthOfField depthOfField(double f, double zf, double h) {
   DepthOfField dof;

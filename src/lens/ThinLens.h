@@ -22,8 +22,7 @@ double magnification(double focalLength, double inverseFocusDistance);
 double cocDiameterOnFocusPlane(double apertureRadius, double inverseFocusDistance, double distance);
 
 // The same circle measured on the sensor: 2R·z_i·|1/z_f − 1/z|. Finite at infinity focus.
-double cocDiameterOnSensor(double apertureRadius, double focalLength, double inverseFocusDistance,
-                           double distance);
+double cocDiameterOnSensor(double apertureRadius, double focalLength, double inverseFocusDistance, double distance);
 
 // Hyperfocal distance H = f² / (N·c) + f for a circle of confusion c on the sensor.
 double hyperfocalDistance(double focalLength, double fNumber, double sensorCoc);

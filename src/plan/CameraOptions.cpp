@@ -57,11 +57,13 @@ double gltfAspect(const SceneCamera& c, double imageAspect) {
 // A node transform looking from `eye` at `target` with +Y up (glTF cameras look along −Z, +Y up).
 glm::dmat4 lookingAt(const glm::dvec3& eye, const glm::dvec3& target, const std::string& where) {
   const glm::dvec3 forward = target - eye;
-  if (!(glm::length(forward) > 0.0)) throw InputError(cat(where, ": --eye and --target are the same point; the view direction is undefined"));
+  if (!(glm::length(forward) > 0.0))
+    throw InputError(cat(where, ": --eye and --target are the same point; the view direction is undefined"));
   const glm::dvec3 back = -glm::normalize(forward);
   const glm::dvec3 side = glm::cross(glm::dvec3(0.0, 1.0, 0.0), back);
   if (!(glm::length(side) > 1e-9))
-    throw InputError(cat(where, ": the view from --eye to --target is vertical, so +Y cannot be up; move one of them sideways"));
+    throw InputError(
+        cat(where, ": the view from --eye to --target is vertical, so +Y cannot be up; move one of them sideways"));
   const glm::dvec3 x = glm::normalize(side);
   glm::dmat4 m(1.0);
   m[0] = glm::dvec4(x, 0.0);
@@ -73,11 +75,12 @@ glm::dmat4 lookingAt(const glm::dvec3& eye, const glm::dvec3& target, const std:
 
 // A glTF camera as lenslab draws it without options: its own field of view, the view plane at the
 // base's focus distance.
-SelectedCamera gltfView(const BaseCamera& base, const SceneCamera& c, double focus, double imageAspect, const std::string& source) {
+SelectedCamera gltfView(const BaseCamera& base, const SceneCamera& c, double focus, double imageAspect,
+                        const std::string& source) {
   const double aspect = gltfAspect(c, imageAspect);
-  const ViewSpec view = c.perspective
-                            ? viewSpecFromGltfPerspective(c.worldFromCamera, c.yfovRadians, aspect, c.znear, c.zfar, focus)
-                            : viewSpecFromGltfOrthographic(c.worldFromCamera, c.xmag, c.ymag, c.znear, c.zfar, focus);
+  const ViewSpec view =
+      c.perspective ? viewSpecFromGltfPerspective(c.worldFromCamera, c.yfovRadians, aspect, c.znear, c.zfar, focus)
+                    : viewSpecFromGltfOrthographic(c.worldFromCamera, c.xmag, c.ymag, c.znear, c.zfar, focus);
   SelectedCamera selected;
   selected.camera = cameraFocusedOnViewPlane(view, 0.0, source);
   selected.camera.farFromScene = std::isinf(c.zfar);  // glTF: an absent zfar is an infinite projection
@@ -95,7 +98,8 @@ PhysicalCamera gltfAsPhysical(const BaseCamera& base, const CameraOptions& o, do
   const SceneCamera& c = base.gltf;
   const double aspect = gltfAspect(c, imageAspect);
   PhysicalCamera p;
-  p.sensorMm = o.sensor.empty() ? glm::dvec2(kDefaultSensorHeightMm * aspect, kDefaultSensorHeightMm) : parseSensorMm(o.sensor);
+  p.sensorMm =
+      o.sensor.empty() ? glm::dvec2(kDefaultSensorHeightMm * aspect, kDefaultSensorHeightMm) : parseSensorMm(o.sensor);
   const double imageDistance = p.sensorMm.y * kMetresPerMillimetre / (2.0 * std::tan(0.5 * c.yfovRadians));
   const double focus = base.gltfFocusDistance;
   p.focalLengthMm = imageDistance * focus / (imageDistance + focus) / kMetresPerMillimetre;
@@ -113,7 +117,9 @@ PhysicalCamera gltfAsPhysical(const BaseCamera& base, const CameraOptions& o, do
   return applyTo(p, lens);
 }
 
-[[noreturn]] void refuse(const std::string& option, const std::string& why) { throw InputError(cat(option, ": ", why)); }
+[[noreturn]] void refuse(const std::string& option, const std::string& why) {
+  throw InputError(cat(option, ": ", why));
+}
 
 SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
   const PhysicalCamera defaults;  // 35 mm on full frame
@@ -130,8 +136,9 @@ SelectedCamera composeFramed(const BaseCamera& base, const CameraOptions& o) {
     p.sensorMm = sensorMm;
     p.focusDistance = glm::length(p.target - p.eye);
     validate(p, where);
-    framed = physicalCamera(p, Camera{}, cat("--eye ", vectorText(p.eye), ", --target ", vectorText(p.target), ", ", focalMm,
-                                              " mm on ", sensorMm.x, "x", sensorMm.y, " mm, focused on the target"));
+    framed = physicalCamera(p, Camera{},
+                            cat("--eye ", vectorText(p.eye), ", --target ", vectorText(p.target), ", ", focalMm,
+                                " mm on ", sensorMm.x, "x", sensorMm.y, " mm, focused on the target"));
   } else {
     framed = frameSphere(o.target.value_or(s.center), s.radius, focalMm, sensorMm);
   }
@@ -159,8 +166,9 @@ SelectedCamera composeViewingDescription(const BaseCamera& base, const CameraOpt
                ", or give the camera in the physical form (eye, target, focal_length_mm)"));
   const std::string fieldOfView = lecture ? "its window and PRP" : "its fx and fy";
   if (!o.sensor.empty())
-    refuse(cat("--sensor ", o.sensor), cat(base.name, " is in ", form, ", whose field of view is ", fieldOfView,
-                                           " (it has no sensor): give the camera in the physical form to choose a sensor"));
+    refuse(cat("--sensor ", o.sensor),
+           cat(base.name, " is in ", form, ", whose field of view is ", fieldOfView,
+               " (it has no sensor): give the camera in the physical form to choose a sensor"));
   if (o.focalLengthMm && o.fNumber.empty())
     refuse(cat("--focal-length ", *o.focalLengthMm),
            cat(base.name, " is in ", form, ", whose field of view is ", fieldOfView,
@@ -174,10 +182,12 @@ SelectedCamera composeViewingDescription(const BaseCamera& base, const CameraOpt
     return out;
   }
   if (!o.focalLengthMm)
-    refuse(cat("--f-number ", o.fNumber), cat(base.name, " is in ", form,
-                                              ", which has no focal length: give --focal-length too, or aperture_radius in the file"));
+    refuse(cat("--f-number ", o.fNumber),
+           cat(base.name, " is in ", form,
+               ", which has no focal length: give --focal-length too, or aperture_radius in the file"));
   out.camera.lens.apertureRadius = *o.focalLengthMm * kMetresPerMillimetre / (2.0 * n);
-  out.camera.source += cat(", aperture radius ", out.camera.lens.apertureRadius, " (", *o.focalLengthMm, " mm at f/", o.fNumber, ")");
+  out.camera.source +=
+      cat(", aperture radius ", out.camera.lens.apertureRadius, " (", *o.focalLengthMm, " mm at f/", o.fNumber, ")");
   return out;
 }
 
@@ -195,10 +205,11 @@ std::string CameraOptions::describe() const {
 }
 
 const std::vector<NamedSensor>& namedSensors() {
-  static const std::vector<NamedSensor> sensors = {{"full-frame", {36.0, 24.0}},
-                                                   {"aps-c", {23.6, 15.6}, "Nikon's and Sony's; Canon's is --sensor 22.3x14.9"},
-                                                   {"micro-four-thirds", {17.3, 13.0}},
-                                                   {"1-inch", {13.2, 8.8}}};
+  static const std::vector<NamedSensor> sensors = {
+      {"full-frame", {36.0, 24.0}},
+      {"aps-c", {23.6, 15.6}, "Nikon's and Sony's; Canon's is --sensor 22.3x14.9"},
+      {"micro-four-thirds", {17.3, 13.0}},
+      {"1-inch", {13.2, 8.8}}};
   return sensors;
 }
 
@@ -220,7 +231,8 @@ glm::dvec2 parseSensorMm(const std::string& text) {
     const double w = parseNumber(text.substr(0, x), okWidth), h = parseNumber(text.substr(x + 1), okHeight);
     if (okWidth && okHeight && w > 0.0 && h > 0.0 && w <= 1e4 && h <= 1e4) return {w, h};
   }
-  throw InputError(cat("--sensor ", text, ": give WIDTHxHEIGHT in millimetres (e.g. 36x24), or one of ", namedSensorList()));
+  throw InputError(
+      cat("--sensor ", text, ": give WIDTHxHEIGHT in millimetres (e.g. 36x24), or one of ", namedSensorList()));
 }
 
 double parseFNumber(const std::string& text) {
@@ -228,7 +240,8 @@ double parseFNumber(const std::string& text) {
   bool ok = false;
   const double n = parseNumber(text, ok);
   if (ok && n > 0.0) return n;
-  throw InputError(cat("--f-number ", text, ": give a positive number (e.g. 2.8), or infinity (a pinhole: no aperture)"));
+  throw InputError(
+      cat("--f-number ", text, ": give a positive number (e.g. 2.8), or infinity (a pinhole: no aperture)"));
 }
 
 BaseCamera gltfBaseCamera(const Scene& scene, std::size_t index) {
@@ -259,7 +272,8 @@ BaseCamera framingBaseCamera(const Scene& scene) {
 
 PhysicalCamera gltfPhysicalCamera(const BaseCamera& base, const CameraOptions& options, double imageAspect) {
   const PhysicalCamera p = gltfAsPhysical(base, options, imageAspect);
-  validate(p, options.changesLens() || options.changesPose() ? cat(base.name, " with ", options.describe()) : base.name);
+  validate(p,
+           options.changesLens() || options.changesPose() ? cat(base.name, " with ", options.describe()) : base.name);
   return p;
 }
 
@@ -291,7 +305,9 @@ SelectedCamera composeForm(const BaseCamera& base, const CameraOptions& o, doubl
       const PhysicalCamera p = gltfPhysicalCamera(base, o, imageAspect);
       Camera like;
       like.farFromScene = std::isinf(base.gltf.zfar);
-      return physicalCamera(p, like, cat(gltfSource, " as ", p.focalLengthMm, " mm on ", p.sensorMm.x, "x", p.sensorMm.y, " mm, ", given));
+      return physicalCamera(
+          p, like,
+          cat(gltfSource, " as ", p.focalLengthMm, " mm on ", p.sensorMm.x, "x", p.sensorMm.y, " mm, ", given));
     }
     case CameraForm::GltfOrthographic: {
       const std::string why = cat(base.name, " is orthographic, which has no lens");
@@ -319,7 +335,7 @@ SelectedCamera composeCamera(const BaseCamera& base, const CameraOptions& o, dou
   // can do (a channel's plane of focus inside a longer focal length, a fold inside a wider view).
   if (o.changesLens() || o.changesPose())
     validateLensEffects(out.camera, cat(base.name, " with ", o.describe()),
-                        out.physical ? std::optional(out.physical->focalLengthMm * kMetresPerMillimetre)
+                        out.physical      ? std::optional(out.physical->focalLengthMm * kMetresPerMillimetre)
                         : o.focalLengthMm ? std::optional(*o.focalLengthMm * kMetresPerMillimetre)
                                           : std::nullopt);
   return out;
@@ -328,12 +344,14 @@ SelectedCamera composeCamera(const BaseCamera& base, const CameraOptions& o, dou
 std::vector<std::string> focusWarnings(const Camera& camera, const LensOptions& lens) {
   std::vector<std::string> warnings;
   if (!camera.lens.isPinhole()) return warnings;
-  const std::string why = "the camera has no aperture (a pinhole), so focus changes nothing; give --f-number N (or f_number / "
-                          "aperture_radius in the camera file) for depth of field";
+  const std::string why =
+      "the camera has no aperture (a pinhole), so focus changes nothing; give --f-number N (or f_number / "
+      "aperture_radius in the camera file) for depth of field";
   if (!lens.focusDistance.empty()) warnings.push_back(cat("--focus-distance ", lens.focusDistance, ": ", why));
   if (lens.focusAt) warnings.push_back(cat("--focus-at ", lens.focusAt->x, ",", lens.focusAt->y, ": ", why));
-  const std::string shapeWhy = "the camera has no aperture (a pinhole), so nothing is blurred into the aperture's shape; give "
-                               "--f-number N (or f_number / aperture_radius in the camera file) for depth of field";
+  const std::string shapeWhy =
+      "the camera has no aperture (a pinhole), so nothing is blurred into the aperture's shape; give "
+      "--f-number N (or f_number / aperture_radius in the camera file) for depth of field";
   if (lens.blades) warnings.push_back(cat("--blades ", *lens.blades, ": ", shapeWhy));
   if (lens.squeeze) warnings.push_back(cat("--squeeze ", *lens.squeeze, ": ", shapeWhy));
   return warnings;

@@ -84,12 +84,12 @@ enum class CameraForm { Physical, Lecture, Intrinsics, GltfPerspective, GltfOrth
 
 struct BaseCamera {
   CameraForm form = CameraForm::AutomaticFraming;
-  std::string name;           // for messages: "cam.json", "glTF camera 1 (node \"Top\")", "automatic framing"
-  SelectedCamera selected;    // file forms: the file's camera
-  SceneCamera gltf;           // glTF forms: the camera where its (posed) node puts it
-  std::size_t gltfIndex = 0;  //   its index in scene.cameras
+  std::string name;                // for messages: "cam.json", "glTF camera 1 (node \"Top\")", "automatic framing"
+  SelectedCamera selected;         // file forms: the file's camera
+  SceneCamera gltf;                // glTF forms: the camera where its (posed) node puts it
+  std::size_t gltfIndex = 0;       //   its index in scene.cameras
   double gltfFocusDistance = 1.0;  // glTF forms: where the view plane (the plane of focus) goes
-  BoundingSphere subject;     // automatic framing: what it frames
+  BoundingSphere subject;          // automatic framing: what it frames
 };
 
 // A glTF camera as a base: focus (glTF cameras have none) at the depth of the scene's centre along

@@ -29,9 +29,11 @@ namespace {
 // --colmap DIR --image NAME: that photograph's camera, a pinhole in the OpenCV-intrinsics form.
 BaseCamera colmapBaseCamera(const CameraOptions& options) {
   if (options.colmapImage.empty())
-    throw InputError(cat("--colmap ", options.colmapDir, ": give --image NAME too, the photograph whose view to render"));
+    throw InputError(
+        cat("--colmap ", options.colmapDir, ": give --image NAME too, the photograph whose view to render"));
   if (options.colmapDir.empty())
-    throw InputError(cat("--image ", options.colmapImage, ": give --colmap DIR too, the COLMAP model the image belongs to"));
+    throw InputError(
+        cat("--image ", options.colmapImage, ": give --colmap DIR too, the COLMAP model the image belongs to"));
   BaseCamera base;
   base.form = CameraForm::Intrinsics;
   base.name = cat("COLMAP image ", options.colmapImage, " (", options.colmapDir, ")");
@@ -43,19 +45,20 @@ BaseCamera colmapBaseCamera(const CameraOptions& options) {
 
 BaseCamera baseCamera(const Scene& scene, const std::optional<fs::path>& cameraFile, const CameraOptions& options) {
   const bool colmap = !options.colmapDir.empty() || !options.colmapImage.empty();
-  const std::string colmapOption = !options.colmapDir.empty() ? cat("--colmap ", options.colmapDir)
-                                                              : cat("--image ", options.colmapImage);
+  const std::string colmapOption =
+      !options.colmapDir.empty() ? cat("--colmap ", options.colmapDir) : cat("--image ", options.colmapImage);
   if (cameraFile && colmap)
     throw InputError(cat(colmapOption, " and --camera ", cameraFile->string(), " both give the camera; give one"));
   if (colmap && !options.cameraNode.empty())
-    throw InputError(cat("--camera-node ", options.cameraNode, ": ", colmapOption, " gives the camera already; give one or the other"));
+    throw InputError(cat("--camera-node ", options.cameraNode, ": ", colmapOption,
+                         " gives the camera already; give one or the other"));
   if (cameraFile) {
     if (!options.cameraNode.empty())
       throw InputError(cat("--camera-node ", options.cameraNode, ": --camera ", cameraFile->string(),
                            " gives the camera already; give one or the other"));
     CameraFile file = loadCameraJson(*cameraFile);
     BaseCamera base;
-    base.form = file.form == CameraFile::Form::Physical ? CameraForm::Physical
+    base.form = file.form == CameraFile::Form::Physical     ? CameraForm::Physical
                 : file.form == CameraFile::Form::Intrinsics ? CameraForm::Intrinsics
                                                             : CameraForm::Lecture;
     base.name = cameraFile->string();

@@ -42,7 +42,8 @@ PlanView planViewOf(const Camera& camera) {
   view.inverseFocus = camera.inverseFocusDistance();
   for (const double u : {v.window.umin, v.window.umax})
     for (const double w : {v.window.vmin, v.window.vmax})
-      view.farthestCornerSlope = std::max(view.farthestCornerSlope, glm::length(glm::dvec2(u - v.prp.x, w - v.prp.y)) / v.prp.z);
+      view.farthestCornerSlope =
+          std::max(view.farthestCornerSlope, glm::length(glm::dvec2(u - v.prp.x, w - v.prp.y)) / v.prp.z);
   return view;
 }
 
@@ -59,7 +60,8 @@ void planPinholeSamples(const PlanOptions& options, FramePlan& plan) {
     plan.samplesWhy = "pinhole camera: the lecture's 17-point pattern as 17 sub-pixel-jittered views (anti-aliasing)";
   } else if (options.apertureSamples > 1) {
     plan.apertureSamples = options.apertureSamples;
-    plan.samplesWhy = cat("pinhole camera: ", options.apertureSamples, " sub-pixel-jittered views as asked (anti-aliasing)");
+    plan.samplesWhy =
+        cat("pinhole camera: ", options.apertureSamples, " sub-pixel-jittered views as asked (anti-aliasing)");
   } else {
     plan.apertureSamples = 1;
     plan.samplesWhy = "pinhole camera: one view from the PRP";
@@ -83,7 +85,8 @@ std::string planCircles(const Camera& camera, ImageSize size, const PlanOptions&
       // The circle shrinks to nothing on the plane of focus, and grows away from it on both sides.
       const double inverse = camera.inverseFocusDistance() + shift;
       const double focus = inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
-      plan.cocMinPx = std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
+      plan.cocMinPx =
+          std::min(plan.cocMinPx, (focus >= plan.depthMin && focus <= plan.depthMax) ? 0.0 : std::min(atNear, atFar));
     }
   }
   if (!visible)
@@ -124,9 +127,11 @@ void planLensSamples(const PlanOptions& options, const std::string& range, const
   if (plan.apertureSamples == 1)
     plan.samplesWhy = cat("the scene lies inside the depth of field: ", range);
   else
-    plan.samplesWhy = cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)",
-                          plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples) : std::string(),
-                          " (", range, ")");
+    plan.samplesWhy =
+        cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)",
+            plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples)
+                                                       : std::string(),
+            " (", range, ")");
   if (plan.apertureSamples < std::min(least.minApertureSamples, options.maxSamples)) {
     plan.apertureSamples = std::min(least.minApertureSamples, options.maxSamples);
     plan.samplesWhy = cat(plan.apertureSamples, ": ", least.minSamplesWhy, " (", range, ")");
@@ -149,8 +154,9 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
     const PixelBox b = grid.box(t);
     // The pre-pass's rows run from the top.
     const double coc = camera.lens.isPinhole() ? 0.0
-                       : visible ? visible->maxOver(b.x, size.heightPx - b.y - b.height, b.x + b.width, size.heightPx - b.y)
-                                 : plan.cocMaxPx;
+                       : visible
+                           ? visible->maxOver(b.x, size.heightPx - b.y - b.height, b.x + b.width, size.heightPx - b.y)
+                           : plan.cocMaxPx;
     a.sharpTiles += coc <= 1.0;
     a.minSamples.push_back(std::min(coc <= 1.0 ? kMinSamplesSharpTile : kMinSamplesBlurredTile, a.maxSamples));
   }
@@ -158,7 +164,8 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
   plan.apertureSamples = a.maxSamples;
   plan.samplesWhy = cat("to ", a.targetPsnrDb, " dB: ", grid.count(), " tiles of ", a.tileSizePx, " px, each from ",
                         kMinSamplesSharpTile, " (", a.sharpTiles, " tiles in focus) or ", kMinSamplesBlurredTile,
-                        " samples (blurred) up to ", a.maxSamples, ", in sobol order, stopping where the two streams' "
+                        " samples (blurred) up to ", a.maxSamples,
+                        ", in sobol order, stopping where the two streams' "
                         "estimate says one more sample gains least (",
                         camera.lens.isPinhole() ? std::string("pinhole camera") : plan.samplesWhy, ")");
   plan.adaptive = std::move(a);
@@ -168,40 +175,57 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
 void planPasses(const Camera& camera, std::size_t triangles, const EffectNeeds& needs,
                 const std::vector<std::string>& sceneVariants, FramePlan& plan) {
   const ImageSize rendered = plan.overscan.size;
-  const std::string where = plan.remap ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,
-                                             "+", plan.overscan.padPx.y, " px overscan for the lens pass)")
-                                       : std::string();
+  const std::string where = plan.remap
+                                ? cat(" at ", rendered.widthPx, "x", rendered.heightPx, " (", plan.overscan.padPx.x,
+                                      "+", plan.overscan.padPx.y, " px overscan for the lens pass)")
+                                : std::string();
   if (plan.apertureSamples == 1) {
     plan.passes.push_back({"scene", cat("one view of ", triangles, " triangles into a float target", where), {}});
   } else if (plan.adaptive) {
-    PlannedPass scenePass{"scene", cat("up to ", plan.apertureSamples * plan.viewsPerSample, " views per tile of ", triangles,
-                                       " triangles, in rounds of ", plan.adaptive->samplesPerRound,
-                                       " samples drawn only into the tiles that still need them (scissor rectangles)", where), {}};
-    scenePass.variants = sceneVariants;
-    plan.passes.push_back(scenePass);
-    plan.passes.push_back({"accumulate", "adds each view into one of two float sums (even samples, odd samples: two independent streams)", {}});
-    plan.passes.push_back({"estimate", "after each round, each tile's squared error from the difference of its two streams' means", {}});
-    plan.passes.push_back({"resolve", "divides the two sums by each tile's own weight", {"two-streams"}});
-  } else {
-    PlannedPass scenePass{"scene", cat(plan.apertureSamples * plan.viewsPerSample, " views of ", triangles, " triangles, ",
-                                       plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "
-                                                                : "one from each ",
-                                       patternName(plan.pattern), camera.lens.isPinhole() ? " sample" : " aperture point",
-                                       ", with sub-pixel jitter", where),
+    PlannedPass scenePass{"scene",
+                          cat("up to ", plan.apertureSamples * plan.viewsPerSample, " views per tile of ", triangles,
+                              " triangles, in rounds of ", plan.adaptive->samplesPerRound,
+                              " samples drawn only into the tiles that still need them (scissor rectangles)", where),
                           {}};
     scenePass.variants = sceneVariants;
     plan.passes.push_back(scenePass);
-    plan.passes.push_back({"accumulate", cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"), {}});
-    plan.passes.push_back({"resolve", plan.viewsPerSample == 3 ? "divides each channel's sum by its view count"
-                                                               : "divides the sum by the sample count", {}});
+    plan.passes.push_back(
+        {"accumulate",
+         "adds each view into one of two float sums (even samples, odd samples: two independent streams)",
+         {}});
+    plan.passes.push_back(
+        {"estimate", "after each round, each tile's squared error from the difference of its two streams' means", {}});
+    plan.passes.push_back({"resolve", "divides the two sums by each tile's own weight", {"two-streams"}});
+  } else {
+    PlannedPass scenePass{"scene",
+                          cat(plan.apertureSamples * plan.viewsPerSample, " views of ", triangles, " triangles, ",
+                              plan.viewsPerSample == 3 ? "one per colour channel (axial chromatic aberration) at each "
+                                                       : "one from each ",
+                              patternName(plan.pattern), camera.lens.isPinhole() ? " sample" : " aperture point",
+                              ", with sub-pixel jitter", where),
+                          {}};
+    scenePass.variants = sceneVariants;
+    plan.passes.push_back(scenePass);
+    plan.passes.push_back(
+        {"accumulate",
+         cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"),
+         {}});
+    plan.passes.push_back({"resolve",
+                           plan.viewsPerSample == 3 ? "divides each channel's sum by its view count"
+                                                    : "divides the sum by the sample count",
+                           {}});
   }
   if (plan.remap) {
-    PlannedPass lens{"lens", plan.apertureSamples > 1
-        ? cat("carries each view's samples to where the lens puts them as the views are summed (forward table with "
-              "Jacobian; inverse table per ", plan.remapTables == 3 ? "colour channel" : "image",
-              "); each pixel the mean of the samples landing in it")
-        : cat("remaps the image through the inverse lens model (a lookup table per ",
-              plan.remapTables == 3 ? "colour channel" : "image", ", bilinear)"), {}};
+    PlannedPass lens{
+        "lens",
+        plan.apertureSamples > 1
+            ? cat("carries each view's samples to where the lens puts them as the views are summed (forward table with "
+                  "Jacobian; inverse table per ",
+                  plan.remapTables == 3 ? "colour channel" : "image",
+                  "); each pixel the mean of the samples landing in it")
+            : cat("remaps the image through the inverse lens model (a lookup table per ",
+                  plan.remapTables == 3 ? "colour channel" : "image", ", bilinear)"),
+        {}};
     lens.variants = needs.lensVariants;
     plan.passes.push_back(lens);
   }
@@ -209,7 +233,8 @@ void planPasses(const Camera& camera, std::size_t triangles, const EffectNeeds& 
   if (plan.vignetting) {
     const std::string& gain = needs.finalGain;
     // A resolve of many views ends the frame and multiplies the gain in; else a pass of its own.
-    const auto resolve = std::find_if(plan.passes.begin(), plan.passes.end(), [](const PlannedPass& p) { return p.name == "resolve"; });
+    const auto resolve =
+        std::find_if(plan.passes.begin(), plan.passes.end(), [](const PlannedPass& p) { return p.name == "resolve"; });
     if (resolve != plan.passes.end() && !plan.adaptive) {
       resolve->why += cat(", times ", gain);
       resolve->variants.push_back("vignetting");
@@ -254,8 +279,9 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   plan.overscan = rendered.overscan();
   planPasses(camera, scene.triangleCount(), needs, sceneVariants, plan);
   if (camera.lens.isPinhole() && needs.idleThroughPinhole)
-    plan.warnings.push_back("axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
-                            "has none, so they change nothing here (give an aperture)");
+    plan.warnings.push_back(
+        "axial chromatic aberration and field curvature blur out-of-focus points; a pinhole camera "
+        "has none, so they change nothing here (give an aperture)");
   return plan;
 }
 

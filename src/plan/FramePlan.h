@@ -47,11 +47,12 @@ struct PlanOptions {
 struct AdaptivePlan {
   double targetPsnrDb = 40.0;
   int tileSizePx = 32;
-  int maxSamples = 256;          // per tile
-  int samplesPerRound = 8;       // both streams: 4 each at first; rounds grow with the count (half of it)
-  std::vector<int> minSamples;   // per tile (TileGrid's order: row 0 at the bottom), from the pre-pass
-  int sharpTiles = 0;            // tiles whose largest reaching circle is ≤ 1 px
-  float lodBias = 0.0f;          // texture detail of every view (scene.frag): fixed, so the limit does not depend on where a tile stops
+  int maxSamples = 256;         // per tile
+  int samplesPerRound = 8;      // both streams: 4 each at first; rounds grow with the count (half of it)
+  std::vector<int> minSamples;  // per tile (TileGrid's order: row 0 at the bottom), from the pre-pass
+  int sharpTiles = 0;           // tiles whose largest reaching circle is ≤ 1 px
+  float lodBias =
+      0.0f;  // texture detail of every view (scene.frag): fixed, so the limit does not depend on where a tile stops
 };
 
 // The pre-pass's distribution of blur, as `info` and --stats show it.
@@ -59,33 +60,33 @@ struct VisibleBlurSummary {
   ImageSize prepass;
   std::array<double, 5> fractions{};  // circles ≤ 1, 1–4, 4–16, 16–64, > 64 px
   double p50Px = 0.0, p90Px = 0.0, p99Px = 0.0, maxPx = 0.0;
-  double boundsCocMaxPx = 0.0;         // what the scene's bounds alone would say
-  int boundsSamples = 1;               // and the auto count they would give
+  double boundsCocMaxPx = 0.0;  // what the scene's bounds alone would say
+  int boundsSamples = 1;        // and the auto count they would give
 };
 
 struct PlannedPass {
-  std::string name;  // "scene", "accumulate", "resolve", "lens"
-  std::string why;   // one line, shown by --stats and `lenslab info`
+  std::string name;                   // "scene", "accumulate", "resolve", "lens"
+  std::string why;                    // one line, shown by --stats and `lenslab info`
   std::vector<std::string> variants;  // shader variants in use, e.g. "field-curvature"
 };
 
 struct FramePlan {
   std::vector<PlannedPass> passes;
-  int apertureSamples = 1;      // scene passes, one per point of the aperture
-  std::string samplesWhy;       // why that many
+  int apertureSamples = 1;  // scene passes, one per point of the aperture
+  std::string samplesWhy;   // why that many
   AperturePattern pattern = AperturePattern::Sobol;
   std::uint32_t seed = 1;
-  double cocMinPx = 0.0;        // circle of confusion over the part of the scene in view, pixels
+  double cocMinPx = 0.0;  // circle of confusion over the part of the scene in view, pixels
   double cocMaxPx = 0.0;
-  double depthMin = 0.0;        // that part's depth range, world units from the PRP along −n
+  double depthMin = 0.0;  // that part's depth range, world units from the PRP along −n
   double depthMax = 0.0;
   std::vector<std::string> warnings;  // what the plan could not honour, for stderr
-  int viewsPerSample = 1;       // 3 with axial chromatic aberration: one per colour channel
-  bool fieldCurvature = false;  // the views are summed through the curved focal surface's warp
-  bool remap = false;           // the lens post pass runs (distortion, lateral colour)
-  int remapTables = 0;          // its inverse lookup tables: 1, or 3 with lateral colour (one per channel)
-  bool vignetting = false;      // the image is multiplied by the vignetting gain (lens/LensEffects.h)
-  Overscan overscan;            // what the scene passes render: the image, or more for the lens pass
+  int viewsPerSample = 1;             // 3 with axial chromatic aberration: one per colour channel
+  bool fieldCurvature = false;        // the views are summed through the curved focal surface's warp
+  bool remap = false;                 // the lens post pass runs (distortion, lateral colour)
+  int remapTables = 0;                // its inverse lookup tables: 1, or 3 with lateral colour (one per channel)
+  bool vignetting = false;            // the image is multiplied by the vignetting gain (lens/LensEffects.h)
+  Overscan overscan;                  // what the scene passes render: the image, or more for the lens pass
   std::optional<VisibleBlurSummary> visible;  // from a pinhole depth pre-pass, when one ran
   std::optional<AdaptivePlan> adaptive;       // per-tile budgets to a target error
 
@@ -98,8 +99,8 @@ int autoApertureSamples(double cocPx, int maxSamples);
 
 // `visible`: the pre-pass's blur (plan/VisibleBlur.h); without it the circle of confusion comes
 // from the scene's bounds, which can only overstate it.
-FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size,
-                        const PlanOptions& options = {}, const VisibleBlur* visible = nullptr);
+FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size, const PlanOptions& options = {},
+                        const VisibleBlur* visible = nullptr);
 
 // The tiles' minimum counts: a few for antialiasing where the largest reaching circle is ≤ 1 px,
 // more where blur reaches (so the estimate has something to go on before it is trusted).

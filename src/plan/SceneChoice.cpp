@@ -8,10 +8,13 @@
 namespace lenslab {
 namespace {
 
-[[noreturn]] void refuse(const std::string& option, const std::string& why) { throw InputError(cat(option, ": ", why)); }
+[[noreturn]] void refuse(const std::string& option, const std::string& why) {
+  throw InputError(cat(option, ": ", why));
+}
 
 bool isWholeNumber(const std::string& text) {
-  return !text.empty() && text.size() < 10 && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  return !text.empty() && text.size() < 10 &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // One kind of name a choice can be picked by, and each choice's name of that kind.
@@ -46,7 +49,8 @@ std::size_t pickChoice(const Choices& c, const std::string& option, const std::s
       if (kind.names[i] == text) matches.push_back(i);
     if (matches.size() == 1) return matches.front();
     if (matches.size() > 1)
-      refuse(option, cat(matches.size(), " ", c.noun, "s of ", c.source, " have that ", kind.what, "; give an index: ", c.list));
+      refuse(option, cat(matches.size(), " ", c.noun, "s of ", c.source, " have that ", kind.what,
+                         "; give an index: ", c.list));
   }
   refuse(option, cat("no ", c.noun, " of ", c.source, " has that ", c.anyName, "; it has ", c.list));
 }
@@ -64,7 +68,8 @@ std::string sceneCameraLabel(const Scene& scene, std::size_t index) {
 std::size_t findSceneCamera(const Scene& scene, const std::string& text) {
   const std::string option = cat("--camera-node ", text);
   if (scene.cameras.empty())
-    refuse(option, cat(scene.source, " has no cameras; leave the option out for the automatic framing, or give --camera FILE"));
+    refuse(option,
+           cat(scene.source, " has no cameras; leave the option out for the automatic framing, or give --camera FILE"));
   Choices cameras{scene.source, "camera", "", {{"node name", {}}, {"camera name", {}}}, "node or camera name"};
   for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
     cameras.list += (i ? ", " : "") + sceneCameraLabel(scene, i);
@@ -93,17 +98,20 @@ void selectAnimation(Scene& scene, const std::string& text) {
   animation.playing = static_cast<int>(pickChoice(clips, option, text));
 }
 
-std::vector<std::string> poseForOneImage(Scene& scene, const std::string& animation, std::optional<double> timeSeconds) {
+std::vector<std::string> poseForOneImage(Scene& scene, const std::string& animation,
+                                         std::optional<double> timeSeconds) {
   selectAnimation(scene, animation);
   std::vector<std::string> warnings;
   if (timeSeconds) {
     if (scene.animation.empty())
       warnings.push_back(cat("--time ", *timeSeconds, ": ", scene.source,
-                             scene.animation.clips.empty() ? " has no animation that moves what it draws"
-                                                           : "'s playing animation moves nothing it draws (--animation chooses another)"));
+                             scene.animation.clips.empty()
+                                 ? " has no animation that moves what it draws"
+                                 : "'s playing animation moves nothing it draws (--animation chooses another)"));
     poseScene(scene, *timeSeconds);
   } else if (!animation.empty()) {
-    warnings.push_back(cat("--animation ", animation, ": without --time the rest pose is drawn; give --time SECONDS to pose the scene"));
+    warnings.push_back(cat("--animation ", animation,
+                           ": without --time the rest pose is drawn; give --time SECONDS to pose the scene"));
   }
   return warnings;
 }

@@ -22,13 +22,19 @@ TileGrid makeTileGrid(ImageSize image, int tileSizePx) {
 }
 
 std::vector<PixelBox> mergedBoxes(const TileGrid& grid, const std::vector<char>& selected) {
-  struct Run { int first, last; PixelBox box; };
+  struct Run {
+    int first, last;
+    PixelBox box;
+  };
   std::vector<PixelBox> done;
   std::vector<Run> open;  // runs of the previous tile row, still growing upward
   for (int row = 0; row < grid.rows; ++row) {
     std::vector<Run> current;
     for (int column = 0; column < grid.columns;) {
-      if (!selected[static_cast<std::size_t>(row * grid.columns + column)]) { ++column; continue; }
+      if (!selected[static_cast<std::size_t>(row * grid.columns + column)]) {
+        ++column;
+        continue;
+      }
       int last = column;
       while (last + 1 < grid.columns && selected[static_cast<std::size_t>(row * grid.columns + last + 1)]) ++last;
       const PixelBox first = grid.box(row * grid.columns + column), end = grid.box(row * grid.columns + last);
@@ -87,7 +93,8 @@ double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles) {
   return pixels > 0.0 ? sum / pixels : 0.0;
 }
 
-std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples) {
+std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse,
+                                 int maxSamples) {
   const std::size_t n = static_cast<std::size_t>(grid.count());
   std::vector<int> go(n, 0);
   bool belowMinimum = false;
@@ -106,13 +113,15 @@ std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileSta
   const auto finalSamples = [&](std::size_t t, double lambda) {
     const double c = tiles[t].mse * tiles[t].samples;
     const double wanted = lambda > 0.0 ? std::sqrt(c / lambda) : std::numeric_limits<double>::infinity();
-    return std::clamp(wanted, static_cast<double>(tiles[t].samples), static_cast<double>(std::max(maxSamples, tiles[t].samples)));
+    return std::clamp(wanted, static_cast<double>(tiles[t].samples),
+                      static_cast<double>(std::max(maxSamples, tiles[t].samples)));
   };
   const auto finalMse = [&](double lambda) {
     double sum = 0.0;
     for (std::size_t t = 0; t < n; ++t) {
       const double samples = finalSamples(t, lambda);
-      sum += grid.pixels(static_cast<int>(t)) * (samples > 0.0 ? tiles[t].mse * tiles[t].samples / samples : tiles[t].mse);
+      sum +=
+          grid.pixels(static_cast<int>(t)) * (samples > 0.0 ? tiles[t].mse * tiles[t].samples / samples : tiles[t].mse);
     }
     return sum / pixels;
   };

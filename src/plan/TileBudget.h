@@ -30,7 +30,10 @@ struct TileGrid {
 
   int count() const { return columns * rows; }
   PixelBox box(int tile) const;  // tile = row * columns + column, row 0 at the bottom; clipped to the image
-  double pixels(int tile) const { const PixelBox b = box(tile); return static_cast<double>(b.width) * b.height; }
+  double pixels(int tile) const {
+    const PixelBox b = box(tile);
+    return static_cast<double>(b.width) * b.height;
+  }
 };
 
 TileGrid makeTileGrid(ImageSize image, int tileSizePx);
@@ -45,16 +48,17 @@ std::vector<PixelBox> mergedBoxes(const TileGrid& grid, const std::vector<char>&
 std::vector<PixelBox> coveringBoxes(const std::vector<PixelBox>& boxes, double pixelsPerBox);
 
 struct TileState {
-  int samples = 0;         // samples drawn into the tile (both streams)
-  int minSamples = 0;      // the plan's minimum (from the pre-pass's circle of confusion)
-  double mse = 0.0;      // estimated squared error of its mean, per RGB value
+  int samples = 0;     // samples drawn into the tile (both streams)
+  int minSamples = 0;  // the plan's minimum (from the pre-pass's circle of confusion)
+  double mse = 0.0;    // estimated squared error of its mean, per RGB value
 };
 
 // Which tiles draw more samples, to bring the frame's pixel-weighted mean squared error to
 // `targetMse` with the fewest samples, none beyond `maxSamples`. Tiles under their minimum always go
 // on. Returns, per tile, how many more samples the allocation expects it to need (0: it stops);
 // all 0 when the target is met (or every tile is at the cap).
-std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples);
+std::vector<int> tilesToContinue(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse,
+                                 int maxSamples);
 
 // Whether drawing the rest of the frame tile by tile is predicted to cost less than drawing whole
 // views until the frame meets the target. Both predictions use the same c/n model as
@@ -80,7 +84,7 @@ struct FrameEstimate {
   int minSamples = 0, maxSamples = 0;          // over tiles
   double meanSamples = 0.0;                    // pixel-weighted: samples per pixel
   int tiles = 0, tilesActive = 0, rounds = 0;
-  bool wholeFrame = false;                     // after the first round, every tile went on together (Renderer::step)
+  bool wholeFrame = false;  // after the first round, every tile went on together (Renderer::step)
   bool targetMet = false;
 };
 FrameEstimate estimateFrame(const TileGrid& grid, const std::vector<TileState>& tiles, double targetPsnrDb);

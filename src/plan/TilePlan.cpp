@@ -111,15 +111,16 @@ double curvatureShiftPx(const Camera& camera, ImageSize size, const FramePlan& p
   const Window& w = camera.view.window;
   const double pitch = std::min(w.width() / size.widthPx, w.height() / size.heightPx);
   // Renderer::addSamples: the shift at r = 1 is lensOffset·d·κ / pitch, |lensOffset| ≤ aperture radius.
-  return camera.lens.apertureRadius * camera.view.prp.z * std::abs(camera.lens.effects.fieldCurvature.inverseFocusPerRadius2) *
-         corner * corner / pitch;
+  return camera.lens.apertureRadius * camera.view.prp.z *
+         std::abs(camera.lens.effects.fieldCurvature.inverseFocusPerRadius2) * corner * corner / pitch;
 }
 
 void requireOneTarget(ImageSize size, const RenderTargetLimits& limits, const std::string& command) {
-  if (size.widthPx <= limits.maxSidePx && size.heightPx <= limits.maxSidePx && size.pixelCount() <= limits.maxPixels) return;
+  if (size.widthPx <= limits.maxSidePx && size.heightPx <= limits.maxSidePx && size.pixelCount() <= limits.maxPixels)
+    return;
   throw InputError(cat("--width/--height: ", command, " renders the whole ", size.widthPx, "x", size.heightPx,
-                       " image into one render target, which holds at most ", limits.maxPixels, " pixels and ", limits.maxSidePx,
-                       " a side; give a smaller size (render draws larger images in tiles)"));
+                       " image into one render target, which holds at most ", limits.maxPixels, " pixels and ",
+                       limits.maxSidePx, " a side; give a smaller size (render draws larger images in tiles)"));
 }
 
 std::int64_t tileMemoryBytes(const FramePlan& plan, const Tile& tile) {
@@ -174,18 +175,21 @@ TilePlan planTiles(const Camera& camera, ImageSize size, const FramePlan& plan, 
       active = nullptr;
     }
     if (side < kSmallestTilePx)
-      throw InputError(cat(camera.source, ": the lens moves pixels so far that even ", kSmallestTilePx, "-pixel tiles need a "
-                           "render larger than ", limits.maxSidePx, " px a side or ", limits.maxPixels,
+      throw InputError(cat(camera.source, ": the lens moves pixels so far that even ", kSmallestTilePx,
+                           "-pixel tiles need a "
+                           "render larger than ",
+                           limits.maxSidePx, " px a side or ", limits.maxPixels,
                            " pixels; render a smaller image or use weaker lens effects"));
     out.tiles = layout(camera, size, plan, limits, active, side, out.tileWidthPx, out.tileHeightPx);
     if (!out.tiles.empty()) break;
   }
-  const std::string reason = forcedTileSidePx > 0 ? cat("--tile-size ", forcedTileSidePx)
+  const std::string reason =
+      forcedTileSidePx > 0 ? cat("--tile-size ", forcedTileSidePx)
       : fits(frame, limits)
-      ? cat("the ", frame.width(), "x", frame.height(), " render needs about ", (wholeBytes + (1 << 19)) >> 20,
-            " MiB, over the ", (memory ? memory->tileBytes : 0) >> 20, " MiB a tile may hold")
-      : cat("the ", frame.width(), "x", frame.height(), " render exceeds one render target (", limits.maxSidePx,
-            " px a side, ", limits.maxPixels, " pixels)");
+          ? cat("the ", frame.width(), "x", frame.height(), " render needs about ", (wholeBytes + (1 << 19)) >> 20,
+                " MiB, over the ", (memory ? memory->tileBytes : 0) >> 20, " MiB a tile may hold")
+          : cat("the ", frame.width(), "x", frame.height(), " render exceeds one render target (", limits.maxSidePx,
+                " px a side, ", limits.maxPixels, " pixels)");
   out.why = cat(out.tiles.size(), " tiles of up to ", out.tileWidthPx, "x", out.tileHeightPx, " (", reason,
                 "), each a sub-window of the same view plane with the same PRP");
   return out;
@@ -197,7 +201,8 @@ TileView tileView(const Camera& camera, ImageSize size, const FramePlan& plan, c
     // The lens pass writes the tile itself; its scene passes render the margins around it.
     v.camera = subWindowCamera(camera, size, tile.rect);
     v.size = tile.rect.size();
-    v.plan.overscan = {subWindowCamera(camera, size, tile.rendered), tile.rendered.size(),
+    v.plan.overscan = {subWindowCamera(camera, size, tile.rendered),
+                       tile.rendered.size(),
                        {tile.rect.x0 - tile.rendered.x0, tile.rect.y0 - tile.rendered.y0}};
     v.crop = {0, 0, v.size.widthPx, v.size.heightPx};
   } else {
@@ -205,8 +210,8 @@ TileView tileView(const Camera& camera, ImageSize size, const FramePlan& plan, c
     v.camera = subWindowCamera(camera, size, tile.rendered);
     v.size = tile.rendered.size();
     v.plan.overscan = {v.camera, v.size, {0, 0}};
-    v.crop = {tile.rect.x0 - tile.rendered.x0, tile.rect.y0 - tile.rendered.y0,
-              tile.rect.x1 - tile.rendered.x0, tile.rect.y1 - tile.rendered.y0};
+    v.crop = {tile.rect.x0 - tile.rendered.x0, tile.rect.y0 - tile.rendered.y0, tile.rect.x1 - tile.rendered.x0,
+              tile.rect.y1 - tile.rendered.y0};
   }
   return v;
 }

@@ -42,7 +42,7 @@ struct TileMemory {
   // and read back), plus the strip and about 220 MB for the context, the scene and the programs.
   std::int64_t tileBytes = std::int64_t{320} << 20;
   std::int64_t stripBytes = std::int64_t{256} << 20;  // the writer's strip: image width × a tile row's height
-  int fileBytesPerPixel = 16;                          // the strip's pixels: 16 (EXR, float RGBA), 3 (PNG)
+  int fileBytesPerPixel = 16;                         // the strip's pixels: 16 (EXR, float RGBA), 3 (PNG)
 };
 
 struct Tile {
@@ -51,8 +51,8 @@ struct Tile {
 };
 
 struct TilePlan {
-  bool tiled = false;       // false: one ordinary render of the whole frame
-  int tileWidthPx = 0;      // the tiles' size (the last column and row may be smaller)
+  bool tiled = false;   // false: one ordinary render of the whole frame
+  int tileWidthPx = 0;  // the tiles' size (the last column and row may be smaller)
   int tileHeightPx = 0;
   std::vector<Tile> tiles;  // row by row from the top, left to right
   std::string why;          // one line, for --stats and the progress message
@@ -81,10 +81,10 @@ void requireOneTarget(ImageSize size, const RenderTargetLimits& limits, const st
 // What the renderer needs for one tile: the camera and size it renders, the plan with the tile's
 // overscan, and which pixels of the result are the tile's.
 struct TileView {
-  Camera camera;    // with the lens pass: the tile's sub-window; without: the rendered rect's
-  ImageSize size;   // the size of the image the renderer returns
-  FramePlan plan;   // the frame's plan (same samples and seed), overscan replaced by the tile's
-  PixelRect crop;   // the tile's pixels within the returned image
+  Camera camera;   // with the lens pass: the tile's sub-window; without: the rendered rect's
+  ImageSize size;  // the size of the image the renderer returns
+  FramePlan plan;  // the frame's plan (same samples and seed), overscan replaced by the tile's
+  PixelRect crop;  // the tile's pixels within the returned image
 };
 TileView tileView(const Camera& camera, ImageSize size, const FramePlan& plan, const Tile& tile);
 

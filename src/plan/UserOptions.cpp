@@ -21,10 +21,13 @@ PlanOptions toPlanOptions(const LensOptions& o) {
     if (!(*o.targetPsnrDb >= 10.0 && *o.targetPsnrDb <= 100.0))
       throw InputError(cat("--target-psnr ", *o.targetPsnrDb, ": give a PSNR from 10 to 100 dB"));
     if (p.pattern != AperturePattern::Sobol)
-      throw InputError(cat("--pattern ", o.pattern, ": --target-psnr stops tiles early, which needs the progressive order "
-                           "(every prefix well spread) and its two independent streams: use --pattern sobol or leave it out"));
+      throw InputError(
+          cat("--pattern ", o.pattern,
+              ": --target-psnr stops tiles early, which needs the progressive order "
+              "(every prefix well spread) and its two independent streams: use --pattern sobol or leave it out"));
     if (o.apertureSamples != "auto")
-      throw InputError(cat("--aperture-samples ", o.apertureSamples, ": --target-psnr chooses each tile's count; give "
+      throw InputError(cat("--aperture-samples ", o.apertureSamples,
+                           ": --target-psnr chooses each tile's count; give "
                            "one or the other (--max-samples caps the tiles)"));
     p.targetPsnrDb = o.targetPsnrDb;
   }
@@ -75,7 +78,8 @@ SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions&
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used != o.focusDistance.size()) throw InputError(cat("--focus-distance ", o.focusDistance, ": give a distance or infinity"));
+    if (used != o.focusDistance.size())
+      throw InputError(cat("--focus-distance ", o.focusDistance, ": give a distance or infinity"));
   }
   SelectedCamera c = refocused(camera, d, "--focus-distance");
   c.camera.source += cat(", refocused to ", o.focusDistance);

@@ -16,15 +16,15 @@
 namespace lenslab {
 
 struct LensOptions {
-  std::string pattern;                    // empty: sobol (docs/sampling.md)
-  std::optional<double> targetPsnrDb;     // per-tile budgets to this estimated PSNR
+  std::string pattern;                 // empty: sobol (docs/sampling.md)
+  std::optional<double> targetPsnrDb;  // per-tile budgets to this estimated PSNR
   std::string apertureSamples = "auto";
   int maxSamples = 256;
   std::uint32_t seed = 1;
-  std::string focusDistance;              // a number or "infinity"; empty = the camera's
-  std::optional<glm::dvec2> focusAt;      // pixel (x, y), from "X,Y"
-  std::optional<int> blades;              // the aperture's blades (0: round), over the camera's
-  std::optional<double> squeeze;          // the aperture's anamorphic squeeze, over the camera's
+  std::string focusDistance;          // a number or "infinity"; empty = the camera's
+  std::optional<glm::dvec2> focusAt;  // pixel (x, y), from "X,Y"
+  std::optional<int> blades;          // the aperture's blades (0: round), over the camera's
+  std::optional<double> squeeze;      // the aperture's anamorphic squeeze, over the camera's
 };
 
 // Throws InputError for a bad pattern or sample count.

@@ -23,14 +23,21 @@ void runningExtreme(const float* in, float* out, int n, int stride, int radius, 
   const int size = blocks * w;
   forward.assign(static_cast<std::size_t>(size), identity);
   backward.assign(static_cast<std::size_t>(size), identity);
-  auto at = [&](int i) { const int j = i - radius; return (j >= 0 && j < n) ? in[static_cast<std::ptrdiff_t>(j) * stride] : identity; };
+  auto at = [&](int i) {
+    const int j = i - radius;
+    return (j >= 0 && j < n) ? in[static_cast<std::ptrdiff_t>(j) * stride] : identity;
+  };
   for (int i = 0; i < size; ++i) {
     const float v = at(i);
-    forward[static_cast<std::size_t>(i)] = (i % w == 0 || better(v, forward[static_cast<std::size_t>(i - 1)])) ? v : forward[static_cast<std::size_t>(i - 1)];
+    forward[static_cast<std::size_t>(i)] = (i % w == 0 || better(v, forward[static_cast<std::size_t>(i - 1)]))
+                                               ? v
+                                               : forward[static_cast<std::size_t>(i - 1)];
   }
   for (int i = size - 1; i >= 0; --i) {
     const float v = at(i);
-    backward[static_cast<std::size_t>(i)] = (i % w == w - 1 || better(v, backward[static_cast<std::size_t>(i + 1)])) ? v : backward[static_cast<std::size_t>(i + 1)];
+    backward[static_cast<std::size_t>(i)] = (i % w == w - 1 || better(v, backward[static_cast<std::size_t>(i + 1)]))
+                                                ? v
+                                                : backward[static_cast<std::size_t>(i + 1)];
   }
   // Output j covers padded [j, j + w − 1]: the backward run from j and the forward run to j + w − 1.
   for (int j = 0; j < n; ++j) {
@@ -41,14 +48,16 @@ void runningExtreme(const float* in, float* out, int n, int stride, int radius, 
 
 // Separable square filter of half-width `radius`.
 template <class Better>
-std::vector<float> squareExtreme(const std::vector<float>& image, ImageSize size, int radius, float identity, Better better) {
+std::vector<float> squareExtreme(const std::vector<float>& image, ImageSize size, int radius, float identity,
+                                 Better better) {
   std::vector<float> rows(image.size()), out(image.size()), f, b;
   for (int y = 0; y < size.heightPx; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx);
     runningExtreme(&image[row], &rows[row], size.widthPx, 1, radius, identity, better, f, b);
   }
   for (int x = 0; x < size.widthPx; ++x)
-    runningExtreme(&rows[static_cast<std::size_t>(x)], &out[static_cast<std::size_t>(x)], size.heightPx, size.widthPx, radius, identity, better, f, b);
+    runningExtreme(&rows[static_cast<std::size_t>(x)], &out[static_cast<std::size_t>(x)], size.heightPx, size.widthPx,
+                   radius, identity, better, f, b);
   return out;
 }
 
@@ -98,7 +107,8 @@ VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass
   for (std::size_t i = 0; i < n; ++i) {
     const double z = depth[i];
     // Nothing seen: a constant background has no circle; an environment has infinity's.
-    if (!(z > 0.0) || (std::isinf(z) && !(backgroundAtInfinity && camera.view.projection == Projection::Perspective))) continue;
+    if (!(z > 0.0) || (std::isinf(z) && !(backgroundAtInfinity && camera.view.projection == Projection::Perspective)))
+      continue;
     double c = 0.0;
     if (!camera.lens.isPinhole())
       for (const double shift : shifts) c = std::max(c, cocDiameterOnWindow(camera, z, shift) * pxPerWindowUnit);
@@ -128,8 +138,10 @@ VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass
     }
     if (!any) continue;
     const int radius = std::min(static_cast<int>(std::ceil(hi)), maxSide);
-    const std::vector<float> nearest = squareExtreme(levelDepth, prepass, radius, kInf, [](float a, float b) { return a < b; });
-    const std::vector<float> largest = squareExtreme(levelCoc, prepass, radius, 0.0f, [](float a, float b) { return a > b; });
+    const std::vector<float> nearest =
+        squareExtreme(levelDepth, prepass, radius, kInf, [](float a, float b) { return a < b; });
+    const std::vector<float> largest =
+        squareExtreme(levelCoc, prepass, radius, 0.0f, [](float a, float b) { return a > b; });
     for (std::size_t i = 0; i < n; ++i)
       if (nearest[i] < depthF[i]) blur.reachingPx[i] = std::max(blur.reachingPx[i], largest[i]);
   }
@@ -140,7 +152,8 @@ VisibleBlur visibleBlur(const Camera& camera, ImageSize image, ImageSize prepass
     while (bin < VisibleBlur::kBinEdgesPx.size() && c > VisibleBlur::kBinEdgesPx[bin]) ++bin;
     ++counts[bin];
   }
-  for (std::size_t bin = 0; bin < counts.size(); ++bin) blur.fractions[bin] = static_cast<double>(counts[bin]) / static_cast<double>(n);
+  for (std::size_t bin = 0; bin < counts.size(); ++bin)
+    blur.fractions[bin] = static_cast<double>(counts[bin]) / static_cast<double>(n);
   blur.p50Px = percentile(blur.reachingPx, 0.5);
   blur.p90Px = percentile(blur.reachingPx, 0.9);
   blur.p99Px = percentile(blur.reachingPx, 0.99);

@@ -18,9 +18,9 @@
 namespace lenslab {
 
 struct VisibleBlur {
-  ImageSize prepass;            // the depth map's size
+  ImageSize prepass;  // the depth map's size
   double imagePxPerPrepassPx = 1.0;
-  std::vector<float> ownPx;     // each pre-pass pixel's own circle of confusion, image pixels (0: background)
+  std::vector<float> ownPx;       // each pre-pass pixel's own circle of confusion, image pixels (0: background)
   std::vector<float> reachingPx;  // the largest circle reaching it (own, or a nearer one's)
 
   // The distribution of reachingPx over the image: fractions of pixels with a circle ≤ 1 px,
@@ -28,7 +28,7 @@ struct VisibleBlur {
   static constexpr std::array<double, 4> kBinEdgesPx = {1.0, 4.0, 16.0, 64.0};
   std::array<double, 5> fractions{};
   double p50Px = 0.0, p90Px = 0.0, p99Px = 0.0, maxPx = 0.0;
-  double ownMinPx = 0.0;        // the smallest own circle over surfaces seen (0 if one is in focus)
+  double ownMinPx = 0.0;  // the smallest own circle over surfaces seen (0 if one is in focus)
 
   // The largest reaching circle over image pixels [x0, x1) × [y0, y1) (rows from the top).
   double maxOver(int x0, int y0, int x1, int y1) const;

@@ -15,8 +15,8 @@ void requireExactInstances(const Scene& scene) {
   // Float holds every integer to 2^24 exactly, and skips odd ones beyond.
   for (const Instance& instance : scene.instances)
     if (instance.gltfNode > kMaxExactInstance)
-      throw InputError(cat(scene.source, ": node ", instance.gltfNode, " has an index beyond 2^24 = ", kMaxExactInstance,
-                           ", the largest the float instance AOV holds exactly"));
+      throw InputError(cat(scene.source, ": node ", instance.gltfNode, " has an index beyond 2^24 = ",
+                           kMaxExactInstance, ", the largest the float instance AOV holds exactly"));
 }
 
 AovImages aovImagesThrough(const ImageMap& map, const AovSelection& selection,
@@ -36,7 +36,8 @@ AovImages aovImagesThrough(const ImageMap& map, const AovSelection& selection,
       for (int x = 0; x < size.widthPx; ++x) {
         const AovSurface hit = firstSurface({x + 0.5, y + 0.5});
         const std::size_t i = static_cast<std::size_t>(y) * size.widthPx + x;
-        if (selection.depth) out.depth[i] = std::isinf(hit.depth) ? std::numeric_limits<float>::infinity() : static_cast<float>(hit.depth);
+        if (selection.depth)
+          out.depth[i] = std::isinf(hit.depth) ? std::numeric_limits<float>::infinity() : static_cast<float>(hit.depth);
         if (selection.normal && hit.surface) {
           // Camera space: the world normal's components along u, v and n.
           const glm::dvec3 n(hit.normal);

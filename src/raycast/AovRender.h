@@ -17,11 +17,11 @@ namespace lenslab {
 
 // What one pixel's ray sees first (RayCaster: the nearest surface with alpha ≥ its AOV threshold).
 struct AovSurface {
-  bool surface = false;                                     // false: the background
+  bool surface = false;                                    // false: the background
   double depth = std::numeric_limits<double>::infinity();  // along the optical axis (−n) from the lens centre
-  glm::vec3 normal{0.0f};                                   // the normal it is shaded with, world, unit
-  glm::vec3 albedo{0.0f};                                   // its base colour, linear RGB
-  int gltfNode = -1;                                        // the glTF node of its instance
+  glm::vec3 normal{0.0f};                                  // the normal it is shaded with, world, unit
+  glm::vec3 albedo{0.0f};                                  // its base colour, linear RGB
+  int gltfNode = -1;                                       // the glTF node of its instance
 };
 
 // Throws InputError naming the scene when the instance AOV cannot hold one of its node indices

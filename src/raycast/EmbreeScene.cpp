@@ -16,8 +16,9 @@ EmbreeScene::EmbreeScene(const Scene& s) : scene(&s) {
   const char* config = std::getenv("LENSLAB_EMBREE_CONFIG");
   device = rtcNewDevice(config && *config ? config : nullptr);
   if (!device && config && *config)
-    throw InputError(cat("LENSLAB_EMBREE_CONFIG: Embree refused the device configuration \"", config,
-                         "\"; valid is an Embree config string such as isa=sse2, isa=sse4.2, isa=avx, isa=avx2 or verbose=1"));
+    throw InputError(
+        cat("LENSLAB_EMBREE_CONFIG: Embree refused the device configuration \"", config,
+            "\"; valid is an Embree config string such as isa=sse2, isa=sse4.2, isa=avx, isa=avx2 or verbose=1"));
   if (!device) throw std::runtime_error("Embree: could not create a device");
 }
 
@@ -46,16 +47,18 @@ void EmbreeScene::rebase(const glm::dvec3& newOrigin) {
     const Instance& instance = scene->instances[k];
     const Mesh& mesh = scene->meshes[static_cast<std::size_t>(instance.mesh)];
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 3 * sizeof(float), mesh.vertices.size()));
+    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const glm::dvec3 p = (glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin) / scale;
+      const glm::dvec3 p =
+          (glm::dvec3(instance.worldFromModel * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin) /
+          scale;
       positions[i * 3] = static_cast<float>(p.x);
       positions[i * 3 + 1] = static_cast<float>(p.y);
       positions[i * 3 + 2] = static_cast<float>(p.z);
     }
     auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                  3 * sizeof(unsigned), mesh.indices.size() / 3));
+                                                                   3 * sizeof(unsigned), mesh.indices.size() / 3));
     std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
     rtcCommitGeometry(geometry);
     const unsigned id = rtcAttachGeometry(rtcScene, geometry);
@@ -75,13 +78,14 @@ void EmbreeScene::rebase(const glm::dvec3& newOrigin) {
 glm::dvec3 EmbreeScene::originFor(const Camera& camera, ImageSize size) const {
   const glm::dvec3 lensCentre = lensRay(camera, {0.0, 0.0}, {0.5 * size.widthPx, 0.5 * size.heightPx}, size).origin;
   if (!finite(lensCentre))
-    throw InputError(cat(camera.source, ": the camera's lens centre is not a finite point; check its VRP, VPN and PRP"));
+    throw InputError(
+        cat(camera.source, ": the camera's lens centre is not a finite point; check its VRP, VPN and PRP"));
   return scene->bounds.empty() ? lensCentre : glm::clamp(lensCentre, scene->bounds.min, scene->bounds.max);
 }
 
 InputError EmbreeScene::unfiniteRay(const Camera& camera, glm::dvec2 pixel) {
-  return InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",", pixel.y,
-                        "; check its window, PRP, focus and lens effects"));
+  return InputError(cat(camera.source, ": the camera gives rays that are not finite numbers at pixel ", pixel.x, ",",
+                        pixel.y, "; check its window, PRP, focus and lens effects"));
 }
 
 }  // namespace lenslab

@@ -41,8 +41,8 @@ struct EmbreeScene {
     bool mirrored;
     glm::mat3 tangentFromModel;  // worldFromModel's linear part, scaled to its largest entry (scene.vert)
   };
-  std::vector<Geometry> geometries;           // by Embree geometry ID
-  std::vector<ShadingLight> lights;           // positions relative to `origin` (rebase)
+  std::vector<Geometry> geometries;  // by Embree geometry ID
+  std::vector<ShadingLight> lights;  // positions relative to `origin` (rebase)
   // Embree works in float. Its geometry is stored relative to `origin` (the point of the scene's
   // bounds nearest the camera's lens centre, subtracted in double), and each ray starts where it
   // enters the bounds: a scene 1e7 from the world origin, or a telephoto's subject 1e9 from the

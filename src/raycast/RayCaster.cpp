@@ -39,8 +39,8 @@ constexpr float kAovAlphaThreshold = 0.5f;
 
 struct RayCaster::Impl : EmbreeScene {
   using EmbreeScene::EmbreeScene;
-  std::vector<TextureSampler> samplers;       // by Scene texture index
-  std::vector<TextureSampler> dataSamplers;   // the same, for textures read as data (linear); empty where none is
+  std::vector<TextureSampler> samplers;      // by Scene texture index
+  std::vector<TextureSampler> dataSamplers;  // the same, for textures read as data (linear); empty where none is
 
   struct Hit {
     glm::vec3 color{0.0f};
@@ -93,7 +93,8 @@ struct RayCaster::Impl : EmbreeScene {
     rh.ray.dir_y = static_cast<float>(direction.y);
     rh.ray.dir_z = static_cast<float>(direction.z);
     rh.ray.tnear = static_cast<float>(std::max(0.0, tNear - tStart) / scale);
-    rh.ray.tfar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>((tEnd - tStart) / scale);
+    rh.ray.tfar =
+        std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : static_cast<float>((tEnd - tStart) / scale);
     if (!(rh.ray.tnear <= rh.ray.tfar)) return std::nullopt;
     // Embree asserts (aborts) on a ray it cannot take: every float finite and below 1.8e18.
     if (!embreeTakes(rh.ray)) throw unfiniteRay(camera, pixel);
@@ -113,7 +114,8 @@ struct RayCaster::Impl : EmbreeScene {
       const std::uint32_t i = mesh.indices[rh.hit.primID * 3 + static_cast<unsigned>(k)];
       t.vertices[static_cast<std::size_t>(k)] = &mesh.vertices[i];
       t.corners[static_cast<std::size_t>(k)] =
-          scale * glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
+          scale *
+          glm::dvec3(g.relativePositions[i * 3], g.relativePositions[i * 3 + 1], g.relativePositions[i * 3 + 2]);
     }
     const float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
     t.b = {b0, b1, b2};
@@ -133,12 +135,15 @@ struct RayCaster::Impl : EmbreeScene {
   // the sample's footprint by ray differentials (the same lens point, one footprint over in x and
   // in y; see shadeRay); nothing where alphaMode MASK cuts it out.
   template <class RayAt>
-  std::optional<ShadedHit> shadeHit(const Geometry& g, const Mesh& mesh, const Material& material, const HitTriangle& triangle,
-                                    bool front, const Ray& ray, double tHit, const RayAt& rayAt, double footprintPx) const {
+  std::optional<ShadedHit> shadeHit(const Geometry& g, const Mesh& mesh, const Material& material,
+                                    const HitTriangle& triangle, bool front, const Ray& ray, double tHit,
+                                    const RayAt& rayAt, double footprintPx) const {
     const SurfaceMaterial surface = surfaceMaterial(material, mesh.hasTangents);
-    const TextureFootprint footprint = readsTextures(surface) ? textureFootprint(triangle, ray, rayAt, footprintPx) : TextureFootprint{};
+    const TextureFootprint footprint =
+        readsTextures(surface) ? textureFootprint(triangle, ray, rayAt, footprintPx) : TextureFootprint{};
     const HitFetch fetch(*scene, material, samplers, dataSamplers, triangle, footprint);
-    SurfacePoint point = surfacePoint(triangle, g.normalFromModel, g.tangentFromModel, g.mirrored, surface.normalMapped);
+    SurfacePoint point =
+        surfacePoint(triangle, g.normalFromModel, g.tangentFromModel, g.mirrored, surface.normalMapped);
     const glm::vec4 base = surfaceBaseColor(surface, point.vertexColor, fetch);
     if (alphaCutOut(surface, base)) return std::nullopt;
     point.frontFacing = front;
@@ -203,7 +208,8 @@ struct RayCaster::Impl : EmbreeScene {
       const Geometry& g = geometries[rh->hit.geomID];
       const Instance& instance = scene->instances[static_cast<std::size_t>(g.instance)];
       const Mesh& mesh = scene->meshes[static_cast<std::size_t>(instance.mesh)];
-      const Material& material = mesh.material >= 0 ? scene->materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
+      const Material& material =
+          mesh.material >= 0 ? scene->materials[static_cast<std::size_t>(mesh.material)] : kDefaultMaterial;
       const HitTriangle triangle = hitTriangle(g, mesh, *rh);
       const auto& [p0, p1, p2] = triangle.corners;
       // Front-facing as GL decides it: counter-clockwise on screen, i.e. the model's winding seen
@@ -252,7 +258,8 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) 
   // stores their images as GL_RGBA8.
   std::vector<bool> asData(scene.textures.size(), false);
   for (const Material& material : scene.materials)
-    for (const TextureRef* ref : {&material.normalTexture, &material.metallicRoughnessTexture, &material.occlusionTexture})
+    for (const TextureRef* ref :
+         {&material.normalTexture, &material.metallicRoughnessTexture, &material.occlusionTexture})
       if (ref->present()) asData[static_cast<std::size_t>(ref->texture)] = true;
   m.dataSamplers.resize(scene.textures.size());
   for (std::size_t i = 0; i < scene.textures.size(); ++i) {
@@ -265,7 +272,8 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) 
 
 RayCaster::~RayCaster() = default;
 
-glm::vec3 RayCaster::trace(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel, double footprintPx) const {
+glm::vec3 RayCaster::trace(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                           double footprintPx) const {
   impl_->rebase(impl_->originFor(map.camera(), map.size()));
   return impl_->shadeAlong(map, pixel, lens, channel, footprintPx).color;
 }
@@ -299,7 +307,8 @@ AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSe
   });
 }
 
-Image RayCaster::render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress) const {
+Image RayCaster::render(const ImageMap& map, const RaycastOptions& options,
+                        const std::function<void(int, int)>& progress) const {
   impl_->rebase(impl_->originFor(map.camera(), map.size()));
   const Impl& m = *impl_;
   const auto shade = [&](const Ray& ray, const auto& rayAt, double footprintPx, glm::dvec2 pixel) {
@@ -308,7 +317,9 @@ Image RayCaster::render(const ImageMap& map, const RaycastOptions& options, cons
   // The loop is compiled for each lens model the renderers have, so that its calls to the map are
   // direct (per ray, and per texture lookup for the ray differentials); another map goes through
   // the interface.
-  const auto cast = [&](const auto& concrete) { return renderThroughMap(concrete, options, progress, m.origin, shade); };
+  const auto cast = [&](const auto& concrete) {
+    return renderThroughMap(concrete, options, progress, m.origin, shade);
+  };
   if (const auto* thin = dynamic_cast<const ThinLensMap*>(&map)) return cast(*thin);
   if (const auto* real = dynamic_cast<const RealLensMap*>(&map)) return cast(*real);
   return cast(map);

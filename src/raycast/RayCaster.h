@@ -47,7 +47,8 @@ class RayCaster {
   // samples (pixel position × lens point, in the map's lens domain), each channel's ray asked of the
   // map, shaded, weighted by the ray's weight, averaged, times the map's gain at the pixel. The
   // thin-lens and real-lens overloads build their map and call it.
-  Image render(const ImageMap& map, const RaycastOptions& options, const std::function<void(int, int)>& progress = {}) const;
+  Image render(const ImageMap& map, const RaycastOptions& options,
+               const std::function<void(int, int)>& progress = {}) const;
 
   // The reference image through a real lens (lens/LensCamera, `raycast --lens`): each sample is a
   // film point in the pixel and a point of the exit pupil seen from it, traced through every
@@ -65,7 +66,8 @@ class RayCaster {
   // centre) for `channel` (1 green; 0..2 where the map's rayChannels() is 3), linear RGB; the
   // background where nothing is hit, black where the lens stops the ray. Textures are filtered
   // over `footprintPx` pixels around the ray (1: a whole pixel, as one GL view would).
-  glm::vec3 trace(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel = 1, double footprintPx = 1.0) const;
+  glm::vec3 trace(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel = 1,
+                  double footprintPx = 1.0) const;
 
   // Depth (world units from the PRP along −n) of the first visible surface under pixel centre
   // `pixel` of a pinhole view of `camera` (its lens effects left out: ThinLensMap::truePerspective)

@@ -29,7 +29,8 @@ void inBands(ImageSize size, const std::function<void(int, int)>& progress, cons
   constexpr int kBand = 16;
   for (int band = 0; band < size.heightPx; band += kBand) {
     const int end = std::min(band + kBand, size.heightPx);
-    tbb::parallel_for(tbb::blocked_range<int>(band, end), [&](const tbb::blocked_range<int>& r) { rows(r.begin(), r.end()); });
+    tbb::parallel_for(tbb::blocked_range<int>(band, end),
+                      [&](const tbb::blocked_range<int>& r) { rows(r.begin(), r.end()); });
     if (progress) progress(end, size.heightPx);
   }
 }
@@ -41,7 +42,8 @@ void inBands(ImageSize size, const std::function<void(int, int)>& progress, cons
 class LensPoints {
  public:
   LensPoints(LensDomain domain, std::uint32_t seed) : square_(domain == LensDomain::Square) {
-    if (square_) rotation_ = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
+    if (square_)
+      rotation_ = glm::dvec2(makeApertureSamples(AperturePattern::Random, 1, seed ^ 0x9e3779b9u)[0].pixel) + 0.5;
   }
   glm::dvec2 at(const LensSample& s, std::size_t i) const {
     if (!square_) return s.lens;
@@ -91,11 +93,13 @@ Image renderThroughMap(const Map& map, const RaycastOptions& options, const std:
         std::optional<CameraRay> centre[3];
         for (int c = 0; c < channels; ++c) centre[c] = map.start({x + 0.5, y + 0.5}, channels == 3 ? c : 1);
         glm::dvec3 sum(0.0);
-        double covered = 0.0, weights = 0.0;  // Σ coverage (Hit::coverage) and Σ weight of the rays: alpha is their ratio
+        double covered = 0.0,
+               weights = 0.0;  // Σ coverage (Hit::coverage) and Σ weight of the rays: alpha is their ratio
         for (std::size_t i = 0; i < samples.size(); ++i) {
           const glm::dvec2 pixel(x + 0.5 + samples[i].pixel.x, y + 0.5 + samples[i].pixel.y);
           for (int c = 0; c < channels; ++c) {
-            const std::optional<CameraRay> r = map.ray(pixel, lens.at(samples[i], i), channels == 3 ? c : 1, centre[c] ? &*centre[c] : nullptr);
+            const std::optional<CameraRay> r =
+                map.ray(pixel, lens.at(samples[i], i), channels == 3 ? c : 1, centre[c] ? &*centre[c] : nullptr);
             if (!r) continue;  // outside what the lens passes: no light, and no part of the pixel's coverage
             weights += r->weight / channels;
             if (r->blocked) continue;  // the barrel stops it: no light, background included
@@ -108,14 +112,17 @@ Image renderThroughMap(const Map& map, const RaycastOptions& options, const std:
               return n;
             };
             const auto hit = shade(ray, rayAt, footprintPx, r->pixel);
-            if (channels == 3) sum[c] += r->weight * hit.color[c];
-            else sum += r->weight * glm::dvec3(hit.color);
+            if (channels == 3)
+              sum[c] += r->weight * hit.color[c];
+            else
+              sum += r->weight * glm::dvec3(hit.color);
             covered += r->weight * hit.coverage / channels;
           }
         }
         const double n = static_cast<double>(samples.size());
-        image.set(x, y, glm::vec4(glm::vec3(map.gainAt({x + 0.5, y + 0.5}) * sum / n),
-                                  static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
+        image.set(x, y,
+                  glm::vec4(glm::vec3(map.gainAt({x + 0.5, y + 0.5}) * sum / n),
+                            static_cast<float>(weights > 0.0 ? covered / weights : 0.0)));
       }
   });
   return image;

@@ -26,8 +26,8 @@ bool readsTextures(const SurfaceMaterial& m) {
          m.hasEmissiveTexture;
 }
 
-SurfacePoint surfacePoint(const HitTriangle& triangle, const glm::mat3& normalFromModel, const glm::mat3& tangentFromModel,
-                          bool mirrored, bool normalMapped) {
+SurfacePoint surfacePoint(const HitTriangle& triangle, const glm::mat3& normalFromModel,
+                          const glm::mat3& tangentFromModel, bool mirrored, bool normalMapped) {
   const Vertex& v0 = *triangle.vertices[0];
   const Vertex& v1 = *triangle.vertices[1];
   const Vertex& v2 = *triangle.vertices[2];
@@ -45,8 +45,13 @@ SurfacePoint surfacePoint(const HitTriangle& triangle, const glm::mat3& normalFr
 }
 
 HitFetch::HitFetch(const Scene& scene, const Material& material, const std::vector<TextureSampler>& samplers,
-                   const std::vector<TextureSampler>& dataSamplers, const HitTriangle& triangle, const TextureFootprint& footprint)
-    : scene_(scene), material_(material), samplers_(samplers), dataSamplers_(dataSamplers), triangle_(triangle),
+                   const std::vector<TextureSampler>& dataSamplers, const HitTriangle& triangle,
+                   const TextureFootprint& footprint)
+    : scene_(scene),
+      material_(material),
+      samplers_(samplers),
+      dataSamplers_(dataSamplers),
+      triangle_(triangle),
       footprint_(footprint) {}
 
 glm::vec4 HitFetch::sample(const TextureRef& ref, bool data) const {
@@ -66,8 +71,9 @@ glm::vec4 HitFetch::sample(const TextureRef& ref, bool data) const {
   const glm::vec2 uvHere = uvAt(footprint_.here);
   const auto index = static_cast<std::size_t>(ref.texture);
   const Texture& texture = scene_.textures[index];
-  return (data ? dataSamplers_ : samplers_)[index].sample(texture.sampler, slotUv(uv0, uv1, ref.texCoord, ref.uvFromTexCoord),
-                                                          uvAt(footprint_.acrossX) - uvHere, uvAt(footprint_.acrossY) - uvHere);
+  return (data ? dataSamplers_ : samplers_)[index].sample(
+      texture.sampler, slotUv(uv0, uv1, ref.texCoord, ref.uvFromTexCoord), uvAt(footprint_.acrossX) - uvHere,
+      uvAt(footprint_.acrossY) - uvHere);
 }
 
 glm::vec3 HitFetch::environmentDiffuse(const glm::vec3& normal) const { return scene_.environment->diffuse(normal); }

@@ -46,8 +46,8 @@ bool readsTextures(const SurfaceMaterial& m);
 // The hit's geometry for the shading: vertex colour, normal and tangent interpolated, the
 // normal into world axes by `normalFromModel`, the tangent by `tangentFromModel` (scene.vert's
 // worldTangentFromModel) with its handedness turned where the instance `mirrored`.
-SurfacePoint surfacePoint(const HitTriangle& triangle, const glm::mat3& normalFromModel, const glm::mat3& tangentFromModel,
-                          bool mirrored, bool normalMapped);
+SurfacePoint surfacePoint(const HitTriangle& triangle, const glm::mat3& normalFromModel,
+                          const glm::mat3& tangentFromModel, bool mirrored, bool normalMapped);
 
 // The hit's textures, each through its slot's uv set and transform (material_maps.glsl's slotUv,
 // as scene.frag), with the footprint's uv derivatives through the same transform (a scaled uv
@@ -56,7 +56,8 @@ class HitFetch final : public SurfaceFetch {
  public:
   // `samplers`: by texture index, colour (sRGB-decoded); `dataSamplers`: the same read as data.
   HitFetch(const Scene& scene, const Material& material, const std::vector<TextureSampler>& samplers,
-           const std::vector<TextureSampler>& dataSamplers, const HitTriangle& triangle, const TextureFootprint& footprint);
+           const std::vector<TextureSampler>& dataSamplers, const HitTriangle& triangle,
+           const TextureFootprint& footprint);
 
   glm::vec4 baseColorTexel() const override { return sample(material_.baseColorTexture, false); }
   glm::vec4 metallicRoughnessTexel() const override { return sample(material_.metallicRoughnessTexture, true); }

@@ -72,7 +72,8 @@ TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srg
           for (int dx = 0; dx < 2; ++dx)
             sum += src.texels[static_cast<std::size_t>(std::min(2 * y + dy, h - 1) * w + std::min(2 * x + dx, w - 1))];
         sum *= 0.25f;
-        std::uint8_t* out = &next[(static_cast<std::size_t>(y) * static_cast<std::size_t>(nw) + static_cast<std::size_t>(x)) * 4];
+        std::uint8_t* out =
+            &next[(static_cast<std::size_t>(y) * static_cast<std::size_t>(nw) + static_cast<std::size_t>(x)) * 4];
         out[0] = encodeChannel(sum.r);
         out[1] = encodeChannel(sum.g);
         out[2] = encodeChannel(sum.b);
@@ -87,7 +88,8 @@ TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srg
 glm::vec4 TextureSampler::bilinear(const Level& level, const Sampler& s, glm::vec2 uv, bool linear) const {
   const float x = uv.x * static_cast<float>(level.width), y = uv.y * static_cast<float>(level.height);
   auto texel = [&](int i, int j) {
-    return level.texels[static_cast<std::size_t>(wrap(j, level.height, s.wrapT) * level.width + wrap(i, level.width, s.wrapS))];
+    return level
+        .texels[static_cast<std::size_t>(wrap(j, level.height, s.wrapT) * level.width + wrap(i, level.width, s.wrapS))];
   };
   if (!linear) return texel(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
   const float fx = x - 0.5f, fy = y - 0.5f;
@@ -104,8 +106,9 @@ glm::vec4 TextureSampler::sample(const Sampler& s, glm::vec2 uv, glm::vec2 dUvDx
   const float lambda = rho > 0.0f ? std::log2(rho) : -1000.0f;
   if (lambda <= 0.0f) return bilinear(base, s, uv, s.magFilter != Filter::Nearest);
   if (!mipmapped(s.minFilter) || levels() == 1)
-    return bilinear(base, s, uv, s.minFilter != Filter::Nearest && s.minFilter != Filter::NearestMipmapNearest &&
-                                     s.minFilter != Filter::NearestMipmapLinear);
+    return bilinear(base, s, uv,
+                    s.minFilter != Filter::Nearest && s.minFilter != Filter::NearestMipmapNearest &&
+                        s.minFilter != Filter::NearestMipmapLinear);
   const bool linearWithin = s.minFilter == Filter::LinearMipmapNearest || s.minFilter == Filter::LinearMipmapLinear;
   const int maxLevel = levels() - 1;
   if (s.minFilter == Filter::NearestMipmapNearest || s.minFilter == Filter::LinearMipmapNearest) {

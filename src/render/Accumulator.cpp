@@ -34,7 +34,8 @@ Accumulator::Accumulator()
     : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
       resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")) {}
 
-void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens, const Barrel* barrel) {
+void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens,
+                        const Barrel* barrel) {
   curvature_ = curvature ? std::optional<Curvature>(*curvature) : std::nullopt;
   lens_ = lens ? std::optional<LensGather>(*lens) : std::nullopt;
   barrel_ = barrel ? std::optional<Barrel>(*barrel) : std::nullopt;
@@ -255,10 +256,10 @@ void Accumulator::flushLayers() {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  const GLuint program = lens_      ? gatherLens_[gatherVariant()].id()
-                       : barrel_    ? accumulateBarrel_[curvature_ ? 1 : 0].id()
-                       : curvature_ ? accumulateCurved_.id()
-                                    : accumulate_.id();
+  const GLuint program = lens_        ? gatherLens_[gatherVariant()].id()
+                         : barrel_    ? accumulateBarrel_[curvature_ ? 1 : 0].id()
+                         : curvature_ ? accumulateCurved_.id()
+                                      : accumulate_.id();
   glProgramUniform1i(program, LOCATION_ACCUMULATE_VIEW_COUNT, pending_);
   glProgramUniform4fv(program, LOCATION_ACCUMULATE_WEIGHTS, pending_, &pendingWeights_[0].x);
   if (curvature_) {
@@ -269,7 +270,8 @@ void Accumulator::flushLayers() {
   if (barrel_ && lens_) {
     // The lens gather masks each sample at its own ray (gather_lens.frag): the opening's
     // coordinates of the views' pixel grid, in units of its radius.
-    const glm::vec2 atOrigin = barrel_->reach * barrel_->normalisedAtOrigin, perPixel = barrel_->reach * barrel_->normalisedPerPixel;
+    const glm::vec2 atOrigin = barrel_->reach * barrel_->normalisedAtOrigin,
+                    perPixel = barrel_->reach * barrel_->normalisedPerPixel;
     glProgramUniform2fv(program, LOCATION_GATHER_BARREL_AT_ORIGIN, 1, &atOrigin.x);
     glProgramUniform2fv(program, LOCATION_GATHER_BARREL_PER_PIXEL, 1, &perPixel.x);
     glProgramUniform2fv(program, LOCATION_GATHER_BARREL_LENS, pending_, &pendingBarrelLens_[0].x);

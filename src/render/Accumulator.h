@@ -42,15 +42,16 @@ class Accumulator {
   // Distortion and lateral colour applied to each view as it is summed (gather_lens.frag): the
   // sum is then at the output's size, the views at the overscan's. Made by LensPass.
   struct LensGather {
-    GLuint forwardPosition = 0;      // RGBA32F at the views' size (camera/LensMap.h ForwardTable)
+    GLuint forwardPosition = 0;  // RGBA32F at the views' size (camera/LensMap.h ForwardTable)
     GLuint forwardJacobian = 0;
-    GLuint inverse[3] = {0, 0, 0};   // RG32F remap tables at the output size: red, green, blue (all green's without lateral colour)
+    GLuint inverse[3] = {
+        0, 0, 0};  // RG32F remap tables at the output size: red, green, blue (all green's without lateral colour)
     bool lateral = false;
     int outWidthPx = 0;
     int outHeightPx = 0;
     float reachPx = 0.0f;
     glm::vec2 principalPointPx{0.0f};
-    glm::vec2 lateralScale{1.0f};    // 1 + lateral, red and blue
+    glm::vec2 lateralScale{1.0f};  // 1 + lateral, red and blue
   };
 
   // Cat's-eye vignetting (lens/LensBarrel.h), applied per pixel as the views are summed: a view
@@ -73,7 +74,9 @@ class Accumulator {
   // added view pays a second pass over the geometry, a layered one a write and a read of the
   // layer. On llvmpipe (lenslab_ratios --breakdown, layered ÷ added frames at 1280×720: 74
   // triangles 1.44 ÷ 0.87, 107 k 1.43 ÷ 1.47, 305 k 1.06 ÷ 1.43) they cross near 0.1 triangles a pixel.
-  static bool layersAreCheaper(double triangles, double pixels) { return triangles > kTrianglesPerPixelForLayers * pixels; }
+  static bool layersAreCheaper(double triangles, double pixels) {
+    return triangles > kTrianglesPerPixelForLayers * pixels;
+  }
   static constexpr double kTrianglesPerPixelForLayers = 0.1;
   // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
   void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr,
@@ -93,8 +96,9 @@ class Accumulator {
   // `jitterPx`: the view's sub-pixel offset (GL orientation), used with start's LensGather.
   // `barrelLens`: with start's Barrel, the view's aperture point seen in the opening's plane over
   // the opening's radius, p·(1 − distance/z_f) / radius.
-  View nextView(glm::vec3 background, glm::vec3 channels = glm::vec3(1.0f), glm::vec2 curvatureShiftPx = glm::vec2(0.0f),
-                glm::vec2 jitterPx = glm::vec2(0.0f), glm::vec2 barrelLens = glm::vec2(0.0f));
+  View nextView(glm::vec3 background, glm::vec3 channels = glm::vec3(1.0f),
+                glm::vec2 curvatureShiftPx = glm::vec2(0.0f), glm::vec2 jitterPx = glm::vec2(0.0f),
+                glm::vec2 barrelLens = glm::vec2(0.0f));
   // Views added from now on reach only these rectangles of the sum (nullptr: all of it); the views
   // pending so far are added first, with the region they were drawn for. Per-tile budgets.
   void setRegion(const std::vector<PixelBox>* boxes);
@@ -104,7 +108,9 @@ class Accumulator {
   GLuint weightTexture();
   int count() const { return count_; }
   // Views per batch: layers (kMaxBatch before any), or views whose background is added by one pass.
-  int batchSize() const { return addsViews() ? kAddedBatch : framebuffers_.empty() ? kMaxBatch : static_cast<int>(framebuffers_.size()); }
+  int batchSize() const {
+    return addsViews() ? kAddedBatch : framebuffers_.empty() ? kMaxBatch : static_cast<int>(framebuffers_.size());
+  }
   // Whether the next view is added straight into the sum (no field-curvature warp, no lens
   // gather, not setLayered).
   bool addsViews() const { return mayAdd_ && !forceLayers_; }
@@ -124,7 +130,7 @@ class Accumulator {
   void resolve(const gl::RenderTarget& out, const VignetteGain* vignetting = nullptr);
 
  private:
-  void flush();  // adds the pending views to the sum
+  void flush();            // adds the pending views to the sum
   void flushLayers();      // the pending layers, summed into the sum
   void flushBackground();  // added views: their partial sum and weight · background, into the sum
   void allocateAddTarget();
@@ -136,26 +142,26 @@ class Accumulator {
   static constexpr int kMaxBatch = 8;     // layers at most (the accumulate shaders' arrays)
 
   gl::Program accumulate_;
-  gl::Program accumulateCurved_;  // the field-curvature variant, built on first use
+  gl::Program accumulateCurved_;     // the field-curvature variant, built on first use
   gl::Program accumulateBarrel_[2];  // with the barrel: [field curvature], built on first use
-  gl::Program gatherLens_[8];     // the lens gather: [gatherVariant()], built on first use
+  gl::Program gatherLens_[8];        // the lens gather: [gatherVariant()], built on first use
   // The lens gather's variant for start's effects: barrel · 4 + field curvature · 2 + lateral colour.
   int gatherVariant() const { return (barrel_ ? 4 : 0) + (curvature_ ? 2 : 0) + (lens_ && lens_->lateral ? 1 : 0); }
   gl::Program resolve_;
-  gl::Program resolvePerPixel_;   // with the lens gather's per-pixel weights, built on first use
+  gl::Program resolvePerPixel_;      // with the lens gather's per-pixel weights, built on first use
   gl::Program resolveVignetted_[2];  // with VIGNETTING: [per-pixel weights], built on first use
-  gl::Program addBatch_;          // added views: a batch's partial sum and background into the sum
+  gl::Program addBatch_;             // added views: a batch's partial sum and background into the sum
   gl::FullScreenPass fullScreen_;
   std::unique_ptr<gl::RenderTarget> sum_;
   std::unique_ptr<gl::RenderTarget> weight_;  // the lens gather's per-pixel weights
   gl::Framebuffer gatherFramebuffer_;         // sum_ and weight_ as two colour attachments
   std::optional<LensGather> lens_;
-  gl::TextureArray views_;            // RGBA32F, one layer per view of a batch
-  gl::Texture depth_;                 // shared by the views (each clears it)
+  gl::TextureArray views_;  // RGBA32F, one layer per view of a batch
+  gl::Texture depth_;       // shared by the views (each clears it)
   std::vector<gl::Framebuffer> framebuffers_;
   // Added views: a partial sum with a depth-stencil of its own (depth far and stencil 0 where the
   // next view may add, stencil 1 outside the region).
-  bool mayAdd_ = false;      // no field curvature, no lens gather
+  bool mayAdd_ = false;  // no field curvature, no lens gather
   bool forceLayers_ = false;
   int pendingAdded_ = 0;
   GLuint addSum_ = 0;       // the sum texture addFramebuffer_ was made for
@@ -164,13 +170,13 @@ class Accumulator {
   gl::Texture depthStencil_;
   gl::Texture partial_;  // RGBA32F at the sum's size: the batch's added views (add_batch.frag)
   gl::Framebuffer addFramebuffer_;
-  glm::vec3 pendingBackground_{0.0f};   // the background of the pending added views
+  glm::vec3 pendingBackground_{0.0f};  // the background of the pending added views
   glm::vec4 pendingBackgroundWeight_{0.0f};
   int pending_ = 0;
   int count_ = 0;
-  std::vector<glm::vec4> pendingWeights_;  // per view of the batch: channel mask, alpha share
-  std::vector<glm::vec2> pendingShifts_;   // per view of the batch: field-curvature shift at r = 1
-  std::vector<glm::vec2> pendingJitters_;  // per view of the batch: sub-pixel offset (lens gather)
+  std::vector<glm::vec4> pendingWeights_;     // per view of the batch: channel mask, alpha share
+  std::vector<glm::vec2> pendingShifts_;      // per view of the batch: field-curvature shift at r = 1
+  std::vector<glm::vec2> pendingJitters_;     // per view of the batch: sub-pixel offset (lens gather)
   std::vector<glm::vec2> pendingBarrelLens_;  // per view of the batch: its aperture point in the barrel's opening
   std::optional<Barrel> barrel_;
   int viewWidth_ = 0;

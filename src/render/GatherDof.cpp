@@ -8,8 +8,7 @@
 
 namespace lenslab {
 
-GatherDof::GatherDof()
-    : program_(gl::buildProgram("common/fullscreen.vert", "postdof/gather.frag")) {}
+GatherDof::GatherDof() : program_(gl::buildProgram("common/fullscreen.vert", "postdof/gather.frag")) {}
 
 Image GatherDof::apply(const Camera& camera, const gl::RenderTarget& pinhole, int tapCount) {
   const int w = pinhole.width(), h = pinhole.height();
@@ -22,8 +21,8 @@ Image GatherDof::apply(const Camera& camera, const gl::RenderTarget& pinhole, in
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const double depth = depthFromReverseZ(camera.view, topDown[static_cast<std::size_t>(y * w + x)]);
-      double r = 0.5 * pxPerUnit * (std::isfinite(depth) ? cocDiameterOnWindow(camera, depth)
-                                                          : cocDiameterOnWindow(camera, 1e30));
+      double r = 0.5 * pxPerUnit *
+                 (std::isfinite(depth) ? cocDiameterOnWindow(camera, depth) : cocDiameterOnWindow(camera, 1e30));
       if (!std::isfinite(r)) r = 0.0;
       r = std::min(r, 256.0);
       radius[static_cast<std::size_t>((h - 1 - y) * w + x)] = static_cast<float>(r);

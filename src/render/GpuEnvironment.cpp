@@ -46,8 +46,7 @@ glm::dmat3 worldDirectionFromNdc(const glm::dmat4& clipFromWorld) {
 }
 
 GpuEnvironment::GpuEnvironment(const EnvironmentLookup& lookup)
-    : lookup_(&lookup),
-      program_(gl::buildProgram("common/fullscreen.vert", "scene/environment_background.frag")) {
+    : lookup_(&lookup), program_(gl::buildProgram("common/fullscreen.vert", "scene/environment_background.frag")) {
   const PrefilteredEnvironment& maps = lookup.maps();
   background_ = upload(maps.background);
   diffuse_ = upload(maps.diffuse);
@@ -71,9 +70,12 @@ void GpuEnvironment::bind(GLuint program) const {
   }
   // Set only where the program uses them: a location it optimised out is no location.
   const auto used = [&](const char* name) { return glGetUniformLocation(program, name) >= 0; };
-  if (used("environmentRotation")) glProgramUniform2fv(program, LOCATION_ENVIRONMENT_ROTATION, 1, glm::value_ptr(lookup_->rotationCosSin()));
-  if (used("environmentIntensity")) glProgramUniform1f(program, LOCATION_ENVIRONMENT_INTENSITY, lookup_->placement().intensity);
-  if (used("environmentLevels")) glProgramUniform1i(program, LOCATION_ENVIRONMENT_LEVELS, lookup_->maps().specularLevels());
+  if (used("environmentRotation"))
+    glProgramUniform2fv(program, LOCATION_ENVIRONMENT_ROTATION, 1, glm::value_ptr(lookup_->rotationCosSin()));
+  if (used("environmentIntensity"))
+    glProgramUniform1f(program, LOCATION_ENVIRONMENT_INTENSITY, lookup_->placement().intensity);
+  if (used("environmentLevels"))
+    glProgramUniform1i(program, LOCATION_ENVIRONMENT_LEVELS, lookup_->maps().specularLevels());
   if (used("hasEnvironment")) glProgramUniform1i(program, LOCATION_HAS_ENVIRONMENT, 1);
 }
 
@@ -81,8 +83,10 @@ void GpuEnvironment::drawBackground(const glm::dmat4& clipFromWorld, int widthPx
                                     bool add) const {
   bind(program_.id());
   const glm::mat3 directionFromNdc(worldDirectionFromNdc(clipFromWorld));
-  glProgramUniformMatrix3fv(program_.id(), LOCATION_WORLD_DIRECTION_FROM_NDC, 1, GL_FALSE, glm::value_ptr(directionFromNdc));
-  glProgramUniform2f(program_.id(), LOCATION_NDC_PER_PIXEL, 2.0f / static_cast<float>(widthPx), 2.0f / static_cast<float>(heightPx));
+  glProgramUniformMatrix3fv(program_.id(), LOCATION_WORLD_DIRECTION_FROM_NDC, 1, GL_FALSE,
+                            glm::value_ptr(directionFromNdc));
+  glProgramUniform2f(program_.id(), LOCATION_NDC_PER_PIXEL, 2.0f / static_cast<float>(widthPx),
+                     2.0f / static_cast<float>(heightPx));
   glProgramUniform3fv(program_.id(), LOCATION_BACKGROUND_WEIGHT, 1, glm::value_ptr(weight));
   GLboolean depthMask = GL_TRUE;
   GLint depthFunc = GL_GREATER;
@@ -106,7 +110,10 @@ void GpuEnvironment::drawBackground(const glm::dmat4& clipFromWorld, int widthPx
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(static_cast<GLenum>(depthFunc));
   glDepthMask(depthMask);
-  if (blend) glEnable(GL_BLEND); else glDisable(GL_BLEND);
+  if (blend)
+    glEnable(GL_BLEND);
+  else
+    glDisable(GL_BLEND);
 }
 
 }  // namespace lenslab

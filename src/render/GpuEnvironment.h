@@ -26,7 +26,8 @@ class GpuEnvironment {
   // Draws the background into the bound target (`widthPx` × `heightPx`) where depth is still far
   // (reverse-Z 0), leaving alpha, depth and stencil as they are; colour × `weight`, added to what
   // is there when `add`, else replacing it. The caller's scissor and stencil test apply.
-  void drawBackground(const glm::dmat4& clipFromWorld, int widthPx, int heightPx, const glm::vec3& weight, bool add) const;
+  void drawBackground(const glm::dmat4& clipFromWorld, int widthPx, int heightPx, const glm::vec3& weight,
+                      bool add) const;
 
   const EnvironmentLookup& lookup() const { return *lookup_; }
 

@@ -9,9 +9,7 @@
 namespace lenslab {
 namespace {
 
-bool usesMipmaps(Filter f) {
-  return f != Filter::Nearest && f != Filter::Linear;
-}
+bool usesMipmaps(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
 
 GpuScene::GpuMesh upload(const Mesh& mesh) {
   GpuScene::GpuMesh gpu;
@@ -25,7 +23,11 @@ GpuScene::GpuMesh upload(const Mesh& mesh) {
   const GLuint vao = gpu.vertexArray.id();
   glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao, gpu.indices.id());
-  struct Attribute { GLuint location; GLint size; std::size_t offset; };
+  struct Attribute {
+    GLuint location;
+    GLint size;
+    std::size_t offset;
+  };
   const Attribute attributes[] = {{ATTRIBUTE_POSITION, 3, offsetof(Vertex, position)},
                                   {ATTRIBUTE_NORMAL, 3, offsetof(Vertex, normal)},
                                   {ATTRIBUTE_UV, 2, offsetof(Vertex, uv)},
@@ -56,19 +58,20 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   // both ways is stored twice.
   std::vector<bool> asData(scene.images.size(), false), asColour(scene.images.size(), false);
   const auto mark = [&](std::vector<bool>& uses, const TextureRef& ref) {
-    if (ref.present()) uses[static_cast<std::size_t>(scene.textures[static_cast<std::size_t>(ref.texture)].image)] = true;
+    if (ref.present())
+      uses[static_cast<std::size_t>(scene.textures[static_cast<std::size_t>(ref.texture)].image)] = true;
   };
   for (const Material& m : scene.materials) {
-    for (const TextureRef* ref : {&m.normalTexture, &m.metallicRoughnessTexture, &m.occlusionTexture}) mark(asData, *ref);
+    for (const TextureRef* ref : {&m.normalTexture, &m.metallicRoughnessTexture, &m.occlusionTexture})
+      mark(asData, *ref);
     for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture}) mark(asColour, *ref);
   }
 
   linearImages_.resize(scene.images.size());
   for (std::size_t i = 0; i < scene.images.size(); ++i) {
     const TextureImage& image = scene.images[i];
-    const int levels = wantsMipmaps[i]
-        ? 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))))
-        : 1;
+    const int levels =
+        wantsMipmaps[i] ? 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height)))) : 1;
     const auto upload = [&](GLenum format) {
       gl::Texture texture = gl::Texture::create();
       glTextureStorage2D(texture.id(), levels, format, image.width, image.height);

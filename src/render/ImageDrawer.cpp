@@ -12,15 +12,18 @@ ImageDrawer::ImageDrawer()
   glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void ImageDrawer::draw(const gl::ImageTexture& image, const gl::PixelRect& rect, float gain, const DisplayEncoding& display) const {
+void ImageDrawer::draw(const gl::ImageTexture& image, const gl::PixelRect& rect, float gain,
+                       const DisplayEncoding& display) const {
   drawTexture(image.id(), rect, gain, display);
 }
 
-void ImageDrawer::draw(const gl::RenderTarget& image, const gl::PixelRect& rect, float gain, const DisplayEncoding& display) const {
+void ImageDrawer::draw(const gl::RenderTarget& image, const gl::PixelRect& rect, float gain,
+                       const DisplayEncoding& display) const {
   drawTexture(image.colorTexture(), rect, gain, display);
 }
 
-void ImageDrawer::drawTexture(GLuint texture, const gl::PixelRect& r, float gain, const DisplayEncoding& display) const {
+void ImageDrawer::drawTexture(GLuint texture, const gl::PixelRect& r, float gain,
+                              const DisplayEncoding& display) const {
   if (r.empty()) return;
   glViewport(r.x, r.y, r.width, r.height);
   glDisable(GL_DEPTH_TEST);

@@ -19,8 +19,10 @@ class ImageDrawer {
   // is 8-bit and not sRGB-aware). `gain` scales the linear values (dimming, so that lines drawn
   // over the image stand out). `display`: the exposure and view transform that PNG files get
   // (io/ToneMap.h; the same GLSL), applied after the gain.
-  void draw(const gl::ImageTexture& image, const gl::PixelRect& rect, float gain = 1.0f, const DisplayEncoding& display = {}) const;
-  void draw(const gl::RenderTarget& image, const gl::PixelRect& rect, float gain = 1.0f, const DisplayEncoding& display = {}) const;
+  void draw(const gl::ImageTexture& image, const gl::PixelRect& rect, float gain = 1.0f,
+            const DisplayEncoding& display = {}) const;
+  void draw(const gl::RenderTarget& image, const gl::PixelRect& rect, float gain = 1.0f,
+            const DisplayEncoding& display = {}) const;
 
  private:
   void drawTexture(GLuint texture, const gl::PixelRect& rect, float gain, const DisplayEncoding& display) const;

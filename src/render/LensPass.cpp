@@ -22,17 +22,31 @@ std::vector<double> keyOf(const ThinLensMap& map) {
   const LensEffects& e = camera.lens.effects;
   const Distortion& d = e.distortion;
   const NormalisedRect n = normalisedWindow(camera.view);
-  return {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed, e.chromatic.lateralBlue,
-          n.min.x, n.min.y, n.max.x, n.max.y,
-          static_cast<double>(size.widthPx), static_cast<double>(size.heightPx),
-          static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx),
-          static_cast<double>(overscan.padPx.x), static_cast<double>(overscan.padPx.y)};
+  return {d.k1,
+          d.k2,
+          d.p1,
+          d.p2,
+          d.k3,
+          d.alpha,
+          d.beta,
+          d.gamma,
+          e.chromatic.lateralRed,
+          e.chromatic.lateralBlue,
+          n.min.x,
+          n.min.y,
+          n.max.x,
+          n.max.y,
+          static_cast<double>(size.widthPx),
+          static_cast<double>(size.heightPx),
+          static_cast<double>(overscan.size.widthPx),
+          static_cast<double>(overscan.size.heightPx),
+          static_cast<double>(overscan.padPx.x),
+          static_cast<double>(overscan.padPx.y)};
 }
 
 }  // namespace
 
-LensPass::LensPass()
-    : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")) {}
+LensPass::LensPass() : program_(gl::buildProgram("common/fullscreen.vert", "lens/remap.frag")) {}
 
 void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgress& progress) {
   const Camera& camera = map.camera();
@@ -55,7 +69,8 @@ void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgre
     forwardPosition_ = {};
     forwardJacobian_ = {};
     const std::vector<Channel> channels = remappedChannels(camera.lens.effects);
-    std::vector<glm::vec2> rows(static_cast<std::size_t>(size.widthPx) * static_cast<std::size_t>(std::min(band, size.heightPx)));
+    std::vector<glm::vec2> rows(static_cast<std::size_t>(size.widthPx) *
+                                static_cast<std::size_t>(std::min(band, size.heightPx)));
     const int total = static_cast<int>(channels.size()) * size.heightPx;
     for (std::size_t c = 0; c < channels.size(); ++c) {
       gl::Texture t = texture(GL_RG32F, size);
@@ -73,7 +88,8 @@ void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgre
     gather_.lateral = perChannel;
     gather_.outWidthPx = size.widthPx;
     gather_.outHeightPx = size.heightPx;
-    gather_.lateralScale = glm::vec2(1.0 + camera.lens.effects.chromatic.lateralRed, 1.0 + camera.lens.effects.chromatic.lateralBlue);
+    gather_.lateralScale =
+        glm::vec2(1.0 + camera.lens.effects.chromatic.lateralRed, 1.0 + camera.lens.effects.chromatic.lateralBlue);
     if (perChannel && !perChannelProgram_)
       perChannelProgram_ = gl::buildProgram("common/fullscreen.vert", "lens/remap.frag", {"LATERAL_COLOUR"});
     key_ = std::move(key);
@@ -85,14 +101,17 @@ void LensPass::prepare(const ThinLensMap& map, bool forGather, const TableProgre
     const ImageSize at = map.overscan().size;
     forwardPosition_ = texture(GL_RGBA32F, at);
     forwardJacobian_ = texture(GL_RGBA32F, at);
-    const std::size_t bandTexels = static_cast<std::size_t>(at.widthPx) * static_cast<std::size_t>(std::min(band, at.heightPx));
+    const std::size_t bandTexels =
+        static_cast<std::size_t>(at.widthPx) * static_cast<std::size_t>(std::min(band, at.heightPx));
     std::vector<glm::vec4> position(bandTexels), jacobian(bandTexels);
     double halfExtent = 0.0;
     for (int first = 0; first < at.heightPx; first += band) {
       const int last = std::min(at.heightPx, first + band);
       halfExtent = std::max(halfExtent, map.fillForwardRows(first, last, position.data(), jacobian.data()));
-      glTextureSubImage2D(forwardPosition_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT, position.data());
-      glTextureSubImage2D(forwardJacobian_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT, jacobian.data());
+      glTextureSubImage2D(forwardPosition_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT,
+                          position.data());
+      glTextureSubImage2D(forwardJacobian_.id(), 0, 0, first, at.widthPx, last - first, GL_RGBA, GL_FLOAT,
+                          jacobian.data());
       if (progress) progress("forward", last, at.heightPx);
     }
     gather_.forwardPosition = forwardPosition_.id();

@@ -46,7 +46,7 @@ class LensPass {
   gl::Texture forwardPosition_;      // RGBA32F at the overscan size (ForwardTable)
   gl::Texture forwardJacobian_;
   Accumulator::LensGather gather_;
-  std::vector<double> key_;          // what the tables were made for
+  std::vector<double> key_;  // what the tables were made for
   int tablesBuilt_ = 0;
 };
 

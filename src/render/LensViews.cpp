@@ -4,7 +4,8 @@
 
 namespace lenslab {
 
-LensViews::LensViews(ThinLensMap map, const FramePlan& plan) : map_(std::move(map)), fieldCurvature_(plan.fieldCurvature) {
+LensViews::LensViews(ThinLensMap map, const FramePlan& plan)
+    : map_(std::move(map)), fieldCurvature_(plan.fieldCurvature) {
   // Axial chromatic aberration: each colour has its own plane of focus, so each gets its own view.
   if (plan.viewsPerSample == 3) {
     for (int c = 0; c < 3; ++c) {
@@ -39,7 +40,8 @@ glm::vec2 LensViews::curvatureShiftPx(const LensSample& s) const {
   const ImageSize size = map_.overscan().size;
   const glm::dvec2 pixelSize(w.width() / size.widthPx, w.height() / size.heightPx);
   const Lens& lens = camera.lens;
-  return glm::vec2(lens.lensOffset(s.lens) * camera.view.prp.z * lens.effects.fieldCurvature.inverseFocusPerRadius2 / pixelSize);
+  return glm::vec2(lens.lensOffset(s.lens) * camera.view.prp.z * lens.effects.fieldCurvature.inverseFocusPerRadius2 /
+                   pixelSize);
 }
 
 glm::vec2 LensViews::barrelLens(const LensSample& s, Channel c) const {
@@ -47,7 +49,8 @@ glm::vec2 LensViews::barrelLens(const LensSample& s, Channel c) const {
   const Lens& lens = camera.lens;
   if (!lens.hasBarrel()) return glm::vec2(0.0f);
   const double shift = lens.effects.chromatic.inverseFocusShift(c);
-  return glm::vec2(lens.lensOffset(s.lens) * (1.0 - lens.barrel.distance * (camera.inverseFocusDistance() + shift)) / lens.barrel.radius);
+  return glm::vec2(lens.lensOffset(s.lens) * (1.0 - lens.barrel.distance * (camera.inverseFocusDistance() + shift)) /
+                   lens.barrel.radius);
 }
 
 }  // namespace lenslab

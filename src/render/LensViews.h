@@ -34,7 +34,9 @@ class LensViews {
   // Field curvature: the view's shift at r = 1, δ·d·κ, in render pixels (Accumulator.h).
   glm::vec2 curvatureShiftPx(const LensSample& s) const;
   // The sub-pixel offset in render pixels, GL orientation, for the lens gather.
-  static glm::vec2 jitterPx(const LensSample& s) { return {static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y)}; }
+  static glm::vec2 jitterPx(const LensSample& s) {
+    return {static_cast<float>(s.pixel.x), static_cast<float>(-s.pixel.y)};
+  }
   // Where the barrel sees this view's aperture point, p·(1 − L/z_f) over the opening's radius, z_f
   // channel `c`'s focus; 0 without a barrel.
   glm::vec2 barrelLens(const LensSample& s, Channel c) const;

@@ -16,7 +16,9 @@ namespace {
 
 // The background the accumulator adds for all views at once: the scene's constant colour; none
 // with an environment, which each view draws itself (ScenePass), its directions its own.
-glm::vec3 constantBackground(const Scene& scene) { return scene.environment ? glm::vec3(0.0f) : scene.lighting.background; }
+glm::vec3 constantBackground(const Scene& scene) {
+  return scene.environment ? glm::vec3(0.0f) : scene.lighting.background;
+}
 
 }  // namespace
 
@@ -30,7 +32,8 @@ const gl::RenderTarget& Renderer::target(std::unique_ptr<gl::RenderTarget>& slot
   return *slot;
 }
 
-void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size, const LensPass::TableProgress& tables) {
+void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size,
+                     const LensPass::TableProgress& tables) {
   plan_ = plan;
   // The plan's overscan is for the camera it was made for; a plan reused for another camera
   // without the lens pass (a sweep's ablations) renders that camera's own image.
@@ -41,7 +44,8 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   // With distortion or lateral colour the lens gather masks each view's samples at their own
   // undistorted rays (gather_lens.frag, BARREL); a parallel projection has no directions to clip.
   if (camera.lens.hasBarrel() && camera.view.projection != Projection::Perspective)
-    throw InputError(cat(camera.source, ": the lens barrel (cat's-eye vignetting) needs a perspective projection; remove \"barrel\""));
+    throw InputError(cat(camera.source,
+                         ": the lens barrel (cat's-eye vignetting) needs a perspective projection; remove \"barrel\""));
   if (plan.vignetting && !vignettePass_) vignettePass_ = std::make_unique<VignettePass>();
   if (plan.remap) {
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
@@ -75,14 +79,16 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   // Views are added straight into the sum unless the scene's geometry costs more than a layer.
   double triangles = 0.0;
   for (const Instance& instance : gpuScene_.scene().instances)
-    triangles += static_cast<double>(gpuScene_.scene().meshes[static_cast<std::size_t>(instance.mesh)].indices.size() / 3);
+    triangles +=
+        static_cast<double>(gpuScene_.scene().meshes[static_cast<std::size_t>(instance.mesh)].indices.size() / 3);
   // A scene with alphaMode BLEND always: an added view keeps one fragment per pixel, and blend
   // surfaces need every one over what lies behind (ScenePass::drawBlended).
   sum.setLayered(anyBlended(gpuScene_.scene()) ||
                  Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
   for (const LensViews::ChannelView& channel : views.channelViews()) {
-    const Accumulator::View view = sum.nextView(constantBackground(gpuScene_.scene()), channel.mask, views.curvatureShiftPx(first),
-                                                LensViews::jitterPx(first), views.barrelLens(first, channel.channel));
+    const Accumulator::View view =
+        sum.nextView(constantBackground(gpuScene_.scene()), channel.mask, views.curvatureShiftPx(first),
+                     LensViews::jitterPx(first), views.barrelLens(first, channel.channel));
     for (const SamplePart& part : parts)
       scenePass_.draw(gpuScene_, views.clipFromWorld(part.sample, channel.channel), view.target, lodBias, part.boxes,
                       view.addWeight ? &*view.addWeight : nullptr);
@@ -99,8 +105,9 @@ int Renderer::addSamples(int count) {
     const LensSample& s = samples_[static_cast<std::size_t>(done_)];
     if (samplesPlanned() == 1) {
       // A single view is the image itself unless a pass follows it (the lens, the vignetting).
-      const gl::RenderTarget& out = plan_.remap ? target(undistorted_, size_)
-                                    : plan_.vignetting ? target(unvignetted_, size_) : target(output_, size_);
+      const gl::RenderTarget& out = plan_.remap        ? target(undistorted_, size_)
+                                    : plan_.vignetting ? target(unvignetted_, size_)
+                                                       : target(output_, size_);
       scenePass_.draw(gpuScene_, views_->clipFromWorld(s, Channel::Green), out.drawTarget(), lodBias);
     } else {
       drawSample({{s, nullptr}}, *accumulator_, lodBias);

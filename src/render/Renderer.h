@@ -55,7 +55,7 @@ class Renderer {
   int addSamples(int count);  // returns how many were added (stops at the plan's count)
   int samplesDone() const { return done_; }
   int samplesPlanned() const { return static_cast<int>(samples_.size()); }
-  Image resolve();            // the mean so far, read back
+  Image resolve();  // the mean so far, read back
 
   // Per-tile budgets (a plan with `adaptive`): after begin, each step draws one round of samples
   // into the tiles that still need them and updates every drawn tile's error estimate; false once
@@ -114,15 +114,15 @@ class Renderer {
   int drawTileGroup(int first, const std::vector<char>& selected, int wanted);
   // The error pass over the tiles drawn this round (8 × 8 blocks, summed per tile here), into tiles_.
   void updateEstimates(const std::vector<char>& drawn);
-  void bindStreams();      // the two sums and their weights, texture units 0–3
+  void bindStreams();        // the two sums and their weights, texture units 0–3
   void uploadTileWeights();  // each tile's count per stream, once a round
   const gl::Program& streamsProgram(bool errorPerBlock);
 
   GpuScene gpuScene_;
   ScenePass scenePass_;
-  std::unique_ptr<Accumulator> accumulator_;  // made on first use: a pinhole frame needs none
-  std::unique_ptr<gl::RenderTarget> view_;    // a pinhole view for focusing
-  std::unique_ptr<gl::RenderTarget> output_;  // the resolved image
+  std::unique_ptr<Accumulator> accumulator_;       // made on first use: a pinhole frame needs none
+  std::unique_ptr<gl::RenderTarget> view_;         // a pinhole view for focusing
+  std::unique_ptr<gl::RenderTarget> output_;       // the resolved image
   std::unique_ptr<gl::RenderTarget> undistorted_;  // the overscanned image the lens pass reads
   std::unique_ptr<LensPass> lensPass_;             // made on first use
   std::unique_ptr<gl::RenderTarget> unvignetted_;  // the image before the vignetting pass, when it runs
@@ -144,16 +144,16 @@ class Renderer {
   bool adaptive_ = false;
   bool finished_ = false;
   bool scissorViews_ = false;
-  bool wholeFrame_ = false;  // the rest of the frame in whole views (step())
+  bool wholeFrame_ = false;               // the rest of the frame in whole views (step())
   std::unique_ptr<Accumulator> streamB_;  // odd samples; accumulator_ holds the even ones
   TileGrid grid_;
   std::vector<TileState> tiles_;
   int rounds_ = 0;
   int regionTiles_ = 1, regionColumns_ = 1, regionCount_ = 1;  // regions of tiles with their own scramble
-  gl::Texture tileWeights_[2];            // per tile, per stream: RGBA32F, the samples each stream added
-  gl::Texture blockError_;                // RG32F, one texel per 8 × 8 block: squared error, value count
+  gl::Texture tileWeights_[2];  // per tile, per stream: RGBA32F, the samples each stream added
+  gl::Texture blockError_;      // RG32F, one texel per 8 × 8 block: squared error, value count
   gl::Framebuffer blockErrorFramebuffer_;
-  gl::Program streams_[4];                // [per-pixel weight · 2 + error per block]
+  gl::Program streams_[4];  // [per-pixel weight · 2 + error per block]
   gl::FullScreenPass fullScreen_;
 };
 

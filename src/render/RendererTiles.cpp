@@ -50,8 +50,8 @@ void Renderer::beginAdaptive() {
   const std::optional<Accumulator::Barrel> barrel = views_->barrelMask();
   for (std::unique_ptr<Accumulator>* slot : {&accumulator_, &streamB_}) {
     if (!*slot) *slot = std::make_unique<Accumulator>();
-    (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr, plan_.remap ? &lensPass_->gather() : nullptr,
-                   barrel ? &*barrel : nullptr);
+    (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr,
+                   plan_.remap ? &lensPass_->gather() : nullptr, barrel ? &*barrel : nullptr);
   }
   // The scene passes can be cut to the tiles only where a view's pixel is the sum's pixel, and
   // each view has one aperture point (the barrel's mask is per view).
@@ -167,7 +167,8 @@ int Renderer::drawTileGroup(int first, const std::vector<char>& selected, int wa
   for (int i = first; i < first + count; ++i) {
     std::vector<SamplePart> parts;
     for (std::size_t r = 0; r < regionSeeds.size(); ++r)
-      parts.push_back({sobolSample(static_cast<std::uint32_t>(i), regionSeeds[r]), regionBoxes.empty() ? nullptr : &regionBoxes[r]});
+      parts.push_back({sobolSample(static_cast<std::uint32_t>(i), regionSeeds[r]),
+                       regionBoxes.empty() ? nullptr : &regionBoxes[r]});
     drawSample(parts, sobolStream(i) == 0 ? *accumulator_ : *streamB_, a.lodBias);
   }
   for (std::size_t t = 0; t < selected.size(); ++t)
@@ -180,7 +181,8 @@ bool Renderer::step() {
   if (!adaptive_) throw std::logic_error("Renderer::step without a per-tile plan");
   if (finished_) return false;
   const std::vector<int> more = samplesToAdd(mseFromPsnr(plan_.adaptive->targetPsnrDb));
-  const std::map<int, TileGroup> groups = groupTiles(more, tiles_, wholeFrame_ ? std::optional(mostSamples()) : std::nullopt);
+  const std::map<int, TileGroup> groups =
+      groupTiles(more, tiles_, wholeFrame_ ? std::optional(mostSamples()) : std::nullopt);
   if (groups.empty()) {
     finished_ = true;
     return false;
@@ -253,7 +255,8 @@ void Renderer::updateEstimates(const std::vector<char>& drawn) {
   }
   glDisable(GL_SCISSOR_TEST);
   std::vector<glm::vec2> blocks(static_cast<std::size_t>(blocksX) * static_cast<std::size_t>(blocksY));
-  glGetTextureImage(blockError_.id(), 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(blocks.size() * sizeof(glm::vec2)), blocks.data());
+  glGetTextureImage(blockError_.id(), 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(blocks.size() * sizeof(glm::vec2)),
+                    blocks.data());
   for (int t = 0; t < grid_.count(); ++t) {  // tiles and blocks both count rows from the bottom
     if (!drawn[static_cast<std::size_t>(t)]) continue;
     const int bx0 = (t % grid_.columns) * blocksPerTile, by0 = (t / grid_.columns) * blocksPerTile;
@@ -274,7 +277,8 @@ FrameEstimate Renderer::estimate() const {
   e.rounds = rounds_;
   e.wholeFrame = wholeFrame_;
   if (!finished_) {
-    const std::vector<int> more = tilesToContinue(grid_, tiles_, mseFromPsnr(plan_.adaptive->targetPsnrDb), plan_.adaptive->maxSamples);
+    const std::vector<int> more =
+        tilesToContinue(grid_, tiles_, mseFromPsnr(plan_.adaptive->targetPsnrDb), plan_.adaptive->maxSamples);
     for (const int m : more) e.tilesActive += m > 0;
   }
   return e;

@@ -21,7 +21,8 @@ namespace lenslab {
 
 bool materialMaps(const Material& m) {
   if (m.normalTexture.present() || m.metallicRoughnessTexture.present() || m.occlusionTexture.present()) return true;
-  for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture, &m.metallicRoughnessTexture, &m.occlusionTexture})
+  for (const TextureRef* ref :
+       {&m.baseColorTexture, &m.emissiveTexture, &m.metallicRoughnessTexture, &m.occlusionTexture})
     if (ref->present() && (ref->texCoord != 0 || ref->uvFromTexCoord != glm::mat3(1.0f))) return true;
   return false;
 }
@@ -29,7 +30,9 @@ bool materialMaps(const Material& m) {
 bool isNarrowField(const glm::dmat4& clipFromWorld) {
   // Rows x, y of a perspective projection grow as 1/(window size) and row w as 1/(PRP distance);
   // a parallel projection has no w row to compare with (its w is constant).
-  const auto rowLength = [&](int r) { return glm::length(glm::dvec3(clipFromWorld[0][r], clipFromWorld[1][r], clipFromWorld[2][r])); };
+  const auto rowLength = [&](int r) {
+    return glm::length(glm::dvec3(clipFromWorld[0][r], clipFromWorld[1][r], clipFromWorld[2][r]));
+  };
   const double w = rowLength(3);
   return w > 0.0 && std::max(rowLength(0), rowLength(1)) > kNarrowFieldSlope * w;
 }
@@ -79,7 +82,9 @@ void ScenePass::placeShadingOrigin(const Scene& scene, const glm::dmat4& clipFro
   const ProjectionCentre centre = projectionCentre(clipFromWorld);
   shadingView_.parallel = centre.atInfinity;
   shadingView_.towardViewer = glm::vec3(centre.towardViewer);
-  shadingView_.origin = !centre.atInfinity ? centre.point : scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
+  shadingView_.origin = !centre.atInfinity     ? centre.point
+                        : scene.bounds.empty() ? glm::dvec3(0.0)
+                                               : scene.bounds.center();
 }
 
 const GpuEnvironment* ScenePass::environment(const Scene& scene) const {
@@ -91,8 +96,8 @@ const GpuEnvironment* ScenePass::environment(const Scene& scene) const {
   return environment_.get();
 }
 
-void ScenePass::drawAddedBackground(const GpuEnvironment& env, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
-                                    const glm::vec4& weight) const {
+void ScenePass::drawAddedBackground(const GpuEnvironment& env, const glm::dmat4& clipFromWorld,
+                                    const gl::DrawTarget& target, const glm::vec4& weight) const {
   // Where the depth pass left far and the stencil lets this view add (as its surfaces do).
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xff);
@@ -103,16 +108,19 @@ void ScenePass::drawAddedBackground(const GpuEnvironment& env, const glm::dmat4&
 
 GLuint ScenePass::buildSceneProgram(gl::Program& slot, bool narrow, const std::vector<std::string>& defines) const {
   if (!slot)
-    slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom", "scene/scene.frag",
-                                                 withVariant(defines))
+    slot = narrow ? gl::buildProgramWithGeometry("scene/narrow_field.vert", "scene/narrow_field.geom",
+                                                 "scene/scene.frag", withVariant(defines))
                   : gl::buildProgram("scene/scene.vert", "scene/scene.frag", withVariant(defines));
   return slot.id();
 }
 
 ScenePass::Programs ScenePass::variant(const char* define, bool narrow) const {
-  const auto build = [&](gl::Program& slot, const std::vector<std::string>& defines) { return buildSceneProgram(slot, narrow, defines); };
+  const auto build = [&](gl::Program& slot, const std::vector<std::string>& defines) {
+    return buildSceneProgram(slot, narrow, defines);
+  };
   gl::Program* slots = addPrograms_[narrow ? 1 : 0];
-  if (std::string(define) == "DEPTH_ONLY") return {build(slots[0], {"DEPTH_ONLY"}), build(slots[1], {"DEPTH_ONLY", "ALPHA_MASK"})};
+  if (std::string(define) == "DEPTH_ONLY")
+    return {build(slots[0], {"DEPTH_ONLY"}), build(slots[1], {"DEPTH_ONLY", "ALPHA_MASK"})};
   const GLuint addProgram = build(slots[2], {define});
   return {addProgram, addProgram};
 }
@@ -129,7 +137,8 @@ ScenePass::Programs ScenePass::mapsVariant(const char* define, bool narrow, cons
     const GLuint plain = build(slots[0], {});
     return {plain, plain};
   }
-  if (std::string(define) == "DEPTH_ONLY") return {build(slots[1], {"DEPTH_ONLY"}), build(slots[2], {"DEPTH_ONLY", "ALPHA_MASK"})};
+  if (std::string(define) == "DEPTH_ONLY")
+    return {build(slots[1], {"DEPTH_ONLY"}), build(slots[2], {"DEPTH_ONLY", "ALPHA_MASK"})};
   const GLuint addProgram = build(slots[3], {define});
   return {addProgram, addProgram};
 }
@@ -144,8 +153,8 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 
-  selectPrograms(scene.environment != nullptr,
-                 static_cast<int>(std::min(shadingLights(scene, glm::dvec3(0.0)).size(), static_cast<std::size_t>(kMaxShadingLights))));
+  selectPrograms(scene.environment != nullptr, static_cast<int>(std::min(shadingLights(scene, glm::dvec3(0.0)).size(),
+                                                                         static_cast<std::size_t>(kMaxShadingLights))));
   const bool narrow = isNarrowField(clipFromWorld);
   const GLuint program = buildSceneProgram(narrow ? narrowProgram_ : program_, narrow, {});
   placeShadingOrigin(scene, clipFromWorld);
@@ -200,15 +209,17 @@ void ScenePass::draw(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, 
   glBindVertexArray(0);
 }
 
-void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight,
-                          float lodBias) const {
+void ScenePass::drawAdded(const GpuScene& gpuScene, const glm::dmat4& clipFromWorld, bool narrow,
+                          const glm::vec4& weight, float lodBias) const {
   // Depth only: no colour written, so llvmpipe shades nothing (opaque materials have no discard).
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
   const Scene& scene = gpuScene.scene();
   const bool anyMaps = std::any_of(scene.materials.begin(), scene.materials.end(), materialMaps);
-  const auto maps = [&](const char* define) { return anyMaps ? mapsVariant(define, narrow, scene, lodBias) : Programs{}; };
+  const auto maps = [&](const char* define) {
+    return anyMaps ? mapsVariant(define, narrow, scene, lodBias) : Programs{};
+  };
   drawInstances(variant("DEPTH_ONLY", narrow), maps("DEPTH_ONLY"), narrow, gpuScene, clipFromWorld);
 
   // Colour where the depth is the visible surface's, once per pixel.

@@ -42,9 +42,8 @@ class ScenePass {
   // `addWeight`: when given, the view is added into the target's colour (a running sum,
   // render/Accumulator) with this weight per channel and alpha, instead of replacing it; see drawAdded.
   // A scene with alphaMode BLEND materials takes no addWeight (std::logic_error).
-  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target,
-            float lodBias = 0.0f, const std::vector<PixelBox>* boxes = nullptr,
-            const glm::vec4* addWeight = nullptr) const;
+  void draw(const GpuScene& scene, const glm::dmat4& clipFromWorld, const gl::DrawTarget& target, float lodBias = 0.0f,
+            const std::vector<PixelBox>* boxes = nullptr, const glm::vec4* addWeight = nullptr) const;
 
  private:
   // The programs of one way of drawing: opaque materials and alpha-masked ones (whose discard
@@ -58,13 +57,14 @@ class ScenePass {
   // where depth is EQUAL, and the stencil lets only the first such fragment add (two surfaces at
   // the same depth add once, as GREATER keeps the first in a plain pass). The caller has set depth
   // to far and stencil to 0 where the view may add, and adds weight · background itself.
-  void drawAdded(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight, float lodBias) const;
+  void drawAdded(const GpuScene& scene, const glm::dmat4& clipFromWorld, bool narrow, const glm::vec4& weight,
+                 float lodBias) const;
   // `withMaps`: the same programs in their MATERIAL_MAPS variant, for materials that need it
   // (materialMaps below); unbuilt (0) when no material of the scene does.
   // `only`: these instances (indices into the scene's), in this order; null: every instance
   // whose material is not alphaMode BLEND, in the scene's order.
-  void drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& scene, const glm::dmat4& clipFromWorld,
-                     const std::vector<std::size_t>* only = nullptr) const;
+  void drawInstances(Programs programs, Programs withMaps, bool narrow, const GpuScene& scene,
+                     const glm::dmat4& clipFromWorld, const std::vector<std::size_t>* only = nullptr) const;
   // The BLEND instances `backToFront` over what the view has drawn: depth GREATER without writes,
   // colour SRC_ALPHA, ONE_MINUS_SRC_ALPHA and alpha ONE, ONE_MINUS_SRC_ALPHA, so that alpha stays
   // the coverage (1 − Π(1 − alpha) over the background, as the ray caster's). Programs: the
@@ -101,8 +101,8 @@ class ScenePass {
   mutable gl::Program program_;
   mutable bool environmentVariant_ = false;  // what the programs below were built for
   mutable int lightCountVariant_ = -1;
-  gl::Texture dfgTable_;  // scene/Brdf.h's table, RGB32F
-  mutable ShadingView shadingView_;  // the view drawn now (placeShadingOrigin)
+  gl::Texture dfgTable_;               // scene/Brdf.h's table, RGB32F
+  mutable ShadingView shadingView_;    // the view drawn now (placeShadingOrigin)
   mutable gl::Program narrowProgram_;  // built on first use: needs fp64 shaders
   // Built on first use: [narrow][DEPTH_ONLY, DEPTH_ONLY + ALPHA_MASK, ADD_TO_SUM].
   mutable gl::Program addPrograms_[2][3];

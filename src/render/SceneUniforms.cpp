@@ -47,10 +47,11 @@ glm::dmat4 wellScaled(const glm::dmat4& m) {
 // map with its tangent frame (the file's tangents or generated ones, scene/Tangents.h).
 void setMaterialMaps(GLuint program, const GpuScene& gpuScene, const Material& material, const SurfaceMaterial& surface,
                      const glm::dmat3& linear) {
-  const std::pair<GLint, const TextureRef*> slots[] = {{LOCATION_BASE_COLOR_TEX_COORD, &material.baseColorTexture},
-                                                       {LOCATION_EMISSIVE_TEX_COORD, &material.emissiveTexture},
-                                                       {LOCATION_METALLIC_ROUGHNESS_TEX_COORD, &material.metallicRoughnessTexture},
-                                                       {LOCATION_OCCLUSION_TEX_COORD, &material.occlusionTexture}};
+  const std::pair<GLint, const TextureRef*> slots[] = {
+      {LOCATION_BASE_COLOR_TEX_COORD, &material.baseColorTexture},
+      {LOCATION_EMISSIVE_TEX_COORD, &material.emissiveTexture},
+      {LOCATION_METALLIC_ROUGHNESS_TEX_COORD, &material.metallicRoughnessTexture},
+      {LOCATION_OCCLUSION_TEX_COORD, &material.occlusionTexture}};
   for (const auto& [location, ref] : slots)
     if (ref->present()) setTextureSlot(program, location, *ref);
   glProgramUniform1i(program, LOCATION_HAS_NORMAL_TEXTURE, surface.normalMapped);
@@ -58,12 +59,14 @@ void setMaterialMaps(GLuint program, const GpuScene& gpuScene, const Material& m
   gpuScene.bindLinearTexture(material.normalTexture.texture, UNIT_NORMAL);
   setTextureSlot(program, LOCATION_NORMAL_TEX_COORD, material.normalTexture);
   glProgramUniform1f(program, LOCATION_NORMAL_SCALE, surface.normalScale);
-  glProgramUniformMatrix3fv(program, LOCATION_WORLD_TANGENT_FROM_MODEL, 1, GL_FALSE, glm::value_ptr(tangentFromModel(linear)));
+  glProgramUniformMatrix3fv(program, LOCATION_WORLD_TANGENT_FROM_MODEL, 1, GL_FALSE,
+                            glm::value_ptr(tangentFromModel(linear)));
   glProgramUniform1f(program, LOCATION_HANDEDNESS_FROM_MODEL, glm::determinant(linear) < 0.0 ? -1.0f : 1.0f);
 }
 
 // shade_surface.glsl's SurfaceMaterial, field by field, and the textures it reads bound.
-void setSurfaceMaterial(GLuint program, const GpuScene& gpuScene, const Material& material, const SurfaceMaterial& surface) {
+void setSurfaceMaterial(GLuint program, const GpuScene& gpuScene, const Material& material,
+                        const SurfaceMaterial& surface) {
   glProgramUniform1f(program, LOCATION_METALLIC_FACTOR, surface.metallicFactor);
   glProgramUniform1f(program, LOCATION_ROUGHNESS_FACTOR, surface.roughnessFactor);
   glProgramUniform1f(program, LOCATION_OCCLUSION_STRENGTH, surface.occlusionStrength);
@@ -117,8 +120,8 @@ void setLightingUniforms(GLuint program, const Scene& scene, const ShadingView& 
   }
 }
 
-void setInstanceUniforms(GLuint program, const GpuScene& gpuScene, const Instance& instance, const glm::dmat4& clipFromWorld,
-                         bool narrow, const ShadingView& view, bool maps) {
+void setInstanceUniforms(GLuint program, const GpuScene& gpuScene, const Instance& instance,
+                         const glm::dmat4& clipFromWorld, bool narrow, const ShadingView& view, bool maps) {
   const Scene& scene = gpuScene.scene();
   const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
   const Material& material = materialOf(scene, mesh);

@@ -28,8 +28,8 @@ void setLightingUniforms(GLuint program, const Scene& scene, const ShadingView& 
 // double for the `narrow` field path), and its material as the ray caster shades it
 // (scene/ShadeSurface.h's surfaceMaterial) with its textures bound; with `maps`, the
 // MATERIAL_MAPS variant's uv sets, uv transforms and normal map too.
-void setInstanceUniforms(GLuint program, const GpuScene& gpuScene, const Instance& instance, const glm::dmat4& clipFromWorld,
-                         bool narrow, const ShadingView& view, bool maps);
+void setInstanceUniforms(GLuint program, const GpuScene& gpuScene, const Instance& instance,
+                         const glm::dmat4& clipFromWorld, bool narrow, const ShadingView& view, bool maps);
 
 // glTF's default material, for a mesh without one: white, lit, opaque, single-sided.
 const Material& materialOf(const Scene& scene, const Mesh& mesh);

@@ -30,8 +30,8 @@ RenderTargetLimits queryRenderTargetLimits() {
   GLint viewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
   RenderTargetLimits limits;
-  limits.maxSidePx = std::min({glInteger(GL_MAX_TEXTURE_SIZE), glInteger(GL_MAX_RENDERBUFFER_SIZE), viewport[0], viewport[1],
-                               glInteger(GL_MAX_FRAMEBUFFER_WIDTH), glInteger(GL_MAX_FRAMEBUFFER_HEIGHT)});
+  limits.maxSidePx = std::min({glInteger(GL_MAX_TEXTURE_SIZE), glInteger(GL_MAX_RENDERBUFFER_SIZE), viewport[0],
+                               viewport[1], glInteger(GL_MAX_FRAMEBUFFER_WIDTH), glInteger(GL_MAX_FRAMEBUFFER_HEIGHT)});
   return limits;
 }
 
@@ -48,7 +48,8 @@ void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan
     std::function<void()> afterBatch;
     if (progress && !plan.adaptive) {
       tables = [&](const char* table, int rowsDone, int rows) {
-        progress(i * perTile, count * perTile, cat("tile ", i + 1, " of ", count, ": ", table, " lens table, ", rowsDone, "/", rows, " rows"));
+        progress(i * perTile, count * perTile,
+                 cat("tile ", i + 1, " of ", count, ": ", table, " lens table, ", rowsDone, "/", rows, " rows"));
       };
       afterBatch = [&] { progress(i * perTile + renderer.samplesDone(), count * perTile, {}); };
     }
@@ -59,7 +60,8 @@ void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan
   }
 }
 
-Image renderTiled(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, const TilePlan& tiles) {
+Image renderTiled(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size,
+                  const TilePlan& tiles) {
   Image image(size.widthPx, size.heightPx);
   renderTiles(renderer, camera, plan, size, tiles, [&](const PixelRect& rect, const Image& pixels) {
     for (int y = 0; y < rect.height(); ++y)

@@ -29,6 +29,7 @@ void renderTiles(Renderer& renderer, const Camera& camera, const FramePlan& plan
                  const TileSink& sink, const TileProgress& progress = {});
 
 // The whole image through the tiles, assembled in memory: for tests and small images.
-Image renderTiled(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, const TilePlan& tiles);
+Image renderTiled(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size,
+                  const TilePlan& tiles);
 
 }  // namespace lenslab

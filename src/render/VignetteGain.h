@@ -14,7 +14,7 @@ namespace lenslab {
 struct VignetteGain {
   glm::vec2 normalisedAtOrigin{0.0f};  // the GL pixel corner (0, 0)
   glm::vec2 normalisedPerPixel{0.0f};
-  glm::vec3 coefficients{0.0f};        // a1, a2, a3
+  glm::vec3 coefficients{0.0f};  // a1, a2, a3
 };
 
 // For `camera`'s output image of `size` (for a tile, the tile's sub-window camera, so that each

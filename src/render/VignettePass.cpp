@@ -14,7 +14,8 @@ VignetteGain vignetteGainFor(const Camera& camera, ImageSize size) {
   const Vignetting& v = camera.lens.effects.vignetting;
   VignetteGain g;
   g.normalisedAtOrigin = glm::vec2(normalisedFromWindow(camera.view, {w.umin, w.vmin}));
-  g.normalisedPerPixel = glm::vec2(glm::dvec2(w.width() / size.widthPx, w.height() / size.heightPx) / camera.view.prp.z);
+  g.normalisedPerPixel =
+      glm::vec2(glm::dvec2(w.width() / size.widthPx, w.height() / size.heightPx) / camera.view.prp.z);
   g.coefficients = glm::vec3(static_cast<float>(v.a1), static_cast<float>(v.a2), static_cast<float>(v.a3));
   return g;
 }

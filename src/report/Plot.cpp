@@ -15,8 +15,10 @@ namespace {
 
 std::string decadeLabel(int exponent) {
   std::ostringstream s;
-  if (exponent >= -2 && exponent <= 3) s << std::pow(10.0, exponent);
-  else s << "1e" << exponent;
+  if (exponent >= -2 && exponent <= 3)
+    s << std::pow(10.0, exponent);
+  else
+    s << "1e" << exponent;
   return s.str();
 }
 
@@ -67,7 +69,8 @@ Image logLogPlot(const std::vector<PlotSeries>& series, const std::string& xLabe
       OIIO::ImageBufAlgo::render_line(canvas, a.x + o.x, a.y + o.y, b.x + o.x, b.y + o.y, rgba(c), true);
     }
   };
-  const auto text = [&](int x, int y, const std::string& words, int size, OIIO::ImageBufAlgo::TextAlignX alignX = OIIO::ImageBufAlgo::TextAlignX::Left) {
+  const auto text = [&](int x, int y, const std::string& words, int size,
+                        OIIO::ImageBufAlgo::TextAlignX alignX = OIIO::ImageBufAlgo::TextAlignX::Left) {
     OIIO::ImageBufAlgo::render_text(canvas, x, y, words, size, font, {0.0f, 0.0f, 0.0f, 1.0f}, alignX,
                                     OIIO::ImageBufAlgo::TextAlignY::Center);
   };

@@ -13,7 +13,7 @@ namespace lenslab {
 
 struct PlotSeries {
   std::string name;
-  glm::vec3 color;  // linear
+  glm::vec3 color;                 // linear
   std::vector<glm::dvec2> points;  // (x, y), both > 0
 };
 

@@ -87,14 +87,15 @@ ReferenceHalves referenceHalves(const RayCaster& caster, const Scene& scene, con
       }
     }
     if (o.log)
-      o.log(cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp / 2, " spp (half ", k + 1,
-                " of 2", cached.empty() ? std::string() : cat(", cached as ", cached.filename().string()), ")"));
+      o.log(cat("reference: ray casting ", size.widthPx, "x", size.heightPx, " at ", o.referenceSpp / 2, " spp (half ",
+                k + 1, " of 2", cached.empty() ? std::string() : cat(", cached as ", cached.filename().string()), ")"));
     const auto t = std::chrono::steady_clock::now();
     const RaycastOptions half{std::max(1, o.referenceSpp / 2), o.seed ^ (k == 0 ? 0x9e3779b9u : 0x7f4a7c15u)};
     const auto rowsDone = [&](int rows, int height) {
       if (o.progress) o.progress("reference rows", std::int64_t{k} * height + rows, 2 * std::int64_t{height});
     };
-    out.halves[k] = o.exactLens ? caster.render(*o.exactLens, half, rowsDone) : caster.render(camera, size, half, rowsDone);
+    out.halves[k] =
+        o.exactLens ? caster.render(*o.exactLens, half, rowsDone) : caster.render(camera, size, half, rowsDone);
     out.seconds += secondsSince(t);
     if (!cached.empty()) writeImage(*o.outputs, cached, out.halves[k]);
   }

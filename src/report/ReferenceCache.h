@@ -25,8 +25,8 @@ std::string referenceKey(const Scene& scene, const Camera& camera, ImageSize siz
 
 struct ReferenceHalves {
   Image halves[2];
-  double seconds = 0.0;    // ray casting; 0 when both came from the cache
-  bool cached = false;     // both halves read from the cache
+  double seconds = 0.0;  // ray casting; 0 when both came from the cache
+  bool cached = false;   // both halves read from the cache
 };
 
 // The two halves: from the cache in options.outDir when both are there at this size, else ray

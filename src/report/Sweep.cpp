@@ -85,7 +85,9 @@ struct SweepRun {
   std::set<std::string> imageNames;
   std::int64_t imagesPlanned = 0;
 
-  bool wanted(const std::string& series) const { return std::find(o.series.begin(), o.series.end(), series) != o.series.end(); }
+  bool wanted(const std::string& series) const {
+    return std::find(o.series.begin(), o.series.end(), series) != o.series.end();
+  }
 
   // Each series' budgets, an image each: views (lecture17 its own 17), spp or taps; none when it
   // does not run. The adaptive series runs to its targets instead (counted apart).
@@ -96,13 +98,14 @@ struct SweepRun {
     // The gather baseline blurs the pinhole image with round disks and knows no lens effects:
     // comparing it with an exact distorted (or polygonal) reference would measure what it lacks,
     // not the method.
-    if (series == "postprocess") return camera.lens.effects.isZero() && camera.lens.aperture.isRound() ? o.gatherTaps : std::vector<int>{};
+    if (series == "postprocess")
+      return camera.lens.effects.isZero() && camera.lens.aperture.isRound() ? o.gatherTaps : std::vector<int>{};
     return doublings(o.maxViews);
   }
 
   // `target`: the adaptive row's target PSNR (its image's name), 0 for the others.
-  SweepRow& record(const std::string& method, const std::string& pattern, int samples, double seconds, const Image& image,
-                   double target = 0.0) {
+  SweepRow& record(const std::string& method, const std::string& pattern, int samples, double seconds,
+                   const Image& image, double target = 0.0) {
     const ImageDifference d = compareImages(image, reference, 0.0);
     SweepRow row;
     row.method = method;
@@ -129,8 +132,8 @@ struct SweepRun {
 
 void runRasterSeries(SweepRun& run) {
   const SweepOptions& o = run.o;
-  for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random,
-                                  AperturePattern::Sobol}) {
+  for (AperturePattern pattern : {AperturePattern::Lecture17, AperturePattern::Concentric, AperturePattern::R2,
+                                  AperturePattern::Random, AperturePattern::Sobol}) {
     if (!run.wanted(patternName(pattern))) continue;
     for (int n : run.budgetsOf(patternName(pattern))) {
       const FramePlan plan = makeFramePlan(run.scene, run.camera, run.size, PlanOptions{pattern, n, n, o.seed});
@@ -151,14 +154,17 @@ void runAdaptiveSeries(SweepRun& run) {
     options.targetPsnrDb = target;
     FrameEstimate estimate;
     Image image;
-    const double seconds = medianOf3([&] {
-      const VisibleBlur visible = measureVisibleBlur(run.renderer, run.camera, run.size);
-      const FramePlan plan = makeFramePlan(run.scene, run.camera, run.size, options, &visible);
-      Image frame = run.renderer.render(run.camera, plan, run.size);
-      estimate = run.renderer.estimate();
-      return frame;
-    }, image);
-    SweepRow& row = run.record("adaptive", kAdaptivePattern, static_cast<int>(std::lround(estimate.meanSamples)), seconds, image, target);
+    const double seconds = medianOf3(
+        [&] {
+          const VisibleBlur visible = measureVisibleBlur(run.renderer, run.camera, run.size);
+          const FramePlan plan = makeFramePlan(run.scene, run.camera, run.size, options, &visible);
+          Image frame = run.renderer.render(run.camera, plan, run.size);
+          estimate = run.renderer.estimate();
+          return frame;
+        },
+        image);
+    SweepRow& row = run.record("adaptive", kAdaptivePattern, static_cast<int>(std::lround(estimate.meanSamples)),
+                               seconds, image, target);
     row.estimatePsnr = estimate.psnrDb;
     row.maxTileSamples = estimate.maxSamples;
     row.meanSamples = estimate.meanSamples;
@@ -170,7 +176,8 @@ void runAdaptiveSeries(SweepRun& run) {
 void runLensAblations(SweepRun& run) {
   const SweepOptions& o = run.o;
   for (const auto& [effect, without] : o.lensAblations) {
-    const FramePlan plan = makeFramePlan(run.scene, without, run.size, PlanOptions{AperturePattern::Sobol, o.maxViews, o.maxViews, o.seed});
+    const FramePlan plan = makeFramePlan(run.scene, without, run.size,
+                                         PlanOptions{AperturePattern::Sobol, o.maxViews, o.maxViews, o.seed});
     Image image;
     const double seconds = medianOf3([&] { return run.renderer.render(without, plan, run.size); }, image);
     run.record("fitted-without", effect, o.maxViews, seconds, image);
@@ -194,10 +201,11 @@ void runGatherSeries(SweepRun& run) {
   const std::vector<int> gatherTaps = run.budgetsOf("postprocess");
   if (gatherTaps.empty() && !o.gatherTaps.empty() && run.wanted("postprocess"))
     say(o, run.camera.lens.effects.isZero() ? "postprocess gather: left out (it blurs with round disks only)"
-                                       : "postprocess gather: left out (it has no lens effects)");
+                                            : "postprocess gather: left out (it has no lens effects)");
   for (int taps : gatherTaps) {
     Image image;
-    const double seconds = medianOf3([&] { return run.gather.apply(run.camera, run.renderer.renderPinhole(run.camera, run.size), taps); }, image);
+    const double seconds = medianOf3(
+        [&] { return run.gather.apply(run.camera, run.renderer.renderPinhole(run.camera, run.size), taps); }, image);
     run.record("postprocess", "gather", taps, seconds, image);
   }
   say(o, "postprocess: done");
@@ -221,8 +229,10 @@ std::vector<bool> occlusionEdgeMask(const Camera& camera, ImageSize size, const 
           const int qx = x + dx, qy = y + dy;
           if (qx < 0 || qy < 0 || qx >= w || qy >= h || dx * dx + dy * dy > r * r) continue;
           const double e = depthAt(qx, qy);
-          if (std::isinf(d) != std::isinf(e)) edge = true;
-          else if (std::isfinite(d) && std::abs(d - e) > 0.05 * std::min(d, e)) edge = true;
+          if (std::isinf(d) != std::isinf(e))
+            edge = true;
+          else if (std::isfinite(d) && std::abs(d - e) > 0.05 * std::min(d, e))
+            edge = true;
         }
       mask[static_cast<std::size_t>(y * w + x)] = edge;
     }
@@ -235,7 +245,8 @@ double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask)
   for (std::size_t i = 0; i < mask.size(); ++i)
     if (mask[i]) {
       for (int k = 0; k < 3; ++k) {
-        const double d = static_cast<double>(a.rgba[i * 4 + static_cast<std::size_t>(k)]) - b.rgba[i * 4 + static_cast<std::size_t>(k)];
+        const double d = static_cast<double>(a.rgba[i * 4 + static_cast<std::size_t>(k)]) -
+                         b.rgba[i * 4 + static_cast<std::size_t>(k)];
         sum += d * d;
       }
       n += 3;
@@ -249,8 +260,9 @@ std::vector<std::string> sweepSeriesNames() {
 
 SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {
   if (camera.lens.isPinhole())
-    throw InputError("sweep: the camera is a pinhole, so there is no depth of field to converge to; give a camera with "
-                     "f_number (physical form) or aperture_radius (lecture form), or --f-number N");
+    throw InputError(
+        "sweep: the camera is a pinhole, so there is no depth of field to converge to; give a camera with "
+        "f_number (physical form) or aperture_radius (lecture form), or --f-number N");
   SweepResult result;
   assert(o.outDir.empty() || o.outputs);
   // The reference: two independent halves of the samples, averaged. Their difference measures the
@@ -264,20 +276,24 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   result.referenceSeconds = halves.seconds;
   result.referenceCached = halves.cached;
   Image reference(size.widthPx, size.heightPx);
-  for (std::size_t i = 0; i < reference.rgba.size(); ++i) reference.rgba[i] = 0.5f * (halves.halves[0].rgba[i] + halves.halves[1].rgba[i]);
+  for (std::size_t i = 0; i < reference.rgba.size(); ++i)
+    reference.rgba[i] = 0.5f * (halves.halves[0].rgba[i] + halves.halves[1].rgba[i]);
   result.referenceNoiseRmse = 0.5 * compareImages(halves.halves[0], halves.halves[1], 0.0).rmse;
 
   const auto setupStart = std::chrono::steady_clock::now();
   SweepRun run{scene, camera, size, o, result, std::move(reference), {}, Renderer(scene), GatherDof(), imageDir, {}, 0};
   run.edges = pinholeEdges(run.renderer, camera, size);
-  result.edgeFraction = static_cast<double>(std::count(run.edges.begin(), run.edges.end(), true)) / static_cast<double>(run.edges.size());
+  result.edgeFraction =
+      static_cast<double>(std::count(run.edges.begin(), run.edges.end(), true)) / static_cast<double>(run.edges.size());
   // A warm-up frame (first-frame shader JIT), of each renderer.
-  run.renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 2, 2, o.seed}), size);
+  run.renderer.render(camera,
+                      makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 2, 2, o.seed}), size);
   (void)run.gather.apply(camera, run.renderer.renderPinhole(camera, size), 8);
   result.setupSeconds = secondsSince(setupStart);
 
   run.imagesPlanned = run.wanted("adaptive") ? static_cast<std::int64_t>(o.targetsDb.size()) : 0;
-  for (const std::string& series : sweepSeriesNames()) run.imagesPlanned += static_cast<std::int64_t>(run.budgetsOf(series).size());
+  for (const std::string& series : sweepSeriesNames())
+    run.imagesPlanned += static_cast<std::int64_t>(run.budgetsOf(series).size());
   run.imagesPlanned += static_cast<std::int64_t>(o.lensAblations.size());
   runRasterSeries(run);
   runAdaptiveSeries(run);

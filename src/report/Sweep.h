@@ -34,8 +34,8 @@ std::vector<std::string> sweepSeriesNames();
 
 struct SweepOptions {
   int referenceSpp = 1024;
-  int maxViews = 256;                 // raster budgets 1, 2, 4, … up to this
-  int maxSpp = 64;                    // ray-cast budgets 1, 2, 4, … up to this
+  int maxViews = 256;  // raster budgets 1, 2, 4, … up to this
+  int maxSpp = 64;     // ray-cast budgets 1, 2, 4, … up to this
   std::vector<int> gatherTaps = {8, 32, 128};
   std::vector<double> targetsDb = {25.0, 30.0, 35.0, 40.0, 45.0};  // the adaptive method's
   // Which series run: lecture17, concentric, r2, random, sobol, adaptive, raycast, postprocess.
@@ -53,9 +53,9 @@ struct SweepOptions {
   std::vector<std::filesystem::path> inputFiles;
   std::vector<std::string> inputOptions;
   std::vector<std::pair<std::string, Camera>> lensAblations;
-  std::filesystem::path outDir;       // empty: write nothing
-  OutputSet* outputs = nullptr;       // with outDir: its files go into this set (io/AtomicFile.h),
-                                      // to appear with the report when the caller commits it
+  std::filesystem::path outDir;                 // empty: write nothing
+  OutputSet* outputs = nullptr;                 // with outDir: its files go into this set (io/AtomicFile.h),
+                                                // to appear with the report when the caller commits it
   std::function<void(const std::string&)> log;  // a line as each series ends
   // How far it is: `unit` is "reference rows" (both halves of the reference), then "images".
   std::function<void(const std::string& unit, std::int64_t done, std::int64_t total)> progress;

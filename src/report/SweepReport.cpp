@@ -31,7 +31,9 @@ struct Series {
     }
   }
   bool has(const std::string& key) const { return rows.count(key) > 0; }
-  double timeOf(const std::string& key, double target) const { return has(key) ? secondsToReach(rows.at(key), target) : -1.0; }
+  double timeOf(const std::string& key, double target) const {
+    return has(key) ? secondsToReach(rows.at(key), target) : -1.0;
+  }
 };
 
 // Least-squares slope of log RMSE against log samples (N = 1 included).
@@ -48,29 +50,37 @@ double convergenceSlope(const std::vector<const SweepRow*>& rows) {
 void writeTimeToReach(std::ostream& s, const Series& series) {
   s << "## Time to reach a PSNR\n\nSeconds, interpolated between the series' last row below the PSNR and its first row "
        "at or above it (PSNR linear in log time); — where no row reaches it. PSNR against the reference.\n\n";
-  s << "| method | 30 dB | 35 dB | 40 dB | 45 dB | best PSNR | edge RMSE at best | slope d log RMSE / d log N |\n|---|---|---|---|---|---|---|---|\n";
+  s << "| method | 30 dB | 35 dB | 40 dB | 45 dB | best PSNR | edge RMSE at best | slope d log RMSE / d log N "
+       "|\n|---|---|---|---|---|---|---|---|\n";
   for (const std::string& key : series.order) {
     const auto& rows = series.rows.at(key);
     s << "| " << key << " |";
     for (const double target : kLevels) {
       const double t = secondsToReach(rows, target);
-      if (t < 0.0) s << " — |";
-      else s << " " << std::setprecision(4) << t << " |";
+      if (t < 0.0)
+        s << " — |";
+      else
+        s << " " << std::setprecision(4) << t << " |";
     }
     const SweepRow* top = rows.front();
     for (const SweepRow* row : rows)
       if (row->psnr > top->psnr) top = row;
-    s << " " << std::setprecision(1) << top->psnr << " dB (" << top->samples << ") | " << std::setprecision(4) << top->edgeRmse << " |";
-    if (rows.size() >= 3 && rows.front()->method != "adaptive") s << " " << std::setprecision(2) << convergenceSlope(rows) << " |\n";
-    else s << " — |\n";
+    s << " " << std::setprecision(1) << top->psnr << " dB (" << top->samples << ") | " << std::setprecision(4)
+      << top->edgeRmse << " |";
+    if (rows.size() >= 3 && rows.front()->method != "adaptive")
+      s << " " << std::setprecision(2) << convergenceSlope(rows) << " |\n";
+    else
+      s << " — |\n";
   }
 }
 
 std::string secondsCell(double seconds) {
   std::ostringstream c;
   c.setf(std::ios::fixed);
-  if (seconds < 0.0) c << "—";
-  else c << std::setprecision(4) << seconds;
+  if (seconds < 0.0)
+    c << "—";
+  else
+    c << std::setprecision(4) << seconds;
   return c.str();
 }
 
@@ -86,10 +96,15 @@ void writeEqualError(std::ostream& s, const Series& series) {
     anyRaster |= key.rfind("raster ", 0) == 0;
   }
   if (!anyRaster || (adaptiveKey.empty() && !series.has("raycast stratified"))) return;
-  s << "\n## Equal error: seconds to each PSNR, side by side\n\nThe fastest uniform raster pattern at each PSNR (named), "
-       "the default pattern (`" << defaultKey.substr(7) << "`), per-tile budgets and the ray caster, each interpolated as above; "
+  s << "\n## Equal error: seconds to each PSNR, side by side\n\nThe fastest uniform raster pattern at each PSNR "
+       "(named), "
+       "the default pattern (`"
+    << defaultKey.substr(7)
+    << "`), per-tile budgets and the ray caster, each interpolated as above; "
        "the speed-up is the fastest uniform pattern's time over the per-tile budgets' time.\n\n"
-       "| PSNR | fastest uniform (s) | default `" << defaultKey.substr(7) << "` (s) | per-tile budgets (s) | ray cast (s) | per-tile speed-up |\n"
+       "| PSNR | fastest uniform (s) | default `"
+    << defaultKey.substr(7)
+    << "` (s) | per-tile budgets (s) | ray cast (s) | per-tile speed-up |\n"
        "|---|---|---|---|---|---|\n";
   for (const double target : kLevels) {
     std::string bestKey;
@@ -104,8 +119,10 @@ void writeEqualError(std::ostream& s, const Series& series) {
     if (best >= 0.0) s << " (" << bestKey.substr(7) << ")";
     s << " | " << secondsCell(series.timeOf(defaultKey, target)) << " | " << secondsCell(adaptive) << " | "
       << secondsCell(series.timeOf("raycast stratified", target)) << " | ";
-    if (best < 0.0 || adaptive < 0.0) s << "— |\n";
-    else s << std::setprecision(2) << best / adaptive << "x |\n";
+    if (best < 0.0 || adaptive < 0.0)
+      s << "— |\n";
+    else
+      s << std::setprecision(2) << best / adaptive << "x |\n";
   }
 }
 
@@ -115,13 +132,15 @@ void writeEstimate(std::ostream& s, const Series& series, double referenceNoiseR
   s << "\n## The estimate against the truth\n\nEach adaptive frame's own estimate (against its converged limit, from "
        "its two sample streams) beside its PSNR against the reference, and against the reference less the "
        "reference's own noise (its MSE, from its two halves, subtracted).\n\n"
-       "| target | estimate | PSNR vs reference | less the reference's noise | estimate − truth | samples per pixel (busiest tile) |\n"
+       "| target | estimate | PSNR vs reference | less the reference's noise | estimate − truth | samples per pixel "
+       "(busiest tile) |\n"
        "|---|---|---|---|---|---|\n";
   for (const SweepRow* row : series.rows.at("adaptive sobol")) {
     const double corrected = psnrFromMse(std::max(row->rmse * row->rmse - referenceMse, 1e-30));
-    s << "| " << std::setprecision(1) << row->targetPsnr << " dB | " << std::setprecision(2) << row->estimatePsnr << " dB | "
-      << row->psnr << " dB | " << corrected << " dB | " << std::showpos << row->estimatePsnr - corrected << std::noshowpos
-      << " dB | " << std::setprecision(1) << row->meanSamples << " (" << row->maxTileSamples << ") |\n";
+    s << "| " << std::setprecision(1) << row->targetPsnr << " dB | " << std::setprecision(2) << row->estimatePsnr
+      << " dB | " << row->psnr << " dB | " << corrected << " dB | " << std::showpos << row->estimatePsnr - corrected
+      << std::noshowpos << " dB | " << std::setprecision(1) << row->meanSamples << " (" << row->maxTileSamples
+      << ") |\n";
   }
 }
 
@@ -133,23 +152,29 @@ void writeLensEffects(std::ostream& s, const SweepResult& r) {
   for (const SweepRow& row : r.rows)
     if (row.method == "fitted-without") without.push_back(&row);
   for (const SweepRow& row : r.rows)
-    if (!without.empty() && row.method == "raster" && row.pattern == "sobol" && row.samples == without.front()->samples) full = &row;
+    if (!without.empty() && row.method == "raster" && row.pattern == "sobol" && row.samples == without.front()->samples)
+      full = &row;
   if (!full) return;
-  s << "\n## The fitted lens, effect by effect\n\nThe real-time camera fitted to the lens, against the lens traced exactly, "
-       "with all its effects and with each left out in turn (" << full->samples << " views, sobol): the drop is what the fitted "
+  s << "\n## The fitted lens, effect by effect\n\nThe real-time camera fitted to the lens, against the lens traced "
+       "exactly, "
+       "with all its effects and with each left out in turn ("
+    << full->samples
+    << " views, sobol): the drop is what the fitted "
        "effect buys.\n\n| fitted camera | PSNR (dB) | RMSE | drop (dB) |\n|---|---|---|---|\n";
-  s << "| all effects | " << std::setprecision(2) << full->psnr << " | " << std::setprecision(5) << full->rmse << " | — |\n";
+  s << "| all effects | " << std::setprecision(2) << full->psnr << " | " << std::setprecision(5) << full->rmse
+    << " | — |\n";
   for (const SweepRow* row : without)
-    s << "| without " << row->pattern << " | " << std::setprecision(2) << row->psnr << " | " << std::setprecision(5) << row->rmse
-      << " | " << std::setprecision(2) << full->psnr - row->psnr << " |\n";
+    s << "| without " << row->pattern << " | " << std::setprecision(2) << row->psnr << " | " << std::setprecision(5)
+      << row->rmse << " | " << std::setprecision(2) << full->psnr - row->psnr << " |\n";
 }
 
 void writeAllRows(std::ostream& s, const SweepResult& r) {
-  s << "\n## All rows\n\n| method | pattern | samples | seconds | RMSE | PSNR (dB) | max error | edge RMSE |\n|---|---|---|---|---|---|---|---|\n";
+  s << "\n## All rows\n\n| method | pattern | samples | seconds | RMSE | PSNR (dB) | max error | edge RMSE "
+       "|\n|---|---|---|---|---|---|---|---|\n";
   for (const SweepRow& row : r.rows)
-    s << "| " << row.method << " | " << row.pattern << " | " << row.samples << " | " << std::setprecision(4) << row.seconds
-      << " | " << std::setprecision(5) << row.rmse << " | " << std::setprecision(2) << row.psnr << " | " << std::setprecision(4)
-      << row.maxError << " | " << std::setprecision(5) << row.edgeRmse << " |\n";
+    s << "| " << row.method << " | " << row.pattern << " | " << row.samples << " | " << std::setprecision(4)
+      << row.seconds << " | " << std::setprecision(5) << row.rmse << " | " << std::setprecision(2) << row.psnr << " | "
+      << std::setprecision(4) << row.maxError << " | " << std::setprecision(5) << row.edgeRmse << " |\n";
 }
 
 }  // namespace
@@ -183,11 +208,12 @@ double secondsToReach(const std::vector<const SweepRow*>& rows, double psnrDb) {
 std::string sweepCsv(const SweepResult& r) {
   std::ostringstream s;
   s.precision(8);
-  s << "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse,target_psnr,estimate_psnr,mean_samples,max_tile_samples\n";
+  s << "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse,target_psnr,estimate_psnr,mean_samples,max_tile_"
+       "samples\n";
   for (const SweepRow& row : r.rows)
     s << row.method << "," << row.pattern << "," << row.samples << "," << row.seconds << "," << row.rmse << ","
-      << row.psnr << "," << row.maxError << "," << row.edgeRmse << "," << row.targetPsnr << "," << row.estimatePsnr << ","
-      << row.meanSamples << "," << row.maxTileSamples << "\n";
+      << row.psnr << "," << row.maxError << "," << row.edgeRmse << "," << row.targetPsnr << "," << row.estimatePsnr
+      << "," << row.meanSamples << "," << row.maxTileSamples << "\n";
   return s.str();
 }
 

@@ -40,8 +40,8 @@ struct SweepResult {
   double referenceSeconds = 0.0;  // 0 when it came from the cache
   bool referenceCached = false;
   double referenceNoiseRmse = 0.0;  // the reference's RMSE against its own converged limit (from its two halves)
-  double setupSeconds = 0.0;      // scene upload, shader compilation and a warm-up frame (not in rows)
-  double edgeFraction = 0.0;      // share of pixels in the occlusion-edge mask
+  double setupSeconds = 0.0;        // scene upload, shader compilation and a warm-up frame (not in rows)
+  double edgeFraction = 0.0;        // share of pixels in the occlusion-edge mask
 };
 
 // Seconds a series takes to reach `psnrDb`: interpolated between the last row below and the first

@@ -11,12 +11,14 @@ bool isBlended(const Scene& scene, const Instance& instance) {
 }
 
 bool anyBlended(const Scene& scene) {
-  return std::any_of(scene.instances.begin(), scene.instances.end(), [&](const Instance& i) { return isBlended(scene, i); });
+  return std::any_of(scene.instances.begin(), scene.instances.end(),
+                     [&](const Instance& i) { return isBlended(scene, i); });
 }
 
 glm::dvec3 instanceBoundsCentre(const Scene& scene, const Instance& instance) {
   Bounds model;
-  for (const Vertex& v : scene.meshes[static_cast<std::size_t>(instance.mesh)].vertices) model.extend(glm::dvec3(v.position));
+  for (const Vertex& v : scene.meshes[static_cast<std::size_t>(instance.mesh)].vertices)
+    model.extend(glm::dvec3(v.position));
   const glm::dvec3 centre = model.empty() ? glm::dvec3(0.0) : model.center();
   return glm::dvec3(instance.worldFromModel * glm::dvec4(centre, 1.0));
 }

@@ -50,7 +50,8 @@ Ball ballThrough(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p
     return smallestOfFew(q, 4);
   }
   const glm::dvec3 offset =
-      (glm::dot(a, a) * glm::cross(b, d) + glm::dot(b, b) * glm::cross(d, a) + glm::dot(d, d) * glm::cross(a, b)) / (2.0 * det);
+      (glm::dot(a, a) * glm::cross(b, d) + glm::dot(b, b) * glm::cross(d, a) + glm::dot(d, d) * glm::cross(a, b)) /
+      (2.0 * det);
   return {p0 + offset, glm::dot(offset, offset)};
 }
 
@@ -114,8 +115,9 @@ BoundingSphere smallestEnclosingSphere(const std::vector<glm::dvec3>& points) {
   // diagonals), which already hold nearly every point's sphere; each round adds the point farthest
   // outside. The smallest ball of the whole set is that of a few of its points, so this ends with
   // the core holding them: tens of rounds at most, each one pass over the points.
-  static const glm::dvec3 directions[13] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1},
-                                            {0, 1, 1}, {0, 1, -1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
+  static const glm::dvec3 directions[13] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, -1, 0},
+                                            {1, 0, 1},  {1, 0, -1}, {0, 1, 1},  {0, 1, -1}, {1, 1, 1},
+                                            {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
   std::vector<glm::dvec3> core;
   // One pass for all 13 directions: each point's projections against the lowest and highest yet.
   std::array<std::size_t, 13> lo{}, hi{};
@@ -124,8 +126,14 @@ BoundingSphere smallestEnclosingSphere(const std::vector<glm::dvec3>& points) {
   for (std::size_t i = 1; i < points.size(); ++i)
     for (std::size_t k = 0; k < 13; ++k) {
       const double s = glm::dot(points[i], directions[k]);
-      if (s < loValue[k]) { loValue[k] = s; lo[k] = i; }
-      if (s > hiValue[k]) { hiValue[k] = s; hi[k] = i; }
+      if (s < loValue[k]) {
+        loValue[k] = s;
+        lo[k] = i;
+      }
+      if (s > hiValue[k]) {
+        hiValue[k] = s;
+        hi[k] = i;
+      }
     }
   for (std::size_t k = 0; k < 13; ++k)
     for (const std::size_t i : {lo[k], hi[k]})

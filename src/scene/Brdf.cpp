@@ -29,7 +29,9 @@ using glm::vec3;
 using std::cos;
 using std::sqrt;
 // brdf.glsl's one input from its includer: a texel of the DFG table.
-vec3 dfgTexel(int x, int y) { return table()[static_cast<std::size_t>(y * kDfgTableSize + x)]; }  // = kDfgSize, asserted below
+vec3 dfgTexel(int x, int y) {
+  return table()[static_cast<std::size_t>(y * kDfgTableSize + x)];
+}  // = kDfgSize, asserted below
 #include "../../shaders/common/brdf.glsl"
 }  // namespace glsl
 
@@ -62,7 +64,9 @@ glm::vec2 hammersley(std::uint32_t i, std::uint32_t n) {
 #ifdef LENSLAB_DFG_TABLE_UNBAKED
 // tools/make_dfg_table.cpp's own build of this file: it writes the values and reads none, and
 // those it replaces may be of another size (which the static_assert below refuses).
-const std::vector<glm::vec3>& table() { throw std::logic_error("this build has no baked DFG table (LENSLAB_DFG_TABLE_UNBAKED)"); }
+const std::vector<glm::vec3>& table() {
+  throw std::logic_error("this build has no baked DFG table (LENSLAB_DFG_TABLE_UNBAKED)");
+}
 #else
 const std::vector<glm::vec3>& table() {
   static constexpr float kValues[] = {
@@ -71,7 +75,8 @@ const std::vector<glm::vec3>& table() {
   static_assert(std::size(kValues) == 3 * kDfgTableSize * kDfgTableSize);
   static const std::vector<glm::vec3> t = [] {
     std::vector<glm::vec3> values(static_cast<std::size_t>(kDfgTableSize * kDfgTableSize));
-    for (std::size_t i = 0; i < values.size(); ++i) values[i] = {kValues[3 * i], kValues[3 * i + 1], kValues[3 * i + 2]};
+    for (std::size_t i = 0; i < values.size(); ++i)
+      values[i] = {kValues[3 * i], kValues[3 * i + 1], kValues[3 * i + 2]};
     return values;
   }();
   return t;
@@ -88,7 +93,8 @@ glm::vec3 dfgTexelIntegral(int x, int y) {
   const float last = static_cast<float>(kDfgTableSize - 1);
   const float nv = std::max(static_cast<float>(x) / last, kDfgMinNv);
   const float roughness = static_cast<float>(y) / last;
-  return glm::vec3(dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples), dfgDiffuseIntegral(nv, kDfgDiffuseSteps));
+  return glm::vec3(dfgIntegral(nv, glsl::alphaFromPerceptual(roughness), kDfgSamples),
+                   dfgDiffuseIntegral(nv, kDfgDiffuseSteps));
 }
 
 float dfgDiffuseIntegral(float nv, int steps) {
@@ -140,8 +146,8 @@ glm::vec3 punctualRadiance(const ShadingSurface& s, const ShadingLight& light, c
   return glsl::punctualRadiance(toGlsl(s), toGlsl(light), p);
 }
 
-glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance, const glm::vec3& specularRadiance,
-                             glm::vec3 dfg) {
+glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance,
+                             const glm::vec3& specularRadiance, glm::vec3 dfg) {
   return glsl::imageLightRadiance(toGlsl(s), diffuseRadiance, specularRadiance, dfg);
 }
 

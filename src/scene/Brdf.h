@@ -10,22 +10,22 @@ namespace lenslab {
 
 // A surface point as the shading sees it (brdf.glsl's Surface).
 struct ShadingSurface {
-  glm::vec3 baseColor{1.0f};        // linear RGB
-  float metallic = 0.0f;            // [0, 1]
-  float perceptualRoughness = 1.0f; // [0, 1]; clamped below at kMinPerceptualRoughness
-  float occlusion = 1.0f;           // [0, 1], image light only
-  glm::vec3 n{0.0f, 0.0f, 1.0f};    // unit shading normal
-  glm::vec3 v{0.0f, 0.0f, 1.0f};    // unit, toward the eye of this view
+  glm::vec3 baseColor{1.0f};         // linear RGB
+  float metallic = 0.0f;             // [0, 1]
+  float perceptualRoughness = 1.0f;  // [0, 1]; clamped below at kMinPerceptualRoughness
+  float occlusion = 1.0f;            // [0, 1], image light only
+  glm::vec3 n{0.0f, 0.0f, 1.0f};     // unit shading normal
+  glm::vec3 v{0.0f, 0.0f, 1.0f};     // unit, toward the eye of this view
 };
 
 // A punctual light with its position relative to the shaded point's origin (brdf.glsl's Light).
 struct ShadingLight {
-  int type = 0;                     // 0 directional, 1 point, 2 spot (LightType's order)
-  glm::vec3 intensity{0.0f};        // colour × lux (directional) or × candela (point, spot)
+  int type = 0;               // 0 directional, 1 point, 2 spot (LightType's order)
+  glm::vec3 intensity{0.0f};  // colour × lux (directional) or × candela (point, spot)
   glm::vec3 position{0.0f};
   glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way it shines
-  float range = 0.0f;               // 0: unbounded
-  float spotScale = 0.0f;           // spotScaleOffset's
+  float range = 0.0f;                      // 0: unbounded
+  float spotScale = 0.0f;                  // spotScaleOffset's
   float spotOffset = 0.0f;
 };
 
@@ -33,8 +33,8 @@ struct ShadingLight {
 glm::vec3 punctualRadiance(const ShadingSurface& s, const ShadingLight& light, const glm::vec3& p);
 // Radiance toward s.v from light all around: diffuse and specular radiance, the DFG table's three
 // terms; times the occlusion.
-glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance, const glm::vec3& specularRadiance,
-                             glm::vec3 dfg);
+glm::vec3 imageLightRadiance(const ShadingSurface& s, const glm::vec3& diffuseRadiance,
+                             const glm::vec3& specularRadiance, glm::vec3 dfg);
 // Unit direction to read the prefiltered specular along: the reflection of v about n, leaned toward
 // n as roughness grows (brdf.glsl's specularDominantDirection).
 glm::vec3 specularDominantDirection(const glm::vec3& n, const glm::vec3& v, float perceptualRoughness);
@@ -53,7 +53,7 @@ glm::vec2 spotScaleOffset(float innerConeAngleRadians, float outerConeAngleRadia
 constexpr int kDfgTableSize = 32;
 constexpr int kDfgSamples = 1024;
 constexpr int kDfgDiffuseSteps = 128;
-constexpr float kDfgMinNv = 1e-4f;  // the n·v that column 0 is integrated at
+constexpr float kDfgMinNv = 1e-4f;         // the n·v that column 0 is integrated at
 const std::vector<glm::vec3>& dfgTable();  // row by row: index y · size + x
 // The table bilinear at (n·v, perceptual roughness), as brdf.glsl's dfgLookup.
 glm::vec3 dfgLookup(float nv, float perceptualRoughness);

@@ -38,7 +38,9 @@ struct EnvironmentGlsl {
   }
 
   const EnvironmentImage& mapImage(int map) const {
-    return map == kEnvironmentBackground ? maps->background : map == kEnvironmentDiffuse ? maps->diffuse : maps->specular.front();
+    return map == kEnvironmentBackground ? maps->background
+           : map == kEnvironmentDiffuse  ? maps->diffuse
+                                         : maps->specular.front();
   }
   int mapWidth(int map) const { return mapImage(map).width; }
   int mapHeight(int map) const { return mapImage(map).height; }
@@ -67,9 +69,7 @@ EnvironmentGlsl::EnvironmentParams unturned() {
 
 }  // namespace
 
-glm::vec2 uvFromDirection(const glm::vec3& direction) {
-  return EnvironmentGlsl{}.environmentUv(unturned(), direction);
-}
+glm::vec2 uvFromDirection(const glm::vec3& direction) { return EnvironmentGlsl{}.environmentUv(unturned(), direction); }
 
 glm::vec3 directionFromUv(const glm::vec2& uv) {
   const double phi = (uv.x - 0.5) * 2.0 * std::numbers::pi;
@@ -88,7 +88,8 @@ double texelSolidAngle(int y, int width, int height) {
   return 2.0 * std::numbers::pi / width * (std::cos(top) - std::cos(bottom));
 }
 
-EnvironmentLookup::EnvironmentLookup(std::shared_ptr<const PrefilteredEnvironment> maps, const EnvironmentPlacement& placement)
+EnvironmentLookup::EnvironmentLookup(std::shared_ptr<const PrefilteredEnvironment> maps,
+                                     const EnvironmentPlacement& placement)
     : maps_(std::move(maps)), placement_(placement) {
   assert(maps_ && maps_->specularLevels() >= 2);
   const double radians = placement.rotationDegrees * std::numbers::pi / 180.0;

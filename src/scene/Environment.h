@@ -23,8 +23,12 @@ struct EnvironmentImage {
   int width = 0;
   int height = 0;
   std::vector<glm::vec3> rgb;  // width × height
-  const glm::vec3& at(int x, int y) const { return rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]; }
-  glm::vec3& at(int x, int y) { return rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]; }
+  const glm::vec3& at(int x, int y) const {
+    return rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+  }
+  glm::vec3& at(int x, int y) {
+    return rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+  }
 };
 
 // How the environment is placed in the world (--environment-rotation, --environment-intensity).

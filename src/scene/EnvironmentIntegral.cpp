@@ -59,8 +59,8 @@ glm::dvec3 directionFromUvDouble(double u, double cosTheta) {
 
 // A GGX half vector h about n (frame t, b, n; a2 = α²) from (u1, u2), as the direction l that
 // reflects v about it: the specular lobe's own importance sampling.
-glm::dvec3 sampleGgxReflection(const glm::dvec3& n, const glm::dvec3& t, const glm::dvec3& b, const glm::dvec3& v, double a2, double u1,
-                               double u2) {
+glm::dvec3 sampleGgxReflection(const glm::dvec3& n, const glm::dvec3& t, const glm::dvec3& b, const glm::dvec3& v,
+                               double a2, double u1, double u2) {
   const double phi = 2.0 * kPi * u1;
   const double cosTheta = std::sqrt((1.0 - u2) / (1.0 + (a2 - 1.0) * u2));
   const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
@@ -110,9 +110,9 @@ double EnvironmentIntegral::environmentPdf(const glm::dvec3& direction) const {
 // sum, (u1, u2) the point inside it, uniform in longitude and in cos θ (the texel's solid angle).
 glm::dvec3 EnvironmentIntegral::sampleLuminance(double u1, double u2, double u3) const {
   const double pick = u3 * luminanceTimesSolidAngle_;
-  const auto texel = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
-      std::upper_bound(texelCdf_.begin(), texelCdf_.end(), pick) - texelCdf_.begin(),
-      static_cast<std::ptrdiff_t>(texelCdf_.size()) - 1));
+  const auto texel = static_cast<std::size_t>(
+      std::min<std::ptrdiff_t>(std::upper_bound(texelCdf_.begin(), texelCdf_.end(), pick) - texelCdf_.begin(),
+                               static_cast<std::ptrdiff_t>(texelCdf_.size()) - 1));
   const int x = static_cast<int>(texel % static_cast<std::size_t>(image_.width));
   const int y = static_cast<int>(texel / static_cast<std::size_t>(image_.width));
   const double cosTop = std::cos(kPi * y / image_.height), cosBottom = std::cos(kPi * (y + 1) / image_.height);
@@ -190,8 +190,8 @@ RadianceEstimate EnvironmentIntegral::outgoingRadiance(const ShadingSurface& s, 
                specularSamples);
   // The diffuse lobe, the rest of f (Lambert's (1 − F) c_diff / π): the cosine and the luminance.
   if (withDiffuse)
-    estimateLobe([&](const glm::dvec3& l) { return fTimesCos(surface, l) - fTimesCos(specularOnly, l); }, Cosine, Light, 0.5,
-                 samples - specularSamples);
+    estimateLobe([&](const glm::dvec3& l) { return fTimesCos(surface, l) - fTimesCos(specularOnly, l); }, Cosine, Light,
+                 0.5, samples - specularSamples);
   RadianceEstimate e;
   e.mean = total;
   e.standardError = glm::sqrt(variance);
@@ -200,7 +200,8 @@ RadianceEstimate EnvironmentIntegral::outgoingRadiance(const ShadingSurface& s, 
 
 glm::vec3 splitSumRadiance(const EnvironmentLookup& lookup, const ShadingSurface& s) {
   const glm::vec3 diffuse = lookup.diffuse(s.n);
-  const glm::vec3 specular = lookup.specular(specularDominantDirection(s.n, s.v, s.perceptualRoughness), s.perceptualRoughness);
+  const glm::vec3 specular =
+      lookup.specular(specularDominantDirection(s.n, s.v, s.perceptualRoughness), s.perceptualRoughness);
   const glm::vec3 dfg = dfgLookup(glm::dot(s.n, s.v), s.perceptualRoughness);
   return imageLightRadiance(s, diffuse, specular, dfg);
 }

@@ -37,7 +37,8 @@ glm::dvec3 samplePyramid(const std::vector<EnvironmentImage>& pyramid, const glm
 
 // The centre direction of texel (x, y) of a W × H map.
 glm::dvec3 texelDirection(int x, int y, int width, int height) {
-  return glm::dvec3(directionFromUv({(static_cast<float>(x) + 0.5f) / static_cast<float>(width), (static_cast<float>(y) + 0.5f) / static_cast<float>(height)}));
+  return glm::dvec3(directionFromUv({(static_cast<float>(x) + 0.5f) / static_cast<float>(width),
+                                     (static_cast<float>(y) + 0.5f) / static_cast<float>(height)}));
 }
 
 // An orthonormal frame around unit n (Duff et al. 2017).
@@ -96,7 +97,8 @@ EnvironmentImage prefilterSpecular(const std::vector<EnvironmentImage>& pyramid,
           sum += p.nDotL * samplePyramid(pyramid, uvFromDirection(glm::vec3(l)), p.lod);
           weight += p.nDotL;
         }
-        out.at(x, y) = glm::vec3(weight > 0.0 ? sum / weight : samplePyramid(pyramid, uvFromDirection(glm::vec3(n)), 0.0));
+        out.at(x, y) =
+            glm::vec3(weight > 0.0 ? sum / weight : samplePyramid(pyramid, uvFromDirection(glm::vec3(n)), 0.0));
       }
     }
   });
@@ -146,8 +148,7 @@ EnvironmentImage prefilterDiffuse(const std::vector<EnvironmentImage>& pyramid, 
 std::string PrefilterSettings::key() const {
   return "diffuse " + std::to_string(diffuseWidth) + " from " + std::to_string(diffuseSourceWidth) + ", specular " +
          std::to_string(specularWidth) + " × " + std::to_string(specularLevels) + " levels from roughness " +
-         std::to_string(kEnvironmentMinRoughness) + ", " +
-         std::to_string(samplesPerTexel) + " samples";
+         std::to_string(kEnvironmentMinRoughness) + ", " + std::to_string(samplesPerTexel) + " samples";
 }
 
 std::vector<EnvironmentImage> environmentPyramid(const EnvironmentImage& source) {
@@ -178,7 +179,8 @@ PrefilteredEnvironment prefilterEnvironment(EnvironmentImage source, const Prefi
   PrefilteredEnvironment out;
   out.diffuse = prefilterDiffuse(pyramid, settings);
   for (int level = 1; level < settings.specularLevels; ++level)
-    out.specular.push_back(prefilterSpecular(pyramid, environmentLevelRoughness(level, settings.specularLevels), settings));
+    out.specular.push_back(
+        prefilterSpecular(pyramid, environmentLevelRoughness(level, settings.specularLevels), settings));
   out.background = std::move(source);
   return out;
 }

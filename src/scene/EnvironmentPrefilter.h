@@ -28,11 +28,11 @@
 namespace lenslab {
 
 struct PrefilterSettings {
-  int diffuseWidth = 64;          // the diffuse map's columns (rows: half)
-  int diffuseSourceWidth = 256;   // the diffuse sum reads the source's pyramid at most this wide
-  int specularWidth = 256;        // each specular level's columns (rows: half)
-  int specularLevels = 6;         // including level 0: roughness 0.045, 0.236, … 1
-  int samplesPerTexel = 256;      // GGX samples per specular texel
+  int diffuseWidth = 64;         // the diffuse map's columns (rows: half)
+  int diffuseSourceWidth = 256;  // the diffuse sum reads the source's pyramid at most this wide
+  int specularWidth = 256;       // each specular level's columns (rows: half)
+  int specularLevels = 6;        // including level 0: roughness 0.045, 0.236, … 1
+  int samplesPerTexel = 256;     // GGX samples per specular texel
   // Everything that changes the result, for the cache's key.
   std::string key() const;
 };

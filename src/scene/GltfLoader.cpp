@@ -37,15 +37,17 @@ namespace {
 
 // Vertices beyond ±kMaxWorldCoordinate after their node transforms: one line naming the mesh.
 void refuseFarPositions(const Scene& scene) {
-  const auto within = [](const glm::dvec3& p) { return glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxWorldCoordinate))); };
+  const auto within = [](const glm::dvec3& p) {
+    return glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxWorldCoordinate)));
+  };
   if (scene.bounds.empty() || (within(scene.bounds.min) && within(scene.bounds.max))) return;
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     for (const Vertex& v : mesh.vertices) {
       const glm::dvec3 p(instance.worldFromModel * glm::dvec4(glm::dvec3(v.position), 1.0));
       if (!within(p))
-        gltf::refuse("mesh ", instance.mesh, mesh.name.empty() ? "" : cat(" (", mesh.name, ")"), " has a vertex at (", p.x, ", ",
-                     p.y, ", ", p.z, ") in world space, beyond +-", kMaxWorldCoordinate,
+        gltf::refuse("mesh ", instance.mesh, mesh.name.empty() ? "" : cat(" (", mesh.name, ")"), " has a vertex at (",
+                     p.x, ", ", p.y, ", ", p.z, ") in world space, beyond +-", kMaxWorldCoordinate,
                      " where lenslab keeps its precision; move the scene nearer the origin or scale it down");
     }
   }
@@ -76,7 +78,9 @@ Scene load(const fs::path& file) {
       glb = glbForTinygltf(chunks, 0);  // 0: always rebuilt
     }
   }
-  const std::string_view input = !glb.empty() ? std::string_view(glb) : !escapedJson.empty() ? std::string_view(escapedJson) : std::string_view(bytes);
+  const std::string_view input = !glb.empty()           ? std::string_view(glb)
+                                 : !escapedJson.empty() ? std::string_view(escapedJson)
+                                                        : std::string_view(bytes);
   Scene scene;
   scene.files.push_back(file);
   const tinygltf::Model model = parseModel(input, binary, file.parent_path(), scene.files);

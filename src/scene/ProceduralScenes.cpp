@@ -25,8 +25,10 @@ Mesh boxMesh(const glm::dvec3& h, int material) {
     }
     // Wind each face counter-clockwise as seen from outside (from the +n side).
     const bool ccw = glm::dot(glm::cross(a, b), n) > 0.0f;
-    if (ccw) mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    else mesh.indices.insert(mesh.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
+    if (ccw)
+      mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    else
+      mesh.indices.insert(mesh.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
   }
   return mesh;
 }

@@ -16,9 +16,9 @@ Mesh boxMesh(const glm::dvec3& halfExtent, int material);
 Mesh quadMesh(double halfWidth, double halfHeight, int material);
 
 struct Marker {
-  glm::dvec3 center;   // world
-  double halfSize;     // world
-  glm::vec3 color;     // linear, unlit
+  glm::dvec3 center;  // world
+  double halfSize;    // world
+  glm::vec3 color;    // linear, unlit
 };
 
 // Small unlit cubes on a black background.

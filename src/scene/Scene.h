@@ -20,9 +20,12 @@ namespace lenslab {
 // plain integers here so that this header stays free of GL).
 enum class Wrap : int { Repeat = 10497, ClampToEdge = 33071, MirroredRepeat = 33648 };
 enum class Filter : int {
-  Nearest = 9728, Linear = 9729,
-  NearestMipmapNearest = 9984, LinearMipmapNearest = 9985,
-  NearestMipmapLinear = 9986, LinearMipmapLinear = 9987,
+  Nearest = 9728,
+  Linear = 9729,
+  NearestMipmapNearest = 9984,
+  LinearMipmapNearest = 9985,
+  NearestMipmapLinear = 9986,
+  LinearMipmapLinear = 9987,
 };
 
 struct Sampler {
@@ -67,7 +70,7 @@ struct Material {
   // may exceed 1: a light source), times the emissive texture (sRGB) where there is one. Added to
   // the shaded colour, lit or unlit.
   glm::vec3 emissive{0.0f};
-  TextureRef emissiveTexture;       // sRGB
+  TextureRef emissiveTexture;  // sRGB
   bool emits() const { return emissive != glm::vec3(0.0f); }
   // glTF 2.0 metallic-roughness, with the specification's defaults (a rough metal).
   float metallicFactor = 1.0f;
@@ -75,8 +78,8 @@ struct Material {
   TextureRef metallicRoughnessTexture;  // linear: G = roughness, B = metallic
   TextureRef occlusionTexture;          // linear: R
   float occlusionStrength = 1.0f;
-  TextureRef normalTexture;             // linear, tangent space (docs/materials.md)
-  float normalScale = 1.0f;             // scales the map's x and y before the normal is normalised
+  TextureRef normalTexture;  // linear, tangent space (docs/materials.md)
+  float normalScale = 1.0f;  // scales the map's x and y before the normal is normalised
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
@@ -86,7 +89,7 @@ struct Vertex {
   glm::vec3 position{0.0f};  // model units
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   glm::vec2 uv{0.0f};
-  glm::vec4 color{1.0f};  // COLOR_0, linear; white when absent
+  glm::vec4 color{1.0f};    // COLOR_0, linear; white when absent
   glm::vec4 tangent{0.0f};  // TANGENT (xyz unit, w = ±1 the bitangent's sign); zero when the mesh has none
   glm::vec2 uv1{0.0f};      // TEXCOORD_1
 };
@@ -119,9 +122,9 @@ constexpr double kMaxWorldCoordinate = 1e15;
 
 // A camera stored in the glTF file, with its node's placement (it looks along -Z, up +Y).
 struct SceneCamera {
-  std::string name;          // the camera's name in the file, may be empty
-  std::string nodeName;      // the name of the node that places it, may be empty
-  int gltfNode = -1;         // that node's index in the file
+  std::string name;      // the camera's name in the file, may be empty
+  std::string nodeName;  // the name of the node that places it, may be empty
+  int gltfNode = -1;     // that node's index in the file
   bool perspective = true;
   double yfovRadians = 0.0;  // perspective
   double aspectRatio = 0.0;  // perspective, 0 = not given (use the image's)
@@ -151,10 +154,10 @@ struct PunctualLight {
   LightType type = LightType::Point;
   glm::vec3 color{1.0f};  // linear
   float intensity = 1.0f;
-  double range = 0.0;     // world units; 0 = unbounded (inverse square only)
+  double range = 0.0;  // world units; 0 = unbounded (inverse square only)
   float innerConeAngleRadians = 0.0f;
-  float outerConeAngleRadians = 0.7853982f;  // π/4
-  glm::dvec3 worldPosition{0.0};             // point and spot
+  float outerConeAngleRadians = 0.7853982f;   // π/4
+  glm::dvec3 worldPosition{0.0};              // point and spot
   glm::dvec3 worldDirection{0.0, 0.0, -1.0};  // unit, the way the light shines (its node's −Z)
   int gltfNode = -1;
 };

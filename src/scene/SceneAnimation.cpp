@@ -40,9 +40,9 @@ glm::dvec4 slerp(glm::dvec4 a, glm::dvec4 b, double u) {
 glm::dvec4 hermite(const AnimationChannel& c, std::size_t k, double u) {
   const double intervalSeconds = c.keyTimesSeconds[k + 1] - c.keyTimesSeconds[k];
   const glm::dvec4& p0 = c.values[3 * k + 1];
-  const glm::dvec4 m0 = intervalSeconds * c.values[3 * k + 2];        // out-tangent of key k
+  const glm::dvec4 m0 = intervalSeconds * c.values[3 * k + 2];  // out-tangent of key k
   const glm::dvec4& p1 = c.values[3 * (k + 1) + 1];
-  const glm::dvec4 m1 = intervalSeconds * c.values[3 * (k + 1)];      // in-tangent of key k+1
+  const glm::dvec4 m1 = intervalSeconds * c.values[3 * (k + 1)];  // in-tangent of key k+1
   const double u2 = u * u, u3 = u2 * u;
   return (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 + (u3 - u2) * m1;
 }
@@ -66,7 +66,8 @@ glm::dvec4 sample(const AnimationChannel& c, double seconds) {
     switch (c.interpolation) {
       case Interpolation::Step: v = keyValue(k); break;
       case Interpolation::Linear:
-        v = c.path == AnimationPath::Rotation ? slerp(keyValue(k), keyValue(k + 1), u) : glm::mix(keyValue(k), keyValue(k + 1), u);
+        v = c.path == AnimationPath::Rotation ? slerp(keyValue(k), keyValue(k + 1), u)
+                                              : glm::mix(keyValue(k), keyValue(k + 1), u);
         break;
       case Interpolation::CubicSpline: v = hermite(c, k, u); break;
     }
@@ -96,7 +97,9 @@ std::string nodeName(const AnimatedNode& node) {
 
 // The first vertex beyond ±kMaxWorldCoordinate, searched only when the bounds say there is one.
 void refuseFarVertices(const Scene& scene, double seconds) {
-  const auto within = [](const glm::dvec3& p) { return glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxWorldCoordinate))); };
+  const auto within = [](const glm::dvec3& p) {
+    return glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxWorldCoordinate)));
+  };
   if (scene.bounds.empty() || (within(scene.bounds.min) && within(scene.bounds.max))) return;
   for (const AnimatedNode& node : scene.animation.nodes)
     for (const int i : node.instances) {
@@ -104,15 +107,17 @@ void refuseFarVertices(const Scene& scene, double seconds) {
       for (const Vertex& v : scene.meshes[toIndex(instance.mesh)].vertices) {
         const glm::dvec3 p(instance.worldFromModel * glm::dvec4(glm::dvec3(v.position), 1.0));
         if (!within(p))
-          throw InputError(cat(scene.source, ": at ", seconds, " s the animation moves ", nodeName(node), " so that a vertex lies at (",
-                               p.x, ", ", p.y, ", ", p.z, "), beyond +-", kMaxWorldCoordinate,
-                               " where lenslab keeps its precision; capture a shorter time range or fix the animation"));
+          throw InputError(
+              cat(scene.source, ": at ", seconds, " s the animation moves ", nodeName(node),
+                  " so that a vertex lies at (", p.x, ", ", p.y, ", ", p.z, "), beyond +-", kMaxWorldCoordinate,
+                  " where lenslab keeps its precision; capture a shorter time range or fix the animation"));
       }
     }
 }
 
 // A KHR_lights_punctual light follows its node: it sits at the node's origin and shines along its −Z.
-void placeLight(const Scene& scene, PunctualLight& light, const glm::dmat4& worldFromNode, const AnimatedNode& node, double seconds) {
+void placeLight(const Scene& scene, PunctualLight& light, const glm::dmat4& worldFromNode, const AnimatedNode& node,
+                double seconds) {
   light.worldPosition = glm::dvec3(worldFromNode[3]);
   const glm::dvec3 shines(worldFromNode * glm::dvec4(0.0, 0.0, -1.0, 0.0));
   const double length = glm::length(shines);
@@ -120,8 +125,9 @@ void placeLight(const Scene& scene, PunctualLight& light, const glm::dmat4& worl
     light.worldDirection = shines / length;
   } else if (light.type != LightType::Point) {
     // A point light shines every way; the others need a direction, as the loader required at rest.
-    throw InputError(cat(scene.source, ": at ", seconds, " s the animation scales ", nodeName(node),
-                         "'s -Z to nothing, so its light has no direction; capture a shorter time range or fix the animation"));
+    throw InputError(
+        cat(scene.source, ": at ", seconds, " s the animation scales ", nodeName(node),
+            "'s -Z to nothing, so its light has no direction; capture a shorter time range or fix the animation"));
   }
 }
 
@@ -182,7 +188,8 @@ void poseScene(Scene& scene, double seconds) {
   std::vector<glm::dmat4> worldFromNode(animation.nodes.size());
   for (std::size_t i = 0; i < animation.nodes.size(); ++i) {
     const AnimatedNode& node = animation.nodes[i];
-    const glm::dmat4 parentFromNode = trs[i].animated ? composeTrs(trs[i].t, trs[i].r, trs[i].s) : node.parentFromNodeAtRest;
+    const glm::dmat4 parentFromNode =
+        trs[i].animated ? composeTrs(trs[i].t, trs[i].r, trs[i].s) : node.parentFromNodeAtRest;
     assert(node.parent < static_cast<int>(i));
     worldFromNode[i] = node.parent >= 0 ? worldFromNode[toIndex(node.parent)] * parentFromNode : parentFromNode;
     if (!finite(worldFromNode[i]))

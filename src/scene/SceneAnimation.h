@@ -27,9 +27,9 @@ struct Scene;
 // A node of the drawn scene, as the loader placed it. Listed parents first (the placement order),
 // so one pass down the list composes world transforms.
 struct AnimatedNode {
-  int parent = -1;         // index into SceneAnimation::nodes; -1 for a root of the drawn scene
-  int gltfNode = -1;       // index in the file, for messages
-  std::string name;        // the node's name in the file, may be empty
+  int parent = -1;    // index into SceneAnimation::nodes; -1 for a root of the drawn scene
+  int gltfNode = -1;  // index in the file, for messages
+  std::string name;   // the node's name in the file, may be empty
   // At rest: the node's local transform as the loader composed it (its matrix, or T * R * S).
   glm::dmat4 parentFromNodeAtRest{1.0};
   // Its T, R and S at rest (identity parts for a node given by a matrix, which glTF forbids
@@ -68,9 +68,9 @@ struct AnimationClip {
 constexpr int kAllClips = -1;
 
 struct SceneAnimation {
-  std::vector<AnimatedNode> nodes;  // empty when no clip moves anything
-  std::vector<AnimationClip> clips; // every animation of the file, in the file's order
-  int playing = 0;                  // index into clips, or kAllClips; poseScene plays these
+  std::vector<AnimatedNode> nodes;   // empty when no clip moves anything
+  std::vector<AnimationClip> clips;  // every animation of the file, in the file's order
+  int playing = 0;                   // index into clips, or kAllClips; poseScene plays these
   // True when what plays moves nothing (no clips, or the playing clip moves no drawn node).
   bool empty() const;
   // True when some clip, playing or not, moves a drawn node.

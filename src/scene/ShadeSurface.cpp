@@ -36,7 +36,9 @@ class ShadeSurfaceGlsl {
   float ambientRadiance() const { return lighting_->ambient; }
   bool environmentLit() const { return lighting_->environment; }
   vec3 environmentDiffuseAt(vec3 n) const { return fetch_->environmentDiffuse(n); }
-  vec3 environmentSpecularAt(vec3 r, float perceptualRoughness) const { return fetch_->environmentSpecular(r, perceptualRoughness); }
+  vec3 environmentSpecularAt(vec3 r, float perceptualRoughness) const {
+    return fetch_->environmentSpecular(r, perceptualRoughness);
+  }
   vec3 dfgAt(float nv, float perceptualRoughness) const { return dfgLookup(nv, perceptualRoughness); }
 
  public:

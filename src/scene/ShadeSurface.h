@@ -14,21 +14,21 @@ namespace lenslab {
 
 // What the shading takes of a material (shade_surface.glsl's SurfaceMaterial: the same fields).
 struct SurfaceMaterial {
-  glm::vec4 baseColorFactor{1.0f};   // linear RGBA
+  glm::vec4 baseColorFactor{1.0f};  // linear RGBA
   bool hasBaseColorTexture = false;
-  bool alphaMask = false;            // alphaMode MASK: cut out where alpha < alphaCutoff
+  bool alphaMask = false;  // alphaMode MASK: cut out where alpha < alphaCutoff
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
   bool unlit = false;
   float metallicFactor = 1.0f;
-  float roughnessFactor = 1.0f;      // perceptual
+  float roughnessFactor = 1.0f;  // perceptual
   bool hasMetallicRoughnessTexture = false;
   bool hasOcclusionTexture = false;
   float occlusionStrength = 1.0f;
-  bool normalMapped = false;         // a normal texture, and tangents to carry it
+  bool normalMapped = false;  // a normal texture, and tangents to carry it
   float normalScale = 1.0f;
-  glm::vec3 emissive{0.0f};          // emissiveFactor × strength, linear
-  bool hasEmissiveTexture = false;   // and an emissive factor that is not 0
+  glm::vec3 emissive{0.0f};         // emissiveFactor × strength, linear
+  bool hasEmissiveTexture = false;  // and an emissive factor that is not 0
 };
 
 // The material as both renderers shade it; `hasTangents`: whether its mesh has tangents (its own
@@ -38,11 +38,11 @@ SurfaceMaterial surfaceMaterial(const Material& material, bool hasTangents);
 // The geometry at a point, interpolated over its triangle (shade_surface.glsl's SurfacePoint).
 struct SurfacePoint {
   glm::vec4 vertexColor{1.0f};
-  glm::vec3 normal{0.0f, 0.0f, 1.0f};  // vertex normal, world axes, not normalised
-  glm::vec3 tangent{0.0f};             // vertex tangent xyz, world axes (for a normal map)
-  float handedness = 1.0f;             // the tangent's w × the sign of the instance's determinant
-  bool frontFacing = true;             // as GL decides it (winding, mirrored instances turned)
-  glm::vec3 position{0.0f};            // relative to the lights' origin
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};        // vertex normal, world axes, not normalised
+  glm::vec3 tangent{0.0f};                   // vertex tangent xyz, world axes (for a normal map)
+  float handedness = 1.0f;                   // the tangent's w × the sign of the instance's determinant
+  bool frontFacing = true;                   // as GL decides it (winding, mirrored instances turned)
+  glm::vec3 position{0.0f};                  // relative to the lights' origin
   glm::vec3 towardViewer{0.0f, 0.0f, 1.0f};  // unit
 };
 

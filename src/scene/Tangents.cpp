@@ -58,8 +58,10 @@ struct TriangleFrame {
 };
 
 TriangleFrame triangleFrame(const Vertex& a, const Vertex& b, const Vertex& c, int texCoord) {
-  const glm::dvec3 e1 = glm::dvec3(b.position) - glm::dvec3(a.position), e2 = glm::dvec3(c.position) - glm::dvec3(a.position);
-  const glm::dvec2 d1 = texCoordOf(b, texCoord) - texCoordOf(a, texCoord), d2 = texCoordOf(c, texCoord) - texCoordOf(a, texCoord);
+  const glm::dvec3 e1 = glm::dvec3(b.position) - glm::dvec3(a.position),
+                   e2 = glm::dvec3(c.position) - glm::dvec3(a.position);
+  const glm::dvec2 d1 = texCoordOf(b, texCoord) - texCoordOf(a, texCoord),
+                   d2 = texCoordOf(c, texCoord) - texCoordOf(a, texCoord);
   const double det = d1.x * d2.y - d2.x * d1.y;
   TriangleFrame f;
   if (!(det != 0.0) || !std::isfinite(det)) return f;
@@ -102,7 +104,8 @@ TangentStats generateTangents(Mesh& mesh, int texCoord) {
   for (std::size_t v = 0; v < n; ++v) {
     const Vertex& x = mesh.vertices[v];
     const glm::vec2 uv = texCoord == 1 ? x.uv1 : x.uv;
-    const std::array<float, 8> key{x.position.x, x.position.y, x.position.z, x.normal.x, x.normal.y, x.normal.z, uv.x, uv.y};
+    const std::array<float, 8> key{x.position.x, x.position.y, x.position.z, x.normal.x,
+                                   x.normal.y,   x.normal.z,   uv.x,         uv.y};
     groupOf[v] = groups.emplace(key, groups.size()).first->second;
   }
 

@@ -8,8 +8,8 @@
 
 namespace lenslab::view {
 
-std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<LensSample>& samples,
-                                        int samplesDone, const DiagramStyle& style) {
+std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<LensSample>& samples, int samplesDone,
+                                        const DiagramStyle& style) {
   const DiagramColors& colors = style.colors;
   std::vector<DiagramLine> lines;
   const ViewSpec& s = camera.view;
@@ -26,8 +26,8 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
 
   // The window on the view plane, and its centre.
   const Window& w = s.window;
-  const glm::dvec3 corners[4] = {onViewPlane(w.umin, w.vmin), onViewPlane(w.umax, w.vmin),
-                                 onViewPlane(w.umax, w.vmax), onViewPlane(w.umin, w.vmax)};
+  const glm::dvec3 corners[4] = {onViewPlane(w.umin, w.vmin), onViewPlane(w.umax, w.vmin), onViewPlane(w.umax, w.vmax),
+                                 onViewPlane(w.umin, w.vmax)};
   for (int i = 0; i < 4; ++i) add(corners[i], corners[(i + 1) % 4], colors.window);
   const glm::dvec3 centre = onViewPlane(w.center().x, w.center().y);
   add(centre - mark * b.u, centre + mark * b.u, colors.window);
@@ -48,7 +48,8 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
 
   // The aperture in the PRP's plane (parallel to the view plane): a disk, or the blades' shape.
   const double r = camera.lens.apertureRadius * style.apertureScale;
-  const std::vector<glm::dvec2> outline = apertureOutline(camera.lens.aperture, camera.lens.aperture.blades == 0 ? 64 : 16);
+  const std::vector<glm::dvec2> outline =
+      apertureOutline(camera.lens.aperture, camera.lens.aperture.blades == 0 ? 64 : 16);
   for (std::size_t i = 0; i < outline.size(); ++i) {
     const glm::dvec2 a = outline[i], c = outline[(i + 1) % outline.size()];
     add(prp + r * (a.x * b.u + a.y * b.v), prp + r * (c.x * b.u + c.y * b.v), colors.aperture);
@@ -56,7 +57,8 @@ std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<
   // The sample points: the PRP moves to each of them for one scene pass.
   const double dot = std::min(0.06 * r, mark);
   auto lensPoint = [&](const LensSample& sample) {
-    const glm::dvec2 p = camera.lens.aperture.isRound() ? sample.lens : apertureFromDisk(sample.lens, camera.lens.aperture);
+    const glm::dvec2 p =
+        camera.lens.aperture.isRound() ? sample.lens : apertureFromDisk(sample.lens, camera.lens.aperture);
     return prp + r * (p.x * b.u + p.y * b.v);
   };
   for (std::size_t i = 0; i < samples.size(); ++i) {

@@ -39,8 +39,8 @@ struct DiagramStyle {
 
 // `samples` are the planned aperture samples (on the unit disk), the first `samplesDone` of them
 // already accumulated.
-std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<LensSample>& samples,
-                                        int samplesDone, const DiagramStyle& style = {});
+std::vector<DiagramLine> lectureDiagram(const Camera& camera, const std::vector<LensSample>& samples, int samplesDone,
+                                        const DiagramStyle& style = {});
 
 // An aperture scale that draws the disk at least `fraction` of the window's height across (1 when
 // it is already that large, or for a pinhole).

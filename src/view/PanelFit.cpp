@@ -34,7 +34,8 @@ void PanelFit::checkText(const char* text, float framePx) {
 
 void PanelFit::checkFields(const char* what, const double* values, int fields, const char* format) {
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float field = (ImGui::CalcItemWidth() - static_cast<float>(fields - 1) * style.ItemInnerSpacing.x) / static_cast<float>(fields);
+  const float field =
+      (ImGui::CalcItemWidth() - static_cast<float>(fields - 1) * style.ItemInnerSpacing.x) / static_cast<float>(fields);
   float worst = 0.0f;
   for (int i = 0; i < fields; ++i) {
     char text[64];

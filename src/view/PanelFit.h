@@ -27,7 +27,7 @@ class PanelFit {
   bool labelsAbove = false;
   void endFrame();  // keeps the frame's count when it is the largest so far
 
-  int clippedMost() const { return most_; }            // the most cut items in one frame
+  int clippedMost() const { return most_; }                   // the most cut items in one frame
   const std::string& firstClipped() const { return first_; }  // the first cut item seen, for the report
   float widestOverflowPx() const { return overflowPx_; }      // how far the worst ran past the edge
 

@@ -22,7 +22,9 @@ bool dragDoubles(PanelFit& fit, const char* label, double* v, int n, float speed
     return ImGui::DragScalarN(id, ImGuiDataType_Double, v, n, speed, nullptr, nullptr, format);
   });
 }
-bool dragDouble3(PanelFit& fit, const char* label, glm::dvec3& v, float speed) { return dragDoubles(fit, label, &v.x, 3, speed); }
+bool dragDouble3(PanelFit& fit, const char* label, glm::dvec3& v, float speed) {
+  return dragDoubles(fit, label, &v.x, 3, speed);
+}
 bool dragDouble(PanelFit& fit, const char* label, double& v, float speed, double lo, double hi, const char* format) {
   return labelled(fit, label, [&](const char* id) {
     fit.checkFields(label, &v, 1, format);

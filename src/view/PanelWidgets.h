@@ -36,7 +36,8 @@ bool button(PanelFit& fit, const char* label);
 // Numbers in fields, each checked to show whole in its field.
 bool dragDoubles(PanelFit& fit, const char* label, double* v, int n, float speed, const char* format = "%.4g");
 bool dragDouble3(PanelFit& fit, const char* label, glm::dvec3& v, float speed);
-bool dragDouble(PanelFit& fit, const char* label, double& v, float speed, double lo, double hi, const char* format = "%.4g");
+bool dragDouble(PanelFit& fit, const char* label, double& v, float speed, double lo, double hi,
+                const char* format = "%.4g");
 // Prose and figures, wrapped at the panel's edge: nothing to cut.
 void wrapped(const std::string& text);
 void wrappedColoured(const ImVec4& colour, const std::string& text);

@@ -32,7 +32,8 @@ struct GlfwLibrary {
   GlfwLibrary() {
     glfwSetErrorCallback(onGlfwError);  // first, so that a failing glfwInit says why
     if (glfwInit() != GLFW_TRUE)
-      throw std::runtime_error(cat("cannot start GLFW (", lastGlfwError(), "); is DISPLAY set? Under CI: Xvfb :99 & DISPLAY=:99"));
+      throw std::runtime_error(
+          cat("cannot start GLFW (", lastGlfwError(), "); is DISPLAY set? Under CI: Xvfb :99 & DISPLAY=:99"));
   }
   ~GlfwLibrary() { glfwTerminate(); }
   GlfwLibrary(const GlfwLibrary&) = delete;
@@ -48,7 +49,8 @@ struct WindowOwner {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: size in screen coordinates
     window = glfwCreateWindow(width, height, "lenslab view", nullptr, nullptr);
-    if (!window) throw std::runtime_error(cat("cannot open a window with an OpenGL 4.5 core context (", lastGlfwError(), ")"));
+    if (!window)
+      throw std::runtime_error(cat("cannot open a window with an OpenGL 4.5 core context (", lastGlfwError(), ")"));
   }
   ~WindowOwner() { glfwDestroyWindow(window); }
   WindowOwner(const WindowOwner&) = delete;
@@ -82,14 +84,16 @@ int runView(const ViewOptions& o) {
   if (!o.screenshot.empty() && o.frames == 0) throw InputError("--screenshot needs --frames N (scripted mode)");
   if (!o.statsFile.empty() && o.frames == 0) throw InputError("--stats needs --frames N (scripted mode)");
   if (!o.saveCamera.empty() && o.frames == 0)
-    throw InputError("--save-camera needs --frames N (scripted mode); in the window, the panel's Save camera writes it");
+    throw InputError(
+        "--save-camera needs --frames N (scripted mode); in the window, the panel's Save camera writes it");
   const PlanOptions planOptions = toPlanOptions(o.lens);
   const auto [scenePath, cameraPath] =
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   applyEnvironment(scene, o.environment, std::cerr);
-  for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";
+  for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds))
+    std::cerr << "lenslab: warning: " << w << "\n";
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = o.width && o.height ? static_cast<double>(*o.width) / *o.height : 0.0;
   const SelectedCamera selected = chooseCamera(scene, cameraPath, o.camera, requestedAspect);

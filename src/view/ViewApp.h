@@ -18,25 +18,25 @@ namespace lenslab::view {
 struct ViewOptions {
   std::string scene;
   std::string cameraFile;
-  std::optional<int> width;           // the rendered image, as in `render`
+  std::optional<int> width;  // the rendered image, as in `render`
   std::optional<int> height;
   LensOptions lens;
   CameraOptions camera;               // lens, pose, glTF camera and animation clip over the base camera
   std::optional<double> timeSeconds;  // pose the playing animation at this time; none = the rest pose
   std::optional<glm::vec3> background;
-  int frames = 0;                     // > 0: scripted; run at least this many frames, then exit
-  std::string screenshot;             // written at the end of a scripted run (.png or .exr)
-  bool noUi = false;                  // no panel, no outside view: the screenshot is the image alone
-  bool outsideView = true;            // start with the outside view shown
-  bool showBaseline = false;          // start showing the post-process gather baseline
-  std::optional<glm::dvec2> click;    // a scripted click in the image (image pixels)
-  std::string statsFile;              // what a scripted run did, as JSON
-  std::string saveCamera;             // scripted: the camera at the end, as the panel's "Save camera" writes it
+  int frames = 0;                        // > 0: scripted; run at least this many frames, then exit
+  std::string screenshot;                // written at the end of a scripted run (.png or .exr)
+  bool noUi = false;                     // no panel, no outside view: the screenshot is the image alone
+  bool outsideView = true;               // start with the outside view shown
+  bool showBaseline = false;             // start showing the post-process gather baseline
+  std::optional<glm::dvec2> click;       // a scripted click in the image (image pixels)
+  std::string statsFile;                 // what a scripted run did, as JSON
+  std::string saveCamera;                // scripted: the camera at the end, as the panel's "Save camera" writes it
   std::optional<glm::ivec2> windowSize;  // window size in screen coordinates
-  double frameBudgetMs = 16.0;        // accumulation work per frame (at least one sample)
-  ExposureRequest exposure;           // the display's starting exposure, as render's (io/ToneMap.h)
-  std::string viewTransform = "none";  // and view transform; the panel changes both
-  EnvironmentRequest environment;     // --environment and its intensity and rotation
+  double frameBudgetMs = 16.0;           // accumulation work per frame (at least one sample)
+  ExposureRequest exposure;              // the display's starting exposure, as render's (io/ToneMap.h)
+  std::string viewTransform = "none";    // and view transform; the panel changes both
+  EnvironmentRequest environment;        // --environment and its intensity and rotation
 };
 
 // Returns the exit code; throws InputError for bad input (files, cameras, options) and

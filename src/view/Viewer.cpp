@@ -32,8 +32,10 @@ double msSince(Clock::time_point t) { return std::chrono::duration<double, std::
 // The largest rectangle of aspect `aspect` (width / height) centred in `area`.
 WindowRect fitted(const WindowRect& area, double aspect) {
   WindowRect r = area;
-  if (area.width / std::max(area.height, 1.0) > aspect) r.width = area.height * aspect;
-  else r.height = area.width / aspect;
+  if (area.width / std::max(area.height, 1.0) > aspect)
+    r.width = area.height * aspect;
+  else
+    r.height = area.width / aspect;
   r.x = area.x + 0.5 * (area.width - r.width);
   r.y = area.y + 0.5 * (area.height - r.height);
   return r;
@@ -49,7 +51,8 @@ Image readWindow(int widthPx, int heightPx) {
 }
 
 void printFocus(double distance, glm::dvec2 pixel) {
-  std::cout << "lenslab: focus distance " << cat(distance) << " (pixel " << cat(pixel.x) << "," << cat(pixel.y) << ")" << std::endl;
+  std::cout << "lenslab: focus distance " << cat(distance) << " (pixel " << cat(pixel.x) << "," << cat(pixel.y) << ")"
+            << std::endl;
 }
 
 // The diagram's lines as the line drawer takes them.
@@ -64,8 +67,13 @@ std::vector<LineSegment> segments(const std::vector<DiagramLine>& lines) {
 
 Viewer::Viewer(const ViewOptions& options, GLFWwindow* window, const Scene& scene, EditableCamera camera,
                ImageSize size, PlanOptions planOptions, DisplaySettings display)
-    : options_(options), window_(window), model_(scene, std::move(camera), size, planOptions, options.frameBudgetMs, std::cerr),
-      renderer_(scene), display_(std::move(display)), showBaseline_(options.showBaseline && !options.noUi), showOutside_(options.outsideView && !options.noUi) {
+    : options_(options),
+      window_(window),
+      model_(scene, std::move(camera), size, planOptions, options.frameBudgetMs, std::cerr),
+      renderer_(scene),
+      display_(std::move(display)),
+      showBaseline_(options.showBaseline && !options.noUi),
+      showOutside_(options.outsideView && !options.noUi) {
   float xs = 1.0f, ys = 1.0f;
   glfwGetWindowContentScale(window_, &xs, &ys);
   uiScale_ = std::max(1.0f, xs);
@@ -119,7 +127,9 @@ void Viewer::handleInput() {
   const ImVec2 mouse = io.MousePos;
   if (!io.WantCaptureMouse) {
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
-      pressRegion_ = imageRect_.contains(mouse) ? Region::Image : outsideRect_.contains(mouse) ? Region::Outside : Region::None;
+      pressRegion_ = imageRect_.contains(mouse)     ? Region::Image
+                     : outsideRect_.contains(mouse) ? Region::Outside
+                                                    : Region::None;
       dragged_ = false;
     }
     constexpr double kRadiansPerPoint = 0.005;
@@ -221,8 +231,10 @@ void Viewer::draw() {
   }
   gl::clearDefaultFramebuffer(fbWidth_, fbHeight_, {0.08f, 0.08f, 0.09f, 1.0f});
   const gl::PixelRect imageRect = toPixels(imageRect_);
-  if (showBaseline_ && baselineValid_) imageDrawer_.draw(baselineTexture_, imageRect, 1.0f, display_.encoding);
-  else if (resolved_) imageDrawer_.draw(*resolved_, imageRect, 1.0f, display_.encoding);
+  if (showBaseline_ && baselineValid_)
+    imageDrawer_.draw(baselineTexture_, imageRect, 1.0f, display_.encoding);
+  else if (resolved_)
+    imageDrawer_.draw(*resolved_, imageRect, 1.0f, display_.encoding);
   if (showOutside_) drawOutside(toPixels(outsideRect_));
   gl::bindDefaultFramebuffer(fbWidth_, fbHeight_);  // for the panel
 }
@@ -250,7 +262,8 @@ void Viewer::finishScripted() {
     j["framebuffer"] = {fbWidth_, fbHeight_};
     j["renderer"] = currentRenderer();
     j["samples_done"] = renderer_.samplesDone();
-    j["samples_planned"] = renderer_.adaptive() ? model_.plan().apertureSamples : renderer_.samplesPlanned();  // per-tile: the cap
+    j["samples_planned"] =
+        renderer_.adaptive() ? model_.plan().apertureSamples : renderer_.samplesPlanned();  // per-tile: the cap
     j["samples_why"] = model_.plan().samplesWhy;
     if (renderer_.adaptive()) {
       const FrameEstimate e = renderer_.estimate();
@@ -293,8 +306,10 @@ int Viewer::run() {
   if (options_.click) focusAt(*options_.click, "--click");
   while (!glfwWindowShouldClose(window_)) {
     const bool converged = renderer_.done();
-    if (!scripted() && converged && !model_.needsRestart()) glfwWaitEventsTimeout(0.05);  // idle: no busy loop
-    else glfwPollEvents();
+    if (!scripted() && converged && !model_.needsRestart())
+      glfwWaitEventsTimeout(0.05);  // idle: no busy loop
+    else
+      glfwPollEvents();
     layout();
     if (!scripted() && (glfwGetWindowAttrib(window_, GLFW_ICONIFIED) || fbWidth_ == 0 || fbHeight_ == 0)) {
       glfwWaitEvents();  // minimised: no work until something happens

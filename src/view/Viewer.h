@@ -86,7 +86,7 @@ class Viewer {
 
   // Frame times, for --stats.
   int frames_ = 0;
-  double frameMsMax_ = 0.0;       // the slowest frame (input to panel drawn)
+  double frameMsMax_ = 0.0;  // the slowest frame (input to panel drawn)
   double frameMsSum_ = 0.0;
 
   // The post-process baseline, for comparison.
@@ -108,7 +108,7 @@ class Viewer {
   Region pressRegion_ = Region::None;
   bool dragged_ = false;
 
-  PanelFit fit_;  // text cut off on the panel's right, counted each frame (--stats)
+  PanelFit fit_;                                // text cut off on the panel's right, counted each frame (--stats)
   std::unique_ptr<ProgressReporter> progress_;  // scripted runs: samples done, in a log
 
   bool saveWindowPending_ = false;

@@ -75,8 +75,14 @@ Camera OutsideOrbit::cameraFor(const Camera& c, double aspect) const {
 
 ViewerModel::ViewerModel(const Scene& scene, EditableCamera camera, ImageSize size, PlanOptions planOptions,
                          double frameBudgetMs, std::ostream& errorLog)
-    : scene_(scene), errorLog_(errorLog), size_(size), planOptions_(planOptions), cam_(std::move(camera)),
-      lastGood_(cam_), baseSource_(cam_.camera.source), budget_(frameBudgetMs) {}
+    : scene_(scene),
+      errorLog_(errorLog),
+      size_(size),
+      planOptions_(planOptions),
+      cam_(std::move(camera)),
+      lastGood_(cam_),
+      baseSource_(cam_.camera.source),
+      budget_(frameBudgetMs) {}
 
 void ViewerModel::reportError(const std::string& message) {
   error_ = message;
@@ -218,9 +224,7 @@ void ViewerModel::restart() {
   dirty_ = false;
 }
 
-double ViewerModel::diagramApertureScale() const {
-  return enlargeAperture_ ? readableApertureScale(cam_.camera) : 1.0;
-}
+double ViewerModel::diagramApertureScale() const { return enlargeAperture_ ? readableApertureScale(cam_.camera) : 1.0; }
 
 std::vector<DiagramLine> ViewerModel::diagram(const std::vector<LensSample>& samples, int samplesDone) const {
   DiagramStyle style;

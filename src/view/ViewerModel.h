@@ -69,8 +69,8 @@ class ViewerModel {
  public:
   // `scene` must outlive the model. Errors are written to `errorLog` as one line each, as well as
   // kept for the panel.
-  ViewerModel(const Scene& scene, EditableCamera camera, ImageSize size, PlanOptions planOptions,
-              double frameBudgetMs, std::ostream& errorLog);
+  ViewerModel(const Scene& scene, EditableCamera camera, ImageSize size, PlanOptions planOptions, double frameBudgetMs,
+              std::ostream& errorLog);
 
   const EditableCamera& camera() const { return cam_; }
   // The camera as rendered: its open near/far fitted to the scene (camera/DepthRange.h).
@@ -92,12 +92,12 @@ class ViewerModel {
   // distance per step. Both scale with the scene as the camera sees it.
   void fly(glm::dvec3 direction, double seconds, bool fast);
   void moveForward(double wheelSteps);
-  void editLecture(const Camera& camera);  // a lecture-form edit: the physical form is dropped
-  void refocus(double distance);           // keeps the field of view; invalid: reported, ignored
+  void editLecture(const Camera& camera);             // a lecture-form edit: the physical form is dropped
+  void refocus(double distance);                      // keeps the field of view; invalid: reported, ignored
   void editPhysical(const PhysicalCamera& physical);  // keeps the lens effects and calibrated size
   // A perspective camera with the PRP over the window centre can be described as a lens.
   bool canDescribeAsLens() const;
-  void describeAsLens();  // a 35 mm-wide sensor
+  void describeAsLens();                             // a 35 mm-wide sensor
   void editLensEffects(const LensEffects& effects);  // invalid: reported, ignored
   void setPlanOptions(const PlanOptions& options);
   // Focuses on what image pixel `pixel` shows; returns the new focus distance. Throws InputError
@@ -137,7 +137,7 @@ class ViewerModel {
   EditableCamera lastGood_;  // what to go back to when an edit makes the camera invalid
   std::string baseSource_;   // where the camera came from, before any click
   FramePlan plan_;
-  bool dirty_ = true;        // the accumulation must restart
+  bool dirty_ = true;  // the accumulation must restart
   std::optional<double> focusDistance_;
   std::string error_;
   SampleBudget budget_;

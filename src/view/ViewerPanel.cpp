@@ -4,7 +4,6 @@
 // (ViewerModel.h), which checks them and marks the accumulation for a restart.
 #include "view/Viewer.h"
 
-
 #include "camera/LensMap.h"
 #include "camera/Projection.h"
 #include "core/Text.h"
@@ -29,7 +28,8 @@ void Viewer::sectionProgress() {
     const double target = model_.plan().adaptive->targetPsnrDb;
     const std::string overlay = cat(std::round(e.psnrDb * 10.0) / 10.0, " dB of ", target, " dB (estimate)");
     fit_.checkText(overlay.c_str(), 2.0f * ImGui::GetStyle().FramePadding.x);
-    ImGui::ProgressBar(static_cast<float>(std::clamp(e.psnrDb / target, 0.0, 1.0)), ImVec2(-FLT_MIN, 0), overlay.c_str());
+    ImGui::ProgressBar(static_cast<float>(std::clamp(e.psnrDb / target, 0.0, 1.0)), ImVec2(-FLT_MIN, 0),
+                       overlay.c_str());
     wrapped(cat(std::round(e.meanSamples * 10.0) / 10.0, " samples per pixel (", e.minSamples, " to ", e.maxSamples,
                 " per tile), ", e.tilesActive, " of ", e.tiles, " tiles going, round ", e.rounds));
     if (renderer_.done() && !e.targetMet) wrappedColoured(amber, "stopped at max samples short of the target");
@@ -37,18 +37,23 @@ void Viewer::sectionProgress() {
     const int done = renderer_.samplesDone(), planned = renderer_.samplesPlanned();
     const std::string overlay = cat(done, " / ", planned, " samples");
     fit_.checkText(overlay.c_str(), 2.0f * ImGui::GetStyle().FramePadding.x);
-    ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0), overlay.c_str());
+    ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(std::max(planned, 1)), ImVec2(-FLT_MIN, 0),
+                       overlay.c_str());
   }
   const SampleBudget& budget = model_.budget();
   char text[160];
-  std::snprintf(text, sizeof text, "%.2f ms per sample, %.0f ms accumulated", budget.msPerSample(), budget.accumulationMs());
+  std::snprintf(text, sizeof text, "%.2f ms per sample, %.0f ms accumulated", budget.msPerSample(),
+                budget.accumulationMs());
   wrapped(text);
-  if (budget.convergedAfterMs() >= 0.0) std::snprintf(text, sizeof text, "converged %.0f ms after the last change", budget.convergedAfterMs());
-  else std::snprintf(text, sizeof text, "converging (%.1f fps)", static_cast<double>(ImGui::GetIO().Framerate));
+  if (budget.convergedAfterMs() >= 0.0)
+    std::snprintf(text, sizeof text, "converged %.0f ms after the last change", budget.convergedAfterMs());
+  else
+    std::snprintf(text, sizeof text, "converging (%.1f fps)", static_cast<double>(ImGui::GetIO().Framerate));
   wrapped(text);
   if (showBaseline_) wrappedColoured(amber, cat("showing the post-process baseline (", baselineTaps_, " taps)"));
   const Camera& c = model_.camera().camera;
-  wrapped(cat("image ", model_.size().widthPx, " x ", model_.size().heightPx, "; focus distance ", number(c.focusDistance())));
+  wrapped(cat("image ", model_.size().widthPx, " x ", model_.size().heightPx, "; focus distance ",
+              number(c.focusDistance())));
 }
 
 void Viewer::sectionLecture() {
@@ -58,7 +63,8 @@ void Viewer::sectionLecture() {
   const float step = static_cast<float>(0.005 * std::max(1.0, s.prp.z));
   bool changed = false;
   int projection = s.projection == Projection::Perspective ? 0 : 1;
-  if (labelled(fit_, "projection", [&](const char* id) { return ImGui::Combo(id, &projection, "perspective\0parallel\0"); })) {
+  if (labelled(fit_, "projection",
+               [&](const char* id) { return ImGui::Combo(id, &projection, "perspective\0parallel\0"); })) {
     s.projection = projection == 0 ? Projection::Perspective : Projection::Parallel;
     if (s.projection == Projection::Parallel && std::isinf(s.farDistance)) s.farDistance = 1000.0 * s.prp.z;
     if (s.projection == Projection::Parallel && c.focusAtInfinity()) c.inverseFocusOffPlane.reset();
@@ -95,7 +101,8 @@ void Viewer::sectionMatrices() {
   }
   matrixTable(fit_, "viewFromWorld", viewFromWorld(s));
   matrixTable(fit_, "eyeFromView", eyeFromView(s));
-  if (s.projection == Projection::Perspective) matrixTable(fit_, "lecture perspective (1/f)", lecturePerspective(s.prp.z));
+  if (s.projection == Projection::Perspective)
+    matrixTable(fit_, "lecture perspective (1/f)", lecturePerspective(s.prp.z));
   matrixTable(fit_, "clipFromEye (reverse-Z)", clipFromEye(s));
   matrixTable(fit_, "clipFromWorld", clipFromWorld(s));
 }
@@ -109,13 +116,15 @@ void Viewer::sectionCompare() {
   }
   if (checkbox(fit_, "outside view (the diagram)", &showOutside_)) outsideDirty_ = true;
   if (showOutside_) {
-    wrapped("The lecture's diagram. Yellow: PRP. White: window on the view plane (plane of focus). Grey: view volume. "
-            "Cyan: aperture; orange: samples done. Red: rays through the window centre.");
+    wrapped(
+        "The lecture's diagram. Yellow: PRP. White: window on the view plane (plane of focus). Grey: view volume. "
+        "Cyan: aperture; orange: samples done. Red: rays through the window centre.");
     bool enlarge = model_.enlargeAperture();
     if (checkbox(fit_, "enlarge the aperture", &enlarge)) model_.setEnlargeAperture(enlarge);
     const Camera& c = model_.camera().camera;
     if (enlarge && !c.lens.isPinhole())
-      wrapped(cat("aperture drawn x", std::round(model_.diagramApertureScale()), " (radius ", number(c.lens.apertureRadius), ")"));
+      wrapped(cat("aperture drawn x", std::round(model_.diagramApertureScale()), " (radius ",
+                  number(c.lens.apertureRadius), ")"));
   }
 }
 
@@ -149,7 +158,8 @@ void Viewer::sectionFiles() {
       model_.reportError(e.what());
     }
   }
-  if (pathAndButton("##window", windowPath_, "Save window")) saveWindowPending_ = true;  // read once this frame is drawn
+  if (pathAndButton("##window", windowPath_, "Save window"))
+    saveWindowPending_ = true;  // read once this frame is drawn
   if (!status_.empty()) wrapped(status_);
 }
 
@@ -170,18 +180,21 @@ void Viewer::sectionDisplay() {
     return true;
   };
   if (labelled(fit_, "view transform", [&](const char* id) {
-        return ImGui::Combo(id, &transform, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
+        return ImGui::Combo(id, &transform, name, const_cast<std::vector<std::string>*>(&names),
+                            static_cast<int>(names.size()));
       }))
     display_.encoding.transform = static_cast<ViewTransform>(transform);
-  wrapped(cat("starting exposure: ", describe(display_.exposure), ". Save image writes a PNG as shown; an EXR holds the "
+  wrapped(cat("starting exposure: ", describe(display_.exposure),
+              ". Save image writes a PNG as shown; an EXR holds the "
               "linear radiance."));
 }
 
 void Viewer::sectionHelp() {
   if (!header(fit_, "Controls", openFlags(false))) return;
-  wrapped("Click the image: focus there. Left drag: orbit about the focus point. Right drag: look around from the PRP. "
-          "Wheel: move forward. W/A/S/D/Q/E: fly (Shift: faster). Outside view: left drag orbits, wheel zooms. "
-          "Ctrl+click a field to type. Esc: quit.");
+  wrapped(
+      "Click the image: focus there. Left drag: orbit about the focus point. Right drag: look around from the PRP. "
+      "Wheel: move forward. W/A/S/D/Q/E: fly (Shift: faster). Outside view: left drag orbits, wheel zooms. "
+      "Ctrl+click a field to type. Esc: quit.");
 }
 
 void Viewer::panel() {

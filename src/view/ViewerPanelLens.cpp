@@ -60,7 +60,8 @@ void Viewer::sectionSamples() {
     return true;
   };
   if (labelled(fit_, "pattern", [&](const char* id) {
-        return ImGui::Combo(id, &pattern, name, const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
+        return ImGui::Combo(id, &pattern, name, const_cast<std::vector<std::string>*>(&names),
+                            static_cast<int>(names.size()));
       })) {
     o.pattern = static_cast<AperturePattern>(pattern);
     changed = true;
@@ -83,10 +84,12 @@ void Viewer::sectionSamples() {
     }
     changed = true;
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("per-tile budgets: each tile gets samples until its estimate reaches the target");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("per-tile budgets: each tile gets samples until its estimate reaches the target");
   if (o.targetPsnrDb) {
     float db = static_cast<float>(*o.targetPsnrDb);
-    if (labelled(fit_, "target (dB)", [&](const char* id) { return ImGui::SliderFloat(id, &db, 20.0f, 60.0f, "%.1f"); })) {
+    if (labelled(fit_, "target (dB)",
+                 [&](const char* id) { return ImGui::SliderFloat(id, &db, 20.0f, 60.0f, "%.1f"); })) {
       o.targetPsnrDb = db;
       changed = true;
     }
@@ -126,14 +129,17 @@ void Viewer::sectionLensEffects() {
     changed |= dragDouble(fit_, "gamma", e.distortion.gamma, 0.002f, -2.0, 2.0);
     ImGui::TreePop();
   }
-  wrapped("Chromatic aberration: lateral = red/blue magnification relative to green; axial = each colour's plane of "
-          "focus, as a change of 1/focus distance (1/world unit)");
+  wrapped(
+      "Chromatic aberration: lateral = red/blue magnification relative to green; axial = each colour's plane of "
+      "focus, as a change of 1/focus distance (1/world unit)");
   changed |= dragDouble(fit_, "lateral red", e.chromatic.lateralRed, 0.0002f, -0.1, 0.1);
   changed |= dragDouble(fit_, "lateral blue", e.chromatic.lateralBlue, 0.0002f, -0.1, 0.1);
   changed |= dragDouble(fit_, "axial red (1/m)", e.chromatic.inverseFocusShiftRed, 0.002f, -10.0, 10.0);
   changed |= dragDouble(fit_, "axial blue (1/m)", e.chromatic.inverseFocusShiftBlue, 0.002f, -10.0, 10.0);
   const double focus = c.inverseFocusDistance();
-  const auto distance = [](double inverse) { return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity(); };
+  const auto distance = [](double inverse) {
+    return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+  };
   if (e.chromatic.hasAxial())
     wrapped(cat("red in focus at ", number(distance(focus + e.chromatic.inverseFocusShiftRed)), ", green ",
                 number(distance(focus)), ", blue ", number(distance(focus + e.chromatic.inverseFocusShiftBlue))));

@@ -85,11 +85,13 @@ void BM_Accumulate(benchmark::State& state) {
   }
   state.counters["ms_per_sample"] = benchmark::Counter(
       static_cast<double>(n) * 1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["views_per_s"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["triangles_per_s"] =
-      benchmark::Counter(static_cast<double>(n) * bench::trianglesOf(f.scene), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["views_per_s"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["triangles_per_s"] = benchmark::Counter(static_cast<double>(n) * bench::trianglesOf(f.scene),
+                                                         benchmark::Counter::kIsIterationInvariantRate);
   Accumulator probe;  // as the renderer's for this scene and camera (render/Renderer.cpp drawSample)
-  probe.setLayered(Accumulator::layersAreCheaper(bench::trianglesOf(f.scene), static_cast<double>(kSize.widthPx) * kSize.heightPx));
+  probe.setLayered(
+      Accumulator::layersAreCheaper(bench::trianglesOf(f.scene), static_cast<double>(kSize.widthPx) * kSize.heightPx));
   probe.start(kSize.widthPx, kSize.heightPx);
   const Accumulator::ViewCost cost = probe.viewCost();
   state.counters["scene_passes_per_view"] = cost.scenePasses;
@@ -159,7 +161,8 @@ int main(int argc, char** argv) {
       ->MinTime(3.0)
       ->UseRealTime();
   std::printf("scene %s (%.0f triangles), camera %s, %dx%d\n", gOptions.scenePath.c_str(),
-              bench::trianglesOf(loadGltf(gOptions.scenePath)), gOptions.cameraPath.c_str(), kSize.widthPx, kSize.heightPx);
+              bench::trianglesOf(loadGltf(gOptions.scenePath)), gOptions.cameraPath.c_str(), kSize.widthPx,
+              kSize.heightPx);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   return 0;

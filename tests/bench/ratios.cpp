@@ -67,7 +67,8 @@ bool selected(const std::string& name) {
 }
 
 // Returns side B's median time in seconds (0 when skipped by --only).
-double ratio(const char* name, int pairs, const std::function<void()>& a, const std::function<void()>& b, const char* goal) {
+double ratio(const char* name, int pairs, const std::function<void()>& a, const std::function<void()>& b,
+             const char* goal) {
   if (!selected(name)) return 0.0;
   a();
   b();  // warm: shaders compiled, memory touched
@@ -77,8 +78,8 @@ double ratio(const char* name, int pairs, const std::function<void()>& a, const 
     tb.push_back(timed(b));
     r.push_back(tb.back() / ta.back());
   }
-  std::printf("%-16s median ratio %.3f (goal %s)   median A %.2f ms, B %.2f ms   ratios %.3f to %.3f over %d pairs\n", name,
-              median(r), goal, 1e3 * median(ta), 1e3 * median(tb), *std::min_element(r.begin(), r.end()),
+  std::printf("%-16s median ratio %.3f (goal %s)   median A %.2f ms, B %.2f ms   ratios %.3f to %.3f over %d pairs\n",
+              name, median(r), goal, 1e3 * median(ta), 1e3 * median(tb), *std::min_element(r.begin(), r.end()),
               *std::max_element(r.begin(), r.end()), pairs);
   return median(tb);
 }
@@ -131,14 +132,24 @@ void breakdownOf(const Scene& scene, const GpuScene& gpuScene, const ScenePass& 
     glFinish();
   };
   std::printf("parts of a 64-view frame, each ÷ 64 bare passes (the same pinhole view every time):\n");
-  ratio("layered frame", pairs, bare, [&] { frame(layered, true); }, "the layered path: views in layers, summed 8 at a time");
-  ratio("layer passes", pairs, bare, [&] {
-    for (int i = 0; i < 64; ++i) scenePass.draw(gpuScene, clip, {layerTargets[static_cast<std::size_t>(i % 8)].id(), size.widthPx, size.heightPx});
-    glFinish();
-  }, "the layers' passes alone: framebuffer switches, layer writes");
-  ratio("batch sums", pairs, bare, [&] { frame(layered, false); }, "the 8 batch sums and the resolve alone");
-  ratio("clears", pairs, bare, [&] { clears(nullptr, 64); }, "64 colour + depth clears alone");
-  ratio("added frame", pairs, bare, [&] { frame(added, true); }, "views added into the sum");
+  ratio(
+      "layered frame", pairs, bare, [&] { frame(layered, true); },
+      "the layered path: views in layers, summed 8 at a time");
+  ratio(
+      "layer passes", pairs, bare,
+      [&] {
+        for (int i = 0; i < 64; ++i)
+          scenePass.draw(gpuScene, clip,
+                         {layerTargets[static_cast<std::size_t>(i % 8)].id(), size.widthPx, size.heightPx});
+        glFinish();
+      },
+      "the layers' passes alone: framebuffer switches, layer writes");
+  ratio(
+      "batch sums", pairs, bare, [&] { frame(layered, false); }, "the 8 batch sums and the resolve alone");
+  ratio(
+      "clears", pairs, bare, [&] { clears(nullptr, 64); }, "64 colour + depth clears alone");
+  ratio(
+      "added frame", pairs, bare, [&] { frame(added, true); }, "views added into the sum");
   std::vector<PixelBox> strips, half{{0, 0, size.widthPx / 2, size.heightPx}};
   for (int i = 0; i < 16; ++i) strips.push_back({i * size.widthPx / 16, 0, size.widthPx / 32, size.heightPx});
   std::printf("8 views in 16 strips ÷ 8 views in one box over the same pixels:\n");
@@ -146,8 +157,10 @@ void breakdownOf(const Scene& scene, const GpuScene& gpuScene, const ScenePass& 
     for (int i = 0; i < 8; ++i) scenePass.draw(gpuScene, clip, target.drawTarget(), 0.0f, &boxes);
     glFinish();
   };
-  ratio("16 boxes plain", pairs, [&] { boxed(half); }, [&] { boxed(strips); }, "plain passes");
-  ratio("16 boxes clears", pairs, [&] { clears(&half, 8); }, [&] { clears(&strips, 8); }, "their clears alone");
+  ratio(
+      "16 boxes plain", pairs, [&] { boxed(half); }, [&] { boxed(strips); }, "plain passes");
+  ratio(
+      "16 boxes clears", pairs, [&] { clears(&half, 8); }, [&] { clears(&strips, 8); }, "their clears alone");
   const auto addedBoxes = [&](const std::vector<PixelBox>& boxes) {
     added.start(size.widthPx, size.heightPx);
     added.setRegion(&boxes);
@@ -158,11 +171,15 @@ void breakdownOf(const Scene& scene, const GpuScene& gpuScene, const ScenePass& 
     added.resolve(out);
     glFinish();
   };
-  ratio("16 boxes added", pairs, [&] { addedBoxes(half); }, [&] { addedBoxes(strips); }, "added views, as per-tile budgets draw them");
+  ratio(
+      "16 boxes added", pairs, [&] { addedBoxes(half); }, [&] { addedBoxes(strips); },
+      "added views, as per-tile budgets draw them");
   // The same pixels in strips on llvmpipe's 64-px bins: whether a box costs per pass or per bin it cuts.
   std::vector<PixelBox> alignedStrips;
   for (int i = 0; i < 10; ++i) alignedStrips.push_back({i * 128, 0, 64, size.heightPx});
-  ratio("10 aligned added", pairs, [&] { addedBoxes(half); }, [&] { addedBoxes(alignedStrips); }, "10 strips on whole 64-px bins");
+  ratio(
+      "10 aligned added", pairs, [&] { addedBoxes(half); }, [&] { addedBoxes(alignedStrips); },
+      "10 strips on whole 64-px bins");
 }
 
 }  // namespace
@@ -192,8 +209,8 @@ int main(int argc, char** argv) {
   const ImageSize size{options.widthPx, options.heightPx};
   const int views = options.views;
   const double triangles = bench::trianglesOf(scene);
-  std::printf("lenslab_ratios: %s, %dx%d, %s (%.0f triangles) with %s, %d views\n", context->renderer().c_str(), size.widthPx,
-              size.heightPx, options.scenePath.c_str(), triangles, options.cameraPath.c_str(), views);
+  std::printf("lenslab_ratios: %s, %dx%d, %s (%.0f triangles) with %s, %d views\n", context->renderer().c_str(),
+              size.widthPx, size.heightPx, options.scenePath.c_str(), triangles, options.cameraPath.c_str(), views);
 
   Renderer renderer(scene);
   GpuScene gpuScene(scene);
@@ -201,7 +218,8 @@ int main(int argc, char** argv) {
   gl::RenderTarget target(size.widthPx, size.heightPx);
   const glm::dmat4 clip = clipFromWorld(camera.view);
 
-  const FramePlan frame64 = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, views, views, 1});
+  const FramePlan frame64 =
+      makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, views, views, 1});
   const FramePlan pinholePlan = makeFramePlan(scene, pinhole, size);
   const auto bare = [&](int n) {
     for (int i = 0; i < n; ++i) scenePass.draw(gpuScene, clip, target.drawTarget());
@@ -218,19 +236,24 @@ int main(int argc, char** argv) {
     breakdownOf(scene, gpuScene, scenePass, clip, size, pairs);
     return 0;
   }
-  const double frameSeconds = ratio("accumulation", pairs, [&] { bare(views); }, [&] { frame(camera, frame64); }, "<= 1.05");
+  const double frameSeconds = ratio(
+      "accumulation", pairs, [&] { bare(views); }, [&] { frame(camera, frame64); }, "<= 1.05");
   if (frameSeconds > 0.0) {
     Accumulator probe;  // as the renderer's for this scene and camera (render/Renderer.cpp drawSample)
     probe.setLayered(Accumulator::layersAreCheaper(triangles, static_cast<double>(size.widthPx) * size.heightPx));
     probe.start(size.widthPx, size.heightPx);
     const Accumulator::ViewCost cost = probe.viewCost();
-    std::printf("  thin-lens frame %.1f ms: %.1f views/s, %.3g triangles/s; a view: %.3g scene passes, %.3g full-screen "
-                "passes, %.1f bytes/pixel of the accumulator's own (%.1f MB)\n",
-                1e3 * frameSeconds, views / frameSeconds, views * triangles / frameSeconds, cost.scenePasses,
-                cost.fullScreenPasses, cost.bytesPerPixel, cost.bytesPerPixel * size.widthPx * size.heightPx / 1e6);
+    std::printf(
+        "  thin-lens frame %.1f ms: %.1f views/s, %.3g triangles/s; a view: %.3g scene passes, %.3g full-screen "
+        "passes, %.1f bytes/pixel of the accumulator's own (%.1f MB)\n",
+        1e3 * frameSeconds, views / frameSeconds, views * triangles / frameSeconds, cost.scenePasses,
+        cost.fullScreenPasses, cost.bytesPerPixel, cost.bytesPerPixel * size.widthPx * size.heightPx / 1e6);
   }
-  ratio("pinhole plan", pairs * 4, [&] { bare(1); }, [&] { frame(pinhole, pinholePlan); }, "<= 1.02");
-  ratio("pre-pass", pairs, [&] { frame(camera, frame64); }, [&] { (void)measureVisibleBlur(renderer, camera, size); }, "<= 0.05");
+  ratio(
+      "pinhole plan", pairs * 4, [&] { bare(1); }, [&] { frame(pinhole, pinholePlan); }, "<= 1.02");
+  ratio(
+      "pre-pass", pairs, [&] { frame(camera, frame64); }, [&] { (void)measureVisibleBlur(renderer, camera, size); },
+      "<= 0.05");
   std::vector<PixelBox> strips, half{{0, 0, size.widthPx / 2, size.heightPx}};
   for (int i = 0; i < 16; ++i) strips.push_back({i * size.widthPx / 16, 0, size.widthPx / 32, size.heightPx});
   Accumulator boxedSum;
@@ -245,14 +268,16 @@ int main(int argc, char** argv) {
     (void)boxedSum.sumTexture();  // the background added
     glFinish();
   };
-  ratio("16 boxes", pairs, [&] { boxed(half); }, [&] { boxed(strips); }, "1 = no cost per box");
+  ratio(
+      "16 boxes", pairs, [&] { boxed(half); }, [&] { boxed(strips); }, "1 = no cost per box");
   PlanOptions to40{AperturePattern::Sobol, 0, 256, 1};
   to40.targetPsnrDb = 40.0;
-  ratio("adaptive 40 dB", pairs, [&] { (void)renderer.render(camera, frame64, size); },
-        [&] {
-          const VisibleBlur visible = measureVisibleBlur(renderer, camera, size);
-          (void)renderer.render(camera, makeFramePlan(scene, camera, size, to40, &visible), size);
-        },
-        "< 1: faster");
+  ratio(
+      "adaptive 40 dB", pairs, [&] { (void)renderer.render(camera, frame64, size); },
+      [&] {
+        const VisibleBlur visible = measureVisibleBlur(renderer, camera, size);
+        (void)renderer.render(camera, makeFramePlan(scene, camera, size, to40, &visible), size);
+      },
+      "< 1: faster");
   return 0;
 }

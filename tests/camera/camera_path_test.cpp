@@ -45,7 +45,8 @@ TEST(CameraPath, FrameCountIsBoundedWhereverItComesFrom) {
     frameCountFor(1e9, 24.0, "scene.glb over the animation at --fps 24");
     FAIL() << "2.4e10 frames accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("scene.glb over the animation at --fps 24: 2.4e+10 frames"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("scene.glb over the animation at --fps 24: 2.4e+10 frames"), std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find("at most 10^7"), std::string::npos) << e.what();
   }
 }
@@ -129,12 +130,14 @@ TEST(CameraPath, UpsThatCancelAreRefusedNamingTheFrame) {
   p.keys = {{0.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}, {1.0, lens({0, 0, 5}, {0, 0, 0}, 3.0, 2.8), {}}};
   p.keys[1].camera.up = {0, -1, 0};
   const std::string message = refusal(p);
-  EXPECT_NE(message.find("path.json: frame 2 (t = 0.5 s): up is parallel to the view direction"), std::string::npos) << message;
+  EXPECT_NE(message.find("path.json: frame 2 (t = 0.5 s): up is parallel to the view direction"), std::string::npos)
+      << message;
 }
 
 TEST(CameraPath, CentripetalCatmullRomPassesItsPointsAndKeepsALineStraight) {
   const glm::dvec3 p0(0, 0, 0), p1(1, 0, 0), p2(2, 0, 0), p3(3, 0, 0);
-  for (double u : {0.0, 0.25, 0.5, 1.0}) EXPECT_NEAR(glm::length(centripetalCatmullRom(p0, p1, p2, p3, u) - glm::dvec3(1 + u, 0, 0)), 0.0, 1e-12);
+  for (double u : {0.0, 0.25, 0.5, 1.0})
+    EXPECT_NEAR(glm::length(centripetalCatmullRom(p0, p1, p2, p3, u) - glm::dvec3(1 + u, 0, 0)), 0.0, 1e-12);
   const glm::dvec3 q0(0, 0, 0), q1(1, 0, 0), q2(1, 1, 0), q3(0, 5, 0);
   EXPECT_NEAR(glm::length(centripetalCatmullRom(q0, q1, q2, q3, 0.0) - q1), 0.0, 1e-12);
   EXPECT_NEAR(glm::length(centripetalCatmullRom(q0, q1, q2, q3, 1.0) - q2), 0.0, 1e-12);
@@ -166,10 +169,11 @@ std::string refusal(const std::string& text) {
 }
 
 TEST(CameraPathJson, ReadsAPathWithEffects) {
-  const CameraPath p = parseCameraPath(std::string(R"({"fps": 12, "interpolation": "linear", "keys": [)") + kKey0 + "," +
-                                           R"({"time": 2, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "focus_distance": 6,
+  const CameraPath p =
+      parseCameraPath(std::string(R"({"fps": 12, "interpolation": "linear", "keys": [)") + kKey0 + "," +
+                          R"({"time": 2, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "focus_distance": 6,
                                                "distortion": {"k1": -0.1}}]})",
-                                       "path.json");
+                      "path.json");
   ASSERT_EQ(p.keys.size(), 2u);
   EXPECT_EQ(p.frameCount(), 25);
   EXPECT_EQ(p.interpolation, PathInterpolation::Linear);
@@ -181,18 +185,27 @@ TEST(CameraPathJson, BadPathsAreRefusedNamingTheKey) {
   EXPECT_NE(refusal(R"({"fps": 24, "keys": []})").find("keys: give at least one key"), std::string::npos);
   EXPECT_NE(refusal(R"({"keys": [)" + two + "]}").find("fps: required"), std::string::npos);
   EXPECT_NE(refusal(R"({"fps": -1, "keys": [)" + two + "]}").find("fps -1"), std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "keys": [)" + std::string(kKey1) + "," + kKey0 + "]}").find("keys[1].time 0 must be later than keys[0].time 1"),
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [)" + std::string(kKey1) + "," + kKey0 + "]}")
+                .find("keys[1].time 0 must be later than keys[0].time 1"),
             std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "keys": [)" + std::string(kKey0) + "," + kKey0 + "]}").find("keys[1].time"), std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "speed": 2, "keys": [)" + two + "]}").find("unknown key \"speed\""), std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0], "fov": 40}]})").find("keys[0]: unknown key \"fov\""),
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [)" + std::string(kKey0) + "," + kKey0 + "]}").find("keys[1].time"),
             std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1]}]})")
-                .find("keys[0]: give the camera in the physical form"),
+  EXPECT_NE(refusal(R"({"fps": 24, "speed": 2, "keys": [)" + two + "]}").find("unknown key \"speed\""),
             std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"eye": [0, 1, 5], "target": [0, 0, 0]}]})").find("keys[0].time: required"), std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "interpolation": "cubic", "keys": [)" + two + "]}").find("interpolation \"cubic\""), std::string::npos);
-  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0]}, )" + std::string(kKey1) + "]}")
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0], "fov": 40}]})")
+                .find("keys[0]: unknown key \"fov\""),
+            std::string::npos);
+  EXPECT_NE(
+      refusal(
+          R"({"fps": 24, "keys": [{"time": 0, "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1]}]})")
+          .find("keys[0]: give the camera in the physical form"),
+      std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"eye": [0, 1, 5], "target": [0, 0, 0]}]})").find("keys[0].time: required"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "interpolation": "cubic", "keys": [)" + two + "]}").find("interpolation \"cubic\""),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0]}, )" +
+                    std::string(kKey1) + "]}")
                 .find("keys[1].f_number"),
             std::string::npos);
   EXPECT_NE(refusal(R"({"fps": 24, "frames": 0, "keys": [)" + two + "]}").find("frames 0"), std::string::npos);
@@ -231,7 +244,9 @@ TEST(CameraPathAssets, TheDollyZoomKeepsFocalLengthOverDistance) {
 // A path file's JSON is read as a camera file's is: the parser's own text ("[json.exception...]")
 // cut to what it says, and a key given twice refused.
 TEST(CameraPath, BadJsonIsOneLineInTheInputsWords) {
-  const auto message = [](const std::string& text) { return test::refusalOf([&] { parseCameraPath(text, "path.json"); }); };
+  const auto message = [](const std::string& text) {
+    return test::refusalOf([&] { parseCameraPath(text, "path.json"); });
+  };
   const std::string overflow = message(R"({"fps": 1e309, "keys": []})");
   EXPECT_NE(overflow.find("path.json: not valid JSON: number overflow"), std::string::npos) << overflow;
   EXPECT_EQ(overflow.find("json.exception"), std::string::npos) << overflow;
@@ -247,13 +262,17 @@ namespace lenslab {
 namespace {
 
 TEST(CameraPathJson, APathHoldsOneApertureShape) {
-  const std::string shaped0 = R"({"time": 0, "eye": [0, 1, 5], "target": [0, 0.5, 0], "f_number": 2, "aperture": {"blades": 6}})";
-  const std::string shaped1 = R"({"time": 1, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "aperture": {"blades": 6}})";
+  const std::string shaped0 =
+      R"({"time": 0, "eye": [0, 1, 5], "target": [0, 0.5, 0], "f_number": 2, "aperture": {"blades": 6}})";
+  const std::string shaped1 =
+      R"({"time": 1, "eye": [1, 1, 5], "target": [0, 0.5, 0], "f_number": 4, "aperture": {"blades": 6}})";
   const CameraPath p = parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + shaped1 + "]}", "path.json");
   EXPECT_EQ(cameraAt(p, 0.5).lens.aperture.blades, 6);
   EXPECT_EQ(cameraAt(p, 1.0).lens.aperture.blades, 6);
-  const std::string message = test::refusalOf([&] { parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + kKey1 + "]}", "path.json"); });
-  EXPECT_NE(message.find("keys[1]: \"aperture\" is circle where the first key's is 6 blades"), std::string::npos) << message;
+  const std::string message =
+      test::refusalOf([&] { parseCameraPath(R"({"fps": 4, "keys": [)" + shaped0 + "," + kKey1 + "]}", "path.json"); });
+  EXPECT_NE(message.find("keys[1]: \"aperture\" is circle where the first key's is 6 blades"), std::string::npos)
+      << message;
 }
 
 }  // namespace

@@ -22,8 +22,10 @@ Bounds box(glm::dvec3 lo, glm::dvec3 hi) {
 TEST(DepthRange, ATelephotoGetsNearAndFarAroundItsSubject) {
   // A PRP 1e9 from the view plane (a very long lens); near defaults to PRP.n/1000 = 1e6 and far to
   // infinity: reverse-Z depth then resolves only ~60 units at the subject, 1e9 away.
-  const Camera open = parseCameraJson(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1e9], "window": [-3, -2, 3, 2]})",
-                                      "tele.json").camera;
+  const Camera open =
+      parseCameraJson(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1e9], "window": [-3, -2, 3, 2]})",
+                      "tele.json")
+          .camera;
   ASSERT_TRUE(open.nearFromScene && open.farFromScene);
   const Bounds scene = box({-5, -1, -30}, {5, 3, 2});
   const Camera fitted = withDepthRangeFitted(open, scene);
@@ -35,14 +37,15 @@ TEST(DepthRange, ATelephotoGetsNearAndFarAroundItsSubject) {
   // Reverse-Z depth now separates surfaces 1 unit apart at the subject by far more than float's
   // step (the depth buffer's 2^-24 near 1); with far at infinity they were 1e-12 apart.
   const double z1 = 1e9 - 1.0, z2 = 1e9;
-  const glm::dvec4 a = clipFromEye(fitted.view) * glm::dvec4(0, 0, -z1, 1), b = clipFromEye(fitted.view) * glm::dvec4(0, 0, -z2, 1);
+  const glm::dvec4 a = clipFromEye(fitted.view) * glm::dvec4(0, 0, -z1, 1),
+                   b = clipFromEye(fitted.view) * glm::dvec4(0, 0, -z2, 1);
   EXPECT_GT(std::abs(a.z / a.w - b.z / b.w), 1e-4);
 }
 
 TEST(DepthRange, GivenValuesAreKeptAndAnOpenNearInsideTheSceneIsItsDefaultOrAThousandthOfIt) {
   const Bounds scene = box({-1, -1, -10}, {1, 1, 5.5});  // reaches behind the camera at z = 5
-  const Camera given = parseCameraJson(
-      R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": 0.01, "far": 100})", "given.json").camera;
+  const Camera given =
+      parseCameraJson(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": 0.01, "far": 100})", "given.json").camera;
   EXPECT_FALSE(given.nearFromScene || given.farFromScene);
   const Camera kept = withDepthRangeFitted(given, scene);
   EXPECT_EQ(kept.view.nearDistance, 0.01);
@@ -60,7 +63,9 @@ TEST(DepthRange, GivenValuesAreKeptAndAnOpenNearInsideTheSceneIsItsDefaultOrATho
 // A 1 cm scene seen from 3 cm lies nearer than the default near (0.05): fitted, not clipped away.
 TEST(DepthRange, ASceneNearerThanTheDefaultNearIsFittedNotClipped) {
   const Bounds scene = box({-0.005, -0.005, -0.005}, {0.005, 0.005, 0.005});
-  const Camera open = parseCameraJson(R"({"eye": [0, 0, 0.03], "target": [0, 0, 0], "focus_distance": "infinity"})", "open.json").camera;
+  const Camera open =
+      parseCameraJson(R"({"eye": [0, 0, 0.03], "target": [0, 0, 0], "focus_distance": "infinity"})", "open.json")
+          .camera;
   const Camera fitted = withDepthRangeFitted(open, scene);
   EXPECT_GT(fitted.view.nearDistance, 0.02);
   EXPECT_LT(fitted.view.nearDistance, 0.025);
@@ -68,9 +73,11 @@ TEST(DepthRange, ASceneNearerThanTheDefaultNearIsFittedNotClipped) {
 }
 
 TEST(DepthRange, ParallelAndEmptyScenesAreLeftAlone) {
-  const Camera parallel = parseCameraJson(
-      R"({"projection": "parallel", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 5], "window": [-1, -1, 1, 1], "far": 50})",
-      "par.json").camera;
+  const Camera parallel =
+      parseCameraJson(
+          R"({"projection": "parallel", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 5], "window": [-1, -1, 1, 1], "far": 50})",
+          "par.json")
+          .camera;
   const Camera fitted = withDepthRangeFitted(parallel, box({-1, -1, -1}, {1, 1, 1}));
   EXPECT_EQ(fitted.view.nearDistance, parallel.view.nearDistance);
   EXPECT_EQ(fitted.view.farDistance, parallel.view.farDistance);
@@ -83,7 +90,8 @@ TEST(DepthRange, ParallelAndEmptyScenesAreLeftAlone) {
 TEST(DepthRange, AGivenNearBelowWhatDepthCanHoldIsRefused) {
   const Bounds scene = box({-1, -1, -10}, {1, 1, 0});
   for (const char* near : {"1e-100", "1e-320"}) {
-    const Camera c = parseCameraJson(cat(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": )", near, "}"), "n.json").camera;
+    const Camera c =
+        parseCameraJson(cat(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "near": )", near, "}"), "n.json").camera;
     try {
       withDepthRangeFitted(c, scene);
       ADD_FAILURE() << near << " accepted";

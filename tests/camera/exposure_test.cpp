@@ -85,8 +85,9 @@ TEST(ResolveExposure, StopsWinOverTheFileAndAreRefusedWithShutterOrIso) {
   EXPECT_EQ(e.source, "--exposure");
   EXPECT_NEAR(e.scale, std::exp2(1.5), 1e-12);
   EXPECT_FALSE(e.ev100);
-  EXPECT_NE(messageOf([] { resolveExposure({.stops = 1.0, .iso = 200.0}, physicalCamera(2.8)); }).find("one or the other"),
-            std::string::npos);
+  EXPECT_NE(
+      messageOf([] { resolveExposure({.stops = 1.0, .iso = 200.0}, physicalCamera(2.8)); }).find("one or the other"),
+      std::string::npos);
 }
 
 TEST(ResolveExposure, RefusalsNameTheFieldInOneLine) {
@@ -97,7 +98,8 @@ TEST(ResolveExposure, RefusalsNameTheFieldInOneLine) {
   expectOneLine(messageOf([] { resolveExposure({.iso = 200.0}, physicalCamera(2.8)); }), "--iso");
   expectOneLine(messageOf([] { resolveExposure({.shutterSeconds = 0.01}, physicalCamera(INFINITY)); }), "pinhole");
   expectOneLine(messageOf([] { resolveExposure({.shutterSeconds = 0.0}, physicalCamera(2.8)); }), "--shutter");
-  expectOneLine(messageOf([] { resolveExposure({.shutterSeconds = 0.01, .iso = -5.0}, physicalCamera(2.8)); }), "--iso");
+  expectOneLine(messageOf([] { resolveExposure({.shutterSeconds = 0.01, .iso = -5.0}, physicalCamera(2.8)); }),
+                "--iso");
   expectOneLine(messageOf([] { resolveExposure({.stops = 100.0}, physicalCamera(2.8)); }), "--exposure");
   // A camera without a physical description (the lecture form) has no f-number.
   SelectedCamera lecture = physicalCamera(2.8);
@@ -118,17 +120,20 @@ TEST(CameraFileExposure, ReadsShutterAndIso) {
 }
 
 TEST(CameraFileExposure, OutOfRangeValuesAreOneLineErrorsNamingTheField) {
-  for (const auto& [text, field] : {std::pair{R"(, "shutter_s": 0})", "shutter_s"}, {R"(, "shutter_s": 7200})", "shutter_s"},
-                                    {R"(, "iso": 0})", "iso"}, {R"(, "iso": "fast"})", "iso"}}) {
+  for (const auto& [text, field] : {std::pair{R"(, "shutter_s": 0})", "shutter_s"},
+                                    {R"(, "shutter_s": 7200})", "shutter_s"},
+                                    {R"(, "iso": 0})", "iso"},
+                                    {R"(, "iso": "fast"})", "iso"}}) {
     const std::string m = messageOf([&] { parseCameraJson(kPhysical + text, "cam.json"); });
     EXPECT_NE(m.find(std::string("\"") + field + "\""), std::string::npos) << m;
     EXPECT_NE(m.find("cam.json"), std::string::npos) << m;
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;
   }
   // The lecture form has no shutter: an unknown key there.
-  EXPECT_THROW(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1], "shutter_s": 0.01})",
-                               "cam.json"),
-               InputError);
+  EXPECT_THROW(
+      parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1], "shutter_s": 0.01})",
+                      "cam.json"),
+      InputError);
 }
 
 // ---- Khronos PBR Neutral: its defining properties ----
@@ -137,9 +142,12 @@ TEST(CameraFileExposure, OutOfRangeValuesAreOneLineErrorsNamingTheField) {
 double hueOf(glm::vec3 c) {
   const double mx = std::max({c.r, c.g, c.b}), mn = std::min({c.r, c.g, c.b}), d = mx - mn;
   double h = 0.0;
-  if (mx == c.r) h = (c.g - c.b) / d;
-  else if (mx == c.g) h = 2.0 + (c.b - c.r) / d;
-  else h = 4.0 + (c.r - c.g) / d;
+  if (mx == c.r)
+    h = (c.g - c.b) / d;
+  else if (mx == c.g)
+    h = 2.0 + (c.b - c.r) / d;
+  else
+    h = 4.0 + (c.r - c.g) / d;
   return std::fmod(h / 6.0 + 1.0, 1.0);
 }
 

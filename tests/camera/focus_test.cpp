@@ -134,12 +134,17 @@ TEST(FocusAsInverseDistance, CommandLineAndFileShareOneValidationPath) {
 // focused at d has a focal length below d: f-numbers below 0.5 and a lecture camera's aperture at or
 // beyond its focus distance are refused in one line naming the field (they rendered an empty frame).
 TEST(FocusAsInverseDistance, ApertureBeyondWhatALensCanHaveIsRefused) {
-  const auto message = [](const std::string& text) { return test::refusalOf([&] { parseCameraJson(text, "a.json"); }); };
-  EXPECT_NE(message(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 1e-320})").find("f_number is"), std::string::npos);
-  EXPECT_NE(message(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 0.49})").find("faster than f/0.5"), std::string::npos);
+  const auto message = [](const std::string& text) {
+    return test::refusalOf([&] { parseCameraJson(text, "a.json"); });
+  };
+  EXPECT_NE(message(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 1e-320})").find("f_number is"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 0.49})").find("faster than f/0.5"),
+            std::string::npos);
   EXPECT_EQ(message(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 0.5})"), "accepted");
   const std::string lecture = R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1], )";
-  EXPECT_NE(message(lecture + R"("aperture_radius": 1e300, "focus_distance": 5})").find("aperture_radius"), std::string::npos);
+  EXPECT_NE(message(lecture + R"("aperture_radius": 1e300, "focus_distance": 5})").find("aperture_radius"),
+            std::string::npos);
   EXPECT_NE(message(lecture + R"("aperture_radius": 2})").find("give a radius below 2"), std::string::npos);
   EXPECT_EQ(message(lecture + R"("aperture_radius": 1.9})"), "accepted");
   EXPECT_EQ(message(lecture + R"("aperture_radius": 1e300, "focus_distance": "infinity"})"), "accepted");

@@ -97,17 +97,18 @@ TEST(ImageMap, PixelToRayToPixelRoundTrips) {
           ASSERT_TRUE(r);
           EXPECT_NEAR(glm::length(r->ray.direction), 1.0, 1e-12);
           const glm::dvec3 point = r->ray.origin + t(rng) * r->ray.direction;
-          const ViewSpec seenFrom =
-              viewThroughLens(camera, camera.lens.lensOffset(disk), {0.0, 0.0}, camera.lens.effects.chromatic.inverseFocusShift(c));
-          const glm::dvec2 ideal = pixelFromWindow(seenFrom.window, projectToWindow(seenFrom, point), kSize.widthPx, kSize.heightPx);
+          const ViewSpec seenFrom = viewThroughLens(camera, camera.lens.lensOffset(disk), {0.0, 0.0},
+                                                    camera.lens.effects.chromatic.inverseFocusShift(c));
+          const glm::dvec2 ideal =
+              pixelFromWindow(seenFrom.window, projectToWindow(seenFrom, point), kSize.widthPx, kSize.heightPx);
           const double error = glm::length(outputPixel(map, c, ideal) - pixel);
           worst = std::max(worst, error);
-          ASSERT_LT(error, 1e-6) << lens.name << (projection == Projection::Parallel ? ", parallel" : ", perspective") << ", pixel "
-                                 << pixel.x << "," << pixel.y << ", channel " << channel;
+          ASSERT_LT(error, 1e-6) << lens.name << (projection == Projection::Parallel ? ", parallel" : ", perspective")
+                                 << ", pixel " << pixel.x << "," << pixel.y << ", channel " << channel;
         }
       }
-      std::printf("  %s, %s: worst round trip %.2g px\n", projection == Projection::Parallel ? "parallel" : "perspective", lens.name,
-                  worst);
+      std::printf("  %s, %s: worst round trip %.2g px\n",
+                  projection == Projection::Parallel ? "parallel" : "perspective", lens.name, worst);
     }
   }
 }
@@ -129,7 +130,8 @@ TEST(ImageMap, PlainCameraRaysAreLensRaysAndConversionsInvert) {
       EXPECT_EQ(r.ray.tNear, expected.tNear);
       EXPECT_FALSE(r.blocked);
       const Ray over = map.footprintRay(r, {0.25, -0.5});
-      EXPECT_EQ(over.direction, lensRay(camera, camera.lens.lensOffset(disk), pixel + glm::dvec2(0.25, -0.5), kSize).direction);
+      EXPECT_EQ(over.direction,
+                lensRay(camera, camera.lens.lensOffset(disk), pixel + glm::dvec2(0.25, -0.5), kSize).direction);
       EXPECT_NEAR(glm::length(map.pixelFromWindow(map.windowFromPixel(pixel)) - pixel), 0.0, 1e-9);
       if (projection == Projection::Perspective) {
         EXPECT_NEAR(glm::length(map.pixelFromNormalised(map.normalisedFromPixel(pixel)) - pixel), 0.0, 1e-9);
@@ -188,7 +190,8 @@ TEST(ImageMap, VignettingIsAGainNotARay) {
   const glm::dvec2 corner(0.5, 0.5);
   const glm::dvec2 n = map.normalisedFromPixel(corner);
   EXPECT_DOUBLE_EQ(map.gainAt(corner), 1.0 - 0.3 * glm::dot(n, n));
-  EXPECT_EQ(map.ray(corner, {0.3, 0.2}, 1)->ray.direction, lensRay(camera, camera.lens.lensOffset({0.3, 0.2}), corner, kSize).direction);
+  EXPECT_EQ(map.ray(corner, {0.3, 0.2}, 1)->ray.direction,
+            lensRay(camera, camera.lens.lensOffset({0.3, 0.2}), corner, kSize).direction);
 }
 
 LensPrescription bundled(const std::string& name) {
@@ -229,7 +232,8 @@ TEST(ImageMap, RealLensRaysAreTheTracedRays) {
     EXPECT_EQ(r->ray.direction, expected->direction);
     EXPECT_EQ(r->weight, expected->weight);
     EXPECT_FALSE(r->blocked);
-    const std::optional<LensCamera::WorldRay> over = lens.ray(pixel + glm::dvec2(0.0, 0.3), kSize.widthPx, kSize.heightPx, pupil, channel);
+    const std::optional<LensCamera::WorldRay> over =
+        lens.ray(pixel + glm::dvec2(0.0, 0.3), kSize.widthPx, kSize.heightPx, pupil, channel);
     EXPECT_EQ(map.footprintRay(*r, {0.0, 0.3}).direction, over ? over->direction : r->ray.direction);
   }
   EXPECT_GT(passed, 100);

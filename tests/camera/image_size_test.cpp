@@ -75,9 +75,10 @@ TEST(ImageSize, SaysWhenPixelsAreNotSquareAndWhichSizesKeepThemSquare) {
             "320x213 makes pixels 0.16 % taller than wide (the window is 1.5:1); --width 318 (212 high) or --width 321 "
             "(214 high) keeps them square");
   // Only the height given: heights to try.
-  EXPECT_EQ(pixelShapeWarning(aspect, {320, 213}, false, true),
-            "320x213 makes pixels 0.16 % taller than wide (the window is 1.5:1); --height 212 (318 wide) or --height 214 "
-            "(321 wide) keeps them square");
+  EXPECT_EQ(
+      pixelShapeWarning(aspect, {320, 213}, false, true),
+      "320x213 makes pixels 0.16 % taller than wide (the window is 1.5:1); --height 212 (318 wide) or --height 214 "
+      "(321 wide) keeps them square");
   // Both given: both sides of the nearest square sizes, and the other way out.
   const std::string both = pixelShapeWarning(aspect, {320, 320}, true, true);
   EXPECT_EQ(both.rfind("320x320 makes pixels 50 % wider than tall", 0), 0u) << both;
@@ -87,14 +88,14 @@ TEST(ImageSize, SaysWhenPixelsAreNotSquareAndWhichSizesKeepThemSquare) {
   for (const ImageSize ok : {ImageSize{318, 212}, ImageSize{321, 214}, ImageSize{960, 640}, ImageSize{20000, 13333}})
     EXPECT_EQ(pixelShapeWarning(aspect, ok, true, false), "") << ok.widthPx << "x" << ok.heightPx;
   EXPECT_EQ(pixelShapeWarning(aspect, {1000, 667}, true, false), "");  // 0.05 %: under the tolerance
-  EXPECT_NE(pixelShapeWarning(aspect, {100, 67}, true, false), "");     // 0.5 %
+  EXPECT_NE(pixelShapeWarning(aspect, {100, 67}, true, false), "");    // 0.5 %
   // The sizes it names keep pixels square, for an aspect that no whole sizes meet exactly.
   const double irrational = std::sqrt(2.0);
   const std::string w = pixelShapeWarning(irrational, {100, 71}, true, false);
   ASSERT_NE(w, "");
   int below = 0, belowHigh = 0, above = 0, aboveHigh = 0;
-  ASSERT_EQ(std::sscanf(w.substr(w.find("; ")).c_str(), "; --width %d (%d high) or --width %d (%d high)", &below, &belowHigh, &above,
-                        &aboveHigh),
+  ASSERT_EQ(std::sscanf(w.substr(w.find("; ")).c_str(), "; --width %d (%d high) or --width %d (%d high)", &below,
+                        &belowHigh, &above, &aboveHigh),
             4)
       << w;
   EXPECT_LT(below, 100);
@@ -118,14 +119,16 @@ TEST(ImageSize, ACalibratedCameraKeepsItsOwnPixelShape) {
   camera.view.window = windowOf(4.0, 3.0);
   camera.calibratedSize = ImageSize{640, 360};  // pixels a third taller than wide, by calibration
   // Its own size, and scalings of it, keep the calibrated shape: nothing to say.
-  EXPECT_EQ(pixelShapeWarning(camera, std::nullopt, std::nullopt, resolveImageSize(camera, std::nullopt, std::nullopt)), "");
+  EXPECT_EQ(pixelShapeWarning(camera, std::nullopt, std::nullopt, resolveImageSize(camera, std::nullopt, std::nullopt)),
+            "");
   EXPECT_EQ(pixelShapeWarning(camera, 320, std::nullopt, resolveImageSize(camera, 320, std::nullopt)), "");
   // Both sides given against it: measured against the calibration, not against square.
   const std::string w = pixelShapeWarning(camera, 640, 480, {640, 480});
   EXPECT_NE(w.find("than in the calibrated 640x360 image"), std::string::npos) << w;
   // A square-pixel calibration is simply square.
   camera.calibratedSize = ImageSize{640, 480};
-  EXPECT_NE(pixelShapeWarning(camera, 640, 470, {640, 470}).find("2.1 % taller than wide (the window is 1.333:1)"), std::string::npos);
+  EXPECT_NE(pixelShapeWarning(camera, 640, 470, {640, 470}).find("2.1 % taller than wide (the window is 1.333:1)"),
+            std::string::npos);
 }
 
 }  // namespace

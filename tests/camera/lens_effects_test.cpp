@@ -29,8 +29,8 @@ const OpenCvCamera kMixed{505, 512, 325.0, 230.0, -0.21, 0.06, 0.0021, -0.0013, 
 
 std::string intrinsicsJson(const OpenCvCamera& c, const std::string& extra = "") {
   return cat(R"({"eye": [0, 0, 0], "target": [0, 0, -1], "intrinsics": {"fx": )", c.fx, R"(, "fy": )", c.fy,
-             R"(, "cx": )", c.cx, R"(, "cy": )", c.cy, R"(, "width": 640, "height": 480}, "distortion": [)", c.k1,
-             ", ", c.k2, ", ", c.p1, ", ", c.p2, ", ", c.k3, "]", extra, "}");
+             R"(, "cx": )", c.cx, R"(, "cy": )", c.cy, R"(, "width": 640, "height": 480}, "distortion": [)", c.k1, ", ",
+             c.k2, ", ", c.p1, ", ", c.p2, ", ", c.k3, "]", extra, "}");
 }
 
 // lenslab's own chain: world → lecture projection → normalised → distortion → pixel.
@@ -129,7 +129,8 @@ TEST(Distortion, FoldOverIsFoundForAnExtremePairAndNotForAMildOne) {
 TEST(Distortion, FoldOverIsRefusedWithAClearMessage) {
   try {
     parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,3], "window": [-2.1,-1.4,2.1,1.4],
-                        "distortion": {"k1": -0.9}})", "cam.json");
+                        "distortion": {"k1": -0.9}})",
+                    "cam.json");
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string m = e.what();
@@ -209,7 +210,7 @@ TEST(LensTables, BandsGiveTheWholeTable) {
       std::vector<glm::vec2> banded(table.channels[c].size());
       for (int first = 0; first < size.heightPx; first += band)
         map.fillRemapRows(channels[c], first, std::min(size.heightPx, first + band),
-                      &banded[static_cast<std::size_t>(first * size.widthPx)]);
+                          &banded[static_cast<std::size_t>(first * size.widthPx)]);
       EXPECT_EQ(banded, table.channels[c]) << "band " << band << ", channel " << c;
     }
     std::vector<glm::vec4> position(forward.position.size()), jacobian(forward.jacobian.size());
@@ -217,7 +218,7 @@ TEST(LensTables, BandsGiveTheWholeTable) {
     for (int first = 0; first < o.size.heightPx; first += band) {
       const std::size_t at = static_cast<std::size_t>(first * o.size.widthPx);
       halfExtent = std::max(halfExtent, map.fillForwardRows(first, std::min(o.size.heightPx, first + band),
-                                                        &position[at], &jacobian[at]));
+                                                            &position[at], &jacobian[at]));
     }
     EXPECT_EQ(position, forward.position) << "band " << band;
     EXPECT_EQ(jacobian, forward.jacobian) << "band " << band;
@@ -227,7 +228,7 @@ TEST(LensTables, BandsGiveTheWholeTable) {
 }
 
 TEST(Chromatic, AbbeNumberFocusesRedFartherAndBlueNearer) {
-  const double f = 0.05;  // 50 mm
+  const double f = 0.05;                                     // 50 mm
   const auto shifts = inverseFocusShiftsFromAbbe(64.17, f);  // BK7
   EXPECT_LT(shifts[0], 0.0);
   EXPECT_GT(shifts[1], 0.0);
@@ -237,9 +238,11 @@ TEST(Chromatic, AbbeNumberFocusesRedFartherAndBlueNearer) {
 }
 
 TEST(Chromatic, CameraFileReadsPerChannelFocusAndLateralScale) {
-  const CameraFile file = parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
+  const CameraFile file =
+      parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
       "aperture_radius": 0.05, "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.003,
-      "focus_distance_red": 2.5, "focus_distance_blue": "infinity"}})", "c.json");
+      "focus_distance_red": 2.5, "focus_distance_blue": "infinity"}})",
+                      "c.json");
   const Chromatic& c = file.camera.lens.effects.chromatic;
   EXPECT_DOUBLE_EQ(c.lateralRed, 0.004);
   EXPECT_DOUBLE_EQ(c.lateralBlue, -0.003);
@@ -253,18 +256,22 @@ TEST(Chromatic, CameraFileReadsPerChannelFocusAndLateralScale) {
 
 TEST(Chromatic, PhysicalFormTakesAnAbbeNumber) {
   const CameraFile file = parseCameraJson(R"({"eye": [0,0,5], "target": [0,0,0], "focal_length_mm": 50, "f_number": 2,
-      "chromatic": {"abbe_number": 40}})", "p.json");
+      "chromatic": {"abbe_number": 40}})",
+                                          "p.json");
   const auto expected = inverseFocusShiftsFromAbbe(40, 0.05);
   EXPECT_DOUBLE_EQ(file.camera.lens.effects.chromatic.inverseFocusShiftRed, expected[0]);
   EXPECT_DOUBLE_EQ(file.camera.lens.effects.chromatic.inverseFocusShiftBlue, expected[1]);
 }
 
 TEST(FieldCurvature, CornerFocusDistanceSetsTheCurvature) {
-  const CameraFile file = parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.8,0.6,0.8],
-      "aperture_radius": 0.05, "field_curvature": {"corner_focus_distance": 1.6}})", "f.json");
+  const CameraFile file =
+      parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.8,0.6,0.8],
+      "aperture_radius": 0.05, "field_curvature": {"corner_focus_distance": 1.6}})",
+                      "f.json");
   const Camera& camera = file.camera;
   const glm::dvec2 corner(0.3, 0.4);  // normalised: window corner / PRP.n, radius 0.5
-  EXPECT_NEAR(camera.inverseFocusDistance() + camera.lens.effects.inverseFocusShift(Channel::Green, corner), 1.0 / 1.6, 1e-12);
+  EXPECT_NEAR(camera.inverseFocusDistance() + camera.lens.effects.inverseFocusShift(Channel::Green, corner), 1.0 / 1.6,
+              1e-12);
   EXPECT_NEAR(camera.lens.effects.inverseFocusShift(Channel::Green, {0.0, 0.0}), 0.0, 1e-15);
   const CameraFile again = parseCameraJson(toCameraJson(camera), "again.json");
   EXPECT_NEAR(again.camera.lens.effects.fieldCurvature.inverseFocusPerRadius2,
@@ -287,12 +294,15 @@ TEST(LensEffectsJson, BadKeysAndFormsGiveOneLineErrors) {
   EXPECT_NE(message(R"("chromatic": {"abbe_number": 40})").find("physical form"), std::string::npos);
   EXPECT_NE(message(R"("chromatic": {"lateral_red": 0.7})").find("lateral_red"), std::string::npos);
   EXPECT_NE(message(R"("field_curvature": {})").find("corner_focus_distance"), std::string::npos);
-  EXPECT_NE(message(R"("field_curvature": {"corner_focus_distance": -1})").find("corner_focus_distance"), std::string::npos);
+  EXPECT_NE(message(R"("field_curvature": {"corner_focus_distance": -1})").find("corner_focus_distance"),
+            std::string::npos);
   const std::string parallel = R"({"projection": "parallel", "far": 10, "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2],
                                    "window": [-0.6,-0.4,0.6,0.4], "distortion": {"k1": -0.1}})";
   EXPECT_THROW(parseCameraJson(parallel, "p.json"), InputError);
   EXPECT_THROW(parseCameraJson(R"({"eye": [0,0,0], "target": [0,0,-1], "intrinsics": {"fx": 500, "fy": 500, "cx": 320,
-                                  "cy": 240, "width": 640}})", "i.json"), InputError);
+                                  "cy": 240, "width": 640}})",
+                               "i.json"),
+               InputError);
 }
 
 // A channel's plane of focus, and the curved surface's at the corner, must be one the lens can
@@ -324,15 +334,21 @@ TEST(LensEffectsJson, APlaneOfFocusInsideTheFocalLengthIsRefused) {
     EXPECT_NE(m.find("beyond the focal length"), std::string::npos) << m;
   }
   const std::string m = message(intrinsics + R"("chromatic": {"focus_distance_red": 1e-200}})");
-  EXPECT_TRUE(m.starts_with("c.json: chromatic.focus_distance_red is 1e-200; it must be beyond the aperture radius (0.08")) << m;
-  EXPECT_NE(message(intrinsics + R"("field_curvature": {"corner_focus_distance": 0.05}})").find("aperture radius"), std::string::npos);
+  EXPECT_TRUE(
+      m.starts_with("c.json: chromatic.focus_distance_red is 1e-200; it must be beyond the aperture radius (0.08"))
+      << m;
+  EXPECT_NE(message(intrinsics + R"("field_curvature": {"corner_focus_distance": 0.05}})").find("aperture radius"),
+            std::string::npos);
   // Just beyond, and beyond infinity's side, are lenses.
-  EXPECT_NO_THROW(parseCameraJson(physical + R"("chromatic": {"focus_distance_red": 0.036, "focus_distance_blue": "infinity"},
-      "field_curvature": {"corner_focus_distance": 0.036}})", "c.json"));
+  EXPECT_NO_THROW(
+      parseCameraJson(physical + R"("chromatic": {"focus_distance_red": 0.036, "focus_distance_blue": "infinity"},
+      "field_curvature": {"corner_focus_distance": 0.036}})",
+                      "c.json"));
   EXPECT_NO_THROW(parseCameraJson(intrinsics + R"("chromatic": {"focus_distance_red": 0.081}})", "c.json"));
   // A pinhole has no aperture to blur with: any positive distance changes nothing.
   EXPECT_NO_THROW(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.6,-0.4,0.6,0.4],
-      "chromatic": {"focus_distance_red": 1e-200}})", "c.json"));
+      "chromatic": {"focus_distance_red": 1e-200}})",
+                                  "c.json"));
 }
 
 Scene oneQuad() {
@@ -352,7 +368,9 @@ TEST(FramePlanEffects, ZeroStrengthCostsNothing) {
   // and the centre are).
   const Camera zeros = parseCameraJson("{" + view + R"(, "distortion": {"k1": 0, "k2": 0, "p1": 0, "p2": 0, "k3": 0},
       "chromatic": {"lateral_red": 0, "lateral_blue": 0, "focus_distance_red": 2, "focus_distance_blue": 2},
-      "field_curvature": {"corner_focus_distance": 2}})", "zeros.json").camera;
+      "field_curvature": {"corner_focus_distance": 2}})",
+                                       "zeros.json")
+                           .camera;
   const ImageSize size{120, 80};
   const FramePlan a = makeFramePlan(scene, plain, size), b = makeFramePlan(scene, zeros, size);
   ASSERT_EQ(a.passes.size(), b.passes.size());
@@ -374,7 +392,10 @@ TEST(FramePlanEffects, ADistortionTooSharpForTheResolutionIsRefused) {
   const Scene scene = oneQuad();
   const auto camera = [](double k1) {
     return parseCameraJson(cat(R"({"eye": [0,1,3], "target": [0,0.55,-2], "focal_length_mm": 35, "focus_distance": 4,
-                                   "distortion": {"k1": )", k1, "}}"), "k.json").camera;
+                                   "distortion": {"k1": )",
+                               k1, "}}"),
+                           "k.json")
+        .camera;
   };
   const ImageSize small{63, 42}, large{252, 168};
   // A calibrated lens is far inside the limit; the error halves as the pitch does.
@@ -445,9 +466,14 @@ TEST(LectureForm, FocusAtInfinityIsReadAndSaved) {
   EXPECT_TRUE(parseCameraJson(toCameraJson(file.camera), "again.json").camera.focusAtInfinity());
   // A finite focus distance refocuses as --focus-distance does: the view plane moves there.
   EXPECT_DOUBLE_EQ(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1],
-                                  "focus_distance": 3})", "f.json").camera.view.prp.z, 3.0);
+                                  "focus_distance": 3})",
+                                   "f.json")
+                       .camera.view.prp.z,
+                   3.0);
   EXPECT_THROW(parseCameraJson(R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1],
-                                  "focus_distance": -3})", "f.json"), InputError);
+                                  "focus_distance": -3})",
+                               "f.json"),
+               InputError);
 }
 
 }  // namespace

@@ -151,7 +151,8 @@ TEST(PrimaryRay, DirectionsDoNotDependOnTheViewPlanesDistance) {
     validate(near, "test");
     for (const glm::dvec2 uv : {glm::dvec2(0.3, -0.2), glm::dvec2(-1.1, 0.85), glm::dvec2(0.75, -0.6)}) {
       const Ray far = primaryRay(s, uv), close = primaryRay(near, uv * scale);
-      EXPECT_NEAR(glm::length(close.direction - far.direction), 0.0, 1e-12) << "view plane at " << scale << " of the original";
+      EXPECT_NEAR(glm::length(close.direction - far.direction), 0.0, 1e-12)
+          << "view plane at " << scale << " of the original";
     }
   }
 }

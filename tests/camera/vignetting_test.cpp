@@ -31,7 +31,8 @@ TEST(Vignetting, ZeroIsNoGain) {
   const Vignetting none;
   EXPECT_TRUE(none.isZero());
   for (const double r2 : {0.0, 0.5, 4.0}) EXPECT_EQ(none.gain(r2), 1.0);
-  for (const Vignetting v : {Vignetting{-0.1, 0, 0}, Vignetting{0, 0.2, 0}, Vignetting{0, 0, -1e-9}}) EXPECT_FALSE(v.isZero());
+  for (const Vignetting v : {Vignetting{-0.1, 0, 0}, Vignetting{0, 0.2, 0}, Vignetting{0, 0, -1e-9}})
+    EXPECT_FALSE(v.isZero());
 }
 
 TEST(Vignetting, GainIsThePolynomialInRSquaredClampedAtZero) {
@@ -138,7 +139,8 @@ TEST(VignettingPlan, TheGainIsPlannedLastAndOnlyWhenItIsNotZero) {
   const Scene scene = oneQuad();
   const ImageSize size{120, 80};
   const Camera plain = parseCameraJson("{" + kView + "}", "plain.json").camera;
-  const Camera zero = parseCameraJson("{" + kView + R"(, "vignetting": {"a1": 0, "a2": 0, "a3": 0}})", "zero.json").camera;
+  const Camera zero =
+      parseCameraJson("{" + kView + R"(, "vignetting": {"a1": 0, "a2": 0, "a3": 0}})", "zero.json").camera;
   const FramePlan a = makeFramePlan(scene, plain, size), z = makeFramePlan(scene, zero, size);
   EXPECT_EQ(passNames(z), passNames(a));
   EXPECT_FALSE(z.vignetting);
@@ -151,7 +153,9 @@ TEST(VignettingPlan, TheGainIsPlannedLastAndOnlyWhenItIsNotZero) {
   EXPECT_EQ(p.overscan.size.widthPx, size.widthPx);
   // With distortion and an aperture: after the lens pass and the resolve.
   const Camera all = parseCameraJson("{" + kView + R"(, "aperture_radius": 0.05, "distortion": {"k1": -0.1},
-                                          "vignetting": {"a1": -0.5}})", "all.json").camera;
+                                          "vignetting": {"a1": -0.5}})",
+                                     "all.json")
+                         .camera;
   // Many views: the resolve multiplies it in (a variant), no pass of its own.
   p = makeFramePlan(scene, all, size, PlanOptions{AperturePattern::Sobol, 16, 16, 1});
   EXPECT_TRUE(p.vignetting);

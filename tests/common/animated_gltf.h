@@ -34,7 +34,8 @@ class AnimatedGltf {
     gltf["accessors"][static_cast<std::size_t>(positions)]["max"] = {1, 1, 0};
     const std::vector<std::uint16_t> i = {0, 1, 2};
     const int indices = accessor(i.data(), i.size() * sizeof(std::uint16_t), kUShort, "SCALAR", 3);
-    return triangleMesh_ = push("meshes", {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}});
+    return triangleMesh_ =
+               push("meshes", {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}});
   }
 
   // A node (its JSON given), a root of the drawn scene unless it has a parent.
@@ -53,7 +54,8 @@ class AnimatedGltf {
     const std::size_t components = std::string(path) == "rotation" ? 4 : 3;
     const int input = floats(timesSeconds, "SCALAR", timesSeconds.size());
     const int output = floats(values, components == 4 ? "VEC4" : "VEC3", values.size() / components);
-    while (gltf["animations"].size() <= animation) gltf["animations"].push_back({{"samplers", json::array()}, {"channels", json::array()}});
+    while (gltf["animations"].size() <= animation)
+      gltf["animations"].push_back({{"samplers", json::array()}, {"channels", json::array()}});
     json& a = gltf["animations"][animation];
     a["samplers"].push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
     a["channels"].push_back({{"sampler", a["samplers"].size() - 1}, {"target", {{"node", target}, {"path", path}}}});
@@ -61,7 +63,8 @@ class AnimatedGltf {
 
   std::filesystem::path write(const std::filesystem::path& file) const {
     json g = gltf;
-    g["buffers"] = {{{"byteLength", bin_.size()}, {"uri", "data:application/octet-stream;base64," + OIIO::Strutil::base64_encode(bin_)}}};
+    g["buffers"] = {{{"byteLength", bin_.size()},
+                     {"uri", "data:application/octet-stream;base64," + OIIO::Strutil::base64_encode(bin_)}}};
     std::ofstream(file, std::ios::binary) << g.dump();
     return file;
   }
@@ -71,7 +74,8 @@ class AnimatedGltf {
     while (bin_.size() % 4) bin_.push_back('\0');
     const int view = push("bufferViews", {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", bytes}});
     bin_.append(static_cast<const char*>(data), bytes);
-    return push("accessors", {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}});
+    return push("accessors",
+                {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}});
   }
 
   int push(const char* collection, const json& item) {

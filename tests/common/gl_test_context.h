@@ -17,7 +17,7 @@ const std::string& whyNoGlContext();
 // machine that cannot give a context has a broken install, and a skipped GL suite would let ctest
 // report "100% passed" over tests that never ran.
 #define LENSLAB_REQUIRE_GL()                                                          \
-  do {                                                                               \
-    if (!::lenslab::test::sharedGlContext())                                         \
+  do {                                                                                \
+    if (!::lenslab::test::sharedGlContext())                                          \
       GTEST_FAIL() << "no OpenGL 4.5 context: " << ::lenslab::test::whyNoGlContext(); \
   } while (0)

@@ -20,7 +20,7 @@ inline std::filesystem::path invalidDirectory() { return corpusDirectory() / "in
 
 }  // namespace lenslab::test
 
-#define SKIP_UNLESS_EXISTS(path)                                                                             \
-  do {                                                                                                       \
+#define SKIP_UNLESS_EXISTS(path)                                                                           \
+  do {                                                                                                     \
     if (!std::filesystem::exists(path)) GTEST_SKIP() << (path) << " is absent (the external glTF corpus)"; \
   } while (false)

@@ -104,7 +104,8 @@ glm::dvec2 PinholeProjection::pixel(const glm::dvec3& world) const {
   return glm::dvec2(h) / h.z;
 }
 
-glm::dmat3 PinholeProjection::pixelFromUv(const glm::dvec3& origin, const glm::dvec3& perU, const glm::dvec3& perV) const {
+glm::dmat3 PinholeProjection::pixelFromUv(const glm::dvec3& origin, const glm::dvec3& perU,
+                                          const glm::dvec3& perV) const {
   return glm::dmat3(homogeneous(glm::dvec4(perU, 0.0)), homogeneous(glm::dvec4(perV, 0.0)),
                     homogeneous(glm::dvec4(origin, 1.0)));
 }
@@ -118,7 +119,8 @@ Mesh planeMesh(const TexturedPlane& plane, int material) {
   Mesh mesh;
   mesh.name = "plane";
   mesh.material = material;
-  const glm::dvec2 corners[4] = {plane.uvMin, {plane.uvMax.x, plane.uvMin.y}, plane.uvMax, {plane.uvMin.x, plane.uvMax.y}};
+  const glm::dvec2 corners[4] = {
+      plane.uvMin, {plane.uvMax.x, plane.uvMin.y}, plane.uvMax, {plane.uvMin.x, plane.uvMax.y}};
   const glm::dvec3 normal = glm::normalize(glm::cross(plane.perU, plane.perV));
   for (const glm::dvec2& uv : corners) {
     Vertex vertex;
@@ -136,8 +138,10 @@ namespace {
 int wrapRepeat(int i, int size) { return ((i % size) + size) % size; }
 
 glm::dvec3 texel(const TextureImage& image, int i, int j) {
-  const std::uint8_t* p = &image.rgba8[(static_cast<std::size_t>(wrapRepeat(j, image.height)) * static_cast<std::size_t>(image.width) +
-                                        static_cast<std::size_t>(wrapRepeat(i, image.width))) * 4];
+  const std::uint8_t* p =
+      &image.rgba8[(static_cast<std::size_t>(wrapRepeat(j, image.height)) * static_cast<std::size_t>(image.width) +
+                    static_cast<std::size_t>(wrapRepeat(i, image.width))) *
+                   4];
   return {decodeSrgb8(p[0]), decodeSrgb8(p[1]), decodeSrgb8(p[2])};
 }
 
@@ -182,8 +186,10 @@ Image planeImage(const TexturedPlane& plane, const PinholeProjection& projection
       }
       glm::dvec2 lo = quad[0], hi = quad[0];
       for (const glm::dvec2& p : quad) lo = glm::min(lo, p), hi = glm::max(hi, p);
-      const int x0 = std::max(0, static_cast<int>(std::floor(lo.x))), x1 = std::min(size.widthPx, static_cast<int>(std::ceil(hi.x)));
-      const int y0 = std::max(0, static_cast<int>(std::floor(lo.y))), y1 = std::min(size.heightPx, static_cast<int>(std::ceil(hi.y)));
+      const int x0 = std::max(0, static_cast<int>(std::floor(lo.x))),
+                x1 = std::min(size.widthPx, static_cast<int>(std::ceil(hi.x)));
+      const int y0 = std::max(0, static_cast<int>(std::floor(lo.y))),
+                y1 = std::min(size.heightPx, static_cast<int>(std::ceil(hi.y)));
       const auto bilinear = [&](glm::dvec2 p) {
         const glm::dvec3 h = uvFromPixel * glm::dvec3(p, 1.0);
         const double a = h.x / h.z * image.width - shift - i, b = h.y / h.z * image.height - shift - j;
@@ -193,7 +199,8 @@ Image planeImage(const TexturedPlane& plane, const PinholeProjection& projection
         for (int x = x0; x < x1; ++x) {
           const Polygon piece = clipToBox(quad, {x, y}, {x + 1.0, y + 1.0});
           if (piece.empty()) continue;
-          const std::size_t k = static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x);
+          const std::size_t k =
+              static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x);
           const double area = std::abs(signedArea(piece));
           covered[k] += area;
           sum[k] += plane.nearest ? area * c00 : integrateConvex(piece, bilinear, rule);
@@ -202,7 +209,8 @@ Image planeImage(const TexturedPlane& plane, const PinholeProjection& projection
   Image out(size.widthPx, size.heightPx);
   for (int y = 0; y < size.heightPx; ++y)
     for (int x = 0; x < size.widthPx; ++x) {
-      const std::size_t k = static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x);
+      const std::size_t k =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(size.widthPx) + static_cast<std::size_t>(x);
       out.set(x, y, glm::vec4(glm::vec3(sum[k] + (1.0 - covered[k]) * background), 1.0f));
     }
   return out;
@@ -249,7 +257,8 @@ using Intervals = std::vector<MovingInterval>;
 // Length of the intersection of `intervals` at lens offset a: piecewise linear in a.
 double overlap(const Intervals& intervals, double a) {
   double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const MovingInterval& i : intervals) lo = std::max(lo, i.lo + i.slope * a), hi = std::min(hi, i.hi + i.slope * a);
+  for (const MovingInterval& i : intervals)
+    lo = std::max(lo, i.lo + i.slope * a), hi = std::min(hi, i.hi + i.slope * a);
   return std::max(0.0, hi - lo);
 }
 

@@ -99,8 +99,8 @@ Mesh planeMesh(const TexturedPlane& plane, int material);
 
 // The exact pixel integral of `plane` seen through `projection` over `background`. The plane must
 // lie wholly in front of the camera. Bilinear cells are integrated with an n-point rule.
-Image planeImage(const TexturedPlane& plane, const PinholeProjection& projection, ImageSize size,
-                 glm::dvec3 background, int quadraturePoints = 8);
+Image planeImage(const TexturedPlane& plane, const PinholeProjection& projection, ImageSize size, glm::dvec3 background,
+                 int quadraturePoints = 8);
 
 // Convex flat-coloured polygons in pixel coordinates, nearest first (each hides what follows it):
 // exact coverage by inclusion–exclusion over the nearer polygons.
@@ -117,8 +117,8 @@ Image polygonsImage(const std::vector<ColouredPolygon>& nearestFirst, ImageSize 
 // integral is split where the integrand has kinks and done by Gauss–Legendre in between, so it
 // converges exponentially; `quadraturePoints` per piece.
 struct MovingRect {
-  glm::dvec2 lo, hi;        // pixels, seen from the lens centre
-  glm::dvec2 pxPerLens;     // pixels per world unit of lens offset, x and y
+  glm::dvec2 lo, hi;     // pixels, seen from the lens centre
+  glm::dvec2 pxPerLens;  // pixels per world unit of lens offset, x and y
   glm::dvec3 colour;
 };
 Image thinLensRectsImage(const MovingRect& front, const std::vector<MovingRect>& back, ImageSize size,

@@ -21,7 +21,8 @@ Camera cameraAt(double focusM, double halfWidth, double apertureRadius) {
 
 double maxDifference(const Image& a, const Image& b) {
   double worst = 0.0;
-  for (std::size_t i = 0; i < a.rgba.size(); ++i) worst = std::max(worst, static_cast<double>(std::abs(a.rgba[i] - b.rgba[i])));
+  for (std::size_t i = 0; i < a.rgba.size(); ++i)
+    worst = std::max(worst, static_cast<double>(std::abs(a.rgba[i] - b.rgba[i])));
   return worst;
 }
 
@@ -45,7 +46,10 @@ TEST(OracleIntegrator, TriangleRuleIsExactForPolynomialsUpToItsDegree) {
   const Polygon triangle{{0, 0}, {1, 0}, {0, 1}};
   for (int a = 0; a <= 2 * n - 2; ++a)
     for (int b = 0; a + b <= 2 * n - 2; ++b) {
-      const double got = integrateConvex(triangle, [&](glm::dvec2 p) { return glm::dvec3(std::pow(p.x, a) * std::pow(p.y, b)); }, rule).x;
+      const double got =
+          integrateConvex(
+              triangle, [&](glm::dvec2 p) { return glm::dvec3(std::pow(p.x, a) * std::pow(p.y, b)); }, rule)
+              .x;
       const double expected = std::tgamma(a + 1.0) * std::tgamma(b + 1.0) / std::tgamma(a + b + 3.0);
       EXPECT_NEAR(got, expected, 1e-15) << "x^" << a << " y^" << b;
     }
@@ -72,7 +76,9 @@ TEST(OracleIntegrator, ProjectionAgreesWithTheCameraModel) {
 // Fronto-parallel, the plane's texture coordinates are affine in the pixel's, and the pixel
 // integral separates: ∫∫ T(s, t) over the pixel = Σ T_ij · (∫ weight_i ds)(∫ weight_j dt), with
 // box weights (nearest) or hat weights centred on the texel centres (bilinear).
-double boxIntegral(double t0, double t1, int i) { return std::max(0.0, std::min(t1, i + 1.0) - std::max(t0, static_cast<double>(i))); }
+double boxIntegral(double t0, double t1, int i) {
+  return std::max(0.0, std::min(t1, i + 1.0) - std::max(t0, static_cast<double>(i)));
+}
 double hatIntegral(double t0, double t1, int i) {
   // Antiderivative of max(0, 1 − |t − c|), c = i + 0.5.
   const auto h = [&](double t) {
@@ -106,8 +112,10 @@ TEST(OracleIntegrator, FrontoParallelPlaneMatchesTheSeparableClosedForm) {
         glm::dvec3 sum(0.0);
         for (int j = static_cast<int>(std::floor(t0)) - 1; j <= static_cast<int>(std::ceil(t1)); ++j)
           for (int i = static_cast<int>(std::floor(s0)) - 1; i <= static_cast<int>(std::ceil(s1)); ++i) {
-            const double w = nearest ? boxIntegral(s0, s1, i) * boxIntegral(t0, t1, j) : hatIntegral(s0, s1, i) * hatIntegral(t0, t1, j);
-            const std::uint8_t* p = &image.rgba8[static_cast<std::size_t>(((j % 16 + 16) % 16) * 16 + (i % 16 + 16) % 16) * 4];
+            const double w = nearest ? boxIntegral(s0, s1, i) * boxIntegral(t0, t1, j)
+                                     : hatIntegral(s0, s1, i) * hatIntegral(t0, t1, j);
+            const std::uint8_t* p =
+                &image.rgba8[static_cast<std::size_t>(((j % 16 + 16) % 16) * 16 + (i % 16 + 16) % 16) * 4];
             sum += w * glm::dvec3(decodeSrgb8(p[0]), decodeSrgb8(p[1]), decodeSrgb8(p[2]));
           }
         sum /= (s1 - s0) * (t1 - t0);
@@ -125,7 +133,9 @@ TEST(OracleIntegrator, ThinLensIntegralMatchesBruteForceAndHasConverged) {
   std::vector<MovingRect> back;
   for (int j = 0; j < 6; ++j)
     for (int i = 0; i < 8; ++i)
-      back.push_back({{30.2 + 4.7 * i, 14.9 + 3.1 * j}, {30.2 + 4.7 * (i + 1), 14.9 + 3.1 * (j + 1)}, {6.0, -5.5},
+      back.push_back({{30.2 + 4.7 * i, 14.9 + 3.1 * j},
+                      {30.2 + 4.7 * (i + 1), 14.9 + 3.1 * (j + 1)},
+                      {6.0, -5.5},
                       {0.1 * (i % 5), 0.15 * (j % 4), 0.3 + 0.05 * ((i + j) % 3)}});
   const glm::dvec3 background{0.05, 0.06, 0.08};
   const double radius = 0.25;
@@ -135,8 +145,10 @@ TEST(OracleIntegrator, ThinLensIntegralMatchesBruteForceAndHasConverged) {
   EXPECT_LT(maxDifference(used, fine), 1e-7);
 
   const auto area = [](const MovingRect& r, const MovingRect* also, glm::dvec2 lens, int x, int y) {
-    glm::dvec2 lo = glm::max(r.lo + r.pxPerLens * lens, glm::dvec2(x, y)), hi = glm::min(r.hi + r.pxPerLens * lens, glm::dvec2(x + 1, y + 1));
-    if (also) lo = glm::max(lo, also->lo + also->pxPerLens * lens), hi = glm::min(hi, also->hi + also->pxPerLens * lens);
+    glm::dvec2 lo = glm::max(r.lo + r.pxPerLens * lens, glm::dvec2(x, y)),
+               hi = glm::min(r.hi + r.pxPerLens * lens, glm::dvec2(x + 1, y + 1));
+    if (also)
+      lo = glm::max(lo, also->lo + also->pxPerLens * lens), hi = glm::min(hi, also->hi + also->pxPerLens * lens);
     return std::max(0.0, hi.x - lo.x) * std::max(0.0, hi.y - lo.y);
   };
   for (const glm::ivec2 pixel : {glm::ivec2(41, 21), glm::ivec2(52, 30), glm::ivec2(35, 18), glm::ivec2(60, 33)}) {

@@ -14,8 +14,10 @@ class ShaderDirOverride {
     setenv("LENSLAB_SHADER_DIR", dir.c_str(), 1);
   }
   ~ShaderDirOverride() {
-    if (old_.empty()) unsetenv("LENSLAB_SHADER_DIR");
-    else setenv("LENSLAB_SHADER_DIR", old_.c_str(), 1);
+    if (old_.empty())
+      unsetenv("LENSLAB_SHADER_DIR");
+    else
+      setenv("LENSLAB_SHADER_DIR", old_.c_str(), 1);
   }
   ShaderDirOverride(const ShaderDirOverride&) = delete;
   ShaderDirOverride& operator=(const ShaderDirOverride&) = delete;

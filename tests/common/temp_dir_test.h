@@ -15,8 +15,8 @@ class TempDirTest : public ::testing::Test {
   void SetUp() override {
     const ::testing::UnitTest& run = *::testing::UnitTest::GetInstance();
     dir_ = std::filesystem::temp_directory_path() /
-           ("lenslab-" + std::string(run.current_test_info()->test_suite_name()) + "-" + std::to_string(run.random_seed()) + "-" +
-            run.current_test_info()->name());
+           ("lenslab-" + std::string(run.current_test_info()->test_suite_name()) + "-" +
+            std::to_string(run.random_seed()) + "-" + run.current_test_info()->name());
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
@@ -24,8 +24,8 @@ class TempDirTest : public ::testing::Test {
 
   // Every name under the folder, dot files (temporaries, probes) and subfolders included.
   std::size_t fileCount() const {
-    return static_cast<std::size_t>(
-        std::distance(std::filesystem::recursive_directory_iterator(dir_), std::filesystem::recursive_directory_iterator()));
+    return static_cast<std::size_t>(std::distance(std::filesystem::recursive_directory_iterator(dir_),
+                                                  std::filesystem::recursive_directory_iterator()));
   }
 
   std::filesystem::path dir_;

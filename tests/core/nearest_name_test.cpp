@@ -8,10 +8,10 @@ namespace {
 
 TEST(NearestName, EditDistanceCountsInsertionsDeletionsSubstitutionsAndSwaps) {
   EXPECT_EQ(editDistance("render", "render"), 0);
-  EXPECT_EQ(editDistance("rendr", "render"), 1);           // a deletion
-  EXPECT_EQ(editDistance("renderr", "render"), 1);         // an insertion
-  EXPECT_EQ(editDistance("rander", "render"), 1);          // a substitution
-  EXPECT_EQ(editDistance("lenght", "length"), 1);          // two neighbours swapped
+  EXPECT_EQ(editDistance("rendr", "render"), 1);    // a deletion
+  EXPECT_EQ(editDistance("renderr", "render"), 1);  // an insertion
+  EXPECT_EQ(editDistance("rander", "render"), 1);   // a substitution
+  EXPECT_EQ(editDistance("lenght", "length"), 1);   // two neighbours swapped
   EXPECT_EQ(editDistance("", "view"), 4);
   EXPECT_EQ(editDistance("sweep", "info"), 5);
 }

@@ -89,7 +89,8 @@ std::vector<Case> randomCases(std::uint32_t seed) {
     c.surface.occlusion = u(rng);
     c.surface.n = unit();
     c.surface.v = unit();
-    if (u(rng) < 0.8f && glm::dot(c.surface.n, c.surface.v) < 0.0f) c.surface.v = -c.surface.v;  // mostly in front, some silhouettes
+    if (u(rng) < 0.8f && glm::dot(c.surface.n, c.surface.v) < 0.0f)
+      c.surface.v = -c.surface.v;  // mostly in front, some silhouettes
     c.p = {in(-1, 1), in(-1, 1), in(-1, 1)};
     c.light.type = std::min(2, static_cast<int>(3.0f * u(rng)));
     c.light.intensity = {in(0, 100), in(0, 100), in(0, 100)};
@@ -111,12 +112,38 @@ std::vector<float> packed(const std::vector<Case>& cases) {
   for (const Case& c : cases) {
     const ShadingSurface& s = c.surface;
     const ShadingLight& l = c.light;
-    const float values[kFloatsPerCase] = {
-        s.baseColor.r, s.baseColor.g, s.baseColor.b, s.metallic, s.perceptualRoughness, s.occlusion,
-        s.n.x, s.n.y, s.n.z, s.v.x, s.v.y, s.v.z, c.p.x, c.p.y, c.p.z, static_cast<float>(l.type),
-        l.intensity.r, l.intensity.g, l.intensity.b, l.position.x, l.position.y, l.position.z,
-        l.direction.x, l.direction.y, l.direction.z, l.range, l.spotScale, l.spotOffset,
-        c.diffuseRadiance.r, c.diffuseRadiance.g, c.diffuseRadiance.b, c.specularRadiance};
+    const float values[kFloatsPerCase] = {s.baseColor.r,
+                                          s.baseColor.g,
+                                          s.baseColor.b,
+                                          s.metallic,
+                                          s.perceptualRoughness,
+                                          s.occlusion,
+                                          s.n.x,
+                                          s.n.y,
+                                          s.n.z,
+                                          s.v.x,
+                                          s.v.y,
+                                          s.v.z,
+                                          c.p.x,
+                                          c.p.y,
+                                          c.p.z,
+                                          static_cast<float>(l.type),
+                                          l.intensity.r,
+                                          l.intensity.g,
+                                          l.intensity.b,
+                                          l.position.x,
+                                          l.position.y,
+                                          l.position.z,
+                                          l.direction.x,
+                                          l.direction.y,
+                                          l.direction.z,
+                                          l.range,
+                                          l.spotScale,
+                                          l.spotOffset,
+                                          c.diffuseRadiance.r,
+                                          c.diffuseRadiance.g,
+                                          c.diffuseRadiance.b,
+                                          c.specularRadiance};
     data.insert(data.end(), std::begin(values), std::end(values));
   }
   return data;
@@ -129,8 +156,10 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
   fs::create_directories(dir / "common");
   fs::create_directories(dir / "probe");
   fs::copy_file(source / "common/brdf.glsl", dir / "common/brdf.glsl", fs::copy_options::overwrite_existing);
-  fs::copy_file(source / "common/dfg_filtered.glsl", dir / "common/dfg_filtered.glsl", fs::copy_options::overwrite_existing);
-  fs::copy_file(source / "common/fullscreen.vert", dir / "common/fullscreen.vert", fs::copy_options::overwrite_existing);
+  fs::copy_file(source / "common/dfg_filtered.glsl", dir / "common/dfg_filtered.glsl",
+                fs::copy_options::overwrite_existing);
+  fs::copy_file(source / "common/fullscreen.vert", dir / "common/fullscreen.vert",
+                fs::copy_options::overwrite_existing);
   std::ofstream(dir / "probe/brdf_probe.frag") << kProbe;
   gl::Program program;
   {
@@ -170,9 +199,10 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
       for (int x = 0; x < kWidth; ++x) {
         const Case& c = cases[static_cast<std::size_t>((kHeight - 1 - yTop) * kWidth + x)];
         const glm::vec3 expected =
-            mode == 0 ? punctualRadiance(c.surface, c.light, c.p)
-                      : imageLightRadiance(c.surface, c.diffuseRadiance, glm::vec3(c.specularRadiance),
-                                           dfgLookup(glm::dot(c.surface.n, c.surface.v), c.surface.perceptualRoughness));
+            mode == 0
+                ? punctualRadiance(c.surface, c.light, c.p)
+                : imageLightRadiance(c.surface, c.diffuseRadiance, glm::vec3(c.specularRadiance),
+                                     dfgLookup(glm::dot(c.surface.n, c.surface.v), c.surface.perceptualRoughness));
         const glm::vec4 got = image.at(x, yTop);
         // Relative to the case's brightest channel (a channel near 0 beside a bright one is
         // judged on the case's scale, not its own).
@@ -182,12 +212,16 @@ TEST(BrdfGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
           ASSERT_TRUE(std::isfinite(got[k])) << "mode " << mode << " pixel " << x << "," << yTop;
           const double error = scale > 0.0f ? std::abs(got[k] - expected[k]) / scale : std::abs(got[k]);
           worst = std::max(worst, error);
-          EXPECT_LE(error, 1e-5) << "mode " << mode << " pixel " << x << "," << yTop << " channel " << k << ": GLSL " << got[k]
-                                 << ", C++ " << expected[k];
+          EXPECT_LE(error, 1e-5) << "mode " << mode << " pixel " << x << "," << yTop << " channel " << k << ": GLSL "
+                                 << got[k] << ", C++ " << expected[k];
         }
       }
-    std::cout << "[ measure  ] brdf.glsl GLSL vs C++, " << (mode == 0 ? "punctual" : mode == 1 ? "image light" : "image light, filtered DFG") << ": " << cases.size()
-              << " random cases (" << lit << " lit), worst relative difference " << worst << "\n";
+    std::cout << "[ measure  ] brdf.glsl GLSL vs C++, "
+              << (mode == 0   ? "punctual"
+                  : mode == 1 ? "image light"
+                              : "image light, filtered DFG")
+              << ": " << cases.size() << " random cases (" << lit << " lit), worst relative difference " << worst
+              << "\n";
     EXPECT_GE(lit, 1000) << "the cases must light something";
   }
 }

@@ -31,7 +31,7 @@ namespace fs = std::filesystem;
 constexpr int kWidth = 64, kHeight = 64;  // 4096 cases
 constexpr int kFloatsPerCase = 168;       // the layout below; lights from 64, 13 floats each
 constexpr int kFirstLight = 64, kFloatsPerLight = 13;
-constexpr int kResultsPerCase = 12;       // radiance, alpha, normal, cut out, base colour
+constexpr int kResultsPerCase = 12;  // radiance, alpha, normal, cut out, base colour
 
 // The probe: shade_surface.glsl's includer functions read case k of a storage buffer (the texels,
 // the lights, the surround; the environment's lookups are smooth functions of their arguments, so
@@ -136,7 +136,9 @@ class CaseFetch final : public SurfaceFetch {
   float occlusionTexel() const override { return c_.occlusionTexel; }
   glm::vec3 emissiveTexel() const override { return c_.emissiveTexel; }
   glm::vec3 normalTexel() const override { return c_.normalTexel; }
-  glm::vec3 environmentDiffuse(const glm::vec3& n) const override { return c_.environmentDiffuse * (glm::vec3(1.5f) + n); }
+  glm::vec3 environmentDiffuse(const glm::vec3& n) const override {
+    return c_.environmentDiffuse * (glm::vec3(1.5f) + n);
+  }
   glm::vec3 environmentSpecular(const glm::vec3& r, float roughness) const override {
     return c_.environmentSpecular * (glm::vec3(1.5f) + r) * (1.0f + roughness);
   }
@@ -179,7 +181,7 @@ std::vector<Case> randomCases(std::uint32_t seed) {
     m.hasEmissiveTexture = chance(0.5f);
     SurfacePoint& p = c.point;
     p.vertexColor = chance(0.5f) ? glm::vec4(1.0f) : colour();
-    p.normal = unit() * in(0.2f, 3.0f);  // interpolated: not unit
+    p.normal = unit() * in(0.2f, 3.0f);                                    // interpolated: not unit
     p.tangent = chance(0.1f) ? glm::vec3(0.0f) : unit() * in(0.2f, 3.0f);  // some meshes have none
     p.handedness = chance(0.5f) ? 1.0f : -1.0f;
     p.frontFacing = chance(0.7f);
@@ -276,7 +278,8 @@ gl::Program buildProbe() {
   const fs::path dir = fs::temp_directory_path() / ("lenslab-shade-surface-probe-" + std::to_string(getpid()));
   fs::create_directories(dir / "common");
   fs::create_directories(dir / "probe");
-  for (const char* file : {"brdf.glsl", "dfg_filtered.glsl", "material_maps.glsl", "shade_surface.glsl", "fullscreen.vert"})
+  for (const char* file :
+       {"brdf.glsl", "dfg_filtered.glsl", "material_maps.glsl", "shade_surface.glsl", "fullscreen.vert"})
     fs::copy_file(source / "common" / file, dir / "common" / file, fs::copy_options::overwrite_existing);
   std::ofstream(dir / "probe/shade_surface_probe.frag") << kProbe;
   gl::Program program;
@@ -353,7 +356,8 @@ TEST(ShadeSurfaceGlsl, AgreesWithItsCppCompilationOnRandomInputs) {
         ASSERT_TRUE(std::isfinite(glslValues[j])) << what << " of case " << i;
         const double error = std::abs(glslValues[j] - cppValues[j]) / scale;
         worst = std::max(worst, error);
-        EXPECT_LE(error, 1e-5) << what << "[" << j << "] of case " << i << ": GLSL " << glslValues[j] << ", C++ " << cppValues[j];
+        EXPECT_LE(error, 1e-5) << what << "[" << j << "] of case " << i << ": GLSL " << glslValues[j] << ", C++ "
+                               << cppValues[j];
       }
     };
     compare("radiance", got, &shaded.radiance.x, 3);

@@ -93,8 +93,10 @@ TEST(EmbeddedShaders, MatchTheSourceTree) {
     embedded[std::string(shader.path)] = std::string(shader.text);
   for (const auto& [path, text] : files) {
     const auto it = embedded.find(path);
-    if (it == embedded.end()) ADD_FAILURE() << "shaders/" << path << " is not compiled in: add it to LENSLAB_SHADERS in CMakeLists.txt";
-    else EXPECT_EQ(it->second, text) << "shaders/" << path << " differs from its compiled-in copy";
+    if (it == embedded.end())
+      ADD_FAILURE() << "shaders/" << path << " is not compiled in: add it to LENSLAB_SHADERS in CMakeLists.txt";
+    else
+      EXPECT_EQ(it->second, text) << "shaders/" << path << " differs from its compiled-in copy";
   }
   for (const auto& entry : embedded)
     EXPECT_TRUE(files.count(entry.first)) << "compiled in but not in shaders/: " << entry.first;

@@ -25,7 +25,8 @@ void expectRefused(const std::string& text, const std::string& fragment) {
 TEST(CameraJson, ReadsTheLectureForm) {
   const CameraFile f = parseCameraJson(R"({"projection": "perspective", "vrp": [0, 0, -5],
       "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [0.5, 0, 5], "window": [-2, -1, 2, 1],
-      "near": 0.1, "far": "infinity"})", "cam.json");
+      "near": 0.1, "far": "infinity"})",
+                                       "cam.json");
   const ViewSpec& s = f.camera.view;
   EXPECT_EQ(s.projection, Projection::Perspective);
   EXPECT_EQ(s.vrp, glm::dvec3(0, 0, -5));
@@ -39,14 +40,16 @@ TEST(CameraJson, ReadsTheLectureForm) {
 
 TEST(CameraJson, ReadsTheParallelLectureForm) {
   const CameraFile f = parseCameraJson(R"({"projection": "parallel", "vrp": [0, 0, 0],
-      "vpn": [0, 0, 1], "prp": [0, 0, 5], "window": [-2, -1, 2, 1], "far": 20})", "cam.json");
+      "vpn": [0, 0, 1], "prp": [0, 0, 5], "window": [-2, -1, 2, 1], "far": 20})",
+                                       "cam.json");
   EXPECT_EQ(f.camera.view.projection, Projection::Parallel);
   EXPECT_DOUBLE_EQ(f.camera.view.farDistance, 20.0);
 }
 
 TEST(CameraJson, ReadsThePhysicalFormWithDefaults) {
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 4,
-      "focal_length_mm": 50})", "cam.json");
+      "focal_length_mm": 50})",
+                                       "cam.json");
   ASSERT_TRUE(f.physical.has_value());
   EXPECT_DOUBLE_EQ(f.physical->focusDistance, 5.0);
   EXPECT_EQ(f.physical->sensorMm, glm::dvec2(36, 24));
@@ -68,7 +71,8 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
   expectRefused("{ not json", "not valid JSON");
   // A key given twice (nlohmann would keep the second silently), at the top and nested.
   expectRefused(R"({"eye": [0, 1, 3], "eye": [0, 2, 3], "target": [0, 0, 0]})", "the key \"eye\" is given twice");
-  expectRefused(R"({"eye": [0, 1, 3], "target": [0, 0, 0], "distortion": {"k1": 0.1, "k1": 0.2}})", "the key \"k1\" is given twice");
+  expectRefused(R"({"eye": [0, 1, 3], "target": [0, 0, 0], "distortion": {"k1": 0.1, "k1": 0.2}})",
+                "the key \"k1\" is given twice");
   expectRefused("[1, 2]", "JSON object");
   expectRefused("{}", "no camera");
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "focal_lenght_mm": 50})", "focal_lenght_mm");
@@ -79,8 +83,12 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "vrp": [0, 0, 0]})", "mixes");
   expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 0], "prp": [0, 0, 1], "window": [-1, -1, 1, 1]})", "vpn");
   expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [1, -1, -1, 1]})", "window");
-  expectRefused(R"({"projection": "fisheye", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1]})", "\"projection\"");
-  expectRefused(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1], "near": 5, "far": 2})", "near");
+  expectRefused(
+      R"({"projection": "fisheye", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1]})",
+      "\"projection\"");
+  expectRefused(
+      R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-1, -1, 1, 1], "near": 5, "far": 2})",
+      "near");
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "focus_distance": 0.01})", "focus_distance");
   // One spelling of infinity: "inf" is refused, naming the key.
   expectRefused(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "f_number": 2, "focus_distance": "inf"})", "focus_distance");
@@ -93,7 +101,8 @@ TEST(CameraJson, RefusesBadInputWithTheKeyNamed) {
 TEST(CameraJson, FocalLengthInPixelsBeyondItsRangeIsRefused) {
   expectRefused(R"({"intrinsics": {"fx": 1e300, "fy": 1e300, "cx": 480, "cy": 320, "width": 960, "height": 640},
                     "eye": [0, 1, 5], "target": [0, 1, 0], "dist": [0.1, 0, 0, 0]})",
-                "\"intrinsics.fx\" (the focal length in pixels): 1e+300 is out of range; give a finite value from 0.001 to 1e+09");
+                "\"intrinsics.fx\" (the focal length in pixels): 1e+300 is out of range; give a finite value from "
+                "0.001 to 1e+09");
   expectRefused(R"({"intrinsics": {"fx": 500, "fy": 0, "cx": 480, "cy": 320, "width": 960, "height": 640},
                     "eye": [0, 1, 5], "target": [0, 1, 0]})",
                 "\"intrinsics.fy\" (the focal length in pixels): 0 is out of range");
@@ -115,16 +124,19 @@ TEST(CameraJson, LongUserTextIsQuotedShort) {
 }
 
 TEST(CameraJson, NumberBeyondDoubleIsRefusedAsInvalidJson) {
-  expectRefused(R"({"eye": [0, 0, 2.5e308], "target": [0, 0, 0]})", "not valid JSON: number overflow parsing '2.5e308'");
+  expectRefused(R"({"eye": [0, 0, 2.5e308], "target": [0, 0, 0]})",
+                "not valid JSON: number overflow parsing '2.5e308'");
   expectRefused("[1, -1e400]", "not valid JSON");
 }
 
 // Found by reading the reader while fuzzing (no sanitizer sees it): get<int>() wrapped a whole
 // number beyond int, so a width of 2^32 + 1 pixels was read as 1 and accepted.
 TEST(CameraJson, WholeNumberBeyondIntIsRefusedNotWrapped) {
-  const std::string head = R"({"eye": [0, 0, 3], "target": [0, 0, 0], "intrinsics": {"fx": 500, "fy": 500, "cx": 0, "cy": 0, )";
+  const std::string head =
+      R"({"eye": [0, 0, 3], "target": [0, 0, 0], "intrinsics": {"fx": 500, "fy": 500, "cx": 0, "cy": 0, )";
   expectRefused(head + R"("width": 4294967297, "height": 480}})", "\"intrinsics.width\" is 4294967297");
-  expectRefused(head + R"("width": 640, "height": 18446744073709551615}})", "\"intrinsics.height\" is 18446744073709551615");
+  expectRefused(head + R"("width": 640, "height": 18446744073709551615}})",
+                "\"intrinsics.height\" is 18446744073709551615");
   expectRefused(head + R"("width": 640, "height": -4294967295}})", "\"intrinsics.height\"");
 }
 
@@ -144,7 +156,8 @@ namespace {
 
 TEST(CameraJson, ReadsAndWritesTheAperturesShape) {
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
-      "aperture": {"blades": 7, "rotation_deg": 12.5, "roundness": 0.25, "anamorphic_squeeze": 1.33}})", "cam.json");
+      "aperture": {"blades": 7, "rotation_deg": 12.5, "roundness": 0.25, "anamorphic_squeeze": 1.33}})",
+                                       "cam.json");
   EXPECT_EQ(f.camera.lens.aperture, (ApertureShape{7, 12.5, 0.25, 1.33}));
   const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
   EXPECT_EQ(back.camera.lens.aperture, f.camera.lens.aperture);
@@ -152,7 +165,8 @@ TEST(CameraJson, ReadsAndWritesTheAperturesShape) {
   EXPECT_TRUE(parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0]})", "cam.json").camera.lens.aperture.isRound());
   const CameraFile lecture = parseCameraJson(
       R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1], "aperture_radius": 0.1,
-          "aperture": {"blades": 5}})", "cam.json");
+          "aperture": {"blades": 5}})",
+      "cam.json");
   EXPECT_EQ(lecture.camera.lens.aperture.blades, 5);
 }
 
@@ -174,7 +188,8 @@ namespace {
 
 TEST(CameraJson, ReadsAndWritesTheLensBarrel) {
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
-      "barrel": {"distance_mm": 40, "diameter_mm": 30}})", "cam.json");
+      "barrel": {"distance_mm": 40, "diameter_mm": 30}})",
+                                       "cam.json");
   EXPECT_DOUBLE_EQ(f.camera.lens.barrel.distance, 0.04);
   EXPECT_DOUBLE_EQ(f.camera.lens.barrel.radius, 0.015);
   const CameraFile back = parseCameraJson(toCameraJson(f.camera), "saved.json");
@@ -188,7 +203,8 @@ TEST(CameraJson, ReadsAndWritesTheLensBarrel) {
 TEST(CameraJson, TakesTheLensBarrelWithDistortionAndLateralColourButNotWithAParallelProjection) {
   const CameraFile f = parseCameraJson(R"({"eye": [0, 1, 5], "target": [0, 1, 0], "f_number": 2,
       "barrel": {"distance_mm": 40, "diameter_mm": 30}, "distortion": {"k1": -0.2, "k2": 0.03},
-      "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})", "cam.json");
+      "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})",
+                                       "cam.json");
   EXPECT_DOUBLE_EQ(f.camera.lens.barrel.radius, 0.015);
   EXPECT_DOUBLE_EQ(f.camera.lens.effects.distortion.k1, -0.2);
   EXPECT_TRUE(f.camera.lens.effects.needsRemap());

@@ -77,8 +77,9 @@ TEST(FrameSequence, AStepTakesEverySteppedFrameUpToTheEnd) {
       parseFrameRange(bad, 73);
       ADD_FAILURE() << bad << " accepted";
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("the step after the second colon must be a whole number of frames, 1 or more"),
-                std::string::npos)
+      EXPECT_NE(
+          std::string(e.what()).find("the step after the second colon must be a whole number of frames, 1 or more"),
+          std::string::npos)
           << e.what();
     }
   }
@@ -145,13 +146,16 @@ TEST(FrameCameraFile, PoseAndIntrinsicsProjectAsLenslabDoes) {
     const OpenCvPose pose = poseOf(view);
     const ViewBasis b = viewBasis(view);
     const glm::dvec3 prp = prpWorld(view);
-    for (const glm::dvec3 offset : {glm::dvec3(0.1, 0.2, -3.0), glm::dvec3(-0.5, 0.3, -1.0), glm::dvec3(0.7, -0.4, -6.0)}) {
+    for (const glm::dvec3 offset :
+         {glm::dvec3(0.1, 0.2, -3.0), glm::dvec3(-0.5, 0.3, -1.0), glm::dvec3(0.7, -0.4, -6.0)}) {
       const glm::dvec3 world = prp + offset.x * b.u + offset.y * b.v + offset.z * b.n;
-      const glm::dvec3 cam(glm::dot(pose.rows[0], world) + pose.translation.x, glm::dot(pose.rows[1], world) + pose.translation.y,
+      const glm::dvec3 cam(glm::dot(pose.rows[0], world) + pose.translation.x,
+                           glm::dot(pose.rows[1], world) + pose.translation.y,
                            glm::dot(pose.rows[2], world) + pose.translation.z);
       ASSERT_GT(cam.z, 0.0);
       const glm::dvec2 opencv(k.fx * cam.x / cam.z + k.cx, k.fy * cam.y / cam.z + k.cy);
-      const glm::dvec2 lenslab = pixelFromWindow(view.window, projectToWindow(view, world), size.widthPx, size.heightPx);
+      const glm::dvec2 lenslab =
+          pixelFromWindow(view.window, projectToWindow(view, world), size.widthPx, size.heightPx);
       EXPECT_NEAR(opencv.x + 0.5, lenslab.x, 1e-9);
       EXPECT_NEAR(opencv.y + 0.5, lenslab.y, 1e-9);
     }
@@ -181,8 +185,9 @@ TEST(FrameCameraFile, ReadsBackAsTheSameCamera) {
   const ViewSpec& b = got.view;
   for (const glm::dvec2 corner : {glm::dvec2(a.window.umin, a.window.vmin), glm::dvec2(a.window.umax, a.window.vmax)}) {
     const glm::dvec2 slopeA = (corner - glm::dvec2(a.prp)) / a.prp.z;
-    const glm::dvec2 cornerB = corner == glm::dvec2(a.window.umin, a.window.vmin) ? glm::dvec2(b.window.umin, b.window.vmin)
-                                                                               : glm::dvec2(b.window.umax, b.window.vmax);
+    const glm::dvec2 cornerB = corner == glm::dvec2(a.window.umin, a.window.vmin)
+                                   ? glm::dvec2(b.window.umin, b.window.vmin)
+                                   : glm::dvec2(b.window.umax, b.window.vmax);
     const glm::dvec2 slopeB = (cornerB - glm::dvec2(b.prp)) / b.prp.z;
     EXPECT_NEAR(slopeA.x, slopeB.x, 1e-12);
     EXPECT_NEAR(slopeA.y, slopeB.y, 1e-12);
@@ -202,7 +207,8 @@ TEST(FrameCameraFile, APathGivingNearOrFarKeepsIt) {
   const CameraPath open = parseCameraPath(R"({"fps": 24, "keys": [)" + key0 + "}, " + key1 + "}]}", "p");
   EXPECT_TRUE(open.nearFromScene);
   EXPECT_TRUE(open.farFromScene);
-  const CameraPath given = parseCameraPath(R"({"fps": 24, "keys": [)" + key0 + R"(, "near": 0.1}, )" + key1 + "}]}", "p");
+  const CameraPath given =
+      parseCameraPath(R"({"fps": 24, "keys": [)" + key0 + R"(, "near": 0.1}, )" + key1 + "}]}", "p");
   EXPECT_FALSE(given.nearFromScene);
   EXPECT_TRUE(given.farFromScene);
 }

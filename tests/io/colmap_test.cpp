@@ -51,7 +51,9 @@ glm::dvec2 colmapImgFromCam(const std::string& model, const std::vector<double>&
   double fx = 0, fy = 0, cx = 0, cy = 0, du = 0, dv = 0;
   if (model == "SIMPLE_PINHOLE" || model == "SIMPLE_RADIAL" || model == "RADIAL") {
     fx = fy = p[0], cx = p[1], cy = p[2];
-    const double radial = model == "SIMPLE_PINHOLE" ? 0.0 : model == "SIMPLE_RADIAL" ? p[3] * r2 : p[3] * r2 + p[4] * r2 * r2;
+    const double radial = model == "SIMPLE_PINHOLE"  ? 0.0
+                          : model == "SIMPLE_RADIAL" ? p[3] * r2
+                                                     : p[3] * r2 + p[4] * r2 * r2;
     du = u * radial, dv = v * radial;
   } else {
     fx = p[0], fy = p[1], cx = p[2], cy = p[3];
@@ -62,7 +64,8 @@ glm::dvec2 colmapImgFromCam(const std::string& model, const std::vector<double>&
       dv = v * radial + 2 * p2 * u * v + p1 * (r2 + 2 * v * v);
     } else if (model == "FULL_OPENCV") {
       const double k1 = p[4], k2 = p[5], p1 = p[6], p2 = p[7], k3 = p[8], k4 = p[9], k5 = p[10], k6 = p[11];
-      const double radial = (1 + k1 * r2 + k2 * r2 * r2 + k3 * r2 * r2 * r2) / (1 + k4 * r2 + k5 * r2 * r2 + k6 * r2 * r2 * r2);
+      const double radial =
+          (1 + k1 * r2 + k2 * r2 * r2 + k3 * r2 * r2 * r2) / (1 + k4 * r2 + k5 * r2 * r2 + k6 * r2 * r2 * r2);
       du = u * radial + 2 * p1 * u * v + p2 * (r2 + 2 * u * u) - u;
       dv = v * radial + 2 * p2 * u * v + p1 * (r2 + 2 * v * v) - v;
     }
@@ -141,7 +144,8 @@ INSTANTIATE_TEST_SUITE_P(Models, ColmapCameraModel, ::testing::ValuesIn(kCases),
 // --- reading: the layout -------------------------------------------------------------------
 
 TEST(ColmapText, CommentsBlankLinesCarriageReturnsAndPointLinesAreRead) {
-  const std::string cameras = "# header\r\n\r\n  1 PINHOLE 640 480 500 500 320 240\r\n\n\t# another\n2\tSIMPLE_PINHOLE  100 50 90 50 25\n";
+  const std::string cameras =
+      "# header\r\n\r\n  1 PINHOLE 640 480 500 500 320 240\r\n\n\t# another\n2\tSIMPLE_PINHOLE  100 50 90 50 25\n";
   const std::vector<ColmapCamera> c = parseColmapCameras(cameras, "cameras.txt");
   ASSERT_EQ(c.size(), 2u);
   EXPECT_EQ(c[0].line, 3);
@@ -150,7 +154,8 @@ TEST(ColmapText, CommentsBlankLinesCarriageReturnsAndPointLinesAreRead) {
   // Two lines an image: an empty POINTS2D line, one with triples, and the last one missing at
   // the end of the file (COLMAP stops there too). A blank line after the POINTS2D line is skipped.
   const std::string images =
-      "# Image list\n1 1 0 0 0 0 0 0 1 a.png\n\n\n2 1 0 0 0 1 2 3 2 b.png\n10.5 20.5 -1 30 40 7\n# c\n3 1 0 0 0 0 0 0 1 c.png";
+      "# Image list\n1 1 0 0 0 0 0 0 1 a.png\n\n\n2 1 0 0 0 1 2 3 2 b.png\n10.5 20.5 -1 30 40 7\n# c\n3 1 0 0 0 0 0 0 "
+      "1 c.png";
   const std::vector<ColmapImage> i = parseColmapImages(images, "images.txt");
   ASSERT_EQ(i.size(), 3u);
   EXPECT_EQ(i[1].name, "b.png");
@@ -183,13 +188,17 @@ std::string errorOf(F f) {
 }
 
 void expectHas(const std::string& message, std::initializer_list<const char*> parts) {
-  for (const char* part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  for (const char* part : parts)
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
 }
 
 TEST(ColmapText, EachBadLineIsRefusedNamingFileLineAndField) {
-  const auto cameras = [](const std::string& text) { return errorOf([&] { parseColmapCameras(text, "m/cameras.txt"); }); };
+  const auto cameras = [](const std::string& text) {
+    return errorOf([&] { parseColmapCameras(text, "m/cameras.txt"); });
+  };
   const auto images = [](const std::string& text) { return errorOf([&] { parseColmapImages(text, "m/images.txt"); }); };
-  expectHas(cameras("# c\n1 PINHOLE 640 480 500 500 320\n"), {"m/cameras.txt:2:", "PINHOLE", "4 parameters", "fx, fy, cx, cy"});
+  expectHas(cameras("# c\n1 PINHOLE 640 480 500 500 320\n"),
+            {"m/cameras.txt:2:", "PINHOLE", "4 parameters", "fx, fy, cx, cy"});
   expectHas(cameras("1 PINHOLE 640 480 500 five 320 240\n"), {"m/cameras.txt:1:", "parameter 2", "five"});
   expectHas(cameras("1 PINHOLE 640 480 500 nan 320 240\n"), {"m/cameras.txt:1:", "finite"});
   expectHas(cameras("1 PINHOLE 640 480 500 1e309 320 240\n"), {"m/cameras.txt:1:", "1e309 is not a finite number"});
@@ -222,9 +231,10 @@ TEST(ColmapText, ModelsLenslabDoesNotRenderAreRefusedByNameWhenUsed) {
       "3 FULL_OPENCV 640 480 500 500 320 240 0 0 0 0 0 0.1 0 0\n4 SIMPLE_PINHOLE 640 480 -5 320 240\n"
       "5 PINHOLE 70000 480 500 500 320 240\n",
       model.camerasFile);
-  model.images = parseColmapImages("1 1 0 0 0 0 0 0 1 fish.png\n\n2 1 0 0 0 0 0 0 2 pin.png\n\n3 1 0 0 0 0 0 0 3 full.png\n\n"
-                                   "4 1 0 0 0 0 0 0 4 neg.png\n\n5 1 0 0 0 0 0 0 5 wide.png\n\n6 1 0 0 0 0 0 0 9 lost.png\n\n",
-                                   "m/images.txt");
+  model.images = parseColmapImages(
+      "1 1 0 0 0 0 0 0 1 fish.png\n\n2 1 0 0 0 0 0 0 2 pin.png\n\n3 1 0 0 0 0 0 0 3 full.png\n\n"
+      "4 1 0 0 0 0 0 0 4 neg.png\n\n5 1 0 0 0 0 0 0 5 wide.png\n\n6 1 0 0 0 0 0 0 9 lost.png\n\n",
+      "m/images.txt");
   // Another image's camera is fine: the fisheye is refused only for its own image.
   EXPECT_NO_THROW(colmapImageCamera(model, "pin.png"));
   expectHas(errorOf([&] { colmapImageCamera(model, "fish.png"); }),
@@ -249,7 +259,8 @@ class ColmapFolder : public test::TempDirTest {
 TEST_F(ColmapFolder, ReadsTheTextModelAndPointsAtTheConverterForABinaryOne) {
   write("cameras.bin", "binary");
   write("images.bin", "binary");
-  expectHas(errorOf([&] { readColmapModel(dir_); }), {"cameras.txt", "binary", "colmap model_converter", "--output_type TXT"});
+  expectHas(errorOf([&] { readColmapModel(dir_); }),
+            {"cameras.txt", "binary", "colmap model_converter", "--output_type TXT"});
   write("cameras.txt", "1 PINHOLE 64 48 50 50 32 24\n");
   write("images.txt", "1 1 0 0 0 0 0 5 1 frame.png\n\n2 1 0 0 0 0 0 5 3 other.png\n\n");
   expectHas(errorOf([&] { readColmapModel(dir_); }), {"images.txt:3:", "CAMERA_ID 3", "cameras.txt"});
@@ -280,7 +291,8 @@ TEST(ColmapWrite, TheSimplestModelThatHoldsTheLensExactly) {
   EXPECT_EQ(c.params.size(), 12u);
   EXPECT_EQ(c.params[8], 0.01);
   d.alpha = 0.02;
-  expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }), {"path.json: frame 3", "alpha", "k1, k2, p1, p2, k3"});
+  expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }),
+            {"path.json: frame 3", "alpha", "k1, k2, p1, p2, k3"});
   EXPECT_THROW(colmapImageOf({}, 1, 1, "two words.png", "t"), InputError);
 }
 
@@ -291,16 +303,22 @@ TEST(ColmapWrite, AWrittenModelReadsBackAsTheSameCameras) {
   std::vector<ColmapImage> images;
   std::vector<OpenCvPose> poses;
   for (std::uint32_t i = 0; i < 40; ++i) {
-    const OpenCvIntrinsics k{700.0 + 100 * uniform(rng), 700.0 + 100 * uniform(rng), 320 + 5 * uniform(rng),
-                             240 + 5 * uniform(rng), 640, 480};
+    const OpenCvIntrinsics k{700.0 + 100 * uniform(rng),
+                             700.0 + 100 * uniform(rng),
+                             320 + 5 * uniform(rng),
+                             240 + 5 * uniform(rng),
+                             640,
+                             480};
     Distortion d;
-    if (i % 3 > 0) d.k1 = 0.2 * uniform(rng), d.k2 = 0.05 * uniform(rng), d.p1 = 1e-3 * uniform(rng), d.p2 = 1e-3 * uniform(rng);
+    if (i % 3 > 0)
+      d.k1 = 0.2 * uniform(rng), d.k2 = 0.05 * uniform(rng), d.p1 = 1e-3 * uniform(rng), d.p2 = 1e-3 * uniform(rng);
     if (i % 3 > 1) d.k3 = 0.01 * uniform(rng);
     cameras.push_back(colmapCameraOf(k, d, i + 1, "t"));
     // Rotations all round, 180° about an axis included (where w = 0).
     const glm::dvec3 axis = glm::normalize(glm::dvec3(uniform(rng), uniform(rng), uniform(rng)));
     const double angle = i == 0 ? M_PI : M_PI * uniform(rng);
-    const glm::dquat q{std::cos(angle / 2), axis.x * std::sin(angle / 2), axis.y * std::sin(angle / 2), axis.z * std::sin(angle / 2)};
+    const glm::dquat q{std::cos(angle / 2), axis.x * std::sin(angle / 2), axis.y * std::sin(angle / 2),
+                       axis.z * std::sin(angle / 2)};
     OpenCvPose pose{rotationFromQuaternion(q), glm::dvec3(uniform(rng), uniform(rng), uniform(rng)) * 10.0};
     poses.push_back(pose);
     images.push_back(colmapImageOf(pose, 100 + i, i + 1, "frames/frame_" + std::to_string(i) + ".png", "t"));

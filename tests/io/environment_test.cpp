@@ -78,7 +78,8 @@ TEST(Environment, BilinearWrapsAcrossTheSeam) {
 
 TEST(Environment, ConstantPrefiltersToTheSameConstant) {
   const glm::vec3 c(0.5f, 2.0f, 7.0f);
-  const auto maps = std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(constantImage(64, c), smallSettings()));
+  const auto maps =
+      std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(constantImage(64, c), smallSettings()));
   ASSERT_EQ(maps->specularLevels(), 4);
   const auto near = [&](glm::vec3 v, glm::vec3 want) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[k], want[k], 1e-5f * want[k]);
@@ -197,8 +198,10 @@ TEST(Environment, FilteredImportanceSamplingLeavesNoFireflies) {
     for (int x = 1; x < level.width; ++x) {
       const float before = level.at(x - 1, y).r, here = level.at(x, y).r;
       if (std::max(before, here) - 0.1f < 0.05f * excess) continue;
-      if (x <= peak) EXPECT_GE(here, before - 0.02f * excess) << "x " << x;
-      else EXPECT_LE(here, before + 0.02f * excess) << "x " << x;
+      if (x <= peak)
+        EXPECT_GE(here, before - 0.02f * excess) << "x " << x;
+      else
+        EXPECT_LE(here, before + 0.02f * excess) << "x " << x;
     }
   }
 }
@@ -339,15 +342,17 @@ TEST(EnvironmentPlan, SamplesCoverTheBlurAtInfinity) {
     return std::abs(glm::length(computeBounds(one).center() - eye) - 1.0 / camera.inverseFocusDistance()) +
            (glm::length(computeBounds(one).size()) > 10.0 ? 1e9 : 0.0);
   };
-  const Instance nearest = *std::min_element(scene.instances.begin(), scene.instances.end(),
-                                             [&](const Instance& a, const Instance& b) { return distance(a) < distance(b); });
+  const Instance nearest =
+      *std::min_element(scene.instances.begin(), scene.instances.end(),
+                        [&](const Instance& a, const Instance& b) { return distance(a) < distance(b); });
   scene.instances = {nearest};
   scene.bounds = computeBounds(scene);
   const ImageSize size{480, 320};
   const FramePlan plain = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 4096, 1});
-  scene.environment = std::make_shared<const EnvironmentLookup>(
-      std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(constantImage(16, glm::vec3(1.0f)), smallSettings())),
-      EnvironmentPlacement{});
+  scene.environment =
+      std::make_shared<const EnvironmentLookup>(std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(
+                                                    constantImage(16, glm::vec3(1.0f)), smallSettings())),
+                                                EnvironmentPlacement{});
   const FramePlan lit = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 4096, 1});
   EXPECT_TRUE(std::isinf(lit.depthMax));
   const double atInfinity = cocDiameterOnWindow(camera, std::numeric_limits<double>::infinity(), 0.0) * size.widthPx /

@@ -17,7 +17,8 @@ class ImageFileTest : public test::TempDirTest {};
 Image ramp() {
   Image image(16, 8);
   for (int y = 0; y < 8; ++y)
-    for (int x = 0; x < 16; ++x) image.set(x, y, {static_cast<float>(x) / 15.0f, static_cast<float>(y) / 7.0f, 0.25f, 1.0f});
+    for (int x = 0; x < 16; ++x)
+      image.set(x, y, {static_cast<float>(x) / 15.0f, static_cast<float>(y) / 7.0f, 0.25f, 1.0f});
   return image;
 }
 

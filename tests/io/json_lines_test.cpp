@@ -77,7 +77,8 @@ TEST_F(JsonLinesTest, CheckAppendableRefusesWhatCannotBeAppendedTo) {
 }
 
 TEST_F(JsonLinesTest, CheckAppendableRefusesAReadOnlyFile) {
-  if (::geteuid() == 0) GTEST_SKIP() << "root may append to a read-only file: the read-only case is in cli_capture (as nobody)";
+  if (::geteuid() == 0)
+    GTEST_SKIP() << "root may append to a read-only file: the read-only case is in cli_capture (as nobody)";
   const fs::path file = dir_ / "manifest.jsonl";
   writeRaw(file, "");
   ::chmod(file.c_str(), 0444);

@@ -32,7 +32,9 @@ Matrix rodrigues(glm::dvec3 k, double angle) {
           glm::dvec3(C * k.z * k.x - s * k.y, C * k.z * k.y + s * k.x, c + C * k.z * k.z)};
 }
 
-glm::dvec3 times(const Matrix& r, const glm::dvec3& p) { return {glm::dot(r[0], p), glm::dot(r[1], p), glm::dot(r[2], p)}; }
+glm::dvec3 times(const Matrix& r, const glm::dvec3& p) {
+  return {glm::dot(r[0], p), glm::dot(r[1], p), glm::dot(r[2], p)};
+}
 glm::dvec3 transposedTimes(const Matrix& r, const glm::dvec3& p) { return p.x * r[0] + p.y * r[1] + p.z * r[2]; }
 
 std::string json17(double x) {
@@ -61,9 +63,9 @@ std::string distJson(const test::OpenCvCamera& c) {
 }
 
 const test::OpenCvCamera kLenses[] = {
-    {520, 515, 330.2, 236.7},                                 // a pinhole
+    {520, 515, 330.2, 236.7},                                       // a pinhole
     {505, 512, 325.0, 230.0, -0.21, 0.06, 0.0021, -0.0013, -0.01},  // barrel, tangential, k3
-    {530, 530, 319.5, 239.5, 0.15, 0.02},                     // pincushion
+    {530, 530, 319.5, 239.5, 0.15, 0.02},                           // pincushion
 };
 
 // Random poses, each lens, K and "intrinsics" alike: lenslab's pixel = OpenCV's + 0.5.
@@ -72,7 +74,8 @@ TEST(OpenCvPoseForm, PutsWorldPointsWhereKRXPlusTDoes) {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (const test::OpenCvCamera& cv : kLenses) {
     for (int pose = 0; pose < 6; ++pose) {
-      const Matrix r = rodrigues(glm::normalize(glm::dvec3(uniform(rng), uniform(rng), uniform(rng))), M_PI * uniform(rng));
+      const Matrix r =
+          rodrigues(glm::normalize(glm::dvec3(uniform(rng), uniform(rng), uniform(rng))), M_PI * uniform(rng));
       const glm::dvec3 t = 5.0 * glm::dvec3(uniform(rng), uniform(rng), uniform(rng));
       const std::string poseKeys = ", \"R\": " + json17(r) + ", \"t\": " + json17(t) + ", \"dist\": " + distJson(cv);
       const std::string withK = "{\"K\": " + kJson(cv) + ", \"width\": 640, \"height\": 480" + poseKeys + "}";
@@ -105,11 +108,12 @@ TEST(OpenCvPoseForm, FocusAndApertureMoveTheFocusNotThePixels) {
   const test::OpenCvCamera cv = kLenses[1];
   const Matrix r = rodrigues(glm::normalize(glm::dvec3(0.3, -1.0, 0.2)), 0.7);
   const glm::dvec3 t(0.4, -0.2, 2.0);
-  const std::string base = "{\"K\": " + kJson(cv) + ", \"image_size\": [640, 480], \"R\": " + json17(r) + ", \"t\": " + json17(t) +
-                           ", \"dist\": " + distJson(cv);
+  const std::string base = "{\"K\": " + kJson(cv) + ", \"image_size\": [640, 480], \"R\": " + json17(r) +
+                           ", \"t\": " + json17(t) + ", \"dist\": " + distJson(cv);
   const Camera pinhole = parseCameraJson(base + "}", "p.json").camera;
   const Camera lens = parseCameraJson(base + ", \"focus_distance\": 3.5, \"aperture_radius\": 0.01}", "l.json").camera;
-  const Camera far = parseCameraJson(base + ", \"focus_distance\": \"infinity\", \"aperture_radius\": 0.01}", "f.json").camera;
+  const Camera far =
+      parseCameraJson(base + ", \"focus_distance\": \"infinity\", \"aperture_radius\": 0.01}", "f.json").camera;
   EXPECT_NEAR(lens.focusDistance(), 3.5, 1e-12);
   EXPECT_EQ(lens.lens.apertureRadius, 0.01);
   EXPECT_TRUE(far.focusAtInfinity());
@@ -137,8 +141,9 @@ std::string errorOf(const std::string& text) {
 
 void expectHas(const std::string& message, std::initializer_list<const char*> parts) {
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;  // one line
-  EXPECT_EQ(message.rfind("cam.json: ", 0), 0u) << message;      // naming the file first
-  for (const char* part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  EXPECT_EQ(message.rfind("cam.json: ", 0), 0u) << message;     // naming the file first
+  for (const char* part : parts)
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
 }
 
 TEST(OpenCvPoseForm, EachBadKeyIsRefusedInOneLineNamingIt) {
@@ -152,36 +157,50 @@ TEST(OpenCvPoseForm, EachBadKeyIsRefusedInOneLineNamingIt) {
             {"\"K\"", "K[1][0]"});
   expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240], [0, 0, 2]], "width": 640, "height": 480, )" + rt)),
             {"\"K\"", "[0, 0, 1]"});
-  expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240]], "width": 640, "height": 480, )" + rt)), {"\"K\"", "3×3"});
+  expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240]], "width": 640, "height": 480, )" + rt)),
+            {"\"K\"", "3×3"});
   expectHas(errorOf(file(R"("K": [[-500, 0, 320], [0, 500, 240], [0, 0, 1]], "width": 640, "height": 480, )" + rt)),
             {"\"K\"", "focal length"});
-  expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240], [0, 0, 1]], )" + rt)), {"\"K\"", "width", "image_size"});
-  expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240], [0, 0, 1]], "width": 640, )" + rt)), {"\"height\" is missing"});
-  expectHas(errorOf(file(k + R"(, "intrinsics": {"fx": 1, "fy": 1, "cx": 0, "cy": 0, "width": 2, "height": 2}, )" + rt)),
-            {"\"K\"", "\"intrinsics\"", "give one"});
+  expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240], [0, 0, 1]], )" + rt)),
+            {"\"K\"", "width", "image_size"});
+  expectHas(errorOf(file(R"("K": [[500, 0, 320], [0, 500, 240], [0, 0, 1]], "width": 640, )" + rt)),
+            {"\"height\" is missing"});
+  expectHas(
+      errorOf(file(k + R"(, "intrinsics": {"fx": 1, "fy": 1, "cx": 0, "cy": 0, "width": 2, "height": 2}, )" + rt)),
+      {"\"K\"", "\"intrinsics\"", "give one"});
   // R: scaled, a reflection, four digits (refused), eight digits (accepted).
   expectHas(errorOf(file(k + R"(, "R": [[1.001, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, 5])")),
             {"\"R\"", "not a rotation", "1e-06"});
-  expectHas(errorOf(file(k + R"(, "R": [[-1, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, 5])")), {"\"R\"", "reflection", "det R"});
+  expectHas(errorOf(file(k + R"(, "R": [[-1, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, 5])")),
+            {"\"R\"", "reflection", "det R"});
   expectHas(errorOf(file(k + R"(, "R": [[0.7071, -0.7071, 0], [0.7071, 0.7071, 0], [0, 0, 1]], "t": [0, 0, 5])")),
             {"\"R\"", "7 significant digits"});
   EXPECT_NO_THROW(parseCameraJson(
-      file(k + R"(, "R": [[0.70710678, -0.70710678, 0], [0.70710678, 0.70710678, 0], [0, 0, 1]], "t": [0, 0, 5])"), "cam.json"));
+      file(k + R"(, "R": [[0.70710678, -0.70710678, 0], [0.70710678, 0.70710678, 0], [0, 0, 1]], "t": [0, 0, 5])"),
+      "cam.json"));
   expectHas(errorOf(file(k + R"(, "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]])")), {"\"t\" is missing"});
   expectHas(errorOf(file(k + R"(, "t": [1, 2, 3])")), {"\"R\" is missing"});
   expectHas(errorOf(file(k + R"(, "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, "5"])")), {"\"t\""});
-  expectHas(errorOf(file(k + ", " + rt + R"(, "eye": [0, 0, 0], "target": [0, 0, -1])")), {"\"R\"", "eye", "give R and t"});
+  expectHas(errorOf(file(k + ", " + rt + R"(, "eye": [0, 0, 0], "target": [0, 0, -1])")),
+            {"\"R\"", "eye", "give R and t"});
   expectHas(errorOf(file(k)), {"pose", "\"R\" and \"t\"", "\"eye\""});
   expectHas(errorOf(file(rt + R"(, "dist": [0, 0, 0, 0])")), {"intrinsics", "\"K\""});
   expectHas(errorOf(file(k + ", " + rt + R"(, "aperture_radius": 0.01)")), {"\"aperture_radius\"", "focus_distance"});
   expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0, 0, 0, 0.1, 0, 0])")), {"\"dist\"", "k4 = 0.1"});
   expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0])")), {"\"dist\"", "[k1, k2, p1, p2, k3]"});
-  expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0, 0], "distortion": {"k1": 0.1})")), {"\"dist\"", "give one"});
+  expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0, 0], "distortion": {"k1": 0.1})")),
+            {"\"dist\"", "give one"});
   expectHas(errorOf(file(k + ", " + rt + R"(, "vrp": [0, 0, 0])")), {"unknown key \"vrp\"", "OpenCV camera"});
-  expectHas(errorOf(R"({"intrinsics": {"fx": 500, "fy": 500, "cx": 320, "cy": 240, "width": 640, "height": 480}, "width": 640, )" + rt + "}"),
-            {"\"width\"", "inside \"intrinsics\""});
+  expectHas(
+      errorOf(
+          R"({"intrinsics": {"fx": 500, "fy": 500, "cx": 320, "cy": 240, "width": 640, "height": 480}, "width": 640, )" +
+          rt + "}"),
+      {"\"width\"", "inside \"intrinsics\""});
   // OpenCV's longer distCoeffs are read when what lenslab lacks is zero.
-  const Camera c = parseCameraJson(file(k + ", " + rt + R"(, "dist": [-0.1, 0.01, 0, 0, 0.001, 0, 0, 0, 0, 0, 0, 0, 0, 0])"), "cam.json").camera;
+  const Camera c =
+      parseCameraJson(file(k + ", " + rt + R"(, "dist": [-0.1, 0.01, 0, 0, 0.001, 0, 0, 0, 0, 0, 0, 0, 0, 0])"),
+                      "cam.json")
+          .camera;
   EXPECT_EQ(c.lens.effects.distortion.k1, -0.1);
   EXPECT_EQ(c.lens.effects.distortion.k3, 0.001);
 }

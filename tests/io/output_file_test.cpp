@@ -100,13 +100,17 @@ TEST_F(OutputFileTest, ATargetNamedWithAllOfNameMaxIsWritten) {
   EXPECT_NO_THROW(writeImage(target, noise(4, 4)));
   EXPECT_TRUE(fs::exists(target));
   EXPECT_EQ(fileCount(), 1u);
-  const std::string message = messageOf([&] { checkOutputPath(dir_ / ("n" + target.filename().string()), OutputKind::Image, "--out"); });
+  const std::string message =
+      messageOf([&] { checkOutputPath(dir_ / ("n" + target.filename().string()), OutputKind::Image, "--out"); });
   EXPECT_NE(message.find("the file name is 256 bytes"), std::string::npos) << message;
 }
 
 TEST_F(OutputFileTest, FoldersThatWereThereStay) {
   fs::create_directories(dir_ / "kept");
-  { OutputSet outputs; outputs.createFolders(dir_ / "kept" / "made"); }
+  {
+    OutputSet outputs;
+    outputs.createFolders(dir_ / "kept" / "made");
+  }
   EXPECT_TRUE(fs::is_directory(dir_ / "kept"));
   EXPECT_FALSE(fs::exists(dir_ / "kept" / "made"));
 }
@@ -139,7 +143,9 @@ TEST_F(OutputFileTest, OverwritingKeepsTheOldFileUntilTheNewOneIsWhole) {
 TEST_F(OutputFileTest, CheckOutputPathRefusesWhatCouldNotBeWritten) {
   std::ofstream(dir_ / "file") << "x";
   fs::create_directories(dir_ / "folder.json");
-  const auto refusal = [](const fs::path& p, OutputKind kind) { return messageOf([&] { checkOutputPath(p, kind, "--stats"); }); };
+  const auto refusal = [](const fs::path& p, OutputKind kind) {
+    return messageOf([&] { checkOutputPath(p, kind, "--stats"); });
+  };
   EXPECT_NE(refusal(dir_ / "missing" / "s.json", OutputKind::Json).find("/missing does not exist"), std::string::npos);
   EXPECT_NE(refusal(dir_ / "file" / "s.json", OutputKind::Json).find("/file is not a folder"), std::string::npos);
   EXPECT_NE(refusal(dir_ / "folder.json", OutputKind::Json).find("is a folder"), std::string::npos);
@@ -147,7 +153,8 @@ TEST_F(OutputFileTest, CheckOutputPathRefusesWhatCouldNotBeWritten) {
   EXPECT_NE(refusal(dir_ / "a.jpg", OutputKind::Image).find("unsupported image type"), std::string::npos);
   EXPECT_EQ(refusal(dir_ / "s.json", OutputKind::Json), "(no error)");
   EXPECT_EQ(refusal(dir_ / "sweep.md", OutputKind::Any), "(no error)");
-  EXPECT_NE(refusal(dir_ / "missing" / "s.json", OutputKind::Json).rfind("--stats ", 0), std::string::npos) << "names the option";
+  EXPECT_NE(refusal(dir_ / "missing" / "s.json", OutputKind::Json).rfind("--stats ", 0), std::string::npos)
+      << "names the option";
   EXPECT_EQ(fileCount(), 2u) << "the probe file is gone again";
 }
 

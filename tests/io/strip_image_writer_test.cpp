@@ -29,7 +29,8 @@ Image noise(int width, int height) {
 Image block(const Image& image, int x0, int y0, int x1, int y1) {
   Image out(x1 - x0, y1 - y0);
   for (int y = y0; y < y1; ++y)
-    std::memcpy(&out.rgba[out.offset(0, y - y0)], &image.rgba[image.offset(x0, y)], static_cast<std::size_t>(x1 - x0) * 4 * sizeof(float));
+    std::memcpy(&out.rgba[out.offset(0, y - y0)], &image.rgba[image.offset(x0, y)],
+                static_cast<std::size_t>(x1 - x0) * 4 * sizeof(float));
   return out;
 }
 

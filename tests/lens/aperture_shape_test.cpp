@@ -35,7 +35,7 @@ bool inside(const std::vector<glm::dvec2>& p, glm::dvec2 q, double tolerance) {
 const std::vector<ApertureShape>& shapes() {
   static const std::vector<ApertureShape> all = {
       {3, 0.0, 0.0, 1.0}, {5, 12.0, 0.0, 1.0}, {6, 0.0, 0.0, 1.0}, {9, -40.0, 0.0, 1.0}, {6, 30.0, 0.5, 1.0},
-      {8, 0.0, 0.9, 1.0}, {7, 5.0, 0.0, 2.0},  {0, 0.0, 0.0, 1.5},  {64, 0.0, 0.0, 1.0}, {6, 0.0, 0.3, 0.75},
+      {8, 0.0, 0.9, 1.0}, {7, 5.0, 0.0, 2.0},  {0, 0.0, 0.0, 1.5}, {64, 0.0, 0.0, 1.0},  {6, 0.0, 0.3, 0.75},
   };
   return all;
 }
@@ -53,12 +53,15 @@ TEST(ApertureShape, EqualAreasOfTheDiskStayEqualAreas) {
       if (glm::length(p) < 0.05) continue;
       if (s.blades > 0) {
         const double alpha = glm::pi<double>() / s.blades;
-        const double fromSeam = std::remainder(std::atan2(p.y, p.x) - glm::half_pi<double>() - glm::radians(s.rotationDeg), 2.0 * alpha);
+        const double fromSeam =
+            std::remainder(std::atan2(p.y, p.x) - glm::half_pi<double>() - glm::radians(s.rotationDeg), 2.0 * alpha);
         if (std::abs(fromSeam) < 1e-3) continue;  // a vertex's direction: the seam between two blades
       }
       const double h = 1e-6;
-      const glm::dvec2 dx = (apertureFromDisk(p + glm::dvec2(h, 0.0), s) - apertureFromDisk(p - glm::dvec2(h, 0.0), s)) / (2.0 * h);
-      const glm::dvec2 dy = (apertureFromDisk(p + glm::dvec2(0.0, h), s) - apertureFromDisk(p - glm::dvec2(0.0, h), s)) / (2.0 * h);
+      const glm::dvec2 dx =
+          (apertureFromDisk(p + glm::dvec2(h, 0.0), s) - apertureFromDisk(p - glm::dvec2(h, 0.0), s)) / (2.0 * h);
+      const glm::dvec2 dy =
+          (apertureFromDisk(p + glm::dvec2(0.0, h), s) - apertureFromDisk(p - glm::dvec2(0.0, h), s)) / (2.0 * h);
       worst = std::max(worst, std::abs(dx.x * dy.y - dx.y * dy.x - 1.0));
       ++checked;
     }
@@ -75,7 +78,8 @@ TEST(ApertureShape, TheDiskFillsThePolygonExactly) {
     EXPECT_NEAR(polygonArea(v), glm::pi<double>(), 1e-9) << describeAperture(s) << ": the round aperture's area";
     // The first vertex straight up, turned by the rotation (before the squeeze).
     const glm::dvec2 first = v[0] * glm::dvec2(std::sqrt(s.anamorphicSqueeze), 1.0 / std::sqrt(s.anamorphicSqueeze));
-    EXPECT_NEAR(std::atan2(first.y, first.x), glm::half_pi<double>() + glm::radians(s.rotationDeg), 1e-12) << describeAperture(s);
+    EXPECT_NEAR(std::atan2(first.y, first.x), glm::half_pi<double>() + glm::radians(s.rotationDeg), 1e-12)
+        << describeAperture(s);
     // Every point of the disk lands inside; the disk's rim lands on the polygon's edges, its
     // centre at the centre.
     std::mt19937 rng(5);
@@ -107,7 +111,8 @@ TEST(ApertureShape, RoundnessBlendsThePolygonIntoTheCircle) {
     // own directions (a vertex straight up here).
     for (int k = 0; k < 6; ++k) {
       const double a = glm::half_pi<double>() + glm::two_pi<double>() * k / 6.0;
-      EXPECT_NEAR(glm::length(apertureFromDisk({std::cos(a), std::sin(a)}, s)), apertureReach(s), 1e-9) << "roundness " << roundness;
+      EXPECT_NEAR(glm::length(apertureFromDisk({std::cos(a), std::sin(a)}, s)), apertureReach(s), 1e-9)
+          << "roundness " << roundness;
     }
   }
   // Roundness 1 is the circle: the map is the identity.
@@ -150,8 +155,8 @@ TEST(ApertureShape, StrataStayCompact) {
             worstShape = std::max(worstShape, glm::length(shaped[a] - shaped[b]));
           }
       }
-    EXPECT_LT(worstShape, 2.5 * worstDisk) << describeAperture(s) << ": a stratum " << worstShape << " across against "
-                                           << worstDisk << " on the disk";
+    EXPECT_LT(worstShape, 2.5 * worstDisk)
+        << describeAperture(s) << ": a stratum " << worstShape << " across against " << worstDisk << " on the disk";
   }
 }
 
@@ -185,7 +190,8 @@ TEST(LensBarrel, TheCatsEyeIsTheTwoCirclesOverlap) {
   // points with throughBarrel, against the closed-form overlap.
   const LensBarrel barrel{0.04, 0.015};
   const double radius = 0.0125, inverseFocus = 0.5;
-  for (const glm::dvec2 n : {glm::dvec2(0.0, 0.0), glm::dvec2(0.2, 0.0), glm::dvec2(0.3, -0.4), glm::dvec2(0.0, 0.6), glm::dvec2(2.0, 0.0)}) {
+  for (const glm::dvec2 n : {glm::dvec2(0.0, 0.0), glm::dvec2(0.2, 0.0), glm::dvec2(0.3, -0.4), glm::dvec2(0.0, 0.6),
+                             glm::dvec2(2.0, 0.0)}) {
     int inside = 0, through = 0;
     constexpr int kGrid = 600;
     for (int j = 0; j < kGrid; ++j)
@@ -195,7 +201,8 @@ TEST(LensBarrel, TheCatsEyeIsTheTwoCirclesOverlap) {
         ++inside;
         through += throughBarrel(barrel, p, n, inverseFocus);
       }
-    EXPECT_NEAR(static_cast<double>(through) / inside, roundApertureThroughBarrel(barrel, radius, n, inverseFocus), 2e-3)
+    EXPECT_NEAR(static_cast<double>(through) / inside, roundApertureThroughBarrel(barrel, radius, n, inverseFocus),
+                2e-3)
         << "n = (" << n.x << ", " << n.y << ")";
   }
   EXPECT_EQ(roundApertureThroughBarrel(barrel, radius, {0.0, 0.0}, inverseFocus), 1.0);  // 0.0125·0.98 inside 0.015

@@ -51,7 +51,8 @@ TEST(LensAnalysis, ASmallSensorSeesTheParaxialFieldOfView) {
   const LensReport r = analyseLens(lens, o);
   const double f = r.firstOrder.focalLengthMm;
   EXPECT_NEAR(r.fieldOfViewDegrees.x, 2.0 * std::atan(0.1 / f) * kDegrees, 1e-5 * r.fieldOfViewDegrees.x);
-  EXPECT_NEAR(r.fieldOfViewDegrees.z, 2.0 * std::atan(0.5 * std::hypot(0.2, 0.1) / f) * kDegrees, 1e-5 * r.fieldOfViewDegrees.z);
+  EXPECT_NEAR(r.fieldOfViewDegrees.z, 2.0 * std::atan(0.5 * std::hypot(0.2, 0.1) / f) * kDegrees,
+              1e-5 * r.fieldOfViewDegrees.z);
 }
 
 // A thin lens with its stop in contact and nothing else to clip: irradiance falls as cos⁴ of the
@@ -98,7 +99,8 @@ TEST(LensAnalysis, AThinLensesAxialColourIsFocalLengthOverAbbe) {
   const LensReport r = analyseLens(lens, o);
   ASSERT_TRUE(r.dispersion);
   EXPECT_NEAR(r.axialColourMm / (-r.firstOrder.focalLengthMm / abbe), 1.0, 0.02);
-  EXPECT_LT(std::abs(r.lateralColourMm), 1e-3) << "a thin lens with its stop in contact has no lateral colour to first order";
+  EXPECT_LT(std::abs(r.lateralColourMm), 1e-3)
+      << "a thin lens with its stop in contact has no lateral colour to first order";
 }
 
 TEST(LensAnalysis, DistortionFitsFollowTheTracedField) {
@@ -122,7 +124,10 @@ TEST(LensAnalysis, ASensorBeyondTheImageCircleIsRefusedWithTheCircle) {
   EXPECT_NE(message.find("give a --sensor whose diagonal is at most"), std::string::npos) << message;
   LensAnalysisOptions o;
   o.fNumber = 1.0;
-  EXPECT_NE(refusalOf([&] { analyseLens(bundled("double-gauss-50mm.lens"), o); }).find("f/1 is faster than the design's full opening"), std::string::npos);
+  EXPECT_NE(refusalOf([&] {
+              analyseLens(bundled("double-gauss-50mm.lens"), o);
+            }).find("f/1 is faster than the design's full opening"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -74,7 +74,9 @@ TEST(LensFit, AxialColourOfASingletIsItsChangeOfPower) {
   // A thin lens's 1/z_f = 1/f − 1/z_i with the film fixed: each channel's 1/z_f moves by its 1/f's change.
   const auto power = [&](double wavelengthNm) {
     LensPrescription at = lens;
-    for (LensSurface& surface : at.surfaces) surface.indexAfter = indexAtWavelength(surface.indexAfter, surface.abbeAfter, wavelengthNm), surface.abbeAfter = 0.0;
+    for (LensSurface& surface : at.surfaces)
+      surface.indexAfter = indexAtWavelength(surface.indexAfter, surface.abbeAfter, wavelengthNm),
+      surface.abbeAfter = 0.0;
     return 1.0 / firstOrder(at).focalLengthMm;
   };
   const double green = power(550.0);
@@ -110,7 +112,8 @@ TEST(LensFit, IlluminationMatchesTheAnalysisOwnIntegral) {
   const LensReport report = analyseLens(lens, o);
   ASSERT_EQ(report.field.size(), fit.samples.size());
   for (std::size_t i = 0; i < fit.samples.size(); ++i)
-    EXPECT_NEAR(fit.samples[i].relativeIllumination, report.field[i].relativeIllumination, 0.03) << "field " << report.field[i].fieldFraction;
+    EXPECT_NEAR(fit.samples[i].relativeIllumination, report.field[i].relativeIllumination, 0.03)
+        << "field " << report.field[i].fieldFraction;
 }
 
 TEST(LensFit, BundledRectilinearLensesFitWithinMicrometres) {

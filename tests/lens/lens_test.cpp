@@ -70,9 +70,11 @@ TEST(AperturePattern, Lecture17IsCentrePlusTwoRadiiEvery45Degrees) {
 }
 
 TEST(AperturePattern, EveryPatternStaysInTheDiskAndIsReproducible) {
-  for (AperturePattern p : {AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random, AperturePattern::Lecture17, AperturePattern::Sobol}) {
+  for (AperturePattern p : {AperturePattern::Concentric, AperturePattern::R2, AperturePattern::Random,
+                            AperturePattern::Lecture17, AperturePattern::Sobol}) {
     SCOPED_TRACE(patternName(p));
-    const auto a = makeApertureSamples(p, 100, 7), b = makeApertureSamples(p, 100, 7), other = makeApertureSamples(p, 100, 8);
+    const auto a = makeApertureSamples(p, 100, 7), b = makeApertureSamples(p, 100, 7),
+               other = makeApertureSamples(p, 100, 8);
     ASSERT_EQ(a.size(), p == AperturePattern::Lecture17 ? 17u : 100u);
     bool differs = false;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -135,8 +137,11 @@ TEST(ViewThroughLens, ViewPlaneIsSharpAndOtherDepthsSpreadByTheCircleOfConfusion
     const glm::dvec3 onPlane = viewPlanePoint(cam.view, {0.3, 0.2});
     const glm::dvec3 prp = prpWorld(cam.view);
     const double depth = 7.0;
-    const glm::dvec3 behind = prp + depth * glm::normalize(viewPlanePoint(cam.view, {0.3, 0.2}) - prp) * (projection == Projection::Perspective ? 1.0 : 0.0) +
-                              (projection == Projection::Parallel ? onPlane - (depth - cam.view.prp.z) * b.n : glm::dvec3(0.0));
+    const glm::dvec3 behind =
+        prp +
+        depth * glm::normalize(viewPlanePoint(cam.view, {0.3, 0.2}) - prp) *
+            (projection == Projection::Perspective ? 1.0 : 0.0) +
+        (projection == Projection::Parallel ? onPlane - (depth - cam.view.prp.z) * b.n : glm::dvec3(0.0));
     double spreadMax = 0.0;
     const glm::dvec2 centre = projectToWindow(cam.view, behind);
     for (const LensSample& s : makeApertureSamples(AperturePattern::Lecture17, 17, 1)) {
@@ -184,7 +189,8 @@ TEST(Refocus, KeepsTheFieldOfViewAndMovesThePlaneOfFocus) {
   EXPECT_THROW(refocused(cam, -1.0, "test"), InputError);
   Camera par = lensCamera(Projection::Parallel);
   const Camera parMoved = refocused(par, 5.0, "test");
-  const glm::dvec4 pa = clipFromWorld(par.view) * glm::dvec4(p, 1.0), pc = clipFromWorld(parMoved.view) * glm::dvec4(p, 1.0);
+  const glm::dvec4 pa = clipFromWorld(par.view) * glm::dvec4(p, 1.0),
+                   pc = clipFromWorld(parMoved.view) * glm::dvec4(p, 1.0);
   EXPECT_NEAR(pa.x, pc.x, 1e-12);
   EXPECT_NEAR(pa.y, pc.y, 1e-12);
 }
@@ -192,9 +198,9 @@ TEST(Refocus, KeepsTheFieldOfViewAndMovesThePlaneOfFocus) {
 TEST(FramePlan, AutoSamplesFollowTheCircleOfConfusion) {
   EXPECT_EQ(autoApertureSamples(0.0, 256), 1);
   EXPECT_EQ(autoApertureSamples(1.0, 256), 1);
-  EXPECT_EQ(autoApertureSamples(4.0, 256), 13);    // ceil(pi/4 · 16)
-  EXPECT_EQ(autoApertureSamples(8.0, 256), 51);    // ceil(pi/4 · 64): four times the CoC² of 4 px
-  EXPECT_EQ(autoApertureSamples(100.0, 256), 256); // capped
+  EXPECT_EQ(autoApertureSamples(4.0, 256), 13);     // ceil(pi/4 · 16)
+  EXPECT_EQ(autoApertureSamples(8.0, 256), 51);     // ceil(pi/4 · 64): four times the CoC² of 4 px
+  EXPECT_EQ(autoApertureSamples(100.0, 256), 256);  // capped
   EXPECT_EQ(autoApertureSamples(100.0, 64), 64);
 }
 
@@ -238,10 +244,14 @@ TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
   EXPECT_EQ(plan.passes[1].name, "accumulate");
   // Twice the aperture, four times the samples (CoC²).
   const Camera wider = cameraFocusedOnViewPlane(v, 0.25, "test");
-  const int quarter = makeFramePlan(planeAt(10.0), wider, {100, 100}, PlanOptions{AperturePattern::Concentric, 0, 1000, 1}).apertureSamples;
+  const int quarter =
+      makeFramePlan(planeAt(10.0), wider, {100, 100}, PlanOptions{AperturePattern::Concentric, 0, 1000, 1})
+          .apertureSamples;
   EXPECT_NEAR(static_cast<double>(plan.apertureSamples) / quarter, 4.0, 0.05);
   // lecture17 is always 17.
-  EXPECT_EQ(makeFramePlan(planeAt(10.0), lens, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1}).apertureSamples, 17);
+  EXPECT_EQ(makeFramePlan(planeAt(10.0), lens, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1})
+                .apertureSamples,
+            17);
 }
 
 // The barrel clips at the undistorted field: a barrel distortion pushes the corners' rays farther
@@ -264,14 +274,17 @@ TEST(FramePlan, TheBarrelClipsAtTheUndistortedCorners) {
 TEST(FramePlan, AnExplicitCountWithAPinholeGivesJitteredViews) {
   const ViewSpec v = viewFiveAway();
   const Camera pinhole = cameraFocusedOnViewPlane(v, 0.0, "test");
-  const FramePlan asked = makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Concentric, 16, 256, 1});
+  const FramePlan asked =
+      makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Concentric, 16, 256, 1});
   EXPECT_EQ(asked.apertureSamples, 16) << asked.samplesWhy;
   EXPECT_EQ(asked.viewsPerSample, 1);
   ASSERT_EQ(asked.passes.size(), 3u);
   EXPECT_EQ(asked.passes[1].name, "accumulate");
   EXPECT_NE(asked.samplesWhy.find("anti-aliasing"), std::string::npos);
   EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}).apertureSamples, 1);
-  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1}).apertureSamples, 17);
+  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1})
+                .apertureSamples,
+            17);
 }
 
 }  // namespace

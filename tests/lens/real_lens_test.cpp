@@ -56,31 +56,46 @@ TEST(LensPrescription, BadRowsAreRefusedNamingRowLineAndColumn) {
             "bad.dat: row 2 (line 2), column 2 (thickness_mm): 'x' is not a number");
   EXPECT_EQ(refusal("0 2 0 10\n50 5 1.5\n-50 0 1 20\n"),
             "bad.dat: row 2 (line 2) has 3 numbers; give 4 or 5: radius_mm thickness_mm index aperture_mm [abbe]");
-  EXPECT_NE(refusal("0 2 0 10\n50 -5 1.5 20\n-50 0 1 20\n").find("row 2 (line 2), column 2 (thickness_mm): -5 is negative"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal("0 2 0 10\n50 -5 1.5 20\n-50 0 1 20\n").find("row 2 (line 2), column 2 (thickness_mm): -5 is negative"),
+      std::string::npos);
   EXPECT_NE(refusal("0 2 0 10\n50 5 0.5 20\n-50 0 1 20\n").find("column 3 (index)"), std::string::npos);
   EXPECT_NE(refusal("0 2 0 10\n50 5 1.5 0\n-50 0 1 20\n").find("column 4 (aperture_mm)"), std::string::npos);
-  EXPECT_NE(refusal("0 2 0 10\n5 5 1.5 20\n-50 0 1 20\n").find("row 2 (line 2), column 1 (radius_mm)"), std::string::npos);
+  EXPECT_NE(refusal("0 2 0 10\n5 5 1.5 20\n-50 0 1 20\n").find("row 2 (line 2), column 1 (radius_mm)"),
+            std::string::npos);
   EXPECT_NE(refusal("50 5 1.5 20\n-50 0 1 20\n").find("0 rows have radius 0"), std::string::npos);
   EXPECT_NE(refusal("0 1 0 10\n0 2 0 10\n50 5 1.5 20\n-50 0 1 20\n").find("2 rows have radius 0"), std::string::npos);
   EXPECT_NE(refusal("0 2 0 10\n50 5 1.5 20\n-50 1 1.5 20\n").find("the last surface must leave the light in air"),
             std::string::npos);
-  EXPECT_NE(refusal("0 2 0 10\n50 5 1.5 20 64\n-50 2 1.6 20\n-80 0 1 20\n").find("1 of 2 glass rows give an Abbe number"),
+  EXPECT_NE(
+      refusal("0 2 0 10\n50 5 1.5 20 64\n-50 2 1.6 20\n-80 0 1 20\n").find("1 of 2 glass rows give an Abbe number"),
+      std::string::npos);
+  EXPECT_NE(refusal("0 2 0 10\n50 5 1 20 64\n-50 0 1 20\n").find("column 5 (abbe): air has no Abbe number"),
             std::string::npos);
-  EXPECT_NE(refusal("0 2 0 10\n50 5 1 20 64\n-50 0 1 20\n").find("column 5 (abbe): air has no Abbe number"), std::string::npos);
   EXPECT_NE(refusal("0 2 0 10 3\n").find("column 5 (abbe)"), std::string::npos);
 }
 
 // A file whose second column is each surface's distance from the one before (a shifted column)
 // gives its first glass no thickness; surfaces that cross within the aperture are refused too.
 TEST(LensPrescription, ElementsOfNoThicknessOrCrossingSurfacesAreRefused) {
-  EXPECT_EQ(refusalOf([] { parseLensPrescription("163.579 0 1.540 107.8\n53.169 5.529 1.0 81.8\n0 10 0 39.8\n-54.424 0 1.0 81.8\n", "shifted.dat"); }),
-            "shifted.dat: row 1 (line 1), column 2 (thickness_mm): 0 for a glass: an element needs a centre thickness > 0 (the column is "
+  EXPECT_EQ(refusalOf([] {
+              parseLensPrescription("163.579 0 1.540 107.8\n53.169 5.529 1.0 81.8\n0 10 0 39.8\n-54.424 0 1.0 81.8\n",
+                                    "shifted.dat");
+            }),
+            "shifted.dat: row 1 (line 1), column 2 (thickness_mm): 0 for a glass: an element needs a centre thickness "
+            "> 0 (the column is "
             "the distance to the next surface)");
-  const std::string crossing = refusalOf([] { parseLensPrescription("50 1 1.5 40\n-50 3 1 40\n0 0 0 10\n", "crossing.dat"); });
-  EXPECT_NE(crossing.find("crossing.dat: rows 1 and 2 (lines 1 and 2) cross inside their clear aperture: 1 mm apart on the axis but"),
-            std::string::npos) << crossing;
-  EXPECT_EQ(refusalOf([] { parseLensPrescription("163.579 5.529 1.540 107.8\n53.169 10 1.0 81.8\n0 10 0 39.8\n-54.424 0 1.0 81.8\n", "ok"); }),
+  const std::string crossing =
+      refusalOf([] { parseLensPrescription("50 1 1.5 40\n-50 3 1 40\n0 0 0 10\n", "crossing.dat"); });
+  EXPECT_NE(
+      crossing.find(
+          "crossing.dat: rows 1 and 2 (lines 1 and 2) cross inside their clear aperture: 1 mm apart on the axis but"),
+      std::string::npos)
+      << crossing;
+  EXPECT_EQ(refusalOf([] {
+              parseLensPrescription("163.579 5.529 1.540 107.8\n53.169 10 1.0 81.8\n0 10 0 39.8\n-54.424 0 1.0 81.8\n",
+                                    "ok");
+            }),
             "accepted");
 }
 
@@ -121,7 +136,8 @@ TEST(RealLens, FlatPlateShiftsARaySidewaysByTheClosedForm) {
     ASSERT_TRUE(out) << degrees;
     EXPECT_NEAR(glm::length(out->direction - in.direction), 0.0, 1e-14) << "leaves parallel to itself, " << degrees;
     // Lateral displacement between the incident line and the emerging one.
-    const double shift = t * std::sin(theta) * (1.0 - std::cos(theta) / std::sqrt(n * n - std::sin(theta) * std::sin(theta)));
+    const double shift =
+        t * std::sin(theta) * (1.0 - std::cos(theta) / std::sqrt(n * n - std::sin(theta) * std::sin(theta)));
     const glm::dvec3 offset = out->origin - in.origin;
     const double measured = glm::length(offset - glm::dot(offset, in.direction) * in.direction);
     EXPECT_NEAR(measured, shift, 1e-12) << degrees;
@@ -183,7 +199,7 @@ TEST(ParaxialLens, FocusingMovesTheFilmAsTheThickLensEquationSays) {
   EXPECT_NEAR(filmDistanceForFocusMm(lens, INFINITY), tl.f + tl.rearPrincipalFromLastVertex, 1e-10);
   for (double objectFromStop : {3000.0, 1000.0, 400.0}) {
     const double so = objectFromStop + first + tl.frontPrincipalFromFirstVertex;  // object to H
-    const double si = tl.f * so / (so - tl.f);                                   // H' to image
+    const double si = tl.f * so / (so - tl.f);                                    // H' to image
     const double film = last + tl.rearPrincipalFromLastVertex + si;               // from the stop (z = 0)
     const double focusFromFilm = objectFromStop + film;
     EXPECT_NEAR(filmDistanceForFocusMm(lens, focusFromFilm), film - last, 1e-9 * tl.f) << objectFromStop;
@@ -215,7 +231,8 @@ TEST(ParaxialLens, PupilsAreImagesOfTheStop) {
   }
   // A ray parallel to the axis at the entrance pupil's radius meets the stop's rim (paraxially).
   const double h = 1e-3;
-  const std::optional<LensRay> rim = traceLens(front, {{0.0, h * f.entrancePupilDiameterMm / 2.0, -10.0}, {0.0, 0.0, 1.0}}, false);
+  const std::optional<LensRay> rim =
+      traceLens(front, {{0.0, h * f.entrancePupilDiameterMm / 2.0, -10.0}, {0.0, 0.0, 1.0}}, false);
   ASSERT_TRUE(rim);
   EXPECT_NEAR(rim->origin.y / (h * 4.0), 1.0, 1e-5) << "entrance pupil's radius images onto the stop's (4 mm)";
   EXPECT_GT(f.exitPupilDiameterMm, 0.0);

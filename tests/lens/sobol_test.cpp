@@ -69,10 +69,14 @@ glm::dvec2 squareFromDisk(glm::dvec2 p) {
   double phi = std::atan2(p.y, p.x);
   if (phi < -kQuarterPi) phi += 2.0 * std::numbers::pi;  // [−π/4, 7π/4)
   glm::dvec2 offset;
-  if (phi < kQuarterPi) offset = {r, r * phi / kQuarterPi};
-  else if (phi < 3.0 * kQuarterPi) offset = {r * (2.0 * kQuarterPi - phi) / kQuarterPi, r};
-  else if (phi < 5.0 * kQuarterPi) offset = {-r, -r * (phi - 4.0 * kQuarterPi) / kQuarterPi};
-  else offset = {-r * (6.0 * kQuarterPi - phi) / kQuarterPi, -r};
+  if (phi < kQuarterPi)
+    offset = {r, r * phi / kQuarterPi};
+  else if (phi < 3.0 * kQuarterPi)
+    offset = {r * (2.0 * kQuarterPi - phi) / kQuarterPi, r};
+  else if (phi < 5.0 * kQuarterPi)
+    offset = {-r, -r * (phi - 4.0 * kQuarterPi) / kQuarterPi};
+  else
+    offset = {-r * (6.0 * kQuarterPi - phi) / kQuarterPi, -r};
   return (offset + 1.0) / 2.0;
 }
 
@@ -83,7 +87,8 @@ std::vector<glm::dvec4> prefix(std::uint32_t seed, int stream, int count) {
   std::vector<glm::dvec4> points;
   for (int i = 0; i < count; ++i) {
     const auto index = static_cast<std::uint32_t>(i);
-    points.push_back(squareOf(stream < 0 ? sobolPoint(index, seed) : sobolTwoStreamSample(2 * index + static_cast<std::uint32_t>(stream), seed)));
+    points.push_back(squareOf(stream < 0 ? sobolPoint(index, seed)
+                                         : sobolTwoStreamSample(2 * index + static_cast<std::uint32_t>(stream), seed)));
   }
   return points;
 }
@@ -106,7 +111,8 @@ TEST(Sobol, TheDiskMapsInverseRoundTrips) {
 TEST(Sobol, UnscrambledPrefixesAreOnePointPerElementaryBox) {
   for (int k = 0; k <= 8; ++k) {
     std::vector<glm::dvec2> points;
-    for (std::uint32_t i = 0; i < (1u << k); ++i) points.push_back(glm::dvec2(sobolDimension0(i), sobolDimension1(i)) * 0x1p-32);
+    for (std::uint32_t i = 0; i < (1u << k); ++i)
+      points.push_back(glm::dvec2(sobolDimension0(i), sobolDimension1(i)) * 0x1p-32);
     EXPECT_TRUE(oneInEachBox(points, k)) << "2^" << k << " points";
   }
 }
@@ -114,8 +120,10 @@ TEST(Sobol, UnscrambledPrefixesAreOnePointPerElementaryBox) {
 TEST(Sobol, DimensionsTwoAndThreeAreJoeKuos) {
   // The direction numbers (the points at index 2^k) of new-joe-kuo-6.21201's third and fourth
   // dimensions, as pbrt's and every other Sobol' table gives them.
-  const std::uint32_t third[8] = {0x80000000u, 0xc0000000u, 0x60000000u, 0x90000000u, 0xe8000000u, 0x5c000000u, 0x8e000000u, 0xc5000000u};
-  const std::uint32_t fourth[8] = {0x80000000u, 0xc0000000u, 0x20000000u, 0x50000000u, 0xf8000000u, 0x74000000u, 0xa2000000u, 0x93000000u};
+  const std::uint32_t third[8] = {0x80000000u, 0xc0000000u, 0x60000000u, 0x90000000u,
+                                  0xe8000000u, 0x5c000000u, 0x8e000000u, 0xc5000000u};
+  const std::uint32_t fourth[8] = {0x80000000u, 0xc0000000u, 0x20000000u, 0x50000000u,
+                                   0xf8000000u, 0x74000000u, 0xa2000000u, 0x93000000u};
   for (int k = 0; k < 8; ++k) {
     EXPECT_EQ(sobolDimension(2, 1u << k), third[k]) << k;
     EXPECT_EQ(sobolDimension(3, 1u << k), fourth[k]) << k;
@@ -131,7 +139,8 @@ TEST(Sobol, OwenScramblingKeepsTheBoxesAndMovesThePoints) {
     bool moved = false;
     for (std::uint32_t i = 0; i < 256; ++i) {
       const glm::dvec2 plain = glm::dvec2(sobolDimension0(i), sobolDimension1(i)) * 0x1p-32;
-      const glm::dvec2 p = glm::dvec2(owenScramble(sobolDimension0(i), seed), owenScramble(sobolDimension1(i), seed + 1)) * 0x1p-32;
+      const glm::dvec2 p =
+          glm::dvec2(owenScramble(sobolDimension0(i), seed), owenScramble(sobolDimension1(i), seed + 1)) * 0x1p-32;
       moved |= p != plain;
       points.push_back(p);
       if (i + 1 == 16 || i + 1 == 64 || i + 1 == 256) {
@@ -148,7 +157,8 @@ TEST(Sobol, EveryPowerOfTwoPrefixIsOneLensPointPerElementaryBox) {
   for (std::uint32_t seed : {1u, 3u, 99u})
     for (int stream : {-1, 0, 1})
       for (int k = 0; k <= 10; ++k)
-        EXPECT_TRUE(oneInEachBox(pair(prefix(seed, stream, 1 << k), 0), k)) << "seed " << seed << ", stream " << stream << ", 2^" << k;
+        EXPECT_TRUE(oneInEachBox(pair(prefix(seed, stream, 1 << k), 0), k))
+            << "seed " << seed << ", stream " << stream << ", 2^" << k;
 }
 
 // Joe and Kuo's dimensions 2 and 3 as a pair are a (2, 2)-sequence: every box of area 4/2^k holds
@@ -205,7 +215,8 @@ TEST(Sobol, ThePaddedOrdersStreamsStratifyLensAndPixelEachPowerOfTwo) {
   for (int stream : {0, 1})
     for (int k = 0; k <= 8; ++k) {
       std::vector<glm::dvec4> points;
-      for (int i = 0; i < (1 << k); ++i) points.push_back(squareOf(sobolSample(static_cast<std::uint32_t>(2 * i + stream), 3)));
+      for (int i = 0; i < (1 << k); ++i)
+        points.push_back(squareOf(sobolSample(static_cast<std::uint32_t>(2 * i + stream), 3)));
       EXPECT_TRUE(oneInEachBox(pair(points, 0), k)) << "lens, stream " << stream << ", 2^" << k;
       EXPECT_TRUE(oneInEachBox(pair(points, 2), k)) << "pixel, stream " << stream << ", 2^" << k;
     }
@@ -222,13 +233,15 @@ double smoothRmse(int count, bool sobol) {
     std::vector<LensSample> samples;
     std::mt19937 pointRng(seed);
     for (int i = 0; i < count; ++i)
-      samples.push_back(sobol ? sobolPoint(static_cast<std::uint32_t>(i), seed)
-                              : LensSample{concentricDisk({u(pointRng), u(pointRng)}), {u(pointRng) - 0.5, u(pointRng) - 0.5}});
+      samples.push_back(
+          sobol ? sobolPoint(static_cast<std::uint32_t>(i), seed)
+                : LensSample{concentricDisk({u(pointRng), u(pointRng)}), {u(pointRng) - 0.5, u(pointRng) - 0.5}});
     for (int f = 0; f < 20; ++f) {
       const double omega = 1.0 + 2.0 * u(rng), c = 0.2 + 3.0 * u(rng), phi = 6.0 * u(rng);
       double mean = 0.0;
       for (const LensSample& s : samples) mean += std::cos(omega * (s.pixel.x + c * s.lens.x) + phi) / count;
-      const double truth = std::cos(phi) * std::sin(omega / 2.0) / (omega / 2.0) * 2.0 * std::cyl_bessel_j(1.0, omega * c) / (omega * c);
+      const double truth =
+          std::cos(phi) * std::sin(omega / 2.0) / (omega / 2.0) * 2.0 * std::cyl_bessel_j(1.0, omega * c) / (omega * c);
       squared += (mean - truth) * (mean - truth);
       ++n;
     }

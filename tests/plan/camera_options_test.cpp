@@ -63,7 +63,8 @@ TEST(CameraWords, SensorNamesAndSizes) {
   EXPECT_EQ(parseSensorMm("1-inch"), glm::dvec2(13.2, 8.8));
   EXPECT_EQ(parseSensorMm("22.3x14.9"), glm::dvec2(22.3, 14.9));
   EXPECT_EQ(parseSensorMm("6.17X4.55"), glm::dvec2(6.17, 4.55));
-  for (const char* bad : {"", "36", "36x", "x24", "36x24x2", "0x24", "-36x24", "36x24mm", "APS-C", "nanx24", "infx24"}) {
+  for (const char* bad :
+       {"", "36", "36x", "x24", "36x24x2", "0x24", "-36x24", "36x24mm", "APS-C", "nanx24", "infx24"}) {
     const std::string message = refusal([&] { parseSensorMm(bad); });
     EXPECT_TRUE(contains(message, cat("--sensor ", bad, ": give WIDTHxHEIGHT in millimetres"))) << message;
     EXPECT_TRUE(contains(message, "micro-four-thirds (17.3x13)")) << "the names with their sizes: " << message;
@@ -80,7 +81,9 @@ TEST(CameraWords, FNumbers) {
 
 // ---- composition with each kind of base ----
 
-SelectedCamera compose(const BaseCamera& base, const CameraOptions& o, double aspect = 0.0) { return composeCamera(base, o, aspect); }
+SelectedCamera compose(const BaseCamera& base, const CameraOptions& o, double aspect = 0.0) {
+  return composeCamera(base, o, aspect);
+}
 
 BaseCamera physicalBase(double focusDistance) {
   PhysicalCamera p;
@@ -97,7 +100,8 @@ BaseCamera physicalBase(double focusDistance) {
 TEST(CameraComposition, PhysicalBaseTakesEveryOptionFieldByField) {
   const BaseCamera base = physicalBase(6.0);  // focused on its target
   CameraOptions o;
-  EXPECT_EQ(compose(base, o).camera.view.window.height(), base.selected.camera.view.window.height()) << "no option: the file's camera";
+  EXPECT_EQ(compose(base, o).camera.view.window.height(), base.selected.camera.view.window.height())
+      << "no option: the file's camera";
 
   o.fNumber = "2";
   SelectedCamera c = compose(base, o);
@@ -143,7 +147,9 @@ TEST(CameraComposition, PhysicalChecksNameTheBaseAndTheOptions) {
   CameraOptions o;
   o.focalLengthMm = 50.0;
   const std::string message = refusal([&] { compose(base, o); });
-  EXPECT_TRUE(contains(message, "cam.json with --focal-length 50: focus_distance is 0.04; it must be beyond the focal length")) << message;
+  EXPECT_TRUE(
+      contains(message, "cam.json with --focal-length 50: focus_distance is 0.04; it must be beyond the focal length"))
+      << message;
   o = {};
   o.eye = glm::dvec3(0, 1, 0);  // the target
   EXPECT_TRUE(contains(refusal([&] { compose(physicalBase(6.0), o); }), "eye and target are the same point"));
@@ -174,14 +180,17 @@ TEST(CameraComposition, LensEffectsAreCheckedAgainstTheComposedLens) {
   EXPECT_NO_THROW(compose(base, o));
   o.focalLengthMm = 50.0;
   const std::string message = refusal([&] { compose(base, o); });
-  EXPECT_TRUE(contains(message, "cam.json with --focal-length 50 --f-number 2: chromatic.focus_distance_red is 0.04; it must be "
-                                "beyond the focal length (0.05 world units)")) << message;
+  EXPECT_TRUE(contains(message,
+                       "cam.json with --focal-length 50 --f-number 2: chromatic.focus_distance_red is 0.04; it must be "
+                       "beyond the focal length (0.05 world units)"))
+      << message;
   BaseCamera lecture = lectureBase(CameraForm::Lecture);
   lecture.selected.camera.lens.effects.chromatic.inverseFocusShiftRed = 1e200;
   o = {};
   o.fNumber = "2";
   o.focalLengthMm = 50.0;
-  EXPECT_TRUE(contains(refusal([&] { compose(lecture, o); }), "chromatic.focus_distance_red is 1e-200; it must be beyond the focal length"));
+  EXPECT_TRUE(contains(refusal([&] { compose(lecture, o); }),
+                       "chromatic.focus_distance_red is 1e-200; it must be beyond the focal length"));
 }
 
 TEST(CameraComposition, LectureFormTakesAnFNumberWithAFocalLengthOnly) {
@@ -259,14 +268,16 @@ TEST(CameraComposition, AGltfPerspectiveCameraBecomesALensWithItsOwnView) {
     o.sensor = sensor;
     const SelectedCamera c = compose(base, o);
     ASSERT_TRUE(c.physical) << sensor;
-    EXPECT_NEAR(c.camera.view.window.height() / c.camera.view.prp.z, 2.0 * std::tan(0.3), 1e-12) << "yfov kept, sensor " << sensor;
+    EXPECT_NEAR(c.camera.view.window.height() / c.camera.view.prp.z, 2.0 * std::tan(0.3), 1e-12)
+        << "yfov kept, sensor " << sensor;
     const double h = c.physical->sensorMm.y * 1e-3;
     const double zi = h / (2.0 * std::tan(0.3));
     EXPECT_NEAR(c.physical->focalLengthMm * 1e-3, zi * 5.0 / (zi + 5.0), 1e-15);
     EXPECT_DOUBLE_EQ(c.camera.lens.apertureRadius, c.physical->focalLengthMm * 1e-3 / 4.0);
     EXPECT_DOUBLE_EQ(c.camera.focusDistance(), 5.0);
   }
-  EXPECT_EQ(compose(base, CameraOptions{.fNumber = "2"}).physical->sensorMm, glm::dvec2(36, 24)) << "24 mm high at aspect 1.5";
+  EXPECT_EQ(compose(base, CameraOptions{.fNumber = "2"}).physical->sensorMm, glm::dvec2(36, 24))
+      << "24 mm high at aspect 1.5";
 
   // The pose replaced: looking from the side, +Y up.
   o = {};
@@ -282,11 +293,14 @@ TEST(CameraComposition, AGltfOrthographicCameraHasNoLensButCanMove) {
   const Scene scene = sceneWithCameras();
   const BaseCamera base = gltfBaseCamera(scene, 1);
   EXPECT_EQ(base.form, CameraForm::GltfOrthographic);
-  for (const auto& [option, o] : std::vector<std::pair<std::string, CameraOptions>>{
-           {"--focal-length 50", CameraOptions{.focalLengthMm = 50.0}},
-           {"--f-number 2", CameraOptions{.fNumber = "2"}},
-           {"--sensor aps-c", CameraOptions{.sensor = "aps-c"}}})
-    EXPECT_EQ(refusal([&] { compose(base, o); }).rfind(option + ": two.gltf: glTF camera [1] node \"Top\" is orthographic", 0), 0u);
+  for (const auto& [option, o] :
+       std::vector<std::pair<std::string, CameraOptions>>{{"--focal-length 50", CameraOptions{.focalLengthMm = 50.0}},
+                                                          {"--f-number 2", CameraOptions{.fNumber = "2"}},
+                                                          {"--sensor aps-c", CameraOptions{.sensor = "aps-c"}}})
+    EXPECT_EQ(refusal([&] {
+                compose(base, o);
+              }).rfind(option + ": two.gltf: glTF camera [1] node \"Top\" is orthographic", 0),
+              0u);
   EXPECT_TRUE(compose(base, CameraOptions{.fNumber = "infinity"}).camera.lens.isPinhole());
   CameraOptions o;
   o.eye = glm::dvec3(0, 0, 6);
@@ -307,11 +321,14 @@ TEST(CameraSelectionWords, CameraNodeByIndexNodeNameOrCameraName) {
   EXPECT_EQ(findSceneCamera(scene, "Front"), 0u);
   EXPECT_EQ(findSceneCamera(scene, "Lens"), 0u) << "a camera's own name";
   EXPECT_EQ(refusal([&] { findSceneCamera(scene, "Side"); }),
-            "--camera-node Side: no camera of two.gltf has that node or camera name; it has [0] node \"Front\" (camera \"Lens\"), "
+            "--camera-node Side: no camera of two.gltf has that node or camera name; it has [0] node \"Front\" (camera "
+            "\"Lens\"), "
             "[1] node \"Top\"");
-  EXPECT_TRUE(contains(refusal([&] { findSceneCamera(scene, "2"); }), "--camera-node 2: two.gltf has 2 camera(s): [0]"));
+  EXPECT_TRUE(
+      contains(refusal([&] { findSceneCamera(scene, "2"); }), "--camera-node 2: two.gltf has 2 camera(s): [0]"));
   scene.cameras[1].nodeName = "Front";
-  EXPECT_TRUE(contains(refusal([&] { findSceneCamera(scene, "Front"); }), "2 cameras of two.gltf have that node name; give an index"));
+  EXPECT_TRUE(contains(refusal([&] { findSceneCamera(scene, "Front"); }),
+                       "2 cameras of two.gltf have that node name; give an index"));
   scene.cameras.clear();
   EXPECT_TRUE(contains(refusal([&] { findSceneCamera(scene, "0"); }), "--camera-node 0: two.gltf has no cameras"));
 }
@@ -336,10 +353,12 @@ TEST(CameraSelectionWords, BaseCameraOrderIsFileThenColmapThenNodeThenFirstCamer
                        "--camera-node Top: --colmap model gives the camera already"));
   CameraOptions dirOnly;
   dirOnly.colmapDir = "model";
-  EXPECT_TRUE(contains(refusal([&] { baseCamera(scene, std::nullopt, dirOnly); }), "--colmap model: give --image NAME too"));
+  EXPECT_TRUE(
+      contains(refusal([&] { baseCamera(scene, std::nullopt, dirOnly); }), "--colmap model: give --image NAME too"));
   CameraOptions imageOnly;
   imageOnly.colmapImage = "a.png";
-  EXPECT_TRUE(contains(refusal([&] { baseCamera(scene, std::nullopt, imageOnly); }), "--image a.png: give --colmap DIR too"));
+  EXPECT_TRUE(
+      contains(refusal([&] { baseCamera(scene, std::nullopt, imageOnly); }), "--image a.png: give --colmap DIR too"));
   scene.cameras.clear();
   EXPECT_EQ(baseCamera(scene, std::nullopt, none).form, CameraForm::AutomaticFraming);
 }
@@ -381,7 +400,8 @@ TEST_F(CameraFiles, TwoCamerasAndTwoClipsFromAFile) {
   EXPECT_EQ(xyAt("all", 1.0), glm::dvec2(0, 2.5)) << "the later clip's channel on the same node and path wins";
   EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 2.0);
   EXPECT_EQ(refusal([&] { selectAnimation(scene, "jump"); }),
-            "--animation jump: no animation of " + scene.source + " has that name; it has [0] \"slide\", [1] \"lift\", or all");
+            "--animation jump: no animation of " + scene.source +
+                " has that name; it has [0] \"slide\", [1] \"lift\", or all");
   EXPECT_TRUE(contains(refusal([&] { selectAnimation(scene, "2"); }), "has 2 animation(s): [0] \"slide\""));
   Scene still;
   still.source = "still.gltf";
@@ -396,7 +416,9 @@ TEST(CameraWarnings, FocusOnAPinholeSaysItChangesNothing) {
   lens.focusAt = glm::dvec2(10, 20);
   const std::vector<std::string> w = focusWarnings(pinhole, lens);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_TRUE(contains(w[0], "--focus-distance 3: the camera has no aperture (a pinhole), so focus changes nothing; give --f-number")) << w[0];
+  EXPECT_TRUE(contains(
+      w[0], "--focus-distance 3: the camera has no aperture (a pinhole), so focus changes nothing; give --f-number"))
+      << w[0];
   EXPECT_TRUE(contains(w[1], "--focus-at 10,20: ")) << w[1];
   Camera lens35 = pinhole;
   lens35.lens.apertureRadius = 0.01;
@@ -406,7 +428,8 @@ TEST(CameraWarnings, FocusOnAPinholeSaysItChangesNothing) {
 // ---- the bounding sphere ----
 
 TEST(BoundingSphere, KnownSmallestSpheres) {
-  const auto expectSphere = [](const std::vector<glm::dvec3>& points, glm::dvec3 center, double radius, const char* what) {
+  const auto expectSphere = [](const std::vector<glm::dvec3>& points, glm::dvec3 center, double radius,
+                               const char* what) {
     const BoundingSphere s = smallestEnclosingSphere(points);
     EXPECT_NEAR(s.radius, radius, 1e-9 * std::max(1.0, radius)) << what;
     EXPECT_NEAR(glm::length(s.center - center), 0.0, 1e-6 * std::max(1.0, radius)) << what;
@@ -500,10 +523,12 @@ TEST(AutomaticFraming, TheSubjectTouchesTheFramesNearerEdgesUpright) {
       EXPECT_GT(nearer, 0.96) << what;
       EXPECT_LT(nearer, 0.99) << what;
       EXPECT_LT(other, nearer) << what;
-      EXPECT_GT(e.topVertex.y, 0.9 * nearer * (landscape ? 1.0 : 24.0 / 36.0)) << "upright: the top of the sphere at the top; " << what;
+      EXPECT_GT(e.topVertex.y, 0.9 * nearer * (landscape ? 1.0 : 24.0 / 36.0))
+          << "upright: the top of the sphere at the top; " << what;
       EXPECT_NEAR(e.topVertex.x, 0.0, 1e-6) << what;
       if (c.physical) {
-        EXPECT_NEAR(c.camera.focusDistance(), glm::length(c.physical->eye - glm::dvec3(3, 2, -1) * radius), 1e-9 * radius)
+        EXPECT_NEAR(c.camera.focusDistance(), glm::length(c.physical->eye - glm::dvec3(3, 2, -1) * radius),
+                    1e-9 * radius)
             << "focused on the centre; " << what;
       }
     }
@@ -518,16 +543,22 @@ TEST(AutomaticFraming, ACloseUpStaysALensAndBeyondLifeSizeIsAPinhole) {
   const SelectedCamera tiny = composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {}, 0.0);
   EXPECT_FALSE(tiny.physical);
   EXPECT_TRUE(tiny.camera.lens.isPinhole());
-  EXPECT_TRUE(contains(tiny.camera.source, "would need a 35 mm on 36x24 mm lens at magnification")) << tiny.camera.source;
+  EXPECT_TRUE(contains(tiny.camera.source, "would need a 35 mm on 36x24 mm lens at magnification"))
+      << tiny.camera.source;
   EXPECT_TRUE(contains(tiny.camera.source, "beyond life size (1), so a pinhole")) << tiny.camera.source;
-  EXPECT_TRUE(contains(refusal([&] { composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {.fNumber = "2"}, 0.0); }),
+  EXPECT_TRUE(contains(refusal([&] {
+                         composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {.fNumber = "2"}, 0.0);
+                       }),
                        "--f-number 2: automatic framing: the scene"));
   // A sensor smaller than the sphere frames it at less than life size.
-  EXPECT_TRUE(composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {.fNumber = "2", .sensor = "0.5x0.5"}, 0.0).physical);
+  EXPECT_TRUE(
+      composeCamera(framingBaseCamera(sphereScene({0, 0, 0}, 0.0005)), {.fNumber = "2", .sensor = "0.5x0.5"}, 0.0)
+          .physical);
 }
 
 TEST(AutomaticFraming, TheFramingDistanceSolvesTheThinLensFit) {
-  for (const auto& [r, f, s] : std::vector<std::array<double, 3>>{{1, 0.035, 0.024}, {1e-3, 0.035, 0.024}, {1e6, 0.2, 0.036}, {0.05, 0.05, 0.0088}}) {
+  for (const auto& [r, f, s] : std::vector<std::array<double, 3>>{
+           {1, 0.035, 0.024}, {1e-3, 0.035, 0.024}, {1e6, 0.2, 0.036}, {0.05, 0.05, 0.0088}}) {
     const double d = framingDistance(r, f, s);
     EXPECT_GT(d, std::max(r, f));
     const double fits = r / std::sqrt(d * d - r * r), view = s * (d - f) / (2.0 * f * d);
@@ -548,7 +579,8 @@ TEST(AutomaticFraming, EyeAndTargetPlaceItWithTheGivenLens) {
   const SelectedCamera wide = composeCamera(base, {.focalLengthMm = 24.0}, 0.0);
   const SelectedCamera tele = composeCamera(base, {.focalLengthMm = 85.0}, 0.0);
   EXPECT_GT(tele.camera.focusDistance(), 3.0 * wide.camera.focusDistance()) << "a longer lens frames from further back";
-  EXPECT_NEAR(ndcExtent(scene, tele.camera).maxAbsY, ndcExtent(scene, wide.camera).maxAbsY, 0.01) << "the same size in the frame";
+  EXPECT_NEAR(ndcExtent(scene, tele.camera).maxAbsY, ndcExtent(scene, wide.camera).maxAbsY, 0.01)
+      << "the same size in the frame";
 }
 
 // ---- the corpus (suite GltfSamples: ctest's entry `corpus`) ----

@@ -33,7 +33,8 @@ TEST(TileGrid, MergedBoxesCoverExactlyTheSelectedTiles) {
     for (int y = 0; y < 200; ++y)
       for (int x = 0; x < 300; ++x) {
         const int tile = (y / 16) * g.columns + x / 16;
-        ASSERT_EQ(covered[static_cast<std::size_t>(y * 300 + x)], selected[static_cast<std::size_t>(tile)] ? 1 : 0) << x << "," << y;
+        ASSERT_EQ(covered[static_cast<std::size_t>(y * 300 + x)], selected[static_cast<std::size_t>(tile)] ? 1 : 0)
+            << x << "," << y;
       }
   }
   std::vector<char> all(static_cast<std::size_t>(g.count()), 1);

@@ -33,7 +33,8 @@ Camera obliqueCamera(Projection projection) {
 
 // Pixel position of a world point in an image of `camera` at `size`, seen from lens offset
 // `lens` with sub-pixel jitter `jitterPx` (the renderer's viewThroughLens).
-glm::dvec2 pixelOf(const Camera& camera, ImageSize size, glm::dvec2 lens, glm::dvec2 jitterPx, const glm::dvec3& world) {
+glm::dvec2 pixelOf(const Camera& camera, ImageSize size, glm::dvec2 lens, glm::dvec2 jitterPx,
+                   const glm::dvec3& world) {
   const Window& w = camera.view.window;
   const glm::dvec2 pitch(w.width() / size.widthPx, w.height() / size.heightPx);
   const ViewSpec view = viewThroughLens(camera, lens, {jitterPx.x * pitch.x, -jitterPx.y * pitch.y});
@@ -132,7 +133,9 @@ TEST(TilePlan, ForcedTilesAreAtMostThatSizeAndNearlyEqual) {
 TEST(TilePlan, LensTilesRenderTheirPreImageWithinTheFramesOverscan) {
   const Camera camera = parseCameraJson(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "near": 0.1, "far": 100,
       "intrinsics": {"fx": 686, "fy": 686, "cx": 482.5, "cy": 317.5, "width": 960, "height": 640},
-      "distortion": [-0.22, 0.05, 0.002, -0.001]})", "test.json").camera;
+      "distortion": [-0.22, 0.05, 0.002, -0.001]})",
+                                        "test.json")
+                            .camera;
   const ImageSize size{480, 320};
   const FramePlan plan = makeFramePlan(Scene{}, camera, size);
   ASSERT_TRUE(plan.remap);
@@ -167,9 +170,12 @@ TEST(TilePlan, LensTilesRenderTheirPreImageWithinTheFramesOverscan) {
 // whose render would hold more than a tile's budget is tiled, every tile within the budget and every
 // strip of tile rows within the strip's; without a budget the same frame is one render.
 TEST(TilePlan, ALensFrameOverTheMemoryBudgetIsTiledWithinIt) {
-  const Camera camera = parseCameraJson(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "near": 0.1, "far": 100, "f_number": 2.8,
+  const Camera camera =
+      parseCameraJson(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "near": 0.1, "far": 100, "f_number": 2.8,
       "focal_length_mm": 35, "sensor_mm": [36, 24], "focus_distance": 3, "distortion": {"k1": -0.15, "k2": 0.03},
-      "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})", "test.json").camera;
+      "chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}})",
+                      "test.json")
+          .camera;
   const ImageSize size{1200, 800};
   const FramePlan plan = makeFramePlan(Scene{}, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1});
   ASSERT_TRUE(plan.remap);
@@ -178,7 +184,8 @@ TEST(TilePlan, ALensFrameOverTheMemoryBudgetIsTiledWithinIt) {
   memory.tileBytes = std::int64_t{48} << 20;
   memory.stripBytes = std::int64_t{4} << 20;
   memory.fileBytesPerPixel = 16;
-  const Tile whole{{0, 0, size.widthPx, size.heightPx}, {0, 0, plan.overscan.size.widthPx, plan.overscan.size.heightPx}};
+  const Tile whole{{0, 0, size.widthPx, size.heightPx},
+                   {0, 0, plan.overscan.size.widthPx, plan.overscan.size.heightPx}};
   // The whole frame: ~1.1 Mpx rendered, each pixel with its view layers (8 × 16 bytes), the forward
   // tables (32), the inverse tables (24), sums and read-back: over 200 bytes a pixel.
   EXPECT_GT(tileMemoryBytes(plan, whole), std::int64_t{200} * size.pixelCount());

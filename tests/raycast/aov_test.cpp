@@ -32,8 +32,9 @@ Scene planeScene(const glm::dvec3& point, const glm::dvec3& normal) {
   scene.source = "plane";
   const glm::dvec3 x = glm::normalize(glm::cross(glm::dvec3(0.0, 1.0, 0.0), normal));
   const glm::dvec3 y = glm::cross(normal, x);
-  addUnlitQuad(scene, glm::dmat4(glm::dvec4(x, 0.0), glm::dvec4(y, 0.0), glm::dvec4(normal, 0.0), glm::dvec4(point, 1.0)), 100.0,
-               100.0, {0.5f, 0.5f, 0.5f});
+  addUnlitQuad(scene,
+               glm::dmat4(glm::dvec4(x, 0.0), glm::dvec4(y, 0.0), glm::dvec4(normal, 0.0), glm::dvec4(point, 1.0)),
+               100.0, 100.0, {0.5f, 0.5f, 0.5f});
   return scene;
 }
 
@@ -43,7 +44,8 @@ constexpr int kWidth = 96;
 // every pixel; all pixels must see the plane.
 double worstNormalError(const AovImages& aovs, const glm::dvec3& expected) {
   double worst = 0.0;
-  for (std::size_t i = 0; i < aovs.normal.size(); ++i) worst = std::max(worst, std::abs(aovs.normal[i] - expected[static_cast<int>(i % 3)]));
+  for (std::size_t i = 0; i < aovs.normal.size(); ++i)
+    worst = std::max(worst, std::abs(aovs.normal[i] - expected[static_cast<int>(i % 3)]));
   return worst;
 }
 
@@ -96,7 +98,8 @@ TEST(NormalAov, UnderDistortionThePlaneKeepsItsNormalAndOnlyTheSelectedImagesAre
   const AovImages aovs = RayCaster(scene).aovImages(camera, size, normalOnly);
   EXPECT_TRUE(aovs.depth.empty() && aovs.albedo.empty() && aovs.instance.empty());
   const Frame f = frameOf(c);
-  EXPECT_LE(worstNormalError(aovs, {glm::dot(normal, f.right), glm::dot(normal, f.up), glm::dot(normal, -f.forward)}), 1e-5);
+  EXPECT_LE(worstNormalError(aovs, {glm::dot(normal, f.right), glm::dot(normal, f.up), glm::dot(normal, -f.forward)}),
+            1e-5);
 }
 
 // Two triangles placed by glTF nodes 1 and 2 (node 0 an empty parent of node 2, so that node and

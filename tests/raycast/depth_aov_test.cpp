@@ -32,7 +32,8 @@ Scene planeScene(const Plane& plane, double half, const glm::dvec3& sideways = g
   const glm::dvec3 z = plane.normal;
   const glm::dvec3 x = glm::normalize(glm::cross(glm::dvec3(0.0, 1.0, 0.0), z));
   const glm::dvec3 y = glm::cross(z, x);
-  glm::dmat4 worldFromModel(glm::dvec4(x, 0.0), glm::dvec4(y, 0.0), glm::dvec4(z, 0.0), glm::dvec4(plane.point + sideways, 1.0));
+  glm::dmat4 worldFromModel(glm::dvec4(x, 0.0), glm::dvec4(y, 0.0), glm::dvec4(z, 0.0),
+                            glm::dvec4(plane.point + sideways, 1.0));
   addUnlitQuad(scene, worldFromModel, half, half, {0.5f, 0.5f, 0.5f});
   scene.bounds = computeBounds(scene);
   return scene;

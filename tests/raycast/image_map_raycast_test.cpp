@@ -25,12 +25,16 @@ namespace {
 class TelecentricMap final : public ImageMap {
  public:
   TelecentricMap(const Camera& camera, ImageSize size, double widthWorld, double gain)
-      : ImageMap(camera, size), basis_(viewBasis(camera.view)), centre_(prpWorld(camera.view)),
-        pitch_(widthWorld / size.widthPx), gain_(gain) {}
+      : ImageMap(camera, size),
+        basis_(viewBasis(camera.view)),
+        centre_(prpWorld(camera.view)),
+        pitch_(widthWorld / size.widthPx),
+        gain_(gain) {}
 
   LensDomain lensDomain() const override { return LensDomain::Disk; }
   int rayChannels() const override { return 1; }
-  std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel, const CameraRay* /*near*/) const override {
+  std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
+                               const CameraRay* /*near*/) const override {
     CameraRay r;
     r.ray = rayThrough(pixel);
     r.pixel = pixel;
@@ -45,7 +49,8 @@ class TelecentricMap final : public ImageMap {
   // Film position (origin top left, +y down) to the ray: right along u, up along v, looking along −n.
   Ray rayThrough(glm::dvec2 pixel) const {
     const glm::dvec2 offset((pixel.x - 0.5 * size_.widthPx) * pitch_, (0.5 * size_.heightPx - pixel.y) * pitch_);
-    return Ray{centre_ + offset.x * basis_.u + offset.y * basis_.v, -basis_.n, 0.0, std::numeric_limits<double>::infinity()};
+    return Ray{centre_ + offset.x * basis_.u + offset.y * basis_.v, -basis_.n, 0.0,
+               std::numeric_limits<double>::infinity()};
   }
 
   ViewBasis basis_;

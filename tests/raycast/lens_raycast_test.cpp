@@ -51,7 +51,8 @@ TEST(LensRaycast, AUniformWorldShowsTheRelativeIlluminationWithoutRings) {
   Scene scene;  // nothing but the background, radiance 1 every way
   scene.source = "uniform";
   scene.lighting.background = glm::vec3(1.0f);
-  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, 1e4)), 1.0, 1.0, glm::vec3(1.0f));  // behind the camera
+  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, 1e4)), 1.0, 1.0,
+               glm::vec3(1.0f));  // behind the camera
   scene.bounds = computeBounds(scene);
   const PhysicalCamera physical = looking(INFINITY);
   const Camera camera = toCamera(physical, "test");
@@ -80,7 +81,8 @@ TEST(LensRaycast, AUniformWorldShowsTheRelativeIlluminationWithoutRings) {
 TEST(LensRaycast, AMarkerLandsWhereItsChiefRayDoesTheRightWayUp) {
   const auto lens = bundled("wide-angle-28mm.lens");
   const double distance = 5.0, angle = 0.5;  // radians off the axis, toward up-right
-  const glm::dvec3 along = glm::normalize(glm::dvec3(std::sin(angle) * std::cos(0.6), std::sin(angle) * std::sin(0.6), -std::cos(angle)));
+  const glm::dvec3 along =
+      glm::normalize(glm::dvec3(std::sin(angle) * std::cos(0.6), std::sin(angle) * std::sin(0.6), -std::cos(angle)));
   Scene scene = markerScene({{distance * along, 0.01, glm::vec3(1.0f)}});
   const PhysicalCamera physical = looking(distance);
   const Camera camera = toCamera(physical, "test");
@@ -106,7 +108,8 @@ TEST(LensRaycast, AMarkerLandsWhereItsChiefRayDoesTheRightWayUp) {
   // The film height of the chief ray at this angle, from the analysis's field table.
   LensAnalysisOptions o;
   // The same focus as the camera's, measured from the film as the analysis takes it.
-  o.focusDistanceMm = 1000.0 * distance - firstOrder(*lens).entrancePupilMm + lens->lengthMm() + lensCamera.filmDistanceMm();
+  o.focusDistanceMm =
+      1000.0 * distance - firstOrder(*lens).entrancePupilMm + lens->lengthMm() + lensCamera.filmDistanceMm();
   o.fNumber = 8.0;
   o.fieldSamples = 41;
   o.pupilSamples = 8;
@@ -116,7 +119,8 @@ TEST(LensRaycast, AMarkerLandsWhereItsChiefRayDoesTheRightWayUp) {
     const FieldSample &a = report.field[i - 1], &b = report.field[i];
     const double degrees = angle * 180.0 / 3.14159265358979323846;
     if (a.fieldAngleDegrees <= degrees && degrees <= b.fieldAngleDegrees)
-      expected = a.imageHeightMm + (degrees - a.fieldAngleDegrees) / (b.fieldAngleDegrees - a.fieldAngleDegrees) * (b.imageHeightMm - a.imageHeightMm);
+      expected = a.imageHeightMm + (degrees - a.fieldAngleDegrees) / (b.fieldAngleDegrees - a.fieldAngleDegrees) *
+                                       (b.imageHeightMm - a.imageHeightMm);
   }
   ASSERT_GT(expected, 0.0);
   EXPECT_NEAR(glm::length(imageMm), expected, 0.05) << "mm from the centre";
@@ -165,7 +169,8 @@ TEST(LensRaycast, APointAtTheFocusDistanceImagesAsTheLensesSpot) {
     o.fNumber = 5.6;
     o.fieldSamples = 2;
     o.pupilSamples = 64;
-    o.focusDistanceMm = 1000.0 * distance - firstOrder(*lens).entrancePupilMm + lens->lengthMm() + lensCamera.filmDistanceMm();
+    o.focusDistanceMm =
+        1000.0 * distance - firstOrder(*lens).entrancePupilMm + lens->lengthMm() + lensCamera.filmDistanceMm();
     const double spot = analyseLens(*lens, o).rmsSpotMm.x;
     std::printf("%s at %.1f m: image RMS radius %.4f mm, analysis's spot %.4f mm\n", file, distance, rmsMm, spot);
     EXPECT_NEAR(rmsMm, spot, 0.25 * spot + 0.01) << file;

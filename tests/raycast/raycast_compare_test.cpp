@@ -37,7 +37,8 @@ struct BothWays {
 BothWays renderBothWays(const Scene& scene, const Camera& camera, ImageSize size, int views, int spp) {
   Camera planCamera = camera;
   if (planCamera.lens.isPinhole()) planCamera.lens.apertureRadius = 1e-3;  // only to get a plan with `views` samples
-  const FramePlan plan = makeFramePlan(scene, planCamera, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
+  const FramePlan plan =
+      makeFramePlan(scene, planCamera, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
   return {Renderer(scene).render(camera, plan, size), RayCaster(scene).render(camera, size, RaycastOptions{spp, 11}),
           plan.apertureSamples};
 }
@@ -68,8 +69,8 @@ void expectPinholeAlike(const Scene& scene, Camera camera, ImageSize size, const
 }
 
 // Raster with `views` jittered (and, with an aperture, lens) samples vs ray casting with `spp`.
-double rasterVsRaycastPsnr(const std::string& sceneName, const std::string& cameraFile, bool pinhole, int views, int spp,
-                           ImageSize size) {
+double rasterVsRaycastPsnr(const std::string& sceneName, const std::string& cameraFile, bool pinhole, int views,
+                           int spp, ImageSize size) {
   const fs::path assets = LENSLAB_TEST_ASSET_DIR;
   const Scene scene = loadGltf(assets / sceneName);
   Camera camera = loadCameraJson(assets / cameraFile).camera;
@@ -93,7 +94,8 @@ TEST(RasterVsRaycast, PinholeRows) {
 TEST(RasterVsRaycast, ThinLensRowsAndOccluder) {
   LENSLAB_REQUIRE_GL();
   EXPECT_GE(rasterVsRaycastPsnr("rows/rows.gltf", "rows/camera-dof.json", false, 1024, 256, {240, 160}), 40.0);
-  EXPECT_GE(rasterVsRaycastPsnr("occluder/occluder.gltf", "occluder/camera-dof.json", false, 1024, 256, {240, 160}), 40.0);
+  EXPECT_GE(rasterVsRaycastPsnr("occluder/occluder.gltf", "occluder/camera-dof.json", false, 1024, 256, {240, 160}),
+            40.0);
 }
 
 // Emission (glTF emissiveFactor × KHR_materials_emissive_strength, times the emissive texture) is
@@ -128,7 +130,8 @@ TEST(RasterVsRaycast, EmissionIsAddedAlikeAndKeptAboveOne) {
     if (i % 4 != 3) mse += (raster.rgba[i] - reference.rgba[i]) * (raster.rgba[i] - reference.rgba[i]);
   mse /= 0.75 * static_cast<double>(raster.rgba.size());
   const double psnr = 10.0 * std::log10(brightest * brightest / mse);
-  std::cout << "[ measure  ] rows glowing: brightest " << brightest << ", raster vs ray cast PSNR (peak the brightest) " << psnr << " dB\n";
+  std::cout << "[ measure  ] rows glowing: brightest " << brightest << ", raster vs ray cast PSNR (peak the brightest) "
+            << psnr << " dB\n";
   EXPECT_GT(brightest, 5.0f) << "radiance above 1 is kept";
   EXPECT_GE(psnr, 45.0);
 }
@@ -168,12 +171,14 @@ TEST(RaycastPrecision, ASceneFarFromTheOriginRendersAsAtTheOrigin) {
   for (const double distance : {1e6, 1e7, 1e8}) {
     const glm::dvec3 offset(distance, 0.25 * distance, -0.5 * distance);
     Scene moved = scene;
-    for (Instance& instance : moved.instances) instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
+    for (Instance& instance : moved.instances)
+      instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
     moved.bounds = computeBounds(moved);
     Camera far = camera;
     far.view.vrp += offset;
     const double psnr = compareImages(RayCaster(moved).render(far, size, options), atOrigin, 0.0).psnrDb;
-    std::cout << "[ measure  ] rows + camera-dof.json moved by " << distance << ": ray cast vs at the origin " << psnr << " dB\n";
+    std::cout << "[ measure  ] rows + camera-dof.json moved by " << distance << ": ray cast vs at the origin " << psnr
+              << " dB\n";
     EXPECT_GE(psnr, 45.0) << "moved by " << distance;
   }
 }
@@ -186,7 +191,8 @@ TEST(RaycastPrecision, RaysThatOverflowAreAnErrorNotAnAbort) {
   const Scene scene = loadGltf(assets / "rows/rows.gltf");
   for (const bool curvature : {false, true}) {
     Camera camera = loadCameraJson(assets / "rows/camera-dof.json").camera;
-    (curvature ? camera.lens.effects.fieldCurvature.inverseFocusPerRadius2 : camera.lens.effects.chromatic.inverseFocusShiftRed) = 1e200;
+    (curvature ? camera.lens.effects.fieldCurvature.inverseFocusPerRadius2
+               : camera.lens.effects.chromatic.inverseFocusShiftRed) = 1e200;
     try {
       RayCaster(scene).render(camera, {24, 16}, RaycastOptions{2, 1});
       ADD_FAILURE() << "rendered" << (curvature ? " (field curvature)" : " (axial colour)");

@@ -65,7 +65,8 @@ TEST(AddedViews, AConstantBackgroundAndAConstantSurfaceComeOutToFloatPrecision) 
   const Camera camera = lensCamera(4.0, 0.2);
   const ImageSize size{64, 64};
   Renderer renderer(scene);
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 61, 61, 1}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 61, 61, 1}), size);
   expectExact(image.at(32, 32), surface, 1.0f, "the in-focus quad's middle");
   expectExact(image.at(1, 1), background, 0.0f, "the background's corner");
 }
@@ -96,7 +97,8 @@ TEST(AddedViews, TwoSurfacesAtTheSameDepthAddOnce) {
   const Camera camera = lensCamera(2.0, 0.05);
   const ImageSize size{64, 64};
   Renderer renderer(scene);
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
   expectExact(image.at(32, 32), colour, 1.0f, "the doubled quad's middle");
 }
 
@@ -134,7 +136,8 @@ TEST(AddedViews, MatchTheLayeredViewsWithChannelMasksAndRegions) {
   };
   const Image added = sums(false), layered = sums(true);
   float worst = 0.0f;
-  for (std::size_t i = 0; i < added.rgba.size(); ++i) worst = std::max(worst, std::abs(added.rgba[i] - layered.rgba[i]));
+  for (std::size_t i = 0; i < added.rgba.size(); ++i)
+    worst = std::max(worst, std::abs(added.rgba[i] - layered.rgba[i]));
   // Sums of up to 16 views of values up to about 1: float's rounding of them, and the odd edge
   // pixel where EQUAL and GREATER see a triangle's edge alike but the order of adds differs.
   EXPECT_LT(worst, 1e-4f);
@@ -144,7 +147,8 @@ TEST(AddedViews, MatchTheLayeredViewsWithChannelMasksAndRegions) {
 // seen through a window 2e-3 wide from 4 away, added and layered alike.
 TEST(AddedViews, MatchTheLayeredViewsInANarrowField) {
   LENSLAB_REQUIRE_GL();
-  const Scene scene = quadsAt({{4.0, glm::vec3(0.7f, 0.3f, 0.2f)}, {4.5, glm::vec3(0.2f, 0.3f, 0.9f)}}, 0.0006, glm::vec3(0.5f));
+  const Scene scene =
+      quadsAt({{4.0, glm::vec3(0.7f, 0.3f, 0.2f)}, {4.5, glm::vec3(0.2f, 0.3f, 0.9f)}}, 0.0006, glm::vec3(0.5f));
   Camera camera = lensCamera(4.0, 1e-4);
   camera.view.window = {-1e-3, -1e-3, 1e-3, 1e-3};
   ASSERT_TRUE(isNarrowField(clipFromWorld(camera.view)));
@@ -162,7 +166,8 @@ TEST(AddedViews, MatchTheLayeredViewsInANarrowField) {
       pass.draw(gpuScene, clipFromWorld(v), view.target, 0.0f, nullptr, view.addWeight ? &*view.addWeight : nullptr);
     }
     std::vector<float> image(static_cast<std::size_t>(size.widthPx) * size.heightPx * 4);
-    glGetTextureImage(sum.sumTexture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(image.size() * sizeof(float)), image.data());
+    glGetTextureImage(sum.sumTexture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(image.size() * sizeof(float)),
+                      image.data());
     return image;
   };
   const std::vector<float> added = sums(false), layered = sums(true);

@@ -24,7 +24,9 @@ constexpr glm::vec4 kNear{0.9f, 0.2f, 0.1f, 0.3f};  // c1, a1
 constexpr glm::vec4 kFar{0.1f, 0.3f, 0.8f, 0.6f};   // c2, a2
 constexpr ImageSize kSize{48, 32};
 
-glm::vec3 over(const glm::vec4& front, const glm::vec3& behind) { return glm::vec3(front) * front.a + (1.0f - front.a) * behind; }
+glm::vec3 over(const glm::vec4& front, const glm::vec3& behind) {
+  return glm::vec3(front) * front.a + (1.0f - front.a) * behind;
+}
 
 // The two planes, wider than the view, at z = 0 (near, node 1) and z = −1 (far, node 2); the near
 // one first in the scene's order when `nearFirst` (so that drawing in scene order is wrong).
@@ -108,7 +110,8 @@ TEST(AlphaBlendRaycast, AovsSeeTheNearestSurfaceAtLeastHalfOpaque) {
   const auto centre = [&](const Scene& scene) {
     const AovImages aovs = RayCaster(scene).aovImages(pinholeAt(5.0), kSize, all);
     const std::size_t i = static_cast<std::size_t>(kSize.heightPx / 2) * kSize.widthPx + kSize.widthPx / 2;
-    return std::tuple(aovs.depth[i], aovs.instance[i], glm::vec3(aovs.albedo[3 * i], aovs.albedo[3 * i + 1], aovs.albedo[3 * i + 2]),
+    return std::tuple(aovs.depth[i], aovs.instance[i],
+                      glm::vec3(aovs.albedo[3 * i], aovs.albedo[3 * i + 1], aovs.albedo[3 * i + 2]),
                       aovs.normal[3 * i + 2]);
   };
   {

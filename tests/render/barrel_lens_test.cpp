@@ -100,14 +100,16 @@ TEST_P(CatsEyeThroughALens, APixelSeesTheOverlapAtItsUndistortedFieldPosition) {
         const int k = static_cast<int>(c);
         worstRaster = std::max(worstRaster, std::abs(static_cast<double>(raster.at(x, y)[k]) - share));
         worstRaycast = std::max(worstRaycast, std::abs(static_cast<double>(raycast.at(x, y)[k]) - share));
-        const glm::dvec2 distorted = (windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx) -
-                                      glm::dvec2(camera.view.prp)) / camera.view.prp.z;
+        const glm::dvec2 distorted =
+            (windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx) - glm::dvec2(camera.view.prp)) /
+            camera.view.prp.z;
         cornerGap = std::max(cornerGap, std::abs(shareAt(distorted) - share));
       }
   const double corner = shareAt(lensMap.undistorted(Channel::Green, {0.5, 0.5}).normalised);
-  std::printf("  %s: corner share %.3f; worst |image - overlap at the undistorted position| raster %.4f, ray cast %.4f; "
-              "overlap at the distorted position differs by up to %.3f\n",
-              wall.name, corner, worstRaster, worstRaycast, cornerGap);
+  std::printf(
+      "  %s: corner share %.3f; worst |image - overlap at the undistorted position| raster %.4f, ray cast %.4f; "
+      "overlap at the distorted position differs by up to %.3f\n",
+      wall.name, corner, worstRaster, worstRaycast, cornerGap);
   EXPECT_GT(cornerGap, 0.1) << "the test's lens should move the cat's eye by more than the tolerance";
   EXPECT_GT(corner, 0.02) << "the corner should be clipped, not dark";
   EXPECT_LT(corner, 0.6) << "the corner should be clipped";
@@ -116,8 +118,11 @@ TEST_P(CatsEyeThroughALens, APixelSeesTheOverlapAtItsUndistortedFieldPosition) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lenses, CatsEyeThroughALens,
-                         ::testing::Values(WallCase{"barrel distortion", -0.25, 0.02}, WallCase{"pincushion", 0.3, 0.02}),
-                         [](const ::testing::TestParamInfo<WallCase>& param) { return param.param.k1 < 0.0 ? "Barrel" : "Pincushion"; });
+                         ::testing::Values(WallCase{"barrel distortion", -0.25, 0.02},
+                                           WallCase{"pincushion", 0.3, 0.02}),
+                         [](const ::testing::TestParamInfo<WallCase>& param) {
+                           return param.param.k1 < 0.0 ? "Barrel" : "Pincushion";
+                         });
 
 // Field curvature focuses each radius r at 1/z_f + κr²: the ray from p toward the curved surface
 // crosses the opening at p·(1 − L·(1/z_f + κr²)) + L·n. The raster draws flat-focused views and
@@ -152,22 +157,29 @@ TEST_P(CatsEyeOnACurvedFocus, APixelSeesTheOverlapForItsRadiusFocus) {
         for (int i = 0; i < 4; ++i) {
           const ChannelSample s = lensMap.undistorted(Channel::Green, {x + (i + 0.5) / 4.0, y + (j + 0.5) / 4.0});
           share += roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, s.normalised,
-                                              inverseFocus + s.inverseFocusShift) / 16.0;
-          flat += roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, s.normalised, inverseFocus) / 16.0;
+                                              inverseFocus + s.inverseFocusShift) /
+                   16.0;
+          flat +=
+              roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, s.normalised, inverseFocus) /
+              16.0;
         }
       flatGap = std::max(flatGap, std::abs(flat - share));
       worstRaster = std::max(worstRaster, std::abs(static_cast<double>(raster.at(x, y).g) - share));
       worstRaycast = std::max(worstRaycast, std::abs(static_cast<double>(raycast.at(x, y).g) - share));
     }
-  std::printf("  k1 %.2f: worst |image - overlap for the curved focus| raster %.4f, ray cast %.4f; the flat focus's overlap differs by up to %.3f\n",
-              GetParam(), worstRaster, worstRaycast, flatGap);
+  std::printf(
+      "  k1 %.2f: worst |image - overlap for the curved focus| raster %.4f, ray cast %.4f; the flat focus's overlap "
+      "differs by up to %.3f\n",
+      GetParam(), worstRaster, worstRaycast, flatGap);
   EXPECT_GT(flatGap, 0.06) << "the curvature should change the cat's eye by more than the tolerance";
   EXPECT_LT(worstRaster, 0.03);
   EXPECT_LT(worstRaycast, 0.03);
 }
 
 INSTANTIATE_TEST_SUITE_P(Lenses, CatsEyeOnACurvedFocus, ::testing::Values(0.0, -0.25),
-                         [](const ::testing::TestParamInfo<double>& param) { return param.param < 0.0 ? "Distorted" : "Straight"; });
+                         [](const ::testing::TestParamInfo<double>& param) {
+                           return param.param < 0.0 ? "Distorted" : "Straight";
+                         });
 
 // (a) The bundled rows scene through a 35 mm f/2.8 lens focused at 2 m, with a barrel that clips
 // the corners, strong distortion, lateral and axial colour and field curvature: the raster (each
@@ -177,7 +189,8 @@ INSTANTIATE_TEST_SUITE_P(Lenses, CatsEyeOnACurvedFocus, ::testing::Values(0.0, -
 std::string rowsCamera(double k1) {
   return cat(R"({"eye": [0, 1, 3], "target": [0, 0.55, -2], "up": [0, 1, 0], "focal_length_mm": 35,
       "sensor_mm": [36, 24], "focus_distance": 2.0, "near": 0.05, "far": "infinity", "f_number": 2.8,
-      "distortion": {"k1": )", k1, R"(, "k2": 0.0, "p1": 0.001, "p2": -0.0005},
+      "distortion": {"k1": )",
+             k1, R"(, "k2": 0.0, "p1": 0.001, "p2": -0.0005},
       "chromatic": {"lateral_red": 0.006, "lateral_blue": -0.006, "focus_distance_red": 2.2, "focus_distance_blue": 1.85},
       "field_curvature": {"corner_focus_distance": 1.6},
       "barrel": {"distance_mm": 40, "diameter_mm": 44}})");
@@ -206,18 +219,22 @@ TEST_P(BarrelThroughRows, RasterConvergesToTheExactRayCastLens) {
   // The barrel matters here: the same raster without it is far from the exact lens with it.
   Camera open = camera;
   open.lens.barrel = {};
-  const Image withoutBarrel = renderer.render(open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 256, 256, 1}), size);
+  const Image withoutBarrel = renderer.render(
+      open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 256, 256, 1}), size);
   const double withoutDb = compareImages(withoutBarrel, exactA, 0.0).psnrDb;
-  std::cout << "[ measure  ] rows, k1 " << GetParam() << ", barrel 40/44 mm: raster 1024 views vs exact ray cast 256 spp: "
-            << -20.0 * std::log10(raw) << " dB as measured, " << psnr << " dB with the ray caster's noise taken out; "
-            << withoutDb << " dB without the barrel\n";
+  std::cout << "[ measure  ] rows, k1 " << GetParam()
+            << ", barrel 40/44 mm: raster 1024 views vs exact ray cast 256 spp: " << -20.0 * std::log10(raw)
+            << " dB as measured, " << psnr << " dB with the ray caster's noise taken out; " << withoutDb
+            << " dB without the barrel\n";
   RecordProperty("psnr_db", cat(psnr));
   EXPECT_GE(psnr, 45.0);
   EXPECT_LT(withoutDb, psnr - 8.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Lenses, BarrelThroughRows, ::testing::Values(-0.3, 0.25),
-                         [](const ::testing::TestParamInfo<double>& param) { return param.param < 0.0 ? "Barrel" : "Pincushion"; });
+                         [](const ::testing::TestParamInfo<double>& param) {
+                           return param.param < 0.0 ? "Barrel" : "Pincushion";
+                         });
 
 // Tiles build their own lens tables and overscan windows; the barrel's mask follows each tile's
 // window, so the tiled frame is the same image as one render (as tiling_test's 60 dB).
@@ -237,10 +254,12 @@ TEST(BarrelTiles, ATiledFrameWithTheBarrelAndEveryLensEffectEqualsOneRender) {
   Camera open = camera;
   open.lens.barrel = {};
   // Its own plan: with distortion the renderer draws the plan's overscan camera, barrel included.
-  const Image withoutBarrel = renderer.render(open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3}), size);
-  const double psnr = compareImages(untiled, tiled, 0.0).psnrDb, withoutDb = compareImages(untiled, withoutBarrel, 0.0).psnrDb;
-  std::cout << "[ measure  ] rows with the barrel and every lens effect, " << tiles.tiles.size() << " tiles: tiled vs one render "
-            << psnr << " dB; without the barrel " << withoutDb << " dB\n";
+  const Image withoutBarrel = renderer.render(
+      open, makeFramePlan(scene, open, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3}), size);
+  const double psnr = compareImages(untiled, tiled, 0.0).psnrDb,
+               withoutDb = compareImages(untiled, withoutBarrel, 0.0).psnrDb;
+  std::cout << "[ measure  ] rows with the barrel and every lens effect, " << tiles.tiles.size()
+            << " tiles: tiled vs one render " << psnr << " dB; without the barrel " << withoutDb << " dB\n";
   EXPECT_GE(psnr, 60.0);
   EXPECT_LT(withoutDb, 40.0) << "the barrel should change the image";
 }

@@ -51,7 +51,8 @@ Scene markerScene() {
   scene.lighting.background = glm::vec3(0.0f);
   // On the window the marker's half side is h·z_f/z; in pixels kMarkerHalfPx.
   const double half = kMarkerHalfPx / (kSizePx / 2.0) * kMarkerDepth / kFocus;
-  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kMarkerDepth)), half, half, glm::vec3(1.0f));
+  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kMarkerDepth)), half, half,
+               glm::vec3(1.0f));
   return scene;
 }
 
@@ -156,8 +157,10 @@ void expectTheShape(const char* renderer, const Image& image, const Image& focus
     for (int x = 0; x < kSizePx; ++x) focusedEnergy += focused.at(x, y).g;
   const double areaExpected = M_PI * kCocRadiusPx * kCocRadiusPx;  // the shape keeps the round aperture's area
   const double fit = rmseAgainst(image, expected);
-  std::printf("  %s: energy %.3f (focused %.3f), centroid (%.3f, %.3f), area %.1f px^2 (expected %.1f), RMSE against the shape %.5f\n",
-              renderer, m.energy, focusedEnergy, m.centroid.x, m.centroid.y, m.areaPx, areaExpected, fit);
+  std::printf(
+      "  %s: energy %.3f (focused %.3f), centroid (%.3f, %.3f), area %.1f px^2 (expected %.1f), RMSE against the shape "
+      "%.5f\n",
+      renderer, m.energy, focusedEnergy, m.centroid.x, m.centroid.y, m.areaPx, areaExpected, fit);
   EXPECT_NEAR(m.energy / focusedEnergy, 1.0, 0.01) << renderer << ": the blur keeps the marker's light";
   EXPECT_NEAR(m.centroid.x, kSizePx / 2.0, 0.25) << renderer;
   EXPECT_NEAR(m.centroid.y, kSizePx / 2.0, 0.25) << renderer;
@@ -180,10 +183,12 @@ TEST(Bokeh, AMarkerBehindTheFocusBlursIntoTheBladesPolygonInTheRasterizer) {
   const Camera camera = bokehCamera(shape);
   const ImageSize size{kSizePx, kSizePx};
   Renderer renderer(scene);
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 4096, 4096, 3}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 4096, 4096, 3}), size);
   Camera pinhole = camera;
   pinhole.lens.apertureRadius = 0.0;
-  const Image focused = renderer.render(pinhole, makeFramePlan(scene, pinhole, size, PlanOptions{AperturePattern::Sobol, 64, 64, 3}), size);
+  const Image focused = renderer.render(
+      pinhole, makeFramePlan(scene, pinhole, size, PlanOptions{AperturePattern::Sobol, 64, 64, 3}), size);
   expectTheShape("raster", image, focused, shape);
 }
 
@@ -214,7 +219,8 @@ TEST(Bokeh, AnAnamorphicApertureBlursIntoAnOvalWithItsAxesInTheSqueezeRatio) {
   const Camera camera = bokehCamera(shape);
   const ImageSize size{kSizePx, kSizePx};
   Renderer renderer(scene);
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 4096, 4096, 3}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 4096, 4096, 3}), size);
   // The axes from the second moments: a uniform ellipse's variance along an axis is a²/4; the
   // marker's square and the pixel each add their own (side²/12), along both axes alike.
   double energy = 0.0;
@@ -228,13 +234,15 @@ TEST(Bokeh, AnAnamorphicApertureBlursIntoAnOvalWithItsAxesInTheSqueezeRatio) {
       second += v * p * p;
     }
   mean /= energy;
-  const glm::dvec2 variance = second / energy - mean * mean - glm::dvec2((4.0 * kMarkerHalfPx * kMarkerHalfPx + 1.0) / 12.0);
+  const glm::dvec2 variance =
+      second / energy - mean * mean - glm::dvec2((4.0 * kMarkerHalfPx * kMarkerHalfPx + 1.0) / 12.0);
   const double ratio = std::sqrt(variance.y / variance.x);
   const double semiAxisX = 2.0 * std::sqrt(variance.x), semiAxisY = 2.0 * std::sqrt(variance.y);
   std::printf("  semi-axes %.2f x %.2f px (expected %.2f x %.2f), ratio %.4f\n", semiAxisX, semiAxisY,
               kCocRadiusPx / std::sqrt(2.0), kCocRadiusPx * std::sqrt(2.0), ratio);
   EXPECT_NEAR(ratio, 2.0, 0.02) << "taller than wide by the squeeze";
-  EXPECT_NEAR(semiAxisX * semiAxisY, kCocRadiusPx * kCocRadiusPx, 0.01 * kCocRadiusPx * kCocRadiusPx) << "the round aperture's area";
+  EXPECT_NEAR(semiAxisX * semiAxisY, kCocRadiusPx * kCocRadiusPx, 0.01 * kCocRadiusPx * kCocRadiusPx)
+      << "the round aperture's area";
   // And the outline: the predicted oval fits better than a rounder or a flatter one.
   const double fit = rmseAgainst(image, predicted(apertureOutline(shape, 256)));
   for (const double other : {1.7, 2.3}) {
@@ -276,13 +284,16 @@ TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
     for (int x = 0; x < size.widthPx; ++x) {
       const glm::dvec2 w = windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx);
       const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
-      const double share = roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
+      const double share =
+          roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
       least = std::min(least, share);
       worstRaster = std::max(worstRaster, std::abs(raster.at(x, y).g - share));
       worstRaycast = std::max(worstRaycast, std::abs(raycast.at(x, y).g - share));
     }
-  std::printf("  share of the aperture through the barrel: least %.3f (a corner); worst |image - overlap| raster %.4f, ray cast %.4f\n",
-              least, worstRaster, worstRaycast);
+  std::printf(
+      "  share of the aperture through the barrel: least %.3f (a corner); worst |image - overlap| raster %.4f, ray "
+      "cast %.4f\n",
+      least, worstRaster, worstRaycast);
   EXPECT_LT(least, 0.5) << "the test's barrel should clip the corners";
   EXPECT_LT(worstRaster, 0.02);
   EXPECT_LT(worstRaycast, 0.02);
@@ -299,11 +310,13 @@ TEST(CatsEye, ABarrelThatClipsNothingChangesNothing) {
   const Image without = renderer.render(camera, plan, size);
   camera.lens.barrel = LensBarrel{0.01, 10.0};  // wide open
   const FramePlan withPlan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
-  const FramePlan withoutPlan = makeFramePlan(scene, bokehCamera(ApertureShape{}), size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
+  const FramePlan withoutPlan =
+      makeFramePlan(scene, bokehCamera(ApertureShape{}), size, PlanOptions{AperturePattern::Sobol, 0, 256, 3});
   EXPECT_EQ(withPlan.apertureSamples, withoutPlan.apertureSamples) << "no more views for a barrel that hides nothing";
   const Image with = renderer.render(camera, plan, size);
   double worst = 0.0;
-  for (std::size_t i = 0; i < with.rgba.size(); ++i) worst = std::max(worst, static_cast<double>(std::abs(with.rgba[i] - without.rgba[i])));
+  for (std::size_t i = 0; i < with.rgba.size(); ++i)
+    worst = std::max(worst, static_cast<double>(std::abs(with.rgba[i] - without.rgba[i])));
   EXPECT_LT(worst, 1e-5);
 }
 

@@ -30,7 +30,8 @@ TEST(Coverage, AlphaIsCoverageAndTheBackgroundIsTheGivenColour) {
   const Camera camera = loadCameraJson(assets / "rows/camera.json").camera;
   const ImageSize size{120, 80};
   Renderer renderer(scene);
-  const Image raster = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 64, 64, 2}), size);
+  const Image raster = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 64, 64, 2}), size);
   const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{64, 2});
   for (const Image* image : {&raster, &raycast}) {
     const glm::vec4 sky = image->at(size.widthPx / 2, 0);  // above the horizon: nothing there

@@ -35,7 +35,8 @@ TEST(DisplayShader, MatchesTheCpuViewTransformOnRandomValues) {
   Image image(w, h);
   std::mt19937 rng(23);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = i % 4 == 3 ? 1.0f : (u(rng) < 0.25f ? u(rng) : 16.0f * u(rng));
+  for (std::size_t i = 0; i < image.rgba.size(); ++i)
+    image.rgba[i] = i % 4 == 3 ? 1.0f : (u(rng) < 0.25f ? u(rng) : 16.0f * u(rng));
   gl::ImageTexture texture(w, h);
   texture.upload(image);
   gl::RenderTarget target(w, h);
@@ -95,7 +96,8 @@ TEST_F(HdrOutput, TheRasterizersExrKeepsRadianceAboveOneAndThePngIsExposed) {
   const ImageSize size{32, 32};
   Renderer renderer(scene);
   // Several aperture samples: the accumulation and its resolve must not clamp either.
-  Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 8, 8, 1}), size);
+  Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 8, 8, 1}), size);
   writeImage(dir_ / "a.exr", image);
   const glm::vec4 centre = readImage(dir_ / "a.exr").at(16, 16);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], radiance[c], 1e-4f) << "channel " << c;
@@ -120,7 +122,8 @@ TEST_F(HdrOutput, TheLensPassKeepsRadianceAboveOne) {
   ASSERT_TRUE(camera.lens.effects.needsRemap());
   const ImageSize size{32, 32};
   Renderer renderer(scene);
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 8, 8, 1}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 8, 8, 1}), size);
   writeImage(dir_ / "l.exr", image);
   const glm::vec4 centre = readImage(dir_ / "l.exr").at(16, 16);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], radiance[c], 1e-4f) << "channel " << c;

@@ -79,8 +79,9 @@ TEST(DepthOfField, ThePlaneOfFocusShowsNoParallax) {
   // and the aperture is wide: the same quad 10% off the plane of focus is visibly blurred
   const Scene off = checkerQuadAt(4.4, 1.5);
   Renderer offRenderer(off);
-  const double offPsnr = compareImages(offRenderer.render(camera, plan, size),
-                                       pinholeWithSameJitter(offRenderer, camera, plan, size), 0.0).psnrDb;
+  const double offPsnr =
+      compareImages(offRenderer.render(camera, plan, size), pinholeWithSameJitter(offRenderer, camera, plan, size), 0.0)
+          .psnrDb;
   EXPECT_LT(offPsnr, 30.0);
 }
 
@@ -144,7 +145,8 @@ TEST(DepthOfField, AStraightEdgeBlursToTheCircleOfConfusion) {
   ASSERT_NEAR(cocPx, 30.0, 1e-9);
   Renderer renderer(scene);
   const Image image = renderer.render(camera, planWith(scene, camera, size, AperturePattern::Concentric, 1024), size);
-  const double measured = (measuredEdgeWidth(image, 40) + measuredEdgeWidth(image, 50) + measuredEdgeWidth(image, 60)) / 3.0;
+  const double measured =
+      (measuredEdgeWidth(image, 40) + measuredEdgeWidth(image, 50) + measuredEdgeWidth(image, 60)) / 3.0;
   const double expected = widthBetween([&](double x) { return edgeProfile(x, cocPx); }, 0.1, 0.9);
   EXPECT_NEAR(measured, expected, 0.1 * expected) << "CoC " << cocPx << " px";
 }
@@ -247,25 +249,25 @@ TEST(DepthOfField, PartialObscurationKeepsTheFractionOfApertureThatSeesThrough) 
   int checked = 0;
   double worst = 0.0;
   for (int y = 60; y < 100; ++y)
-  for (int x = 0; x < size.widthPx; ++x) {
-    const glm::dvec2 uv = windowFromPixel(w, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx);
-    const glm::dvec3 wallPoint = viewPlanePoint(camera.view, uv);
-    // Only pixels well inside a white cell: the wall's colour is then the same for every sample.
-    const double cu = (wallPoint.x + 2.0) / 0.25, cv = (2.5 - wallPoint.y) / 0.1875;
-    const double edge = std::min({cu - std::floor(cu), std::ceil(cu) - cu, cv - std::floor(cv), std::ceil(cv) - cv});
-    if (edge < 0.2 || (static_cast<int>(std::floor(cu)) + static_cast<int>(std::floor(cv))) % 2 != 0) continue;
-    int visible = 0;
-    for (const LensSample& s : samples) {
-      const glm::dvec3 lens = prp + camera.lens.apertureRadius * (s.lens.x * b.u + s.lens.y * b.v);
-      const glm::dvec3 through = wallPoint + s.pixel.x * pixelSize.x * b.u - s.pixel.y * pixelSize.y * b.v;
-      visible += !blocked(lens, through);
+    for (int x = 0; x < size.widthPx; ++x) {
+      const glm::dvec2 uv = windowFromPixel(w, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx);
+      const glm::dvec3 wallPoint = viewPlanePoint(camera.view, uv);
+      // Only pixels well inside a white cell: the wall's colour is then the same for every sample.
+      const double cu = (wallPoint.x + 2.0) / 0.25, cv = (2.5 - wallPoint.y) / 0.1875;
+      const double edge = std::min({cu - std::floor(cu), std::ceil(cu) - cu, cv - std::floor(cv), std::ceil(cv) - cv});
+      if (edge < 0.2 || (static_cast<int>(std::floor(cu)) + static_cast<int>(std::floor(cv))) % 2 != 0) continue;
+      int visible = 0;
+      for (const LensSample& s : samples) {
+        const glm::dvec3 lens = prp + camera.lens.apertureRadius * (s.lens.x * b.u + s.lens.y * b.v);
+        const glm::dvec3 through = wallPoint + s.pixel.x * pixelSize.x * b.u - s.pixel.y * pixelSize.y * b.v;
+        visible += !blocked(lens, through);
+      }
+      const double fraction = static_cast<double>(visible) / static_cast<double>(samples.size());
+      if (fraction < 0.05 || fraction > 0.95) continue;
+      const double expected = fraction * white + (1.0 - fraction) * 0.45;
+      worst = std::max(worst, std::abs(image.at(x, y).g - expected));
+      ++checked;
     }
-    const double fraction = static_cast<double>(visible) / static_cast<double>(samples.size());
-    if (fraction < 0.05 || fraction > 0.95) continue;
-    const double expected = fraction * white + (1.0 - fraction) * 0.45;
-    worst = std::max(worst, std::abs(image.at(x, y).g - expected));
-    ++checked;
-  }
   EXPECT_GE(checked, 10) << "too few partly obscured pixels to judge";
   // Measured worst: 0.0023 over 286 pixels (rasterisation samples pixel centres exactly as the
   // geometry here does); 0.01 leaves room for driver rounding, a wrong fraction is off by tenths.

@@ -39,7 +39,8 @@ EnvironmentImage testSky(int width) {
     for (int x = 0; x < width; ++x) {
       const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(width);
       const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height);
-      glm::vec3 c(0.2f + 0.6f * (1.0f - v), 0.3f + 0.2f * std::sin(6.2831853f * u), 0.5f + 0.4f * std::cos(12.566f * u) * v);
+      glm::vec3 c(0.2f + 0.6f * (1.0f - v), 0.3f + 0.2f * std::sin(6.2831853f * u),
+                  0.5f + 0.4f * std::cos(12.566f * u) * v);
       const float du = std::min(std::abs(u - 0.4f), 1.0f - std::abs(u - 0.4f)), dv = v - 0.35f;
       if (du * du + dv * dv < 0.003f) c += glm::vec3(0.3f);
       image.at(x, y) = c;
@@ -144,23 +145,27 @@ void main() {
       double worst = 0.0;
       for (std::size_t i = 0; i < inputs.size(); ++i) {
         const glm::vec3 d(inputs[i]);
-        const glm::vec3 want = which == 0 ? lookup->background(d) : which == 1 ? lookup->diffuse(d) : lookup->specular(d, inputs[i].w);
+        const glm::vec3 want = which == 0   ? lookup->background(d)
+                               : which == 1 ? lookup->diffuse(d)
+                                            : lookup->specular(d, inputs[i].w);
         for (int k = 0; k < 3; ++k) {
           const double relative = std::abs(out[i][k] - want[k]) / std::max(std::abs(want[k]), 1e-3f);
           worst = std::max(worst, relative);
-          EXPECT_LE(relative, 1e-4) << "lookup " << which << " input " << i << " channel " << k << ": " << out[i][k] << " vs " << want[k];
+          EXPECT_LE(relative, 1e-4) << "lookup " << which << " input " << i << " channel " << k << ": " << out[i][k]
+                                    << " vs " << want[k];
         }
       }
-      std::cout << "[ measure  ] lookup " << which << " rotation " << rotation << ": worst relative difference GLSL vs C++ " << worst << "\n";
+      std::cout << "[ measure  ] lookup " << which << " rotation " << rotation
+                << ": worst relative difference GLSL vs C++ " << worst << "\n";
     }
   }
 }
 
 TEST(EnvironmentGlsl, DirectionFromNdcFollowsTheProjection) {
   // A symmetric reverse-Z perspective looking down −Z: NDC (1, 0) is at the right edge of a 90° field.
-  const glm::dmat4 clipFromView(1.0, 0.0, 0.0, 0.0,  //
-                                0.0, 1.0, 0.0, 0.0,  //
-                                0.0, 0.0, 0.0, -1.0, //
+  const glm::dmat4 clipFromView(1.0, 0.0, 0.0, 0.0,   //
+                                0.0, 1.0, 0.0, 0.0,   //
+                                0.0, 0.0, 0.0, -1.0,  //
                                 0.0, 0.0, 0.1, 0.0);  // infinite reverse-Z, near 0.1
   const glm::dmat3 m = worldDirectionFromNdc(clipFromView);
   const glm::dvec3 centre = glm::normalize(m * glm::dvec3(0, 0, 1));
@@ -170,7 +175,8 @@ TEST(EnvironmentGlsl, DirectionFromNdcFollowsTheProjection) {
   EXPECT_NEAR(right.z, -std::sqrt(0.5), 1e-12);
   // The same view 1e15 from the origin, turned: the directions only turn (no eye position in them).
   const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), 0.7, glm::dvec3(0.3, 1.0, 0.2));
-  const glm::dmat4 far = clipFromView * glm::inverse(glm::translate(glm::dmat4(1.0), glm::dvec3(1e15, -3e14, 7e14)) * turn);
+  const glm::dmat4 far =
+      clipFromView * glm::inverse(glm::translate(glm::dmat4(1.0), glm::dvec3(1e15, -3e14, 7e14)) * turn);
   const glm::dmat3 mFar = worldDirectionFromNdc(far);
   for (const glm::dvec3 ndc : {glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 1), glm::dvec3(-0.3, 0.8, 1)}) {
     const glm::dvec3 want = glm::dmat3(turn) * glm::normalize(m * ndc);
@@ -193,7 +199,8 @@ double environmentPsnr(const std::string& cameraFile, bool pinhole, std::optiona
   const ImageSize size{120, 80};
   Camera lensCamera = camera;
   if (lensCamera.lens.isPinhole()) lensCamera.lens.apertureRadius = 1e-3;
-  PlanOptions options{targetPsnrDb ? AperturePattern::Sobol : AperturePattern::Concentric, targetPsnrDb ? 0 : 256, 256, 3};
+  PlanOptions options{targetPsnrDb ? AperturePattern::Sobol : AperturePattern::Concentric, targetPsnrDb ? 0 : 256, 256,
+                      3};
   options.targetPsnrDb = targetPsnrDb;
   const FramePlan plan = makeFramePlan(scene, lensCamera, size, options);
   if (pinhole) camera.lens.apertureRadius = 0.0;
@@ -211,7 +218,8 @@ double environmentPsnr(const std::string& cameraFile, bool pinhole, std::optiona
   EXPECT_GT(hi - lo, 0.05f);
   const double psnr = compareImages(raster, reference, 0.0).psnrDb;
   std::cout << "[ measure  ] environment only, " << cameraFile << (pinhole ? " pinhole" : " thin lens")
-            << (targetPsnrDb ? " per-tile budgets" : "") << ": raster 256 views vs ray cast 256 spp: PSNR " << psnr << " dB\n";
+            << (targetPsnrDb ? " per-tile budgets" : "") << ": raster 256 views vs ray cast 256 spp: PSNR " << psnr
+            << " dB\n";
   return psnr;
 }
 

@@ -44,8 +44,8 @@ struct Case {
   const char* scene;
   const char* camera;
   int widthPx;
-  int maxCap;         // the largest per-tile cap tried (2, 4, … this)
-  double maxTarget;   // and the highest target
+  int maxCap;        // the largest per-tile cap tried (2, 4, … this)
+  double maxTarget;  // and the highest target
 };
 
 class Estimate : public ::testing::TestWithParam<Case> {};
@@ -57,7 +57,7 @@ TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
   const Scene scene = loadGltf(assets / c.scene);
   const Camera camera = withDepthRangeFitted(loadCameraJson(assets / c.camera).camera, scene.bounds);
   const ImageSize size = resolveImageSize(camera.view.window, c.widthPx, std::nullopt);
-  const int spp = 128;        // per half: the reference's noise (about 43 dB) is measured and taken out
+  const int spp = 128;  // per half: the reference's noise (about 43 dB) is measured and taken out
   const std::uint32_t seed = 7;
 
   // The reference: two independent halves of stratified samples.
@@ -78,8 +78,8 @@ TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
     const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, options, &visible), size);
     const FrameEstimate e = renderer.estimate();
     const double truth = psnrFromMse(std::max(mseBetween(image, reference) - referenceNoiseMse, 1e-30));
-    std::printf("  %-10s %-16s estimate %6.2f dB  truth %6.2f dB  (%+.2f)  %.1f samples per pixel\n", c.name, label.c_str(),
-                e.psnrDb, truth, e.psnrDb - truth, e.meanSamples);
+    std::printf("  %-10s %-16s estimate %6.2f dB  truth %6.2f dB  (%+.2f)  %.1f samples per pixel\n", c.name,
+                label.c_str(), e.psnrDb, truth, e.psnrDb - truth, e.meanSamples);
     if (truth < 25.0 || truth > 45.0) return;
     ++inRange;
     worst = std::max(worst, std::abs(e.psnrDb - truth));
@@ -89,17 +89,20 @@ TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
   for (int n = 2; n <= c.maxCap; n *= 2) check("at most " + std::to_string(n), n, 99.0);
   for (const double target : {30.0, 35.0, 40.0, 45.0})
     if (target <= c.maxTarget) check("target " + std::to_string(static_cast<int>(target)) + " dB", 1024, target);
-  std::printf("  %s: %d frames with the truth in 25-45 dB, mean |estimate - truth| %.2f dB, worst %.2f dB (reference noise %.1f dB)\n",
-              c.name, inRange, inRange ? sumAbs / inRange : 0.0, worst, psnrFromMse(referenceNoiseMse));
+  std::printf(
+      "  %s: %d frames with the truth in 25-45 dB, mean |estimate - truth| %.2f dB, worst %.2f dB (reference noise "
+      "%.1f dB)\n",
+      c.name, inRange, inRange ? sumAbs / inRange : 0.0, worst, psnrFromMse(referenceNoiseMse));
   ASSERT_GE(inRange, 6) << "too few frames landed in 25-45 dB for the check to mean anything";
   EXPECT_LE(sumAbs / inRange, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, Estimate,
-                         ::testing::Values(Case{"rows", "rows/rows.gltf", "rows/camera-dof.json", 480, 256, 45.0},
-                                           Case{"occluder", "occluder/occluder.gltf", "occluder/camera-dof.json", 480, 256, 45.0},
-                                           Case{"rows_lens", "rows/rows.gltf", "rows/camera-lens.json", 480, 128, 40.0}),
-                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, Estimate,
+    ::testing::Values(Case{"rows", "rows/rows.gltf", "rows/camera-dof.json", 480, 256, 45.0},
+                      Case{"occluder", "occluder/occluder.gltf", "occluder/camera-dof.json", 480, 256, 45.0},
+                      Case{"rows_lens", "rows/rows.gltf", "rows/camera-lens.json", 480, 128, 40.0}),
+    [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
 
 }  // namespace
 }  // namespace lenslab

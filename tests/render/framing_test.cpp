@@ -25,7 +25,8 @@ namespace {
 // A square of side `side` in the XY plane about the origin, red above y = 0 and blue below, under
 // a root node scaled by `rootScale` (as a model exported at the wrong unit is) and moved by
 // `rootOffset` (as a model in geographic coordinates is).
-std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, double side, double rootScale, double rootOffset = 0.0) {
+std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, double side, double rootScale,
+                                         double rootOffset = 0.0) {
   test::AnimatedGltf g;
   const float h = static_cast<float>(0.5 * side);
   const auto half = [&](float y0, float y1) {
@@ -37,10 +38,12 @@ std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, doub
   const int top = half(0.0f, h), bottom = half(-h, 0.0f);
   g.gltf["extensionsUsed"] = {"KHR_materials_unlit"};
   for (const auto& colour : {std::vector<double>{1, 0, 0, 1}, std::vector<double>{0, 0, 1, 1}})
-    g.gltf["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", colour}}}, {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
+    g.gltf["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", colour}}},
+                                   {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
   g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", top}}}, {"material", 0}}}}});
   g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", bottom}}}, {"material", 1}}}}});
-  const int root = g.node({{"scale", {rootScale, rootScale, rootScale}}, {"translation", {rootOffset, 0.5 * rootOffset, 0.0}}});
+  const int root =
+      g.node({{"scale", {rootScale, rootScale, rootScale}}, {"translation", {rootOffset, 0.5 * rootOffset, 0.0}}});
   g.node({{"mesh", 0}}, root);
   g.node({{"mesh", 1}}, root);
   return g.write(file);
@@ -48,7 +51,7 @@ std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, doub
 
 struct Coverage {
   int red = 0, blue = 0;
-  double redRow = 0.0, blueRow = 0.0;  // mean row (0 at the top)
+  double redRow = 0.0, blueRow = 0.0;                          // mean row (0 at the top)
   int top = 1 << 30, bottom = -1, left = 1 << 30, right = -1;  // the subject's pixel rows and columns
 };
 
@@ -57,7 +60,7 @@ Coverage coverage(const Image& image) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const glm::vec4 p = image.at(x, y);
-      const bool red = p.r > 0.5f && p.b < 0.2f, blue = p.b > 0.5f && p.r < 0.2f;
+      const bool red = p.r > 0.5f && p.b<0.2f, blue = p.b> 0.5f && p.r < 0.2f;
       if (!red && !blue) continue;
       (red ? c.red : c.blue) += 1;
       (red ? c.redRow : c.blueRow) += y;
@@ -81,9 +84,18 @@ TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
   struct Case {
     double side, rootScale, rootOffset;
   };
-  for (const auto& [side, rootScale, rootOffset] :
-       std::vector<Case>{{1e-30, 1.0, 0.0}, {1e-12, 1.0, 0.0}, {1e-6, 1.0, 0.0}, {1e-3, 1.0, 0.0}, {0.01, 1.0, 0.0}, {0.02, 1.0, 0.0},
-                         {0.03, 1.0, 0.0}, {1.0, 1.0, 0.0}, {1e6, 1.0, 0.0}, {0.04, 0.15, 0.0}, {1.0, 1.0, 1e11}, {1.0, 1.0, 1e13}}) {
+  for (const auto& [side, rootScale, rootOffset] : std::vector<Case>{{1e-30, 1.0, 0.0},
+                                                                     {1e-12, 1.0, 0.0},
+                                                                     {1e-6, 1.0, 0.0},
+                                                                     {1e-3, 1.0, 0.0},
+                                                                     {0.01, 1.0, 0.0},
+                                                                     {0.02, 1.0, 0.0},
+                                                                     {0.03, 1.0, 0.0},
+                                                                     {1.0, 1.0, 0.0},
+                                                                     {1e6, 1.0, 0.0},
+                                                                     {0.04, 0.15, 0.0},
+                                                                     {1.0, 1.0, 1e11},
+                                                                     {1.0, 1.0, 1e13}}) {
     const Scene scene = loadGltf(writeTwoToneSquare(dir_ / "square.gltf", side, rootScale, rootOffset));
     // As `render` frames it, and with depth of field where the lens can focus on the subject
     // (`render --f-number 2`; a pinhole's framing refuses an f-number).
@@ -94,11 +106,13 @@ TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
       const Camera camera = withDepthRangeFitted(chooseCamera(scene, std::nullopt, options, 0.0).camera, scene.bounds);
       const ImageSize size{72, 48};
       Renderer renderer(scene);
-      const Image raster = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
+      const Image raster = renderer.render(
+          camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
       const Image cast = RayCaster(scene).render(camera, size, RaycastOptions{8, 1});
       for (const auto& [name, image] : {std::pair<const char*, const Image&>{"raster", raster}, {"ray cast", cast}}) {
         const Coverage c = coverage(image);
-        const std::string what = cat(name, ", side ", side, " x root scale ", rootScale, " at ", rootOffset, ": ", camera.source);
+        const std::string what =
+            cat(name, ", side ", side, " x root scale ", rootScale, " at ", rootOffset, ": ", camera.source);
         // Half the square each, and together most of the frame's height (the square's diagonal
         // spans the bounding sphere's diameter: its side about 0.69 of the frame's height).
         EXPECT_GT(c.red, size.widthPx * size.heightPx / 10) << what;

@@ -34,10 +34,10 @@ constexpr double kMaxAbs = 96.0 / 255.0;
 constexpr int kGoldenWidth = 480;
 
 struct GoldenCase {
-  const char* name;    // tests/golden/<name>.png
-  const char* scene;   // under assets/
-  const char* camera;  // under assets/
-  int maxSamples = 64; // auto aperture samples, capped to keep the suite quick
+  const char* name;     // tests/golden/<name>.png
+  const char* scene;    // under assets/
+  const char* camera;   // under assets/
+  int maxSamples = 64;  // auto aperture samples, capped to keep the suite quick
 };
 
 void PrintTo(const GoldenCase& c, std::ostream* out) { *out << c.name; }
@@ -53,14 +53,16 @@ TEST_P(Golden, MatchesTheStoredImage) {
   const Camera& camera = cameraFile.camera;
   const ImageSize size = resolveImageSize(camera, kGoldenWidth, std::nullopt);
   Renderer renderer(scene);
-  const Image actual = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{PlanOptions{}.pattern, 0, c.maxSamples, 1}), size);
+  const Image actual = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{PlanOptions{}.pattern, 0, c.maxSamples, 1}), size);
 
   const fs::path golden = fs::path(LENSLAB_GOLDEN_DIR) / (std::string(c.name) + ".png");
   if (const char* update = std::getenv("LENSLAB_UPDATE_GOLDENS"); update && std::string(update) == "1") {
     writeImage(golden, actual);
     GTEST_SKIP() << "wrote " << golden;
   }
-  ASSERT_TRUE(fs::exists(golden)) << "missing golden " << golden << "; run tools/update-goldens.sh and review the image";
+  ASSERT_TRUE(fs::exists(golden)) << "missing golden " << golden
+                                  << "; run tools/update-goldens.sh and review the image";
   const Image expected = readImage(golden);
   ASSERT_EQ(expected.width, actual.width);
   ASSERT_EQ(expected.height, actual.height);
@@ -74,31 +76,30 @@ TEST_P(Golden, MatchesTheStoredImage) {
     writeImage(out / (std::string(c.name) + ".actual.png"), actual);
     writeImage(out / (std::string(c.name) + ".diff.png"), differenceImage(a, e, 8.0f));
     ADD_FAILURE() << c.name << ": " << d.fractionOver * 100.0 << "% of pixels differ by more than "
-                  << kPixelThreshold * 255.0 << "/255 (allowed " << kMaxFailingFraction * 100.0
-                  << "%), max difference " << d.maxAbs * 255.0 << "/255 (allowed " << kMaxAbs * 255.0
-                  << "); actual and diff images in " << out;
+                  << kPixelThreshold * 255.0 << "/255 (allowed " << kMaxFailingFraction * 100.0 << "%), max difference "
+                  << d.maxAbs * 255.0 << "/255 (allowed " << kMaxAbs * 255.0 << "); actual and diff images in " << out;
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(BundledScenes, Golden,
-                         ::testing::Values(GoldenCase{"rows", "rows/rows.gltf", "rows/camera.json"},
-                                           GoldenCase{"occluder", "occluder/occluder.gltf", "occluder/camera.json"},
-                                           GoldenCase{"grid", "grid/grid.gltf", "grid/camera.json"},
-                                           GoldenCase{"depth-range", "depth-range/depth-range.gltf",
-                                                      "depth-range/camera.json"},
-                                           GoldenCase{"rows-dof", "rows/rows.gltf", "rows/camera-dof.json"},
-                                           GoldenCase{"occluder-dof", "occluder/occluder.gltf", "occluder/camera-dof.json"},
-                                           // Lens effects: OpenCV-calibrated barrel + tangential on the dots;
-                                           // every effect (distortion, lateral + axial colour, field curvature) on rows.
-                                           GoldenCase{"grid-distortion", "grid/grid.gltf", "grid/camera-distortion.json"},
-                                           GoldenCase{"grid-lens", "grid/grid.gltf", "grid/camera-lens.json"},
-                                           GoldenCase{"rows-lens", "rows/rows.gltf", "rows/camera-lens.json", 32}),
-                         [](const ::testing::TestParamInfo<GoldenCase>& param) {
-                           std::string name = param.param.name;
-                           for (char& ch : name)
-                             if (ch == '-') ch = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    BundledScenes, Golden,
+    ::testing::Values(GoldenCase{"rows", "rows/rows.gltf", "rows/camera.json"},
+                      GoldenCase{"occluder", "occluder/occluder.gltf", "occluder/camera.json"},
+                      GoldenCase{"grid", "grid/grid.gltf", "grid/camera.json"},
+                      GoldenCase{"depth-range", "depth-range/depth-range.gltf", "depth-range/camera.json"},
+                      GoldenCase{"rows-dof", "rows/rows.gltf", "rows/camera-dof.json"},
+                      GoldenCase{"occluder-dof", "occluder/occluder.gltf", "occluder/camera-dof.json"},
+                      // Lens effects: OpenCV-calibrated barrel + tangential on the dots;
+                      // every effect (distortion, lateral + axial colour, field curvature) on rows.
+                      GoldenCase{"grid-distortion", "grid/grid.gltf", "grid/camera-distortion.json"},
+                      GoldenCase{"grid-lens", "grid/grid.gltf", "grid/camera-lens.json"},
+                      GoldenCase{"rows-lens", "rows/rows.gltf", "rows/camera-lens.json", 32}),
+    [](const ::testing::TestParamInfo<GoldenCase>& param) {
+      std::string name = param.param.name;
+      for (char& ch : name)
+        if (ch == '-') ch = '_';
+      return name;
+    });
 
 }  // namespace
 }  // namespace lenslab

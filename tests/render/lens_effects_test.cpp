@@ -100,7 +100,8 @@ Image renderFine(const Scene& scene, Camera camera) {
   EXPECT_EQ(fine.heightPx, kHeight * kSupersample);
   camera.lens.apertureRadius = 1e-9;
   Renderer renderer(scene);
-  return renderer.render(camera, makeFramePlan(scene, camera, fine, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), fine);
+  return renderer.render(camera,
+                         makeFramePlan(scene, camera, fine, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), fine);
 }
 
 class DistortedDots : public ::testing::TestWithParam<OpenCvCamera> {};
@@ -124,7 +125,8 @@ TEST_P(DistortedDots, LandWhereOpenCvPutsThem) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Barrel, DistortedDots, ::testing::Values(OpenCvCamera{260, 258, 161.3, 118.2, -0.28, 0.09}));
-INSTANTIATE_TEST_SUITE_P(Pincushion, DistortedDots, ::testing::Values(OpenCvCamera{262, 262, 159.5, 119.5, 0.16, 0.02}));
+INSTANTIATE_TEST_SUITE_P(Pincushion, DistortedDots,
+                         ::testing::Values(OpenCvCamera{262, 262, 159.5, 119.5, 0.16, 0.02}));
 INSTANTIATE_TEST_SUITE_P(MixedTangential, DistortedDots,
                          ::testing::Values(OpenCvCamera{255, 259, 162.0, 117.0, -0.21, 0.06, 0.0021, -0.0013, -0.01}));
 
@@ -144,7 +146,8 @@ TEST(LensEffectsGl, GridDotsLandWhereOpenCvPutsThem) {
   ASSERT_EQ(size.heightPx, 640 * kScale);
   camera.lens.apertureRadius = 1e-9;  // 16 jittered views of the pinhole image: antialiased edges
   Renderer renderer(scene);
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
   const auto pixel = [&](glm::dvec2 world) {  // a point of the dot plane (z = 0.001) → lenslab pixel
     return cv.project({world.x, -world.y, 3.0}) + glm::dvec2(0.5);
   };
@@ -176,12 +179,14 @@ TEST(LensEffectsGl, GridDotsLandWhereOpenCvPutsThem) {
           sum += w * pixel(p);
         }
       const glm::dvec2 expected = sum / area;
-      if (expected.x < 14 || expected.y < 14 || expected.x > 960 - 14 || expected.y > 640 - 14) continue;  // cut by the edge
+      if (expected.x < 14 || expected.y < 14 || expected.x > 960 - 14 || expected.y > 640 - 14)
+        continue;  // cut by the edge
       // Measured: the centroid of the dot's brightness above the plane's, near the expectation.
       double weight = 0.0;
       glm::dvec2 weighted(0.0);
       for (int y = static_cast<int>((expected.y - 13) * kScale); y < static_cast<int>((expected.y + 13) * kScale); ++y)
-        for (int x = static_cast<int>((expected.x - 13) * kScale); x < static_cast<int>((expected.x + 13) * kScale); ++x) {
+        for (int x = static_cast<int>((expected.x - 13) * kScale); x < static_cast<int>((expected.x + 13) * kScale);
+             ++x) {
           const double w = std::max(0.0, static_cast<double>(image.at(x, y).g) - 0.04);
           weight += w;
           weighted += w * glm::dvec2(x + 0.5, y + 0.5);
@@ -201,8 +206,9 @@ TEST(LensEffectsGl, LateralColourMovesRedAndBlueByTheConfiguredScale) {
   const OpenCvCamera cv{260, 260, 159.5, 119.5, -0.12, 0.0};
   const double red = 0.006, blue = -0.005;
   const Camera camera =
-      parseCameraJson(intrinsicsJson(cv, cat(R"(, "chromatic": {"lateral_red": )", red, R"(, "lateral_blue": )", blue, "}")),
-                      "test camera")
+      parseCameraJson(
+          intrinsicsJson(cv, cat(R"(, "chromatic": {"lateral_red": )", red, R"(, "lateral_blue": )", blue, "}")),
+          "test camera")
           .camera;
   const Image fine = renderFine(dotScene(), camera);
   const glm::dvec2 principal(cv.cx + 0.5, cv.cy + 0.5);
@@ -227,8 +233,12 @@ TEST(LensEffectsGl, StrongBarrelLeavesNoBlackBorder) {
   scene.lighting.background = glm::vec3(0.0f);
   addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -2)), 10.0, 10.0, glm::vec3(0.5f));
   for (const double k1 : {-0.5, -0.3, -0.1, 0.0}) {
-    const Camera camera = parseCameraJson(cat(R"({"vrp": [0,0,-2], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.72,-0.48,0.72,0.48],
-                                                "distortion": {"k1": )", k1, "}}"), "test camera").camera;
+    const Camera camera =
+        parseCameraJson(cat(R"({"vrp": [0,0,-2], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.72,-0.48,0.72,0.48],
+                                                "distortion": {"k1": )",
+                            k1, "}}"),
+                        "test camera")
+            .camera;
     const ImageSize size{150, 100};
     Renderer renderer(scene);
     const Image image = renderer.render(camera, makeFramePlan(scene, camera, size), size);
@@ -242,7 +252,8 @@ TEST(LensEffectsGl, StrongBarrelLeavesNoBlackBorder) {
 TEST(LensEffectsGl, LookupTablesAreBuiltOncePerLens) {
   LENSLAB_REQUIRE_GL();
   const Scene scene = dotScene();
-  Camera camera = parseCameraJson(intrinsicsJson(OpenCvCamera{260, 258, 161.3, 118.2, -0.28, 0.09}), "test camera").camera;
+  Camera camera =
+      parseCameraJson(intrinsicsJson(OpenCvCamera{260, 258, 161.3, 118.2, -0.28, 0.09}), "test camera").camera;
   const ImageSize size = resolveImageSize(camera, std::nullopt, std::nullopt);
   Renderer renderer(scene);
   for (int frame = 0; frame < 3; ++frame) renderer.render(camera, makeFramePlan(scene, camera, size), size);
@@ -279,9 +290,12 @@ double sharpness(const Image& image, int channel) {
 TEST(LensEffectsGl, AxialColourFocusesEachChannelAtItsOwnDistance) {
   LENSLAB_REQUIRE_GL();
   // Green focuses at 2 m, red at 2.6 m, blue at 1.6 m.
-  const Camera camera = parseCameraJson(R"({"vrp": [0,0,-2], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.4,-0.3,0.4,0.3],
+  const Camera camera =
+      parseCameraJson(R"({"vrp": [0,0,-2], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.4,-0.3,0.4,0.3],
       "aperture_radius": 0.03, "near": 0.1, "far": 10,
-      "chromatic": {"focus_distance_red": 2.6, "focus_distance_blue": 1.6}})", "test camera").camera;
+      "chromatic": {"focus_distance_red": 2.6, "focus_distance_blue": 1.6}})",
+                      "test camera")
+          .camera;
   const ImageSize size{160, 120};
   const double depths[] = {1.6, 2.0, 2.6};
   double sharp[3][3];  // [depth][channel]
@@ -325,14 +339,15 @@ TEST(LensEffectsGl, RasterWithEveryEffectConvergesToTheExactRayCastLens) {
   const double raw = compareImages(raster, exactA, 0.0).rmse, noise = compareImages(exactA, exactB, 0.0).rmse;
   const double corrected = std::sqrt(std::max(raw * raw - 0.5 * noise * noise, 1e-12));
   const double psnr = -20.0 * std::log10(corrected);
-  std::cout << "[ measure  ] rows/camera-lens.json, raster 1024 views vs exact ray cast 256 spp: " << -20.0 * std::log10(raw)
-            << " dB as measured, " << psnr << " dB with the ray caster's noise taken out\n";
+  std::cout << "[ measure  ] rows/camera-lens.json, raster 1024 views vs exact ray cast 256 spp: "
+            << -20.0 * std::log10(raw) << " dB as measured, " << psnr << " dB with the ray caster's noise taken out\n";
   RecordProperty("psnr_db", cat(psnr));
   EXPECT_GE(psnr, 45.0);  // before the lens was applied per view: 36.8 dB (post pass on the mean, Catmull–Rom)
   // And the effects matter: the same raster without them is far from the exact lens.
   Camera plain = camera;
   plain.lens.effects = {};
-  const Image withoutEffects = renderer.render(plain, makeFramePlan(scene, plain, size, PlanOptions{AperturePattern::Concentric, 128, 128, 1}), size);
+  const Image withoutEffects = renderer.render(
+      plain, makeFramePlan(scene, plain, size, PlanOptions{AperturePattern::Concentric, 128, 128, 1}), size);
   EXPECT_LT(compareImages(withoutEffects, exactA, 0.0).psnrDb, psnr - 8.0);
 }
 

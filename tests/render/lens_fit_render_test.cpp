@@ -73,7 +73,8 @@ TEST(LensFitRender, TheFitComesCloserToTheExactLensThanFirstOrder) {
   const double noise = compareImages(exactA, exactB, 0.0).rmse;
   Renderer renderer(scene);
   const auto psnrOf = [&](const Camera& camera) {
-    const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 256, 256, 1}), size);
+    const Image image = renderer.render(
+        camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 256, 256, 1}), size);
     const double raw = compareImages(image, exactA, 0.0).rmse;
     return -20.0 * std::log10(std::sqrt(std::max(raw * raw - 0.5 * noise * noise, 1e-12)));
   };
@@ -85,8 +86,8 @@ TEST(LensFitRender, TheFitComesCloserToTheExactLensThanFirstOrder) {
   noVignetting.lens.effects.vignetting = {};
   const double noVignettingDb = psnrOf(noVignetting);
   std::cout << "[ measure  ] rows, double Gauss f/4 focused at 4 m, 120x80: fitted " << fittedDb << " dB, first order "
-            << firstOrderDb << " dB, fitted without distortion " << noDistortionDb << " dB, without vignetting " << noVignettingDb
-            << " dB against the exact trace "
+            << firstOrderDb << " dB, fitted without distortion " << noDistortionDb << " dB, without vignetting "
+            << noVignettingDb << " dB against the exact trace "
             << "(128 spp, its noise taken out)\n";
   RecordProperty("fitted_db", cat(fittedDb));
   EXPECT_GE(fittedDb, firstOrderDb + 10.0);

@@ -69,7 +69,8 @@ glm::dvec2 boxFilteredCentroid(const OpenCvCamera& cv, const Square& s) {
       const glm::dvec2 dx = (pixel(n + glm::dvec2(1e-7, 0)) - pixel(n - glm::dvec2(1e-7, 0))) / 2e-7;
       const glm::dvec2 dy = (pixel(n + glm::dvec2(0, 1e-7)) - pixel(n - glm::dvec2(0, 1e-7))) / 2e-7;
       const glm::dvec2 p = pixel(n);
-      coverage[{static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y))}] += std::abs(dx.x * dy.y - dx.y * dy.x);
+      coverage[{static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y))}] +=
+          std::abs(dx.x * dy.y - dx.y * dy.x);
     }
   double total = 0.0;
   glm::dvec2 sum(0.0);
@@ -104,7 +105,8 @@ TEST_P(SmallSquares, CentroidsAtTheImageResolutionMatchTheBoxFilteredModel) {
   const ImageSize size{kWidth, kHeight};
   Renderer renderer(scene);
   // A pinhole with 256 sub-pixel-jittered views: the box-filtered pixel integral.
-  const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 1024, 1024, 3}), size);
+  const Image image = renderer.render(
+      camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 1024, 1024, 3}), size);
   double worst = 0.0;
   for (const Square& s : list) {
     const glm::dvec2 expected = boxFilteredCentroid(cv, s);
@@ -141,12 +143,15 @@ TEST(LensPixelIntegral, NoValueLeavesTheScenesRange) {
         }
     return std::pair{lo, hi};
   };
-  const auto [sceneLo, sceneHi] = range(renderer.render(straight, makeFramePlan(scene, straight, size, PlanOptions{}), size));
+  const auto [sceneLo, sceneHi] =
+      range(renderer.render(straight, makeFramePlan(scene, straight, size, PlanOptions{}), size));
   for (const int samples : {1, 16}) {
-    const Image image = renderer.render(camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, samples, samples, 1}), size);
+    const Image image = renderer.render(
+        camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, samples, samples, 1}),
+        size);
     const auto [lo, hi] = range(image);
-    std::cout << "[ measure  ] grid through camera-distortion.json, " << samples << " view(s): values " << lo << " to " << hi
-              << " (scene " << sceneLo << " to " << sceneHi << ")\n";
+    std::cout << "[ measure  ] grid through camera-distortion.json, " << samples << " view(s): values " << lo << " to "
+              << hi << " (scene " << sceneLo << " to " << sceneHi << ")\n";
     EXPECT_GE(lo, sceneLo - 0.005f) << samples << " view(s)";
     EXPECT_LE(hi, sceneHi + 0.005f) << samples << " view(s)";
   }

@@ -73,9 +73,10 @@ TEST(RasterVsRaycast, MetallicRoughnessOcclusionPointAndSpot) {
   for (std::size_t i = 0; i < reference.rgba.size(); ++i)
     if (i % 4 != 3) brightest = std::max(brightest, reference.rgba[i]);
   const double psnr = compareImages(raster, reference, 0.0).psnrDb;
-  std::cout << "[ measure  ] rows with metallic-roughness, occlusion, a point and a spot light: raster 256 views vs ray cast "
-               "256 spp: PSNR "
-            << psnr << " dB (brightest " << brightest << ")\n";
+  std::cout
+      << "[ measure  ] rows with metallic-roughness, occlusion, a point and a spot light: raster 256 views vs ray cast "
+         "256 spp: PSNR "
+      << psnr << " dB (brightest " << brightest << ")\n";
   EXPECT_GE(psnr, 45.0);
   // The lights must show: without them the same scene is darker.
   Scene unlit = scene;
@@ -96,7 +97,8 @@ TEST(MaterialsFarFromTheOrigin, ALitSceneMovedBy1e7RendersAsAtTheOrigin) {
   const ImageSize size{160, 107};
   const glm::dvec3 offset(1e7, 2.5e6, -5e6);
   Scene moved = scene;
-  for (Instance& instance : moved.instances) instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
+  for (Instance& instance : moved.instances)
+    instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
   for (PunctualLight& light : moved.lights) light.worldPosition += offset;
   moved.bounds = computeBounds(moved);
   Camera far = camera;
@@ -104,11 +106,14 @@ TEST(MaterialsFarFromTheOrigin, ALitSceneMovedBy1e7RendersAsAtTheOrigin) {
   Camera jittered = camera;
   jittered.lens.apertureRadius = 1e-3;  // only to get a plan with 16 jittered views
   const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3});
-  const double raster = compareImages(Renderer(moved).render(far, plan, size), Renderer(scene).render(camera, plan, size), 0.0).psnrDb;
+  const double raster =
+      compareImages(Renderer(moved).render(far, plan, size), Renderer(scene).render(camera, plan, size), 0.0).psnrDb;
   const RaycastOptions options{4, 5};
-  const double rayCast = compareImages(RayCaster(moved).render(far, size, options), RayCaster(scene).render(camera, size, options), 0.0).psnrDb;
-  std::cout << "[ measure  ] rows with materials and lights moved by 1e7: raster " << raster << " dB, ray cast " << rayCast
-            << " dB vs at the origin\n";
+  const double rayCast =
+      compareImages(RayCaster(moved).render(far, size, options), RayCaster(scene).render(camera, size, options), 0.0)
+          .psnrDb;
+  std::cout << "[ measure  ] rows with materials and lights moved by 1e7: raster " << raster << " dB, ray cast "
+            << rayCast << " dB vs at the origin\n";
   EXPECT_GE(raster, 50.0);
   EXPECT_GE(rayCast, 50.0);
 }

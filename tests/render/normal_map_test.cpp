@@ -34,7 +34,8 @@ using test::pixelDirection;
 Image raster(const Scene& scene, Camera camera, ImageSize size, int views) {
   Camera jittered = camera;
   jittered.lens.apertureRadius = 1e-3;  // only to get a plan with `views` jittered views
-  const FramePlan plan = makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
+  const FramePlan plan =
+      makeFramePlan(scene, jittered, size, PlanOptions{AperturePattern::Concentric, views, views, 3});
   camera.lens.apertureRadius = 0.0;
   return Renderer(scene).render(camera, plan, size);
 }
@@ -109,9 +110,11 @@ glm::dvec3 shadedWith(const Scene& scene, const glm::dvec3& n, const glm::dvec3&
   s.n = glm::vec3(n);
   s.v = glm::vec3(v);
   glm::vec3 c(0.0f);
-  for (const ShadingLight& light : shadingLights(scene, glm::dvec3(0.0))) c += punctualRadiance(s, light, glm::vec3(0.0f));
+  for (const ShadingLight& light : shadingLights(scene, glm::dvec3(0.0)))
+    c += punctualRadiance(s, light, glm::vec3(0.0f));
   const float ambient = scene.lighting.ambient;
-  c += imageLightRadiance(s, glm::vec3(ambient), glm::vec3(ambient), dfgLookup(glm::dot(s.n, s.v), s.perceptualRoughness));
+  c += imageLightRadiance(s, glm::vec3(ambient), glm::vec3(ambient),
+                          dfgLookup(glm::dot(s.n, s.v), s.perceptualRoughness));
   return glm::dvec3(c);
 }
 
@@ -125,21 +128,25 @@ TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRend
   LENSLAB_REQUIRE_GL();
   const int variant = GetParam();
   const glm::dvec3 far = variant == 4 ? glm::dvec3(1e7, 2.5e6, -5e6) : glm::dvec3(0.0);
-  glm::dmat4 worldFromModel = glm::rotate(glm::translate(glm::dmat4(1.0), far + glm::dvec3(0.2, -0.1, -6.0)), 0.3, glm::dvec3(0.2, 1.0, 0.1));
+  glm::dmat4 worldFromModel =
+      glm::rotate(glm::translate(glm::dmat4(1.0), far + glm::dvec3(0.2, -0.1, -6.0)), 0.3, glm::dvec3(0.2, 1.0, 0.1));
   if (variant == 1) worldFromModel = worldFromModel * glm::scale(glm::dmat4(1.0), {-1.0, 1.0, 1.0});
   if (variant == 3)
-    worldFromModel = worldFromModel * glm::rotate(glm::dmat4(1.0), -0.5, glm::dvec3(0, 0, 1)) * glm::scale(glm::dmat4(1.0), {3.0, 1.0, 1.0}) *
+    worldFromModel = worldFromModel * glm::rotate(glm::dmat4(1.0), -0.5, glm::dvec3(0, 0, 1)) *
+                     glm::scale(glm::dmat4(1.0), {3.0, 1.0, 1.0}) *
                      glm::rotate(glm::dmat4(1.0), 0.5, glm::dvec3(0, 0, 1));
   const float scale = variant == 2 ? 0.4f : 1.0f;
   const Scene scene = tiltedByMap(worldFromModel, scale);
-  const glm::dvec3 normal = variant == 3 ? glTFFrameNormal(worldFromModel, scale) : tiltedWorldNormal(worldFromModel, scale);
+  const glm::dvec3 normal =
+      variant == 3 ? glTFFrameNormal(worldFromModel, scale) : tiltedWorldNormal(worldFromModel, scale);
   if (variant != 3) {
     EXPECT_LE(glm::length(normal - glTFFrameNormal(worldFromModel, scale)), 1e-12) << "the two closed forms agree";
   } else {
     ASSERT_GT(glm::length(normal - tiltedWorldNormal(worldFromModel, scale)), 0.01) << "and here they differ";
   }
   // Against an untilted plane: the map must make a difference the test can see.
-  const glm::dvec3 flatNormal = glm::normalize(glm::transpose(glm::inverse(glm::dmat3(worldFromModel))) * glm::dvec3(0, 0, 1));
+  const glm::dvec3 flatNormal =
+      glm::normalize(glm::transpose(glm::inverse(glm::dmat3(worldFromModel))) * glm::dvec3(0, 0, 1));
   ASSERT_GT(glm::length(shadedWith(scene, normal, {0, 0, 1}) - shadedWith(scene, flatNormal, {0, 0, 1})), 0.05);
 
   const PhysicalCamera c = lookingAt(far, far + glm::dvec3(0.0, 0.0, -1.0));
@@ -155,7 +162,8 @@ TEST_P(NormalMap, APlaneWithAConstantTiltedMapIsShadedLikeATiltedPlaneInBothRend
         worstRaster = std::max(worstRaster, std::abs(rasterImage.at(x, y)[k] - expected[k]));
         worstCast = std::max(worstCast, std::abs(castImage.at(x, y)[k] - expected[k]));
       }
-  std::printf("[ measure  ] variant %d: worst |raster − closed form| %.3g, |ray cast − closed form| %.3g\n", variant, worstRaster, worstCast);
+  std::printf("[ measure  ] variant %d: worst |raster − closed form| %.3g, |ray cast − closed form| %.3g\n", variant,
+              worstRaster, worstCast);
   // The plane fills the image; float shading and GL's interpolation of the tangent frame over a
   // flat quad leave rounding only.
   EXPECT_LE(worstRaster, 2e-3);
@@ -179,7 +187,8 @@ INSTANTIATE_TEST_SUITE_P(Placements, NormalMap, ::testing::Values(0, 1, 2, 3, 4)
 // (narrow_field.vert, .geom), which carries the tangent and the second uv set too.
 TEST(NormalMapNarrowField, TheDoublePrecisionPathShadesTheMapAlike) {
   LENSLAB_REQUIRE_GL();
-  const glm::dmat4 worldFromModel = glm::rotate(glm::translate(glm::dmat4(1.0), {0.0, 0.0, -6.0}), 0.3, glm::dvec3(0.2, 1.0, 0.1));
+  const glm::dmat4 worldFromModel =
+      glm::rotate(glm::translate(glm::dmat4(1.0), {0.0, 0.0, -6.0}), 0.3, glm::dvec3(0.2, 1.0, 0.1));
   const Scene scene = tiltedByMap(worldFromModel, 1.0f);
   const glm::dvec3 expected = shadedWith(scene, tiltedWorldNormal(worldFromModel, 1.0), {0.0, 0.0, 1.0});
   PhysicalCamera c = lookingAt({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0});
@@ -200,7 +209,8 @@ TEST(NormalMapFallback, AMeshWithoutTangentsIsShadedWithItsGeometricNormal) {
   const PhysicalCamera c = lookingAt({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0});
   const Camera camera = toCamera(c, "test");
   const ImageSize size = resolveImageSize(camera, 24, std::nullopt);
-  for (const Image& image : {raster(scene, camera, size, 1), RayCaster(scene).render(camera, size, RaycastOptions{1, 3})})
+  for (const Image& image :
+       {raster(scene, camera, size, 1), RayCaster(scene).render(camera, size, RaycastOptions{1, 3})})
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(image.at(size.widthPx / 2, size.heightPx / 2)[k], expected[k], 2e-3);
 }
 
@@ -218,8 +228,9 @@ TextureImage checker() {
   image.width = image.height = 4;
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i)
-      image.rgba8.insert(image.rgba8.end(), {static_cast<std::uint8_t>(40 + 60 * i), static_cast<std::uint8_t>(40 + 60 * j),
-                                             static_cast<std::uint8_t>((i + j) % 2 ? 200 : 30), 255});
+      image.rgba8.insert(image.rgba8.end(),
+                         {static_cast<std::uint8_t>(40 + 60 * i), static_cast<std::uint8_t>(40 + 60 * j),
+                          static_cast<std::uint8_t>((i + j) % 2 ? 200 : 30), 255});
   return image;
 }
 
@@ -236,8 +247,9 @@ TEST(TextureTransform, EachPixelShowsTheTexelTheTransformOfItsSecondUvSetPicks) 
   m.baseColorTexture.texCoord = 1;
   // The extension's definition written out (its README): u' = cos·su·u + sin·sv·v + ou, v' = −sin·su·u + cos·sv·v + ov.
   const float cr = static_cast<float>(std::cos(rotation)), sr = static_cast<float>(std::sin(rotation));
-  m.baseColorTexture.uvFromTexCoord = glm::mat3(glm::vec3(cr * scaleU, -sr * scaleU, 0.0f), glm::vec3(sr * scaleV, cr * scaleV, 0.0f),
-                                                 glm::vec3(offsetU, offsetV, 1.0f));
+  m.baseColorTexture.uvFromTexCoord =
+      glm::mat3(glm::vec3(cr * scaleU, -sr * scaleU, 0.0f), glm::vec3(sr * scaleV, cr * scaleV, 0.0f),
+                glm::vec3(offsetU, offsetV, 1.0f));
   scene.materials.push_back(m);
   Mesh mesh = quadMesh(1.0, 1.0, 0);
   for (Vertex& v : mesh.vertices) v.uv1 = glm::vec2(1.0f - v.uv.y, v.uv.x);  // set 1 differs from set 0
@@ -257,14 +269,15 @@ TEST(TextureTransform, EachPixelShowsTheTexelTheTransformOfItsSecondUvSetPicks) 
       const glm::dvec3 p = c.eye + (-c.eye.z / d.z) * d;
       if (std::abs(p.x) > 0.95 || std::abs(p.y) > 0.95) continue;
       const double u0 = 0.5 * (p.x + 1.0), v0 = 0.5 * (1.0 - p.y);  // quadMesh's TEXCOORD_0
-      const double u1 = 1.0 - v0, v1 = u0;                             // the set 1 made above
+      const double u1 = 1.0 - v0, v1 = u0;                          // the set 1 made above
       const double u = std::cos(rotation) * scaleU * u1 + std::sin(rotation) * scaleV * v1 + offsetU;
       const double v = -std::sin(rotation) * scaleU * u1 + std::cos(rotation) * scaleV * v1 + offsetV;
       const double tx = 4.0 * u, ty = 4.0 * v;
       // Pixels within a quarter texel (several pixels) of a texel edge are left out.
       const auto nearEdge = [](double t) { return std::abs(t - std::round(t)) < 0.25; };
       if (nearEdge(tx) || nearEdge(ty)) continue;
-      const int i = ((static_cast<int>(std::floor(tx)) % 4) + 4) % 4, j = ((static_cast<int>(std::floor(ty)) % 4) + 4) % 4;
+      const int i = ((static_cast<int>(std::floor(tx)) % 4) + 4) % 4,
+                j = ((static_cast<int>(std::floor(ty)) % 4) + 4) % 4;
       const std::uint8_t* texel = &scene.images[0].rgba8[static_cast<std::size_t>(4 * (j * 4 + i))];
       for (int k = 0; k < 3; ++k) {
         ASSERT_NEAR(rasterImage.at(x, y)[k], srgbToLinear(texel[k]), 2e-3) << "raster pixel " << x << "," << y;
@@ -323,7 +336,8 @@ TEST(TextureTransform, ScaledUvWidensTheFootprintInBothRenderersAlike) {
     }
   difference /= pixels;
   castSpread /= pixels;
-  std::printf("[ measure  ] scaled checker: mean |raster − ray cast| %.3g, ray cast's mean |value − 0.5| %.3g\n", difference, castSpread);
+  std::printf("[ measure  ] scaled checker: mean |raster − ray cast| %.3g, ray cast's mean |value − 0.5| %.3g\n",
+              difference, castSpread);
   EXPECT_LE(difference, 0.02);
   EXPECT_LE(castSpread, 0.05);
 }

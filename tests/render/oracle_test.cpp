@@ -107,7 +107,8 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-std::vector<Row> rayCasterRows(const Scene& scene, const Camera& camera, const Image& truth, const std::vector<int>& spps) {
+std::vector<Row> rayCasterRows(const Scene& scene, const Camera& camera, const Image& truth,
+                               const std::vector<int>& spps) {
   const RayCaster caster(scene);
   std::vector<Row> rows;
   for (const int spp : spps) {
@@ -118,7 +119,8 @@ std::vector<Row> rayCasterRows(const Scene& scene, const Camera& camera, const I
   return rows;
 }
 
-std::vector<Row> rasterRows(const Scene& scene, const Camera& camera, const Image& truth, const std::vector<int>& views) {
+std::vector<Row> rasterRows(const Scene& scene, const Camera& camera, const Image& truth,
+                            const std::vector<int>& views) {
   // An explicit N with a pinhole is N sub-pixel-jittered views (anti-aliasing), as with a lens.
   const Camera& jittered = camera;
   Renderer renderer(scene);
@@ -133,13 +135,16 @@ std::vector<Row> rasterRows(const Scene& scene, const Camera& camera, const Imag
 }
 
 void printTable(const std::string& name, const std::vector<Row>& caster, const std::vector<Row>& raster) {
-  std::printf("[ oracle   ] %s, %dx%d, PSNR against the exact pixel integral\n", name.c_str(), kSize.widthPx, kSize.heightPx);
+  std::printf("[ oracle   ] %s, %dx%d, PSNR against the exact pixel integral\n", name.c_str(), kSize.widthPx,
+              kSize.heightPx);
   std::printf("[ oracle   ]   samples   ray caster           raster\n");
   for (std::size_t i = 0; i < std::max(caster.size(), raster.size()); ++i) {
     const int samples = i < caster.size() ? caster[i].samples : raster[i].samples;
     std::printf("[ oracle   ]   %7d", samples);
-    if (i < caster.size()) std::printf("   %6.2f dB %6.2f s", caster[i].psnrDb, caster[i].seconds);
-    else std::printf("   %18s", "");
+    if (i < caster.size())
+      std::printf("   %6.2f dB %6.2f s", caster[i].psnrDb, caster[i].seconds);
+    else
+      std::printf("   %18s", "");
     if (i < raster.size()) std::printf("   %6.2f dB %6.2f s", raster[i].psnrDb, raster[i].seconds);
     std::printf("\n");
   }
@@ -223,7 +228,8 @@ TEST(Oracle, OccludingFlatQuads) {
   LENSLAB_REQUIRE_GL();
   Scene scene;
   scene.source = "oracle quads";
-  for (const FlatQuad& q : kQuadsNearestFirst) addUnlitQuad(scene, q.worldFromModel, q.halfWidth, q.halfHeight, q.colour);
+  for (const FlatQuad& q : kQuadsNearestFirst)
+    addUnlitQuad(scene, q.worldFromModel, q.halfWidth, q.halfHeight, q.colour);
   scene.bounds = computeBounds(scene);
   const Camera camera = floorCamera();
   const PinholeProjection projection(camera, kSize);
@@ -231,7 +237,8 @@ TEST(Oracle, OccludingFlatQuads) {
   for (const FlatQuad& q : kQuadsNearestFirst) {
     test::Polygon corners;
     for (const glm::dvec2 c : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
-      corners.push_back(projection.pixel(glm::dvec3(q.worldFromModel * glm::dvec4(c.x * q.halfWidth, c.y * q.halfHeight, 0.0, 1.0))));
+      corners.push_back(
+          projection.pixel(glm::dvec3(q.worldFromModel * glm::dvec4(c.x * q.halfWidth, c.y * q.halfHeight, 0.0, 1.0))));
     polygons.push_back({corners, glm::dvec3(q.colour)});
   }
   const Image truth = test::polygonsImage(polygons, kSize, scene.lighting.background);
@@ -262,16 +269,17 @@ TEST(Oracle, ThinLensTexelsBehindAQuad) {
   const PinholeProjection centre(camera, kSize), right(camera, kSize, {1.0, 0.0}), up(camera, kSize, {0.0, 1.0});
   const auto moving = [&](const glm::dvec3& corner0, const glm::dvec3& corner1, const glm::dvec3& colour) {
     const glm::dvec2 a = centre.pixel(corner0), b = centre.pixel(corner1);
-    return MovingRect{glm::min(a, b), glm::max(a, b),
-                      {right.pixel(corner0).x - a.x, up.pixel(corner0).y - a.y}, colour};
+    return MovingRect{
+        glm::min(a, b), glm::max(a, b), {right.pixel(corner0).x - a.x, up.pixel(corner0).y - a.y}, colour};
   };
   std::vector<MovingRect> texels;
   for (int j = 0; j < image.height; ++j)
     for (int i = 0; i < image.width; ++i) {
       const std::uint8_t* p = &image.rgba8[static_cast<std::size_t>(j * image.width + i) * 4];
-      texels.push_back(moving(plane.world({static_cast<double>(i) / image.width, static_cast<double>(j) / image.height}),
-                              plane.world({static_cast<double>(i + 1) / image.width, static_cast<double>(j + 1) / image.height}),
-                              {test::decodeSrgb8(p[0]), test::decodeSrgb8(p[1]), test::decodeSrgb8(p[2])}));
+      texels.push_back(
+          moving(plane.world({static_cast<double>(i) / image.width, static_cast<double>(j) / image.height}),
+                 plane.world({static_cast<double>(i + 1) / image.width, static_cast<double>(j + 1) / image.height}),
+                 {test::decodeSrgb8(p[0]), test::decodeSrgb8(p[1]), test::decodeSrgb8(p[2])}));
     }
   const MovingRect quad = moving(quadCentre - glm::dvec3(quadHalfSize, quadHalfSize, 0.0),
                                  quadCentre + glm::dvec3(quadHalfSize, quadHalfSize, 0.0), glm::dvec3(quadColour));

@@ -93,10 +93,9 @@ void expectMarkersLandOnTheLecturePixel(const ViewSpec& spec) {
       const bool perspective = spec.projection == Projection::Perspective;
       const double alongCentre = depth / spec.prp.z;
       const double scale = perspective ? alongCentre : 1.0;
-      const glm::dvec3 center = prp - depth * b.n +
-                                alongCentre * (spec.window.center().x - spec.prp.x) * b.u +
-                                alongCentre * (spec.window.center().y - spec.prp.y) * b.v +
-                                spot.x * scale * 1.2 * b.u + spot.y * scale * 0.9 * b.v;
+      const glm::dvec3 center = prp - depth * b.n + alongCentre * (spec.window.center().x - spec.prp.x) * b.u +
+                                alongCentre * (spec.window.center().y - spec.prp.y) * b.v + spot.x * scale * 1.2 * b.u +
+                                spot.y * scale * 0.9 * b.v;
       const double halfSize = 0.02 * scale;
       const Scene scene = squareMarker(spec, center, halfSize);
       Camera camera;

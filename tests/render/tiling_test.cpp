@@ -81,7 +81,8 @@ void expectTiledEqualsUntiled(const std::string& name, const Image& untiled, con
   std::cout << "[ tiling   ] " << name << " " << untiled.width << "x" << untiled.height << ", " << tiles.tiles.size()
             << " tiles of " << tiles.tileWidthPx << "x" << tiles.tileHeightPx << ", " << plan.apertureSamples
             << " samples: PSNR " << d.psnrDb << " dB (" << seams << " dB on the tile seams), max " << d.maxAbs << ", "
-            << d.fractionOver * 100.0 << "% of pixels over 1/255 (largest at pixel " << worst.x << "," << worst.y << ")\n";
+            << d.fractionOver * 100.0 << "% of pixels over 1/255 (largest at pixel " << worst.x << "," << worst.y
+            << ")\n";
   EXPECT_GE(d.psnrDb, 60.0) << name;
   EXPECT_GE(seams, 60.0) << name;
   if (d.psnrDb < 60.0 || seams < 60.0) {
@@ -100,7 +101,8 @@ TEST_P(Tiling, EqualsTheUntiledRender) {
   const Scene scene = loadGltf(assets / c.scene);
   const Camera camera = loadCameraJson(assets / c.camera).camera;
   const ImageSize size = resolveImageSize(camera, 200, std::nullopt);
-  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, c.apertureSamples, c.apertureSamples, 3});
+  const FramePlan plan = makeFramePlan(
+      scene, camera, size, PlanOptions{AperturePattern::Concentric, c.apertureSamples, c.apertureSamples, 3});
   Renderer renderer(scene);
   const Image untiled = renderer.render(camera, plan, size);
   const TilePlan tiles = planTiles(camera, size, plan, queryRenderTargetLimits(), 64);

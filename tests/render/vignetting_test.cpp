@@ -54,7 +54,8 @@ Scene flatScene() {
 }
 
 glm::dvec2 filmPosition(const Camera& camera, int x, int y, ImageSize size) {
-  return normalisedFromWindow(camera.view, windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx));
+  return normalisedFromWindow(camera.view,
+                              windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx));
 }
 
 // The largest |pixel − colour · gain(r_d²)| over the pixels well inside the wall or well inside
@@ -68,9 +69,12 @@ double worstAgainstGain(const Image& image, const Camera& camera, ImageSize size
       const glm::dvec2 n = filmPosition(camera, x, y, size);
       const double m = std::max(std::abs(n.x), std::abs(n.y));
       glm::vec3 colour;
-      if (m < 0.12) colour = kWall;
-      else if (m > 0.3) colour = kBackground;
-      else continue;
+      if (m < 0.12)
+        colour = kWall;
+      else if (m > 0.3)
+        colour = kBackground;
+      else
+        continue;
       ++*checked;
       const double gain = camera.lens.effects.vignetting.gain(glm::dot(n, n));
       for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(image.at(x, y)[c] - colour[c] * gain));
@@ -121,8 +125,9 @@ TEST_P(VignettingFrames, EveryPixelIsTimesTheGainAtItsPlaceOnTheFilm) {
   const glm::vec4 centre = raster.at(24, 24), corner = raster.at(0, 0);
   const double cornerGain = kLens.gain(glm::dot(filmPosition(camera, 0, 0, size), filmPosition(camera, 0, 0, size)));
   std::cout << "[ measure  ] " << k.name << ": " << checked << " flat pixels, worst |pixel - colour x gain| raster "
-            << worstRaster << ", ray cast " << worstRaycast << "; raster vs ray cast " << psnr << " dB (without vignetting "
-            << plainDb << " dB); corner " << corner.g << " for " << kBackground.g * cornerGain << "\n";
+            << worstRaster << ", ray cast " << worstRaycast << "; raster vs ray cast " << psnr
+            << " dB (without vignetting " << plainDb << " dB); corner " << corner.g << " for "
+            << kBackground.g * cornerGain << "\n";
   EXPECT_GT(checked, 1000);
   EXPECT_LT(worstRaster, 2e-3);
   EXPECT_LT(worstRaycast, 2e-3);
@@ -137,12 +142,13 @@ TEST_P(VignettingFrames, EveryPixelIsTimesTheGainAtItsPlaceOnTheFilm) {
   EXPECT_LT(plainDb, psnr - 5.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Paths, VignettingFrames,
-    ::testing::Values(Case{"OneView", 0.0, 0.0, 1, false}, Case{"OneViewThroughTheLensRemap", -0.25, 0.0, 1, false},
-                      Case{"ResolvedViews", 0.0, 0.05, 64, false}, Case{"LensGather", -0.25, 0.05, 64, false},
-                      Case{"PerTileBudgets", 0.0, 0.05, 64, true}),
-    [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+INSTANTIATE_TEST_SUITE_P(Paths, VignettingFrames,
+                         ::testing::Values(Case{"OneView", 0.0, 0.0, 1, false},
+                                           Case{"OneViewThroughTheLensRemap", -0.25, 0.0, 1, false},
+                                           Case{"ResolvedViews", 0.0, 0.05, 64, false},
+                                           Case{"LensGather", -0.25, 0.05, 64, false},
+                                           Case{"PerTileBudgets", 0.0, 0.05, 64, true}),
+                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
 
 // A tile knows where its pixels sit in the whole image: its sub-window camera gives the gain's
 // positions, so the tiled frame is the same image as one render (tiling_test's 60 dB).
@@ -159,7 +165,8 @@ TEST(VignettingTiles, ATiledFrameEqualsOneRender) {
     const Image untiled = renderer.render(camera, plan, size);
     const Image tiled = renderTiled(renderer, camera, plan, size, tiles);
     const double psnr = compareImages(untiled, tiled, 0.0).psnrDb;
-    std::cout << "[ measure  ] k1 = " << k1 << ", " << tiles.tiles.size() << " tiles: tiled vs one render " << psnr << " dB\n";
+    std::cout << "[ measure  ] k1 = " << k1 << ", " << tiles.tiles.size() << " tiles: tiled vs one render " << psnr
+              << " dB\n";
     EXPECT_GE(psnr, 60.0);
   }
 }

@@ -43,7 +43,9 @@ class ReferenceKey : public ::testing::Test {
     f.seekp(offset);
     f.put(static_cast<char>(c ^ 0x01));
   }
-  static void appendByte(const fs::path& file, char byte) { std::ofstream(file, std::ios::app | std::ios::binary) << byte; }
+  static void appendByte(const fs::path& file, char byte) {
+    std::ofstream(file, std::ios::app | std::ios::binary) << byte;
+  }
 
   fs::path dir_;
   Camera camera_ = loadCameraJson(fs::path(LENSLAB_TEST_ASSET_DIR) / "rows/camera-dof.json").camera;

@@ -58,7 +58,8 @@ TEST(Sweep, AccumulationConvergesAndBeatsThePostProcessBaselineAtOcclusionEdges)
   // sweep report for the clock; the test compares budgets, not seconds). It cannot undo what the
   // fence hides, so its error at occlusion edges stays larger than accumulation's at 16 views.
   const double accumulated = row(r, "raster", "concentric", 16).edgeRmse;
-  for (int taps : {32, 128}) EXPECT_GT(row(r, "postprocess", "gather", taps).edgeRmse, 1.5 * accumulated) << taps << " taps";
+  for (int taps : {32, 128})
+    EXPECT_GT(row(r, "postprocess", "gather", taps).edgeRmse, 1.5 * accumulated) << taps << " taps";
 }
 
 TEST(Sweep, RefusesAPinholeCamera) {
@@ -85,10 +86,16 @@ TEST(Sweep, MarkdownHasTheEqualErrorTable) {
   // The default pattern's column shows its own series (here none, unless the default is concentric).
   const bool concentricIsDefault = std::string(patternName(PlanOptions{}.pattern)) == "concentric";
   const auto defaultCell = [&](const char* concentric, const char* sobol) {
-    return std::string(concentricIsDefault ? concentric : patternName(PlanOptions{}.pattern) == std::string("sobol") ? sobol : "—");
+    return std::string(concentricIsDefault                                          ? concentric
+                       : patternName(PlanOptions{}.pattern) == std::string("sobol") ? sobol
+                                                                                    : "—");
   };
-  EXPECT_NE(md.find("| 30 dB | 0.0141 (concentric) | " + defaultCell("0.0141", "—") + " | 0.0070 | — | 2.02x |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| 40 dB | 0.0339 (concentric) | " + defaultCell("0.0339", "—") + " | 0.0144 | — | 2.35x |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 30 dB | 0.0141 (concentric) | " + defaultCell("0.0141", "—") + " | 0.0070 | — | 2.02x |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 40 dB | 0.0339 (concentric) | " + defaultCell("0.0339", "—") + " | 0.0144 | — | 2.35x |"),
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("| 40.0 dB | 40.10 dB | 40.50 dB |"), std::string::npos) << md;
   // The side-by-side table names the fastest uniform pattern at each PSNR, not the default: here
   // sobol at 30 dB (0.005·√2 s), concentric at 40 dB (sobol's 0.01·8^0.76 s is slower); the ray
@@ -98,8 +105,12 @@ TEST(Sweep, MarkdownHasTheEqualErrorTable) {
   r.rows.push_back({"raster", "sobol", 4, 0.08, 0.008, 41.9, 0.2, 0.02});
   r.rows.push_back({"raycast", "stratified", 1, 0.1, 0.03, 30.0, 0.3, 0.05});
   const std::string both = sweepMarkdown(r, "# test");
-  EXPECT_NE(both.find("| 30 dB | 0.0071 (sobol) | " + defaultCell("0.0141", "0.0071") + " | 0.0070 | 0.1000 | 1.01x |"), std::string::npos) << both;
-  EXPECT_NE(both.find("| 40 dB | 0.0339 (concentric) | " + defaultCell("0.0339", "0.0485") + " | 0.0144 | — | 2.35x |"), std::string::npos) << both;
+  EXPECT_NE(both.find("| 30 dB | 0.0071 (sobol) | " + defaultCell("0.0141", "0.0071") + " | 0.0070 | 0.1000 | 1.01x |"),
+            std::string::npos)
+      << both;
+  EXPECT_NE(both.find("| 40 dB | 0.0339 (concentric) | " + defaultCell("0.0339", "0.0485") + " | 0.0144 | — | 2.35x |"),
+            std::string::npos)
+      << both;
   EXPECT_NE(sweepCsv(r).find("raster,concentric,4,0.04,0.008,41.9,0.2,0.02,0,0,0,0"), std::string::npos);
 }
 
@@ -109,7 +120,8 @@ TEST(Sweep, ImagesAreNamedByTheirOwnParameter) {
   SweepRow spp{"raycast", "stratified", 4, 0.1, 0.01, 40.0, 0.0, 0.0};
   EXPECT_EQ(sweepImageName(spp), "raycast-stratified-4.png");
   // Two adaptive rows with the same mean sample count keep apart by their targets.
-  SweepRow a{"adaptive", "sobol", 8, 0.1, 0.01, 40.0, 0.0, 0.0, 25.0}, b{"adaptive", "sobol", 8, 0.1, 0.01, 40.0, 0.0, 0.0, 32.5};
+  SweepRow a{"adaptive", "sobol", 8, 0.1, 0.01, 40.0, 0.0, 0.0, 25.0},
+      b{"adaptive", "sobol", 8, 0.1, 0.01, 40.0, 0.0, 0.0, 32.5};
   EXPECT_EQ(sweepImageName(a), "adaptive-sobol-25dB.png");
   EXPECT_EQ(sweepImageName(b), "adaptive-sobol-32.5dB.png");
 }
@@ -149,7 +161,8 @@ TEST_F(SweepFiles, EveryRowHasItsOwnImage) {
 }
 
 TEST(Sweep, SecondsToReachInterpolatesInLogTime) {
-  const SweepRow a{"raster", "concentric", 1, 1.0, 0.1, 20.0, 0.0, 0.0}, b{"raster", "concentric", 2, 4.0, 0.01, 40.0, 0.0, 0.0};
+  const SweepRow a{"raster", "concentric", 1, 1.0, 0.1, 20.0, 0.0, 0.0},
+      b{"raster", "concentric", 2, 4.0, 0.01, 40.0, 0.0, 0.0};
   EXPECT_NEAR(secondsToReach({&a, &b}, 30.0), 2.0, 1e-12);  // halfway in PSNR: the geometric mean of the times
   EXPECT_EQ(secondsToReach({&a, &b}, 20.0), 1.0);
   EXPECT_LT(secondsToReach({&a, &b}, 41.0), 0.0);

@@ -51,7 +51,8 @@ TEST_F(AnimationFile, StepHoldsEachValueAndSwitchesExactlyAtItsKey) {
   const int node = g.node({{"mesh", g.triangle()}});
   g.channel(node, "translation", "STEP", {0, 1, 2}, {0, 0, 0, 5, 0, 0, 9, 0, 0});
   Scene scene = load(g);
-  const std::pair<double, double> cases[] = {{0.0, 0.0}, {0.999, 0.0}, {1.0, 5.0}, {1.5, 5.0}, {1.999, 5.0}, {2.0, 9.0}};
+  const std::pair<double, double> cases[] = {{0.0, 0.0}, {0.999, 0.0}, {1.0, 5.0},
+                                             {1.5, 5.0}, {1.999, 5.0}, {2.0, 9.0}};
   for (const auto& [seconds, x] : cases) {
     poseScene(scene, seconds);
     EXPECT_EQ(origin(scene.instances[0].worldFromModel), glm::dvec3(x, 0, 0)) << "at " << seconds << " s";
@@ -110,7 +111,7 @@ TEST_F(AnimationFile, CubicSplineTranslationFollowsTheHermiteFormulaWithScaledTa
   AnimatedGltf g;
   const int node = g.node({{"mesh", g.triangle()}});
   g.channel(node, "translation", "CUBICSPLINE", {1, 3},
-            {100, 100, 100, /**/ 1, 0, 0, /**/ 2, 1, 0,  // key 0: in-tangent, value, out-tangent
+            {100, 100, 100, /**/ 1, 0, 0, /**/ 2, 1, 0,     // key 0: in-tangent, value, out-tangent
              -1, 0, 0, /**/ 3, 0, 0, /**/ 100, 100, 100});  // key 1
   Scene scene = load(g);
   poseScene(scene, 1.5);
@@ -125,7 +126,8 @@ TEST_F(AnimationFile, CubicSplineRotationIsNormalised) {
   AnimatedGltf g;
   const int node = g.node({{"mesh", g.triangle()}});
   const auto s = static_cast<float>(kHalfSqrt2);
-  g.channel(node, "rotation", "CUBICSPLINE", {0, 1}, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, /**/ 0, 0, 0, 0, 0, 0, s, s, 0, 0, 0, 0});
+  g.channel(node, "rotation", "CUBICSPLINE", {0, 1},
+            {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, /**/ 0, 0, 0, 0, 0, 0, s, s, 0, 0, 0, 0});
   Scene scene = load(g);
   poseScene(scene, 0.5);
   const glm::dmat4& m = scene.instances[0].worldFromModel;
@@ -207,7 +209,8 @@ TEST_F(AnimationFile, EachAnimationIsAClipAndTheFirstPlaysByDefault) {
   EXPECT_EQ(scene.animation.clips[1].fileChannelCount, 1u);
   EXPECT_EQ(scene.animation.playing, 0);
   EXPECT_DOUBLE_EQ(animationDurationSeconds(scene), 2.0) << "the first clip's";
-  EXPECT_TRUE(mentions(scene, "2 animation(s) (`lenslab info` lists them): `render --time` and `capture` play the first"))
+  EXPECT_TRUE(
+      mentions(scene, "2 animation(s) (`lenslab info` lists them): `render --time` and `capture` play the first"))
       << testing::PrintToString(scene.notes);
   poseScene(scene, 3.6);  // clip 0 only: a at its last value, b at rest although clip 1 has passed its last key
   expectNear(origin(scene.instances[0].worldFromModel), {1, 0, 0}, 0, "clip 0 moves a");
@@ -266,8 +269,9 @@ TEST_F(AnimationFile, ALaterChannelOnTheSameNodeAndPathInOneClipWinsWithANote) {
   ASSERT_EQ(scene.animation.clips.size(), 1u);
   EXPECT_EQ(scene.animation.clips[0].channels.size(), 1u);
   EXPECT_EQ(scene.animation.clips[0].fileChannelCount, 2u);
-  EXPECT_TRUE(mentions(scene, "animation 0 channel 1 drives the translation of node 0 that an earlier channel of the same "
-                              "animation drives too"))
+  EXPECT_TRUE(mentions(scene,
+                       "animation 0 channel 1 drives the translation of node 0 that an earlier channel of the same "
+                       "animation drives too"))
       << testing::PrintToString(scene.notes);
   poseScene(scene, 1.0);
   expectNear(origin(scene.instances[0].worldFromModel), {0, 8, 0}, 0, "the later channel");
@@ -301,7 +305,8 @@ TEST_F(AnimationFile, MorphWeightChannelsAreNotPlayedAndNoted) {
   g.gltf["animations"][0]["channels"][0]["target"]["path"] = "weights";
   Scene scene = load(g);
   EXPECT_TRUE(scene.animation.empty());
-  EXPECT_TRUE(mentions(scene, "1 animation channel(s) drive morph target weights: not played")) << testing::PrintToString(scene.notes);
+  EXPECT_TRUE(mentions(scene, "1 animation channel(s) drive morph target weights: not played"))
+      << testing::PrintToString(scene.notes);
   EXPECT_TRUE(mentions(scene, "none of which moves a drawn node")) << testing::PrintToString(scene.notes);
 }
 
@@ -310,8 +315,8 @@ TEST_F(AnimationFile, MorphWeightChannelsAreNotPlayedAndNoted) {
 TEST_F(AnimationFile, ALightFollowsItsNodeAndItsParent) {
   AnimatedGltf g;
   g.gltf["extensionsUsed"] = {"KHR_lights_punctual"};
-  g.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "spot"}, {"intensity", 10.0}, {"spot", json::object()}},
-                                                           {{"type", "point"}, {"intensity", 5.0}}};
+  g.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "spot"}, {"intensity", 10.0}, {"spot", json::object()}}, {{"type", "point"}, {"intensity", 5.0}}};
   const int parent = g.node({{"mesh", g.triangle()}});
   g.node({{"translation", {0, 0, 2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}, parent);
   g.node({{"translation", {4, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});  // not animated
@@ -361,7 +366,8 @@ TEST_F(AnimationFile, KeyTimesThatDoNotIncreaseAreRefused) {
     loadGltf(file);
     FAIL() << "loaded key times 0, 1, 1";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), file.string() + ": animation 0 channel 0: key times must strictly increase (1 s then 1 s at key 2)");
+    EXPECT_EQ(std::string(e.what()),
+              file.string() + ": animation 0 channel 0: key times must strictly increase (1 s then 1 s at key 2)");
   }
 }
 
@@ -383,7 +389,9 @@ TEST_F(AnimationFile, APoseBeyondTheLargestWorldCoordinateIsRefusedNamingFileNod
   Scene scene = load(g);
   EXPECT_EQ(messageOf(scene, 0.1), "") << "4e14 is within reach";
   const std::string message = messageOf(scene, 0.5);
-  EXPECT_EQ(message.rfind(scene.source + ": at 0.5 s the animation moves node 0 (rocket) so that a vertex lies at (", 0), 0u) << message;
+  EXPECT_EQ(
+      message.rfind(scene.source + ": at 0.5 s the animation moves node 0 (rocket) so that a vertex lies at (", 0), 0u)
+      << message;
   EXPECT_NE(message.find("beyond +-1e+15"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
@@ -425,7 +433,8 @@ TEST(GltfSamples, AnimatedTriangleTurnsAboutZBySlerp) {
     const glm::dmat4 expected = glm::rotate(glm::dmat4(1.0), glm::radians(degrees), glm::dvec3(0, 0, 1));
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r)
-        EXPECT_NEAR(scene.instances[0].worldFromModel[c][r], expected[c][r], 1e-12) << "at " << seconds << " s, column " << c << " row " << r;
+        EXPECT_NEAR(scene.instances[0].worldFromModel[c][r], expected[c][r], 1e-12)
+            << "at " << seconds << " s, column " << c << " row " << r;
   }
   // The triangle (0,0,0), (1,0,0), (0,1,0) turned 45 degrees spans x from -sin 45 to cos 45.
   poseScene(scene, 0.125);

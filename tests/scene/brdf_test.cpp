@@ -18,7 +18,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-ShadingSurface surface(glm::vec3 base, float metallic, float roughness, glm::vec3 n = {0, 0, 1}, glm::vec3 v = {0, 0, 1}) {
+ShadingSurface surface(glm::vec3 base, float metallic, float roughness, glm::vec3 n = {0, 0, 1},
+                       glm::vec3 v = {0, 0, 1}) {
   ShadingSurface s;
   s.baseColor = base;
   s.metallic = metallic;
@@ -108,7 +109,8 @@ TEST(Brdf, DfgTableMatchesTheBrdfItSummarises) {
       for (float nv : {0.15f, 0.5f, 0.9f}) {
         const ShadingSurface s = surface(glm::vec3(1.0f), metallic, roughness, {0, 0, 1}, unitAt(nv));
         const double table = imageLightRadiance(s, glm::vec3(1.0f), glm::vec3(1.0f), dfgLookup(nv, roughness)).g;
-        EXPECT_NEAR(table, furnaceByQuadrature(s, 384), 0.02) << "metallic " << metallic << " roughness " << roughness << " n.v " << nv;
+        EXPECT_NEAR(table, furnaceByQuadrature(s, 384), 0.02)
+            << "metallic " << metallic << " roughness " << roughness << " n.v " << nv;
       }
   // And the interpolation between texel centres against the integral itself.
   for (float roughness : {0.2f, 0.45f, 0.77f})
@@ -164,7 +166,8 @@ TEST(DfgTable, BakedValuesAreTheIntegralTheyStandFor) {
 }
 
 // Appendix B's closed form, computed here in double, independently of brdf.glsl.
-double closedForm(double base, double metallic, double roughness, glm::dvec3 n, glm::dvec3 v, glm::dvec3 l, double illuminance) {
+double closedForm(double base, double metallic, double roughness, glm::dvec3 n, glm::dvec3 v, glm::dvec3 l,
+                  double illuminance) {
   const double nl = glm::dot(n, l), nv = glm::dot(n, v);
   if (nl <= 0.0) return 0.0;
   const glm::dvec3 h = glm::normalize(l + v);
@@ -231,18 +234,21 @@ TEST(Brdf, SpotConeIsFullInsideTheInnerAngleAndZeroOutsideTheOuter) {
 }
 
 TEST(Brdf, NoNanAtSilhouettesOrDegenerateVectors) {
-  const ShadingLight lights[] = {directional({0, 0, -1}, 10.0f), point({0, 0, 1}, 10.0f), directional({0, 0, 1}, 10.0f)};
+  const ShadingLight lights[] = {directional({0, 0, -1}, 10.0f), point({0, 0, 1}, 10.0f),
+                                 directional({0, 0, 1}, 10.0f)};
   for (float roughness : {0.0f, 0.5f, 1.0f})
     for (const glm::vec3 v : {glm::vec3(0, 0, -1), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0.0f)})
       for (const ShadingLight& l : lights) {
         const ShadingSurface s = surface(glm::vec3(1.0f), 0.5f, roughness, {0, 0, 1}, v);
-        const glm::vec3 c = punctualRadiance(s, l, glm::vec3(0.0f)) +
-                            imageLightRadiance(s, glm::vec3(1.0f), glm::vec3(1.0f), dfgLookup(glm::dot(s.n, s.v), roughness));
+        const glm::vec3 c =
+            punctualRadiance(s, l, glm::vec3(0.0f)) +
+            imageLightRadiance(s, glm::vec3(1.0f), glm::vec3(1.0f), dfgLookup(glm::dot(s.n, s.v), roughness));
         for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k])) << roughness;
       }
   // v = −l exactly (no half vector).
   const ShadingSurface s = surface(glm::vec3(1.0f), 0.0f, 0.5f, {0, 0, 1}, glm::normalize(glm::vec3(1, 0, -1)));
-  EXPECT_TRUE(std::isfinite(punctualRadiance(s, directional(glm::normalize(glm::vec3(1, 0, -1)), 1.0f), glm::vec3(0.0f)).g));
+  EXPECT_TRUE(
+      std::isfinite(punctualRadiance(s, directional(glm::normalize(glm::vec3(1, 0, -1)), 1.0f), glm::vec3(0.0f)).g));
 }
 
 // The specular dominant direction: unit, the reflected direction for a near-mirror, the normal at
@@ -299,7 +305,8 @@ TEST(ProjectionCentre, IsTheEyeOfAPerspectiveViewAndADirectionForAParallelOne) {
   EXPECT_FALSE(c.atInfinity);
   EXPECT_NEAR(glm::length(c.point - eye), 0.0, 1e-6);
   // lenslab's clip space is reverse-Z (z / w grows toward the viewer): GL's convention flipped.
-  const glm::dmat4 reverseZ(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, -1, 0), glm::dvec4(0, 0, 0, 1));
+  const glm::dmat4 reverseZ(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, -1, 0),
+                            glm::dvec4(0, 0, 0, 1));
   const glm::dmat4 parallel = reverseZ * glm::ortho(-1.0, 1.0, -1.0, 1.0, 0.1, 10.0) * viewFromWorld;
   const ProjectionCentre p = projectionCentre(parallel);
   EXPECT_TRUE(p.atInfinity);

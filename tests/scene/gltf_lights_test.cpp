@@ -75,8 +75,10 @@ TEST_F(LightsFile, BadLightsAreRefusedNamingTheLightAndTheField) {
       {{{"type", "point"}, {"color", {1.0, 2.0, 0.0}}}, "light 0 color[1] is 2; give a number in [0, 1]"},
       {{{"type", "point"}, {"color", {1.0, 0.0}}}, "light 0 color has 2 numbers"},
       {{{"type", "point"}, {"range", -2.0}}, "light 0 range is -2"},
-      {{{"type", "spot"}, {"spot", {{"outerConeAngle", 2.0}}}}, "light 0 spot.outerConeAngle is 2; give an angle in (0, pi/2]"},
-      {{{"type", "spot"}, {"spot", {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.4}}}}, "light 0 spot.innerConeAngle is 0.5"},
+      {{{"type", "spot"}, {"spot", {{"outerConeAngle", 2.0}}}},
+       "light 0 spot.outerConeAngle is 2; give an angle in (0, pi/2]"},
+      {{{"type", "spot"}, {"spot", {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.4}}}},
+       "light 0 spot.innerConeAngle is 0.5"},
   };
   for (const auto& [light, words] : cases) {
     const std::string message = refusal(withLights(json::array({light}), {json::object()}));
@@ -102,8 +104,8 @@ TEST_F(LightsFile, MetallicRoughnessFactorsAreReadAndCheckedAndTheDefaultMateria
   AnimatedGltf g;
   g.node({{"mesh", g.triangle()}});
   g.gltf["meshes"][0]["primitives"][0]["material"] = 0;
-  g.gltf["materials"] = json::array(
-      {{{"pbrMetallicRoughness", {{"metallicFactor", 0.25}, {"roughnessFactor", 0.75}}}}});
+  g.gltf["materials"] =
+      json::array({{{"pbrMetallicRoughness", {{"metallicFactor", 0.25}, {"roughnessFactor", 0.75}}}}});
   const Scene scene = load(g);
   ASSERT_EQ(scene.materials.size(), 1u);
   EXPECT_FLOAT_EQ(scene.materials[0].metallicFactor, 0.25f);
@@ -112,7 +114,8 @@ TEST_F(LightsFile, MetallicRoughnessFactorsAreReadAndCheckedAndTheDefaultMateria
   EXPECT_EQ(Material{}.roughnessFactor, 1.0f);
   g.gltf["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 1.5;
   const std::string message = refusal(g);
-  EXPECT_NE(message.find("material 0 pbrMetallicRoughness.metallicFactor is 1.5; give a number in [0, 1]"), std::string::npos)
+  EXPECT_NE(message.find("material 0 pbrMetallicRoughness.metallicFactor is 1.5; give a number in [0, 1]"),
+            std::string::npos)
       << message;
 }
 

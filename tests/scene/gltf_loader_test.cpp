@@ -182,9 +182,11 @@ TEST(GltfSamples, DracoBoxIsRefusedNamingTheExtension) {
     loadGltf(file);
     FAIL() << "loaded a Draco-compressed file";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), file.string() + ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
-                                                      "does not support (supported: KHR_materials_unlit, "
-                                                      "KHR_materials_emissive_strength, KHR_lights_punctual, KHR_texture_transform)");
+    EXPECT_EQ(std::string(e.what()),
+              file.string() +
+                  ": extensionsRequired lists KHR_draco_mesh_compression, which lenslab "
+                  "does not support (supported: KHR_materials_unlit, "
+                  "KHR_materials_emissive_strength, KHR_lights_punctual, KHR_texture_transform)");
   }
 }
 
@@ -238,7 +240,8 @@ TEST(GltfSamples, MultipleScenesDrawsItsDefaultSceneOne) {
 
 // Reads `count` elements of `size` bytes from a bufferView of the sample's .bin, independently
 // of the loader.
-std::vector<unsigned char> viewData(const json& gltf, const std::string& bin, int view, std::size_t byteOffset, std::size_t bytes) {
+std::vector<unsigned char> viewData(const json& gltf, const std::string& bin, int view, std::size_t byteOffset,
+                                    std::size_t bytes) {
   const json& v = gltf["bufferViews"][static_cast<std::size_t>(view)];
   const std::size_t at = v.value("byteOffset", std::size_t{0}) + byteOffset;
   return {bin.begin() + static_cast<std::ptrdiff_t>(at), bin.begin() + static_cast<std::ptrdiff_t>(at + bytes)};
@@ -253,8 +256,10 @@ TEST(GltfSamples, SparseAccessorValuesAreSubstituted) {
   const json& sparse = positions["sparse"];
   ASSERT_EQ(sparse["indices"]["componentType"], 5123);
   const auto count = sparse["count"].get<std::size_t>();
-  const auto targetBytes = viewData(gltf, bin, sparse["indices"]["bufferView"].get<int>(), sparse["indices"].value("byteOffset", 0u), count * 2);
-  const auto valueBytes = viewData(gltf, bin, sparse["values"]["bufferView"].get<int>(), sparse["values"].value("byteOffset", 0u), count * 12);
+  const auto targetBytes = viewData(gltf, bin, sparse["indices"]["bufferView"].get<int>(),
+                                    sparse["indices"].value("byteOffset", 0u), count * 2);
+  const auto valueBytes = viewData(gltf, bin, sparse["values"]["bufferView"].get<int>(),
+                                   sparse["values"].value("byteOffset", 0u), count * 12);
   const auto indexBytes = viewData(gltf, bin, gltf["accessors"][0]["bufferView"].get<int>(), 0, 36 * 2);
 
   const Scene scene = loadGltf(file);
@@ -335,7 +340,8 @@ TEST(GltfSamples, MissingNormalsBecomeFlatUnitNormals) {
   ASSERT_EQ(scene.meshes.size(), 1u);
   const Mesh& mesh = scene.meshes[0];
   EXPECT_EQ(mesh.vertices.size(), mesh.indices.size()) << "flat normals unweld: three vertices per triangle";
-  for (const Vertex& v : mesh.vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "the triangle lies in z = 0, counter-clockwise seen from +z";
+  for (const Vertex& v : mesh.vertices)
+    EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "the triangle lies in z = 0, counter-clockwise seen from +z";
 }
 
 TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
@@ -343,8 +349,10 @@ TEST(GltfSamples, FileNamesWithSpacesAndUnicodeLoad) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "UnicodeTest");
   const Scene spaces = loadSample("BoxWithSpaces/glTF/Box With Spaces.gltf");
   EXPECT_EQ(spaces.triangleCount(), 12u);
-  ASSERT_EQ(spaces.images.size(), 3u) << "the base colour, metallic-roughness and normal images' %20-encoded URIs resolve";
-  for (const char* file : {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
+  ASSERT_EQ(spaces.images.size(), 3u)
+      << "the base colour, metallic-roughness and normal images' %20-encoded URIs resolve";
+  for (const char* file :
+       {"UnicodeTest/glTF/Unicode\u2764\u267bTest.gltf", "UnicodeTest/glTF-Binary/Unicode\u2764\u267bTest.glb"}) {
     const Scene unicode = loadSample(file);
     EXPECT_EQ(unicode.triangleCount(), 2u) << file;
     EXPECT_EQ(unicode.images.size(), 1u) << file;
@@ -414,11 +422,10 @@ TEST(GltfSamples, AFullPbrMaterialDecodesEveryMap) {
 
 TEST(GltfSamples, IgnoredFeaturesAreNoted) {
   SKIP_UNLESS_EXISTS(samplesDirectory() / "SimpleSkin");
-  const std::pair<const char*, const char*> cases[] = {
-      {"SimpleSkin/glTF/SimpleSkin.gltf", "skins are ignored"},
-      {"AnimatedTriangle/glTF/AnimatedTriangle.gltf", "animation"},
-      {"SimpleMorph/glTF/SimpleMorph.gltf", "morph targets"},
-      {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"}};
+  const std::pair<const char*, const char*> cases[] = {{"SimpleSkin/glTF/SimpleSkin.gltf", "skins are ignored"},
+                                                       {"AnimatedTriangle/glTF/AnimatedTriangle.gltf", "animation"},
+                                                       {"SimpleMorph/glTF/SimpleMorph.gltf", "morph targets"},
+                                                       {"ToyCar/glTF/ToyCar.gltf", "KHR_materials_clearcoat"}};
   for (const auto& [file, words] : cases) {
     const Scene scene = loadSample(file);
     bool noted = false;
@@ -455,7 +462,9 @@ std::vector<ValidatorCase> validatorCases() {
 class GltfValidatorFile : public testing::TestWithParam<ValidatorCase> {};
 
 TEST_P(GltfValidatorFile, ErrorsAreRefusedWithOneLineAndNothingCrashesOrHangs) {
-  if (GetParam().file.empty()) GTEST_SKIP() << invalidDirectory() / "expected.json" << " is absent (the external glTF corpus)";
+  if (GetParam().file.empty())
+    GTEST_SKIP() << invalidDirectory() / "expected.json"
+                 << " is absent (the external glTF corpus)";
   const fs::path file = invalidDirectory() / GetParam().file;
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -479,9 +488,11 @@ std::string base64(const std::string& in) { return OIIO::Strutil::base64_encode(
 
 // Small PNGs (made with Python's zlib): 1x1 red, 2x1 green (both RGBA8), 2x1 16-bit grey
 // (0x8000, 0xFFFF).
-const char* kRedPng = "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR4nGP4z8DwHwAFAAH/iZk9HQAAAABJRU5ErkJggg==";
+const char* kRedPng =
+    "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR4nGP4z8DwHwAFAAH/iZk9HQAAAABJRU5ErkJggg==";
 const char* kGreenPng = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAYAAAD0In+KAAAADElEQVR4nGNg+A+BAA/5A/3YOXFBAAAAAElFTkSuQmCC";
-const char* kGrey16Png = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABEAAAAACB2fwVAAAADUlEQVR4nGNoYPj/HwAFAgJ/Fl7EZQAAAABJRU5ErkJggg==";
+const char* kGrey16Png =
+    "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABEAAAAACB2fwVAAAADUlEQVR4nGNoYPj/HwAFAgJ/Fl7EZQAAAABJRU5ErkJggg==";
 
 constexpr int kFloat = 5126, kUByte = 5121, kUShort = 5123, kUInt = 5125;
 
@@ -500,8 +511,12 @@ class GltfBuilder {
   }
 
   template <class T>
-  int accessor(const std::vector<T>& values, int componentType, const char* type, std::size_t count, bool normalized = false) {
-    json a = {{"bufferView", view(values.data(), values.size() * sizeof(T))}, {"componentType", componentType}, {"count", count}, {"type", type}};
+  int accessor(const std::vector<T>& values, int componentType, const char* type, std::size_t count,
+               bool normalized = false) {
+    json a = {{"bufferView", view(values.data(), values.size() * sizeof(T))},
+              {"componentType", componentType},
+              {"count", count},
+              {"type", type}};
     if (normalized) a["normalized"] = true;
     return push("accessors", a);
   }
@@ -539,7 +554,8 @@ class GltfBuilder {
 
   fs::path writeGltf(const fs::path& file) {
     json g = gltf;
-    if (!bin_.empty()) g["buffers"] = {{{"byteLength", bin_.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin_)}}};
+    if (!bin_.empty())
+      g["buffers"] = {{{"byteLength", bin_.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin_)}}};
     std::ofstream(file, std::ios::binary) << g.dump();
     return file;
   }
@@ -582,8 +598,8 @@ class GltfBuilder {
 class GltfWritten : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("lenslab-gltf-" + std::to_string(::getpid()) + "-" + testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("lenslab-gltf-" + std::to_string(::getpid()) + "-" +
+                                        testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -692,14 +708,16 @@ TEST_F(GltfWritten, PositionsBeyondTheBoundAreRefused) {
 
 TEST_F(GltfWritten, TruncatedGlbIsRefused) {
   const std::string glb = square().glb();
-  for (const std::size_t keep : {std::size_t{0}, std::size_t{11}, std::size_t{12}, std::size_t{19}, glb.size() / 2, glb.size() - 4}) {
+  for (const std::size_t keep :
+       {std::size_t{0}, std::size_t{11}, std::size_t{12}, std::size_t{19}, glb.size() / 2, glb.size() - 4}) {
     SCOPED_TRACE(keep);
     EXPECT_THROW(loadGltf(writeBytes("cut.glb", glb.substr(0, keep))), InputError);
   }
 }
 
 TEST_F(GltfWritten, DeeplyNestedJsonIsRefusedNotACrash) {
-  const std::string deep = R"({"asset":{"version":"2.0"},"extras":)" + std::string(100000, '[') + std::string(100000, ']') + "}";
+  const std::string deep =
+      R"({"asset":{"version":"2.0"},"extras":)" + std::string(100000, '[') + std::string(100000, ']') + "}";
   try {
     loadGltf(writeBytes("deep.gltf", deep));
     FAIL();
@@ -715,8 +733,10 @@ TEST_F(GltfWritten, RequiredUnsupportedExtensionIsRefusedByName) {
   b.gltf["extensionsUsed"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
   const fs::path file = dir_ / "scene.gltf";
-  EXPECT_EQ(refusal(b), file.string() + ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
-                                        "(supported: KHR_materials_unlit, KHR_materials_emissive_strength, KHR_lights_punctual, KHR_texture_transform)");
+  EXPECT_EQ(refusal(b), file.string() +
+                            ": extensionsRequired lists EXT_meshopt_compression, which lenslab does not support "
+                            "(supported: KHR_materials_unlit, KHR_materials_emissive_strength, KHR_lights_punctual, "
+                            "KHR_texture_transform)");
   b.gltf["extensionsRequired"] = {"KHR_materials_unlit"};
   const Scene scene = load(b);
   EXPECT_TRUE(noted(scene, "EXT_meshopt_compression")) << "used but not required: a note";
@@ -758,14 +778,17 @@ TEST_F(GltfWritten, TrsAndMatrixGiveTheSameTransform) {
   b.gltf["nodes"][0]["translation"] = {t.x, t.y, t.z};
   b.gltf["nodes"][0]["rotation"] = {q.x, q.y, q.z, q.w};
   b.gltf["nodes"][0]["scale"] = {s.x, s.y, s.z};
-  const int asMatrix = b.push("nodes", {{"mesh", 0}, {"matrix", std::vector<double>(glm::value_ptr(expected), glm::value_ptr(expected) + 16)}});
+  const int asMatrix = b.push(
+      "nodes", {{"mesh", 0}, {"matrix", std::vector<double>(glm::value_ptr(expected), glm::value_ptr(expected) + 16)}});
   b.gltf["scenes"][0]["nodes"].push_back(asMatrix);
   const Scene scene = load(b);
   ASSERT_EQ(scene.instances.size(), 2u);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) {
-      EXPECT_NEAR(scene.instances[0].worldFromModel[c][r], expected[c][r], 1e-12) << "TRS, column " << c << " row " << r;
-      EXPECT_NEAR(scene.instances[1].worldFromModel[c][r], expected[c][r], 1e-12) << "matrix, column " << c << " row " << r;
+      EXPECT_NEAR(scene.instances[0].worldFromModel[c][r], expected[c][r], 1e-12)
+          << "TRS, column " << c << " row " << r;
+      EXPECT_NEAR(scene.instances[1].worldFromModel[c][r], expected[c][r], 1e-12)
+          << "matrix, column " << c << " row " << r;
     }
 }
 
@@ -829,14 +852,17 @@ TEST_F(GltfWritten, StripsAndFansBecomeListsInTheSpecOrder) {
       SCOPED_TRACE(cat("mode ", c.mode, ", index componentType ", indexType));
       GltfBuilder b;
       json primitive = {{"attributes", {{"POSITION", b.positions(*c.positions)}}}, {"mode", c.mode}};
-      if (indexType == kUByte) primitive["indices"] = b.accessor(std::vector<std::uint8_t>{0, 1, 2, 3, 4}, kUByte, "SCALAR", 5);
+      if (indexType == kUByte)
+        primitive["indices"] = b.accessor(std::vector<std::uint8_t>{0, 1, 2, 3, 4}, kUByte, "SCALAR", 5);
       if (indexType == kUShort) primitive["indices"] = b.indices({0, 1, 2, 3, 4});
-      if (indexType == kUInt) primitive["indices"] = b.accessor(std::vector<std::uint32_t>{0, 1, 2, 3, 4}, kUInt, "SCALAR", 5);
+      if (indexType == kUInt)
+        primitive["indices"] = b.accessor(std::vector<std::uint32_t>{0, 1, 2, 3, 4}, kUInt, "SCALAR", 5);
       b.drawnMesh(primitive);
       const Scene scene = load(b);
       ASSERT_EQ(scene.meshes.size(), 1u);
       EXPECT_EQ(trianglesAsFileVertices(scene.meshes[0], *c.positions), c.expected);
-      for (const Vertex& v : scene.meshes[0].vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "a triangle is wound clockwise";
+      for (const Vertex& v : scene.meshes[0].vertices)
+        EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f) << "a triangle is wound clockwise";
     }
 }
 
@@ -845,7 +871,8 @@ TEST_F(GltfWritten, PointsLinesAndPrimitivesWithoutPositionAreLeftOutWithANote) 
   const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
   b.drawnMesh({{"attributes", {{"POSITION", p}}}, {"mode", 0}});
   b.drawnMesh({{"attributes", {{"POSITION", p}}}, {"mode", 1}});
-  b.drawnMesh({{"attributes", json::object({{"TEXCOORD_0", b.accessor(std::vector<float>(6, 0.0f), kFloat, "VEC2", 3)}})}});
+  b.drawnMesh(
+      {{"attributes", json::object({{"TEXCOORD_0", b.accessor(std::vector<float>(6, 0.0f), kFloat, "VEC2", 3)}})}});
   const Scene scene = load(b);
   EXPECT_EQ(scene.triangleCount(), 0u);
   EXPECT_TRUE(scene.bounds.empty()) << "a scene without triangles loads, with empty bounds";
@@ -887,11 +914,22 @@ TEST_F(GltfWritten, InterleavedAttributesAreReadThroughTheirStride) {
     float position[3];
     std::uint8_t color[4];
   };
-  const std::vector<Packed> data = {{{0, 0, 0}, {255, 0, 0, 255}}, {{1, 0, 0}, {0, 255, 0, 255}}, {{0, 1, 0}, {0, 0, 255, 51}}};
+  const std::vector<Packed> data = {
+      {{0, 0, 0}, {255, 0, 0, 255}}, {{1, 0, 0}, {0, 255, 0, 255}}, {{0, 1, 0}, {0, 0, 255, 51}}};
   GltfBuilder b;
   const int v = b.view(data.data(), data.size() * sizeof(Packed), sizeof(Packed));
-  const int p = b.push("accessors", {{"bufferView", v}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {1, 1, 0}}});
-  const int c = b.push("accessors", {{"bufferView", v}, {"byteOffset", 12}, {"componentType", kUByte}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
+  const int p = b.push("accessors", {{"bufferView", v},
+                                     {"componentType", kFloat},
+                                     {"count", 3},
+                                     {"type", "VEC3"},
+                                     {"min", {0, 0, 0}},
+                                     {"max", {1, 1, 0}}});
+  const int c = b.push("accessors", {{"bufferView", v},
+                                     {"byteOffset", 12},
+                                     {"componentType", kUByte},
+                                     {"normalized", true},
+                                     {"count", 3},
+                                     {"type", "VEC4"}});
   b.drawnMesh({{"attributes", {{"POSITION", p}, {"COLOR_0", c}}}});
   const Scene scene = load(b);
   ASSERT_EQ(scene.meshes.size(), 1u);
@@ -906,9 +944,12 @@ TEST_F(GltfWritten, InterleavedAttributesAreReadThroughTheirStride) {
 TEST_F(GltfWritten, AttributesMustHaveAGltfFormat) {
   {
     GltfBuilder b = square();  // COLOR_0 of bytes that are not normalised
-    b.gltf["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = b.accessor(std::vector<std::uint8_t>(12, 255), kUByte, "VEC3", 4);
+    b.gltf["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] =
+        b.accessor(std::vector<std::uint8_t>(12, 255), kUByte, "VEC3", 4);
     const std::string message = refusal(b);
-    EXPECT_TRUE(contains(message, "COLOR_0 (accessor 2) is VEC3 of UNSIGNED_BYTE; it must be VEC3/VEC4 of FLOAT or of normalized")) << message;
+    EXPECT_TRUE(contains(
+        message, "COLOR_0 (accessor 2) is VEC3 of UNSIGNED_BYTE; it must be VEC3/VEC4 of FLOAT or of normalized"))
+        << message;
   }
   {
     GltfBuilder b = square();  // normalised 16-bit texture coordinates are fine
@@ -919,7 +960,8 @@ TEST_F(GltfWritten, AttributesMustHaveAGltfFormat) {
   }
   {
     GltfBuilder b = square();  // NORMAL with a count other than POSITION's
-    b.gltf["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3);
+    b.gltf["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] =
+        b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3);
     EXPECT_TRUE(contains(refusal(b), "all must have the same count"));
   }
 }
@@ -929,10 +971,14 @@ TEST_F(GltfWritten, SparseAccessorsAreSubstitutedAndChecked) {
   auto build = [](std::vector<std::uint16_t> targets) {
     GltfBuilder b;
     const std::vector<float> values = {1, 0, 0, 0, 1, 0};
-    const int p = b.push("accessors", {{"componentType", kFloat}, {"count", 3}, {"type", "VEC3"},
-                                       {"sparse", {{"count", 2},
-                                                   {"indices", {{"bufferView", b.view(targets.data(), 4)}, {"componentType", kUShort}}},
-                                                   {"values", {{"bufferView", b.view(values.data(), 24)}}}}}});
+    const int p =
+        b.push("accessors", {{"componentType", kFloat},
+                             {"count", 3},
+                             {"type", "VEC3"},
+                             {"sparse",
+                              {{"count", 2},
+                               {"indices", {{"bufferView", b.view(targets.data(), 4)}, {"componentType", kUShort}}},
+                               {"values", {{"bufferView", b.view(values.data(), 24)}}}}}});
     b.drawnMesh({{"attributes", {{"POSITION", p}}}});
     return b;
   };
@@ -958,12 +1004,15 @@ TEST_F(GltfWritten, DeclaredMinMaxMustHoldTheData) {
 TEST_F(GltfWritten, OnlyUsedMaterialsTexturesAndImagesAreKeptAndReindexed) {
   GltfBuilder b = square();
   const json tex = {{"index", 0}};
-  b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}, {{"uri", std::string("data:image/png;base64,") + kGreenPng}}};
+  b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}},
+                      {{"uri", std::string("data:image/png;base64,") + kGreenPng}}};
   b.gltf["samplers"] = {{{"wrapS", 33071}, {"magFilter", 9728}}};
   b.gltf["textures"] = {{{"source", 0}}, {{"source", 1}, {"sampler", 0}}};
-  b.gltf["materials"] = {{{"name", "unused"}},
-                         {{"name", "drawn"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 1}}, {"baseColorTexture", {{"index", 1}}}}}},
-                         {{"name", "other scene"}, {"pbrMetallicRoughness", {{"baseColorTexture", tex}}}}};
+  b.gltf["materials"] = {
+      {{"name", "unused"}},
+      {{"name", "drawn"},
+       {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 1}}, {"baseColorTexture", {{"index", 1}}}}}},
+      {{"name", "other scene"}, {"pbrMetallicRoughness", {{"baseColorTexture", tex}}}}};
   b.gltf["meshes"][0]["primitives"][0]["material"] = 1;
   // A second scene, not drawn, uses material 2 (and so texture 0 and image 0).
   b.push("meshes", {{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"material", 2}}}}});
@@ -984,7 +1033,8 @@ TEST_F(GltfWritten, OnlyUsedMaterialsTexturesAndImagesAreKeptAndReindexed) {
   ASSERT_EQ(scene.images.size(), 1u);
   EXPECT_EQ(scene.textures[0].image, 0);
   EXPECT_EQ(scene.images[0].width, 2) << "the green image, not the red one";
-  EXPECT_EQ(std::vector<std::uint8_t>(scene.images[0].rgba8.begin(), scene.images[0].rgba8.begin() + 4), (std::vector<std::uint8_t>{0, 255, 0, 255}));
+  EXPECT_EQ(std::vector<std::uint8_t>(scene.images[0].rgba8.begin(), scene.images[0].rgba8.begin() + 4),
+            (std::vector<std::uint8_t>{0, 255, 0, 255}));
 }
 
 TEST_F(GltfWritten, SixteenBitGreyImagesBecomeRgba8) {
@@ -1002,7 +1052,8 @@ TEST_F(GltfWritten, BaseColourFromAUvSetBeyondOneIsLeftOutWithANote) {
   GltfBuilder b = square();
   b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
   b.gltf["textures"] = {{{"source", 0}}};
-  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 2}}}}}, {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
+  b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 2}}}}},
+                          {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
   b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
   const Scene scene = load(b);
   ASSERT_EQ(scene.materials.size(), 1u);
@@ -1070,14 +1121,20 @@ TEST_F(GltfWritten, CamerasTakeTheirNodesPlaceAndDefaults) {
 
 TEST_F(GltfWritten, BadCameraValuesAreRefusedNamingCameraAndField) {
   const std::pair<json, std::string> cases[] = {
-      {{{"name", "eye"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.0}, {"znear", 0.1}}}}, "camera 0 \"eye\": yfov is 0"},
+      {{{"name", "eye"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.0}, {"znear", 0.1}}}},
+       "camera 0 \"eye\": yfov is 0"},
       {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", -1.0}}}}, "camera 0: znear is -1"},
-      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 1.0}, {"zfar", 0.5}}}}, "zfar 0.5 must be greater than znear 1"},
-      {{{"type", "orthographic"}, {"orthographic", {{"xmag", -1.0}, {"ymag", 1.0}, {"znear", 0.0}, {"zfar", 10.0}}}}, "camera 0: xmag is -1"},
+      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 1.0}, {"zfar", 0.5}}}},
+       "zfar 0.5 must be greater than znear 1"},
+      {{{"type", "orthographic"}, {"orthographic", {{"xmag", -1.0}, {"ymag", 1.0}, {"znear", 0.0}, {"zfar", 10.0}}}},
+       "camera 0: xmag is -1"},
       // glTF: aspectRatio and zfar, when present, are > 0 (tinygltf reads 0 as absent).
-      {{{"name", "wide"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"aspectRatio", 0.0}}}},
+      {{{"name", "wide"},
+        {"type", "perspective"},
+        {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"aspectRatio", 0.0}}}},
        "camera 0 \"wide\": aspectRatio is 0.0; when present it must be a positive finite number"},
-      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"zfar", 0.0}}}}, "camera 0: zfar is 0.0"},
+      {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"zfar", 0.0}}}},
+       "camera 0: zfar is 0.0"},
   };
   for (const auto& [camera, expected] : cases) {
     GltfBuilder b = square();
@@ -1108,7 +1165,8 @@ TEST_F(GltfWritten, MutatedFilesLoadOrAreRefusedNeverCrash) {
   b.gltf["textures"] = {{{"source", 0}}};
   b.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
   b.gltf["meshes"][0]["primitives"][0]["material"] = 0;
-  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
+  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
+      b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
   const std::string original = b.glb();
   std::mt19937 random(20240601);
   int loaded = 0, refused = 0;
@@ -1133,7 +1191,6 @@ TEST_F(GltfWritten, MutatedFilesLoadOrAreRefusedNeverCrash) {
   EXPECT_EQ(loaded + refused, 400);
 }
 
-
 // -- normal maps, tangents, TEXCOORD_1 and KHR_texture_transform
 
 class GltfMaps : public GltfWritten {
@@ -1142,7 +1199,8 @@ class GltfMaps : public GltfWritten {
   static GltfBuilder texturedSquare(json extra = json::object()) {
     GltfBuilder b;
     const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
-    json attributes = {{"POSITION", p}, {"TEXCOORD_0", b.accessor(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}, kFloat, "VEC2", 4)}};
+    json attributes = {{"POSITION", p},
+                       {"TEXCOORD_0", b.accessor(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}, kFloat, "VEC2", 4)}};
     for (auto& [name, value] : extra.items()) attributes[name] = value;
     b.drawnMesh({{"attributes", attributes}, {"indices", b.indices({0, 1, 2, 0, 2, 3})}, {"material", 0}});
     b.gltf["images"] = {{{"uri", std::string("data:image/png;base64,") + kRedPng}}};
@@ -1156,8 +1214,10 @@ TEST_F(GltfMaps, TangentsAndTheSecondUvSetAreRead) {
   const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
   const std::vector<float> tangents{1, 0, 0, 1, 0, 1, 0, -1, 0.6f, 0.8f, 0, 1};
   const std::vector<float> uv1{0.25f, 0.5f, 0.75f, 0.5f, 0.25f, 1.0f};
-  b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(tangents, kFloat, "VEC4", 3)},
-                                {"TEXCOORD_1", b.accessor(uv1, kFloat, "VEC2", 3)}}}});
+  b.drawnMesh({{"attributes",
+                {{"POSITION", p},
+                 {"TANGENT", b.accessor(tangents, kFloat, "VEC4", 3)},
+                 {"TEXCOORD_1", b.accessor(uv1, kFloat, "VEC2", 3)}}}});
   const Scene scene = load(b);
   ASSERT_EQ(scene.meshes.size(), 1u);
   const Mesh& mesh = scene.meshes[0];
@@ -1180,7 +1240,8 @@ TEST_F(GltfMaps, TangentsThatAreNotUnitOrHaveNoSignAreRefusedInOneLine) {
   }
   GltfBuilder b;
   const int p = b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
-  b.drawnMesh({{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3)}}}});
+  b.drawnMesh(
+      {{"attributes", {{"POSITION", p}, {"TANGENT", b.accessor(std::vector<float>(9, 0.0f), kFloat, "VEC3", 3)}}}});
   EXPECT_TRUE(contains(refusal(b), "TANGENT (accessor 1) is VEC3 of FLOAT; it must be VEC4 FLOAT"));
 }
 
@@ -1208,12 +1269,15 @@ TEST_F(GltfMaps, ANormalMapWithoutTangentsGetsGeneratedOnesAndItsScale) {
 
 TEST_F(GltfMaps, TextureTransformAndTexCoordAreReadOnEveryTextureReference) {
   GltfBuilder b = texturedSquare({{"TEXCOORD_1", json()}});
-  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
-  const json transform = {{"offset", {0.5, -0.25}}, {"rotation", 1.5707963267948966}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
+  b.gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] =
+      b.accessor(std::vector<float>(8, 0.5f), kFloat, "VEC2", 4);
+  const json transform = {
+      {"offset", {0.5, -0.25}}, {"rotation", 1.5707963267948966}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
   b.gltf["extensionsUsed"] = {"KHR_texture_transform"};
   b.gltf["extensionsRequired"] = {"KHR_texture_transform"};
   json material;
-  material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+  material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0},
+                                                          {"extensions", {{"KHR_texture_transform", transform}}}};
   material["emissiveFactor"] = {1, 1, 1};
   material["emissiveTexture"] = {{"index", 0}, {"texCoord", 1}};
   material["normalTexture"] = {{"index", 0}};
@@ -1235,14 +1299,16 @@ TEST_F(GltfMaps, TextureTransformAndTexCoordAreReadOnEveryTextureReference) {
 
 TEST_F(GltfMaps, MalformedTextureTransformsAreRefusedNamingTheField) {
   const std::pair<json, const char*> cases[] = {
-      {{{"offset", {1, 2, 3}}}, "material 0 baseColorTexture KHR_texture_transform.offset must be an array of 2 numbers"},
+      {{{"offset", {1, 2, 3}}},
+       "material 0 baseColorTexture KHR_texture_transform.offset must be an array of 2 numbers"},
       {{{"rotation", "left"}}, "material 0 baseColorTexture KHR_texture_transform.rotation must be a finite number"},
       {{{"scale", {1, "x"}}}, "KHR_texture_transform.scale must be an array of 2 numbers"},
       {{{"texCoord", -1}}, "KHR_texture_transform.texCoord must be an integer >= 0"}};
   for (const auto& [transform, message] : cases) {
     GltfBuilder b = texturedSquare();
     json material;
-    material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0},
+                                                            {"extensions", {{"KHR_texture_transform", transform}}}};
     b.gltf["materials"] = json::array({material});
     EXPECT_TRUE(contains(refusal(b), message)) << message;
   }
@@ -1254,7 +1320,8 @@ TEST(GltfSamples, NormalMapsTexCoord1AndTextureTransformsOfTheSamples) {
   const Scene normalTangent = loadSample("NormalTangentTest/glTF-Binary/NormalTangentTest.glb");
   int mapped = 0;
   for (const Mesh& mesh : normalTangent.meshes) {
-    if (mesh.material < 0 || !normalTangent.materials[static_cast<std::size_t>(mesh.material)].normalTexture.present()) continue;
+    if (mesh.material < 0 || !normalTangent.materials[static_cast<std::size_t>(mesh.material)].normalTexture.present())
+      continue;
     ++mapped;
     ASSERT_TRUE(mesh.hasTangents) << mesh.name;
     for (const Vertex& v : mesh.vertices) {
@@ -1266,7 +1333,8 @@ TEST(GltfSamples, NormalMapsTexCoord1AndTextureTransformsOfTheSamples) {
   // MultiUVTest: the emissive texture samples TEXCOORD_1.
   const Scene multiUv = loadSample("MultiUVTest/glTF/MultiUVTest.gltf");
   bool secondSet = false;
-  for (const Material& m : multiUv.materials) secondSet |= m.emissiveTexture.present() && m.emissiveTexture.texCoord == 1;
+  for (const Material& m : multiUv.materials)
+    secondSet |= m.emissiveTexture.present() && m.emissiveTexture.texCoord == 1;
   EXPECT_TRUE(secondSet);
   // TextureTransformTest: rotation 0.392699 rad on one of its materials.
   const Scene transformed = loadSample("TextureTransformTest/glTF/TextureTransformTest.gltf");

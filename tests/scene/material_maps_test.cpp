@@ -45,7 +45,8 @@ TEST(MappedNormal, IsTheTangentFrameTimesTheMapsNormal) {
   const glm::vec3 n(0, 0, 1), t(1, 0, 0);
   EXPECT_NEAR(glm::length(mappedNormal(n, t, 1.0f, texelOf({0, 0, 1}), 1.0f) - n), 0.0f, 1e-6f);
   EXPECT_NEAR(glm::length(mappedNormal(n, t, 1.0f, texelOf({1, 0, 0}), 1.0f) - t), 0.0f, 1e-6f);
-  EXPECT_NEAR(glm::length(mappedNormal(n, t, 1.0f, texelOf({0, 1, 0}), 1.0f) - glm::vec3(0, 1, 0)), 0.0f, 1e-6f);  // b = cross(n, t)
+  EXPECT_NEAR(glm::length(mappedNormal(n, t, 1.0f, texelOf({0, 1, 0}), 1.0f) - glm::vec3(0, 1, 0)), 0.0f,
+              1e-6f);  // b = cross(n, t)
   EXPECT_NEAR(glm::length(mappedNormal(n, t, -1.0f, texelOf({0, 1, 0}), 1.0f) - glm::vec3(0, -1, 0)), 0.0f, 1e-6f);
   // Random frames and texels: the result is normalize(t·m.x + b·m.y + n·m.z) with the scale on x, y.
   std::mt19937 random(3);
@@ -56,7 +57,8 @@ TEST(MappedNormal, IsTheTangentFrameTimesTheMapsNormal) {
     const glm::vec3 m(any(random), any(random), 0.5f + 0.5f * std::abs(any(random)));
     const float scale = 2.0f * std::abs(any(random)), w = any(random) < 0.0f ? -1.0f : 1.0f;
     const glm::vec3 scaled = glm::normalize(glm::vec3(m.x * scale, m.y * scale, m.z));
-    const glm::vec3 expected = glm::normalize(tangent * scaled.x + w * glm::cross(normal, tangent) * scaled.y + normal * scaled.z);
+    const glm::vec3 expected =
+        glm::normalize(tangent * scaled.x + w * glm::cross(normal, tangent) * scaled.y + normal * scaled.z);
     const glm::vec3 got = mappedNormal(3.0f * normal, 0.5f * tangent, w, texelOf(m), scale);  // lengths do not matter
     EXPECT_NEAR(glm::length(got - expected), 0.0f, 1e-5f);
   }

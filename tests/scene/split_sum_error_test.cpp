@@ -29,7 +29,7 @@ EnvironmentImage analyticEnvironment(int width, const std::function<glm::dvec3(c
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const glm::vec3 d = directionFromUv({(static_cast<float>(x) + 0.5f) / static_cast<float>(image.width),
-                                          (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height)});
+                                           (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height)});
       image.at(x, y) = glm::vec3(radiance(glm::dvec3(d)));
     }
   return image;
@@ -43,8 +43,9 @@ glm::dvec3 smoothSky(const glm::dvec3& d) {
 }
 
 // The grid's normals: up, down, towards the image's centre, sideways, and two in between.
-const glm::dvec3 kNormals[] = {{0.0, 1.0, 0.0},  {0.0, -1.0, 0.0}, {0.0, 0.0, -1.0},
-                               {1.0, 0.0, 0.0},  {0.57735, 0.57735, 0.57735}, {-0.32, -0.5, 0.8}};
+const glm::dvec3 kNormals[] = {
+    {0.0, 1.0, 0.0},   {0.0, -1.0, 0.0}, {0.0, 0.0, -1.0}, {1.0, 0.0, 0.0}, {0.57735, 0.57735, 0.57735},
+    {-0.32, -0.5, 0.8}};
 const float kRoughness[] = {0.045f, 0.25f, 0.5f, 0.75f, 1.0f};
 const float kMetallic[] = {0.0f, 1.0f};
 const float kNv[] = {1.0f, 0.7f, 0.3f, 0.1f};
@@ -69,8 +70,8 @@ struct Comparison {
   double relativeStdError;  // the estimate's own standard error, the same way
 };
 
-Comparison compare(const EnvironmentLookup& lookup, const EnvironmentIntegral& integral, const ShadingSurface& s, int samples,
-                   std::uint64_t seed) {
+Comparison compare(const EnvironmentLookup& lookup, const EnvironmentIntegral& integral, const ShadingSurface& s,
+                   int samples, std::uint64_t seed) {
   const RadianceEstimate truth = integral.outgoingRadiance(s, samples, seed);
   const double split = luminance(glm::dvec3(splitSumRadiance(lookup, s)));
   const double mean = luminance(truth.mean);
@@ -160,7 +161,8 @@ Worst smoothSkyGrid(std::initializer_list<float> metallics, float metalRoughness
   settings.diffuseWidth = 32;
   settings.diffuseSourceWidth = 64;
   settings.specularWidth = 64;
-  const EnvironmentLookup lookup(std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(sky, settings)), {});
+  const EnvironmentLookup lookup(std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(sky, settings)),
+                                 {});
   const EnvironmentIntegral integral(sky);
   Worst worst;
   std::uint64_t seed = 1;
@@ -170,9 +172,8 @@ Worst smoothSkyGrid(std::initializer_list<float> metallics, float metalRoughness
         for (const float nv : nvs) {
           if (metallic > 0.0f && roughness > metalRoughnessMax) continue;
           const Comparison c = compare(lookup, integral, surfaceAt(n, nv, roughness, metallic), samples, seed++);
-          EXPECT_LT(std::abs(c.relativeError), bound)
-              << "n (" << n.x << ", " << n.y << ", " << n.z << "), roughness " << roughness << ", metallic " << metallic
-              << ", n·v " << nv;
+          EXPECT_LT(std::abs(c.relativeError), bound) << "n (" << n.x << ", " << n.y << ", " << n.z << "), roughness "
+                                                      << roughness << ", metallic " << metallic << ", n·v " << nv;
           worst.relativeError = std::max(worst.relativeError, std::abs(c.relativeError));
           worst.relativeStdError = std::max(worst.relativeStdError, c.relativeStdError);
         }
@@ -186,8 +187,9 @@ Worst smoothSkyGrid(std::initializer_list<float> metallics, float metalRoughness
 TEST(SplitSumError, SmallOnASmoothEnvironmentAwayFromGrazing) {
   const Worst worst = smoothSkyGrid({0.0f, 1.0f}, 0.25f, {1.0f, 0.7f}, 48000, 0.02);
   EXPECT_LT(worst.relativeStdError, 0.01) << "the integral's own noise is well below the bound";
-  std::printf("split sum on the smooth environment, n·v ≥ 0.7: worst |relative error| %.4f, worst estimate noise %.5f\n",
-              worst.relativeError, worst.relativeStdError);
+  std::printf(
+      "split sum on the smooth environment, n·v ≥ 0.7: worst |relative error| %.4f, worst estimate noise %.5f\n",
+      worst.relativeError, worst.relativeStdError);
 }
 
 // Dielectrics at grazing views (n·v 0.3 and 0.1) on the smooth environment: the image light's
@@ -209,7 +211,8 @@ struct GridRow {
   Comparison c;
 };
 
-std::vector<GridRow> grid(const std::string& name, const EnvironmentLookup& lookup, const EnvironmentImage& source, int samples) {
+std::vector<GridRow> grid(const std::string& name, const EnvironmentLookup& lookup, const EnvironmentImage& source,
+                          int samples) {
   const EnvironmentIntegral integral(source);
   std::vector<GridRow> rows;
   std::uint64_t seed = 1;
@@ -223,8 +226,10 @@ std::vector<GridRow> grid(const std::string& name, const EnvironmentLookup& look
 }
 
 void printSummary(const std::vector<GridRow>& rows, const std::string& name) {
-  std::printf("\n%s: relative error of the split sum, the largest over the six normals (signed) and in brackets the "
-              "median |error|, in %%\n\n", name.c_str());
+  std::printf(
+      "\n%s: relative error of the split sum, the largest over the six normals (signed) and in brackets the "
+      "median |error|, in %%\n\n",
+      name.c_str());
   std::printf("| metallic | roughness | n·v 1 | n·v 0.7 | n·v 0.3 | n·v 0.1 |\n|---|---|---|---|---|---|\n");
   for (const float metallic : kMetallic)
     for (const float roughness : kRoughness) {
@@ -253,7 +258,8 @@ TEST(SplitSumError, DISABLED_Table) {
   const EnvironmentImage sky = analyticEnvironment(256, smoothSky);
   const auto skyMaps = std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(sky, PrefilterSettings{}));
   std::vector<GridRow> rows = grid("smooth", EnvironmentLookup(skyMaps, {}), sky, samples);
-  const std::vector<GridRow> studioRows = grid("studio.hdr", EnvironmentLookup(studio.maps, {}), studio.maps->background, samples);
+  const std::vector<GridRow> studioRows =
+      grid("studio.hdr", EnvironmentLookup(studio.maps, {}), studio.maps->background, samples);
   rows.insert(rows.end(), studioRows.begin(), studioRows.end());
   std::printf("environment,metallic,roughness,n_dot_v,normal_x,normal_y,normal_z,relative_error,relative_std_error\n");
   double worstNoise = 0.0;
@@ -266,8 +272,8 @@ TEST(SplitSumError, DISABLED_Table) {
   printSummary(std::vector<GridRow>(rows.begin(), rows.end() - static_cast<std::ptrdiff_t>(studioRows.size())),
                "smooth environment (256 × 128)");
   printSummary(studioRows, "studio.hdr (1024 × 512)");
-  std::printf("\nthe integral's own noise: at most %.3f %% (relative standard error, %d samples a case)\n", 100.0 * worstNoise,
-              samples);
+  std::printf("\nthe integral's own noise: at most %.3f %% (relative standard error, %d samples a case)\n",
+              100.0 * worstNoise, samples);
 }
 
 }  // namespace

@@ -42,8 +42,8 @@ struct CornerAgreement {
   std::size_t corners = 0;
   std::size_t signDisagreements = 0;  // w differs, and ours is not the triangle's own uv handedness
   std::size_t fileAgainstUv = 0;      // w differs, and the file's is not the triangle's own uv handedness
-  std::size_t zeroInFile = 0;          // the file's tangent of zero length (left out)
-  std::size_t noUvArea = 0;            // corners of a triangle without uv area (left out)
+  std::size_t zeroInFile = 0;         // the file's tangent of zero length (left out)
+  std::size_t noUvArea = 0;           // corners of a triangle without uv area (left out)
 };
 
 glm::dvec2 uvOf(const Vertex& v, int texCoord) { return glm::dvec2(texCoord == 1 ? v.uv1 : v.uv); }
@@ -77,7 +77,8 @@ void compareMesh(const Mesh& file, int texCoord, CornerAgreement& out) {
       ++out.zeroInFile;
       continue;
     }
-    const double cosine = std::clamp(static_cast<double>(glm::dot(glm::normalize(glm::vec3(a)), glm::normalize(glm::vec3(b)))), -1.0, 1.0);
+    const double cosine = std::clamp(
+        static_cast<double>(glm::dot(glm::normalize(glm::vec3(a)), glm::normalize(glm::vec3(b)))), -1.0, 1.0);
     out.anglesDegrees.push_back(std::acos(cosine) * 180.0 / 3.14159265358979323846);
     if ((a.w < 0.0f) != (b.w < 0.0f)) ++((b.w < 0.0f) == (ownW < 0.0f) ? out.fileAgainstUv : out.signDisagreements);
   }
@@ -109,11 +110,13 @@ TEST_P(GltfSampleTangents, AgreeWithTheFilesTangents) {
   }
   const auto& angles = agreement.anglesDegrees;
   ASSERT_FALSE(angles.empty());
-  std::printf("%s: %zu corners (%zu without uv area, %zu zero in the file, not compared); angle (degrees) median %.3g, "
-              "99%% %.3g, 99.9%% %.3g, max %.3g; w differs at %zu, and at %zu where the file's is not the triangle's handedness\n",
-              sample.name.c_str(), agreement.corners, agreement.noUvArea, agreement.zeroInFile, quantile(angles, 0.5),
-              quantile(angles, 0.99), quantile(angles, 0.999), quantile(angles, 1.0), agreement.signDisagreements,
-              agreement.fileAgainstUv);
+  std::printf(
+      "%s: %zu corners (%zu without uv area, %zu zero in the file, not compared); angle (degrees) median %.3g, "
+      "99%% %.3g, 99.9%% %.3g, max %.3g; w differs at %zu, and at %zu where the file's is not the triangle's "
+      "handedness\n",
+      sample.name.c_str(), agreement.corners, agreement.noUvArea, agreement.zeroInFile, quantile(angles, 0.5),
+      quantile(angles, 0.99), quantile(angles, 0.999), quantile(angles, 1.0), agreement.signDisagreements,
+      agreement.fileAgainstUv);
   EXPECT_EQ(agreement.fileAgainstUv, sample.fileAgainstUv) << "corners whose file w contradicts their triangle's uv";
   EXPECT_EQ(agreement.signDisagreements, 0u) << "corners where our w is not the triangle's uv handedness";
   if (sample.mikkTSpace) {
@@ -129,8 +132,10 @@ TEST_P(GltfSampleTangents, AgreeWithTheFilesTangents) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, GltfSampleTangents,
-                         testing::Values(TangentSample{"AlphaBlendModeTest", 0, true, 0}, TangentSample{"MultiUVTest", 1, true, 0},
-                                         TangentSample{"VertexColorTest", 0, true, 6}, TangentSample{"Avocado", 0, false, 3}),
+                         testing::Values(TangentSample{"AlphaBlendModeTest", 0, true, 0},
+                                         TangentSample{"MultiUVTest", 1, true, 0},
+                                         TangentSample{"VertexColorTest", 0, true, 6},
+                                         TangentSample{"Avocado", 0, false, 3}),
                          [](const testing::TestParamInfo<TangentSample>& param) { return param.param.name; });
 
 }  // namespace

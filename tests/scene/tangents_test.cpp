@@ -41,7 +41,9 @@ TEST(Tangents, FlatQuadFollowsDpDu) {
   // uv = 2·R·(x, y) + offset with R a rotation by −30°: P = Rᵀ·(uv − offset) / 2, so ∂P/∂u is
   // Rᵀ's first column, (cos 30°, sin 30°, 0), up to length.
   const float c = std::cos(glm::radians(30.0f)), s = std::sin(glm::radians(30.0f));
-  auto uvAt = [&](float x, float y) { return 2.0f * glm::vec2(c * x + s * y, -s * x + c * y) + glm::vec2(0.3f, -0.1f); };
+  auto uvAt = [&](float x, float y) {
+    return 2.0f * glm::vec2(c * x + s * y, -s * x + c * y) + glm::vec2(0.3f, -0.1f);
+  };
   Mesh m = quad(uvAt(0, 0), uvAt(1, 0), uvAt(1, 1), uvAt(0, 1));
   const TangentStats stats = generateTangents(m, 0);
   EXPECT_TRUE(m.hasTangents);
@@ -140,7 +142,8 @@ Mesh uvSphere(int segments, int rings) {
   Mesh m;
   for (int j = 0; j <= rings; ++j)
     for (int i = 0; i <= segments; ++i) {
-      const float u = static_cast<float>(i) / static_cast<float>(segments), v = static_cast<float>(j) / static_cast<float>(rings);
+      const float u = static_cast<float>(i) / static_cast<float>(segments),
+                  v = static_cast<float>(j) / static_cast<float>(rings);
       const float phi = glm::two_pi<float>() * u, theta = glm::pi<float>() * v;
       const glm::vec3 p(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
       m.vertices.push_back(vertex(p, p, {u, v}));

@@ -78,7 +78,9 @@ Split split(const std::string& cell, BareNumbers bare) {
         if (n == 0 && startsWithWord(rest, "inf")) n = 3;
         if (n > 0 && (n == rest.size() || !wordChar(rest[n]))) {
           const std::string text(rest.substr(0, n));
-          out.figures.push_back({false, text == "inf" ? std::numeric_limits<double>::infinity() : std::strtod(text.c_str(), nullptr), text});
+          out.figures.push_back(
+              {false, text == "inf" ? std::numeric_limits<double>::infinity() : std::strtod(text.c_str(), nullptr),
+               text});
           out.words += "{x}";
           i += n;
           continue;
@@ -175,8 +177,8 @@ std::string cellDifference(const std::string& documented, const std::string& mea
       if (const auto e = f.find("e-0"); e != std::string::npos) f.erase(e + 2, 1);
       std::snprintf(tolerance, sizeof tolerance, "beyond the tolerance (%s within %.0f %% of the larger or within %s)",
                     d.figures[i].psnr ? "RMS errors" : "differences", 100 * kRelativeTolerance, f.c_str());
-      return "figure " + std::to_string(i + 1) + " moved from " + d.figures[i].text + " (the doc) to " + m.figures[i].text +
-             " (this run), " + tolerance;
+      return "figure " + std::to_string(i + 1) + " moved from " + d.figures[i].text + " (the doc) to " +
+             m.figures[i].text + " (this run), " + tolerance;
     }
   return {};
 }

@@ -149,14 +149,16 @@ std::string shortened(const std::string& message) {
 
 Camera physical(const std::string& extra) {
   // `extra` (", key: value, ...") overrides the defaults; a camera file itself refuses a key given twice.
-  nlohmann::json camera = nlohmann::json::parse(R"({"eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 35})");
+  nlohmann::json camera =
+      nlohmann::json::parse(R"({"eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 35})");
   if (!extra.empty()) camera.update(nlohmann::json::parse(cat("{", extra.substr(extra.find(',') + 1), "}")));
   return parseCameraJson(camera.dump(), "stability camera").camera;
 }
 
 Scene moved(const Scene& scene, const glm::dvec3& offset) {
   Scene s = scene;
-  for (Instance& instance : s.instances) instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
+  for (Instance& instance : s.instances)
+    instance.worldFromModel = glm::translate(glm::dmat4(1.0), offset) * instance.worldFromModel;
   s.bounds = computeBounds(s);
   return s;
 }
@@ -172,9 +174,11 @@ void depthRange() {
     addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -z)), z, z, {1, 0, 0});
     addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -z * (1.0 + 1e-5))), z, z, {0, 1, 0});
     scene.bounds = computeBounds(scene);
-    const Camera camera = parseCameraJson(
-        cat(R"({"vrp": [0, 0, -1], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-0.5, -0.5, 0.5, 0.5], "near": 1e-5, "far": "infinity"})"),
-        "depth camera").camera;
+    const Camera camera =
+        parseCameraJson(
+            cat(R"({"vrp": [0, 0, -1], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-0.5, -0.5, 0.5, 0.5], "near": 1e-5, "far": "infinity"})"),
+            "depth camera")
+            .camera;
     for (const bool cast : {false, true}) {
       const Image image = cast ? raycast(scene, camera, {16, 16}, 1) : raster(scene, camera, {16, 16}, 1);
       int red = 0;
@@ -202,7 +206,8 @@ void distanceFromOrigin(const Scene& rowsScene) {
     const double r = psnr(raster(far, c, size, 4), rasterAtOrigin);
     const double k = psnr(raycast(far, c, size, 4), castAtOrigin);
     record("distance from the origin", cat("rows and its camera moved by ", sig(distance)),
-           "each renderer vs itself at the origin ≥ 50 dB", cat("raster ", dB(r), ", ray cast ", dB(k)), r >= 50.0 && k >= 50.0);
+           "each renderer vs itself at the origin ≥ 50 dB", cat("raster ", dB(r), ", ray cast ", dB(k)),
+           r >= 50.0 && k >= 50.0);
   }
 }
 
@@ -215,16 +220,19 @@ void sceneSize(const Scene& rowsScene) {
   const Image castAtOne = raycast(rowsScene, camera, size, 4);
   for (const double scale : {1e-30, 1e-12, 1e6}) {
     Scene small = rowsScene;
-    for (Instance& instance : small.instances) instance.worldFromModel = glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) * instance.worldFromModel;
+    for (Instance& instance : small.instances)
+      instance.worldFromModel = glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) * instance.worldFromModel;
     small.bounds = computeBounds(small);
-    const Camera c = parseCameraJson(cat(R"({"eye": [0, )", scale, ", ", 3 * scale, R"(], "target": [0, )", 0.55 * scale, ", ",
-                                         -2 * scale, R"(], "focal_length_mm": 35, "focus_distance": "infinity"})"),
-                                     "stability camera")
-                         .camera;
+    const Camera c =
+        parseCameraJson(cat(R"({"eye": [0, )", scale, ", ", 3 * scale, R"(], "target": [0, )", 0.55 * scale, ", ",
+                            -2 * scale, R"(], "focal_length_mm": 35, "focus_distance": "infinity"})"),
+                        "stability camera")
+            .camera;
     const double r = psnr(raster(small, c, size, 1), rasterAtOne);
     const double k = psnr(raycast(small, c, size, 4), castAtOne);
-    record("scene size", cat("rows and its pinhole camera scaled by ", sig(scale)), "each renderer vs itself at scale 1 ≥ 40 dB",
-           cat("raster ", dB(r), ", ray cast ", dB(k)), r >= 40.0 && k >= 40.0);
+    record("scene size", cat("rows and its pinhole camera scaled by ", sig(scale)),
+           "each renderer vs itself at scale 1 ≥ 40 dB", cat("raster ", dB(r), ", ray cast ", dB(k)),
+           r >= 40.0 && k >= 40.0);
   }
 }
 
@@ -240,20 +248,24 @@ void focus(const Scene& rowsScene) {
     const double k = psnr(raycast(rowsScene, c, size, 16), castInf);
     const double bound = z >= 1e15 ? 60.0 : 40.0;
     record("focus distance", cat("f/2.8 focused at ", sig(z), " (the same samples as at infinity)"),
-           cat("vs focus at infinity ≥ ", sig(bound), " dB"), cat("raster ", dB(r), ", ray cast ", dB(k)), r >= bound && k >= bound);
+           cat("vs focus at infinity ≥ ", sig(bound), " dB"), cat("raster ", dB(r), ", ray cast ", dB(k)),
+           r >= bound && k >= bound);
   }
   // Just beyond the focal length the image distance is huge and the field of view tiny; the
   // renderers must still agree (and give finite numbers).
-  for (const auto& [z, label] : {std::pair{f * (1.0 + 1e-6), "f·(1 + 1e-6)"}, std::pair{f * 1.01, "1.01 f"}, std::pair{0.5, "0.5 (14.3 f)"}}) {
+  for (const auto& [z, label] :
+       {std::pair{f * (1.0 + 1e-6), "f·(1 + 1e-6)"}, std::pair{f * 1.01, "1.01 f"}, std::pair{0.5, "0.5 (14.3 f)"}}) {
     const Camera c = physical(cat(R"(, "f_number": 2.8, "focus_distance": )", z));
     const Image a = raster(rowsScene, c, size, 64), b = raycast(rowsScene, c, size, 64);
     const double p = psnr(a, b);
-    record("focus distance", cat("f/2.8 (f = 35 mm) focused at ", label), "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
+    record("focus distance", cat("f/2.8 (f = 35 mm) focused at ", label),
+           "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
            cat(finite(a) && finite(b) ? "finite, " : "NOT FINITE, ", dB(p)), finite(a) && finite(b) && p >= 25.0);
   }
   for (const double z : {f, 0.5 * f}) {
     const std::string m = refusal([&] { physical(cat(R"(, "f_number": 2.8, "focus_distance": )", z)); });
-    record("focus distance", cat("focused at ", sig(z / f), " f (no real image)"), "refused in one line", shortened(m), oneLine(m));
+    record("focus distance", cat("focused at ", sig(z / f), " f (no real image)"), "refused in one line", shortened(m),
+           oneLine(m));
   }
 }
 
@@ -266,7 +278,8 @@ void fNumber(const Scene& rowsScene) {
     const double p = psnr(a, b);
     if (n == 1000.0) {
       const double q = psnr(a, pinhole);
-      record("f-number", "f/1000", "vs the pinhole ≥ 45 dB; raster vs ray cast ≥ 25 dB", cat(dB(q), "; ", dB(p)), q >= 45.0 && p >= 25.0);
+      record("f-number", "f/1000", "vs the pinhole ≥ 45 dB; raster vs ray cast ≥ 25 dB", cat(dB(q), "; ", dB(p)),
+             q >= 45.0 && p >= 25.0);
     } else {
       record("f-number", cat("f/", sig(n)), "finite; raster (64 views) vs ray cast (64 spp) ≥ 25 dB",
              cat(finite(a) && finite(b) ? "finite, " : "NOT FINITE, ", dB(p)), finite(a) && finite(b) && p >= 25.0);
@@ -281,17 +294,21 @@ void sampleCounts() {
   const glm::vec3 colour(0.37f, 0.5f, 0.81f);
   addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -2)), 10, 10, colour);
   scene.bounds = computeBounds(scene);
-  Camera c = parseCameraJson(R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-0.5, -0.5, 0.5, 0.5], "aperture_radius": 0.01})",
-                             "constant camera").camera;
+  Camera c =
+      parseCameraJson(
+          R"({"vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 1], "window": [-0.5, -0.5, 0.5, 0.5], "aperture_radius": 0.01})",
+          "constant camera")
+          .camera;
   const std::vector<int> counts = {1024, 4096, 65536};
   for (const int n : counts) {
     const Image image = raster(scene, c, {8, 8}, n);
     double worst = 0.0;
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x)
-        for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(static_cast<double>(image.at(x, y)[ch]) - colour[ch]));
-    record("sample count", cat(n, " accumulated views of a constant colour"), "largest abs(mean − exact) ≤ 1e-4", sig(worst), worst <= 1e-4,
-           BareNumbers::ColourDifference);
+        for (int ch = 0; ch < 3; ++ch)
+          worst = std::max(worst, std::abs(static_cast<double>(image.at(x, y)[ch]) - colour[ch]));
+    record("sample count", cat(n, " accumulated views of a constant colour"), "largest abs(mean − exact) ≤ 1e-4",
+           sig(worst), worst <= 1e-4, BareNumbers::ColourDifference);
   }
 }
 
@@ -317,9 +334,10 @@ void distortion(const Scene& rowsScene) {
     record("distortion", "k1 = 2, k2 = −2 (folds only beyond the image)", "raster vs ray cast ≥ 30 dB", dB(p),
            finite(a) && finite(b) && p >= 30.0);
   }
-  const std::string m = refusal([&] { physical(cat(R"(, "focus_distance": 4, "distortion": {"k1": )", 1.01 * k1Fold, "}")); });
-  record("distortion", cat("k1 = ", sig(1.01 * k1Fold), " (the fold 1 % inside the corner)"), "refused in one line", shortened(m),
-         oneLine(m));
+  const std::string m =
+      refusal([&] { physical(cat(R"(, "focus_distance": 4, "distortion": {"k1": )", 1.01 * k1Fold, "}")); });
+  record("distortion", cat("k1 = ", sig(1.01 * k1Fold), " (the fold 1 % inside the corner)"), "refused in one line",
+         shortened(m), oneLine(m));
 }
 
 // A lecture-form camera as JSON.
@@ -330,13 +348,14 @@ struct References {
   Image raster, raycast;
 };
 
-void bothOrRefused(const std::string& group, const std::string& input, const Scene& scene, const std::function<Camera()>& make,
-                   double minimumDb, const References* reference = nullptr, double referenceDb = 60.0) {
+void bothOrRefused(const std::string& group, const std::string& input, const Scene& scene,
+                   const std::function<Camera()>& make, double minimumDb, const References* reference = nullptr,
+                   double referenceDb = 60.0) {
   Camera camera;
   const std::string m = refusal([&] { camera = make(); });
   if (!m.empty()) {
-    record(group, input, cat("refused in one line, or raster vs ray cast ≥ ", sig(minimumDb), " dB"), cat("refused: ", shortened(m)),
-           oneLine(m));
+    record(group, input, cat("refused in one line, or raster vs ray cast ≥ ", sig(minimumDb), " dB"),
+           cat("refused: ", shortened(m)), oneLine(m));
     return;
   }
   const ImageSize size{96, 64};
@@ -363,68 +382,90 @@ void bothOrRefused(const std::string& group, const std::string& input, const Sce
     ok = ok && q >= referenceDb && s >= referenceDb;
   }
   record(group, input,
-         cat("raster vs ray cast ≥ ", sig(minimumDb), " dB", reference ? cat("; each vs its reference ≥ ", sig(referenceDb), " dB") : ""),
+         cat("raster vs ray cast ≥ ", sig(minimumDb), " dB",
+             reference ? cat("; each vs its reference ≥ ", sig(referenceDb), " dB") : ""),
          measured, ok);
 }
 
 void degenerateCameras(const Scene& rowsScene) {
   const std::string g = "near-degenerate camera";
   for (const double angle : {1e-6, 1e-9}) {
-    bothOrRefused(g, cat("VUP ", sig(angle), " rad from VPN"), rowsScene, [&] {
-      return lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0, 1], "vup": [0, )", std::sin(angle), ", ", std::cos(angle),
-                         R"(], "prp": [0, 0, 5], "window": [-1.5, -1, 1.5, 1], "near": 0.05)"));
-    }, 30.0);
+    bothOrRefused(
+        g, cat("VUP ", sig(angle), " rad from VPN"), rowsScene,
+        [&] {
+          return lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0, 1], "vup": [0, )", std::sin(angle), ", ",
+                             std::cos(angle), R"(], "prp": [0, 0, 5], "window": [-1.5, -1, 1.5, 1], "near": 0.05)"));
+        },
+        30.0);
   }
   // The window scaled with the PRP's distance: the same picture from the same point.
   const auto scaled = [](double w) {
     const double d = 5.0 * w / 3.0;  // window 3 wide at distance 5, scaled to w wide
-    return lecture(cat(R"("vrp": [0, 0.5, )", 3.0 - d, R"(], "vpn": [0, 0, 1], "prp": [0, 0, )", d, R"(], "window": [)", -0.5 * w, ", ",
-                       -w / 3.0, ", ", 0.5 * w, ", ", w / 3.0, R"(], "near": 0.05)"));
+    return lecture(cat(R"("vrp": [0, 0.5, )", 3.0 - d, R"(], "vpn": [0, 0, 1], "prp": [0, 0, )", d, R"(], "window": [)",
+                       -0.5 * w, ", ", -w / 3.0, ", ", 0.5 * w, ", ", w / 3.0, R"(], "near": 0.05)"));
   };
-  const References reference{raster(rowsScene, scaled(3.0), {96, 64}, 16), raycast(rowsScene, scaled(3.0), {96, 64}, 16)};
+  const References reference{raster(rowsScene, scaled(3.0), {96, 64}, 16),
+                             raycast(rowsScene, scaled(3.0), {96, 64}, 16)};
   for (const double w : {1e-9, 1e-3, 1e3, 1e6})
-    bothOrRefused(g, cat("window ", sig(w), " wide (PRP distance scaled with it; reference 3 wide)"), rowsScene,
-                  [&] { return scaled(w); }, 30.0, &reference, 60.0);
+    bothOrRefused(
+        g, cat("window ", sig(w), " wide (PRP distance scaled with it; reference 3 wide)"), rowsScene,
+        [&] { return scaled(w); }, 30.0, &reference, 60.0);
   for (const double n : {1e-9, 1e-4, 1e-3, 1e3, 1e9}) {
     // A PRP n from the view plane through the middle of the rows: from 1e9 away a telephoto.
-    bothOrRefused(g, cat("PRP n = ", sig(n)), rowsScene, [&] {
-      return lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", n, R"(], "window": [-3, -2, 3, 2])"));
-    }, 30.0);
+    bothOrRefused(
+        g, cat("PRP n = ", sig(n)), rowsScene,
+        [&] {
+          return lecture(
+              cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", n, R"(], "window": [-3, -2, 3, 2])"));
+        },
+        30.0);
   }
   {
     // At PRP n = 1e9 the projection is all but parallel: compare with the parallel projection.
-    const Camera parallel = lecture(R"("projection": "parallel", "vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, 1e9],
+    const Camera parallel =
+        lecture(R"("projection": "parallel", "vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, 1e9],
                                        "window": [-3, -2, 3, 2], "near": 999999950, "far": 1000000050)");
     const References ref{raster(rowsScene, parallel, {96, 64}, 16), raycast(rowsScene, parallel, {96, 64}, 16)};
-    bothOrRefused(g, "PRP n = 1e9 vs the parallel projection", rowsScene, [&] {
-      return lecture(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, 1e9], "window": [-3, -2, 3, 2])");
-    }, 30.0, &ref, 30.0);
+    bothOrRefused(
+        g, "PRP n = 1e9 vs the parallel projection", rowsScene,
+        [&] {
+          return lecture(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, 1e9], "window": [-3, -2, 3, 2])");
+        },
+        30.0, &ref, 30.0);
   }
   // Oblique parallel: the DOP 89.99° from the view-plane normal.
-  bothOrRefused(g, "oblique parallel, DOP 89.99° from the normal", rowsScene, [&] {
-    // Tilted toward the floor, so that the nearly grazing rays meet it along a strip at z ≈ −2.
-    const double t = std::tan((90.0 - 0.01) * std::numbers::pi / 180.0);
-    return lecture(cat(R"("projection": "parallel", "vrp": [0, 0.5, -2], "vpn": [0, 0, 1], "prp": [0, )", 5.0 * t,
-                       R"(, 5], "window": [-3, -2, 3, 2], "near": -40, "far": 40)"));
-  }, 30.0);
-  bothOrRefused(g, "parallel with near = -1", rowsScene, [&] {
-    return lecture(R"("projection": "parallel", "vrp": [0, 0.5, 0.5], "vpn": [0, 0.3, 1], "prp": [0, 0, 1], "window": [-3, -2, 3, 2], "near": -1, "far": 60)");
-  }, 30.0);
+  bothOrRefused(
+      g, "oblique parallel, DOP 89.99° from the normal", rowsScene,
+      [&] {
+        // Tilted toward the floor, so that the nearly grazing rays meet it along a strip at z ≈ −2.
+        const double t = std::tan((90.0 - 0.01) * std::numbers::pi / 180.0);
+        return lecture(cat(R"("projection": "parallel", "vrp": [0, 0.5, -2], "vpn": [0, 0, 1], "prp": [0, )", 5.0 * t,
+                           R"(, 5], "window": [-3, -2, 3, 2], "near": -40, "far": 40)"));
+      },
+      30.0);
+  bothOrRefused(
+      g, "parallel with near = -1", rowsScene,
+      [&] {
+        return lecture(
+            R"("projection": "parallel", "vrp": [0, 0.5, 0.5], "vpn": [0, 0.3, 1], "prp": [0, 0, 1], "window": [-3, -2, 3, 2], "near": -1, "far": 60)");
+      },
+      30.0);
 }
 
 void imageSizes(const Scene& rowsScene, bool longRun) {
   const Camera camera = prepared(physical(R"(, "focus_distance": 4)"), rowsScene);
   const Image a = raster(rowsScene, camera, {1, 1}, 1024), b = raycast(rowsScene, camera, {1, 1}, 1024);
   const double diff = compareImages(a, b, 0.0).maxAbs;
-  record("image size", "1 × 1", "raster (1024 views) vs ray cast (1024 spp) within 0.01", sig(diff), finite(a) && finite(b) && diff <= 0.01,
-         BareNumbers::ColourDifference);
+  record("image size", "1 × 1", "raster (1024 views) vs ray cast (1024 spp) within 0.01", sig(diff),
+         finite(a) && finite(b) && diff <= 0.01, BareNumbers::ColourDifference);
   // Tiles: the same samples through sub-windows of the same view plane must give the same image.
   const Camera lens = prepared(physical(R"(, "focus_distance": 2, "f_number": 2.8)"), rowsScene);
   for (const ImageSize size : {ImageSize{600, 400}, ImageSize{2400, 1600}}) {
     // Planning is cheap: a skipped row is still named, so that the doc check knows it.
     const FramePlan plan = makeFramePlan(rowsScene, lens, size, PlanOptions{AperturePattern::Concentric, 16, 16, 3});
     const TilePlan tiles = planTiles(lens, size, plan, queryRenderTargetLimits(), size.widthPx / 5);
-    const std::string input = cat(size.widthPx, " × ", size.heightPx, " f/2.8 in ", tiles.tiles.size(), " forced tiles");
+    const std::string input =
+        cat(size.widthPx, " × ", size.heightPx, " f/2.8 in ", tiles.tiles.size(), " forced tiles");
     const std::string bound = "tiled vs untiled (same samples) ≥ 60 dB";
     if (size.widthPx > 600 && !longRun) {
       skipped.push_back({"image size", input, bound, "", true});
@@ -441,7 +482,8 @@ void imageSizes(const Scene& rowsScene, bool longRun) {
   const ImageSize big = resolveImageSize(camera, 20000, std::nullopt);
   const FramePlan plan = makeFramePlan(rowsScene, camera, big, PlanOptions{AperturePattern::Concentric, 1, 1, 3});
   const TilePlan tiles = planTiles(camera, big, plan, queryRenderTargetLimits(), 0);
-  const std::string input = cat(big.widthPx, " × ", big.heightPx, " in ", tiles.tiles.size(), " tiles (GL's limit: one 4096² target)");
+  const std::string input =
+      cat(big.widthPx, " × ", big.heightPx, " in ", tiles.tiles.size(), " tiles (GL's limit: one 4096² target)");
   const std::string bound = "every pixel once, finite";
   if (!longRun) {
     skipped.push_back({"image size", input, bound, "", true});
@@ -454,7 +496,8 @@ void imageSizes(const Scene& rowsScene, bool longRun) {
     pixels += std::int64_t{block.width} * block.height;
     allFinite = allFinite && finite(block);
   });
-  record("image size", input, bound, cat(pixels, " of ", big.pixelCount(), " pixels", allFinite ? ", finite" : ", NOT FINITE"),
+  record("image size", input, bound,
+         cat(pixels, " of ", big.pixelCount(), " pixels", allFinite ? ", finite" : ", NOT FINITE"),
          allFinite && pixels == big.pixelCount());
 }
 
@@ -476,12 +519,14 @@ fs::path triangleFile(const fs::path& dir, double y) {
   }
   const float lo[3] = {-2.0f, -2.0f, -5.0f}, hi[3] = {2.0f, v[7], -5.0f};
   const fs::path file = dir / cat("triangle-", sig(y), ".gltf");
-  std::ofstream(file) << cat(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  std::ofstream(file) << cat(
+      R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [)", lo[0], ", ", lo[1], ", ", lo[2],
-                             "], \"max\": [", hi[0], ", ", hi[1], ", ", hi[2], R"(]}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [)",
+      lo[0], ", ", lo[1], ", ", lo[2], "], \"max\": [", hi[0], ", ", hi[1], ", ", hi[2], R"(]}],
     "bufferViews": [{"buffer": 0, "byteLength": 36}],
-    "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)", b64, R"("}]})");
+    "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)",
+      b64, R"("}]})");
   return file;
 }
 
@@ -494,12 +539,13 @@ void vertexValues() {
     const Image a = raster(scene, camera, {64, 64}, 16), b = raycast(scene, camera, {64, 64}, 16);
     const double p = psnr(a, b);
     record("vertex values", cat("a triangle with its apex at y = ", sig(x)), "raster vs ray cast ≥ 30 dB",
-           cat(blank(a) || blank(b) ? "BLANK, " : "", dB(p)), finite(a) && finite(b) && !blank(a) && !blank(b) && p >= 30.0);
+           cat(blank(a) || blank(b) ? "BLANK, " : "", dB(p)),
+           finite(a) && finite(b) && !blank(a) && !blank(b) && p >= 30.0);
   }
   for (const double x : {1e16, 1e38}) {
     const std::string m = refusal([&] { loadGltf(triangleFile(dir, x)); });
-    record("vertex values", cat("a vertex at y = ", sig(x), " (beyond ±", sig(kMaxWorldCoordinate), ")"), "refused in one line",
-           shortened(m.substr(m.find(": ") + 2)), oneLine(m));
+    record("vertex values", cat("a vertex at y = ", sig(x), " (beyond ±", sig(kMaxWorldCoordinate), ")"),
+           "refused in one line", shortened(m.substr(m.find(": ") + 2)), oneLine(m));
   }
   fs::remove_all(dir);
 }
@@ -507,7 +553,8 @@ void vertexValues() {
 // ---- lens-effect extremes (fx-framing): planes of focus inside the focal length, distortion
 // beyond what the raster can place at the image's resolution ----
 void lensExtremes(const Scene& rowsScene) {
-  for (const char* effect : {R"("chromatic": {"focus_distance_red": 1e-200})", R"("field_curvature": {"corner_focus_distance": 1e-200})"}) {
+  for (const char* effect :
+       {R"("chromatic": {"focus_distance_red": 1e-200})", R"("field_curvature": {"corner_focus_distance": 1e-200})"}) {
     const std::string m = refusal([&] { physical(cat(R"(, "focus_distance": 2, "f_number": 1.4, )", effect)); });
     record("lens extremes", cat(effect, " on a 35 mm lens"), "refused in one line", shortened(m), oneLine(m));
   }
@@ -515,8 +562,8 @@ void lensExtremes(const Scene& rowsScene) {
     return prepared(physical(cat(R"(, "focus_distance": 4, "distortion": {"k1": )", k1, "}")), rowsScene);
   };
   const std::string m = refusal([&] { makeFramePlan(rowsScene, distorted(1e6), {64, 43}); });
-  record("lens extremes", "distortion k1 = 1e6 at 64 px (the raster's samples would land 200 px astray)", "refused in one line",
-         shortened(m), oneLine(m));
+  record("lens extremes", "distortion k1 = 1e6 at 64 px (the raster's samples would land 200 px astray)",
+         "refused in one line", shortened(m), oneLine(m));
   // Just inside the limit at this width: magnified about 10× at the corners, so the raster needs
   // many views for every pixel to receive samples, but it converges to the ray caster's image.
   const ImageSize size{96, 64};
@@ -524,7 +571,8 @@ void lensExtremes(const Scene& rowsScene) {
   const Image a = raster(rowsScene, c, size, 256), b = raycast(rowsScene, c, size, 256);
   const double p = psnr(a, b);
   record("lens extremes", "distortion k1 = 100 at 96 px", "raster (256 views) vs ray cast (256 spp) ≥ 30 dB",
-         cat(dB(p), " (samples ", sig(ThinLensMap(c, size).forwardLinearisationErrorPx()), " px from the linear map)"), finite(a) && finite(b) && p >= 30.0);
+         cat(dB(p), " (samples ", sig(ThinLensMap(c, size).forwardLinearisationErrorPx()), " px from the linear map)"),
+         finite(a) && finite(b) && p >= 30.0);
 }
 
 // ---- ends of the scales (fx-scales2): a field of view down to 1e-9 rad, the view plane down to
@@ -546,19 +594,21 @@ void scaleExtremes(const Scene& rowsScene) {
     agree(cat("a patch of one colour at field of view ", sig(fov), " rad by focal_length_mm ", sig(24.0 / fov)),
           physical(cat(R"(, "focus_distance": "infinity", "focal_length_mm": )", 24.0 / fov)), 50.0);
     agree(cat("a patch of one colour at field of view ", sig(fov), " rad by sensor_mm (35 mm lens)"),
-          physical(cat(R"(, "focus_distance": "infinity", "sensor_mm": [)", 1.5 * 35.0 * fov, ", ", 35.0 * fov, "]")), 50.0);
+          physical(cat(R"(, "focus_distance": "infinity", "sensor_mm": [)", 1.5 * 35.0 * fov, ", ", 35.0 * fov, "]")),
+          50.0);
   }
   {
     const std::string m = refusal([&] { physical(R"(, "focus_distance": "infinity", "focal_length_mm": 2.4e14)"); });
-    record(g, "field of view 1e-13 rad by focal_length_mm 2.4e+14 (below the narrowest drawn, 1e-12 rad)", "refused in one line",
-           shortened(m), oneLine(m));
+    record(g, "field of view 1e-13 rad by focal_length_mm 2.4e+14 (below the narrowest drawn, 1e-12 rad)",
+           "refused in one line", shortened(m), oneLine(m));
   }
   // A box's corner at the centre (its top and right edges and the floor beyond): under a narrow
   // field the projection is all but affine, so the picture does not depend on the field of view.
   // The ray caster finds edges in Embree's float (about 1e-7 of the distance), so its image at
   // 1e-5 rad is the reference for the raster's at 1e-7 and 1e-9 rad.
   const auto corner = [&](double fov) {
-    return physical(cat(R"(, "target": [1, 0.5, -0.75], "focus_distance": "infinity", "focal_length_mm": )", 24.0 / fov));
+    return physical(
+        cat(R"(, "target": [1, 0.5, -0.75], "focus_distance": "infinity", "focal_length_mm": )", 24.0 / fov));
   };
   const Image reference = raycast(rowsScene, corner(1e-5), size, 4);
   agree("a box corner at field of view 1e-5 rad", corner(1e-5), 30.0);
@@ -575,15 +625,18 @@ void scaleExtremes(const Scene& rowsScene) {
     const std::string input =
         cat("PRP n = ", sig(n), n == kMinPrpDistance ? " (the smallest accepted)" : "", ", window 6n × 4n");
     const std::string m = refusal([&] {
-      agree(input, lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", n, R"(], "window": [)", -3 * n, ", ", -2 * n,
-                               ", ", 3 * n, ", ", 2 * n, "]")), 30.0, 16);
+      agree(input,
+            lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", n, R"(], "window": [)", -3 * n,
+                        ", ", -2 * n, ", ", 3 * n, ", ", 2 * n, "]")),
+            30.0, 16);
     });
-    if (!m.empty()) record(g, input, "raster (16 views) vs ray cast (16 spp) ≥ 30 dB", cat("refused: ", shortened(m)), false);
+    if (!m.empty())
+      record(g, input, "raster (16 views) vs ray cast (16 spp) ≥ 30 dB", cat("refused: ", shortened(m)), false);
   }
   const double below = 0.1 * kMinPrpDistance;
   const std::string m = refusal([&] {
-    lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", below, R"(], "window": [)", -3 * below, ", ", -2 * below,
-                ", ", 3 * below, ", ", 2 * below, "]"));
+    lecture(cat(R"("vrp": [0, 0.5, -2], "vpn": [0, 0.2, 1], "prp": [0, 0, )", below, R"(], "window": [)", -3 * below,
+                ", ", -2 * below, ", ", 3 * below, ", ", 2 * below, "]"));
   });
   record(g, cat("PRP n = ", sig(below)), "refused in one line", shortened(m), oneLine(m));
 }
@@ -597,8 +650,8 @@ std::string markdown() {
   s << "| | case | bound | measured |\n|---|---|---|---|\n";
   std::string group;
   for (const Row& r : rows) {
-    s << "| " << (r.group != group ? r.group : "") << " | " << escapeCell(r.input) << " | " << escapeCell(r.bound) << " | "
-      << escapeCell(measuredCell(r)) << " |\n";
+    s << "| " << (r.group != group ? r.group : "") << " | " << escapeCell(r.input) << " | " << escapeCell(r.bound)
+      << " | " << escapeCell(measuredCell(r)) << " |\n";
     group = r.group;
   }
   return s.str();
@@ -619,7 +672,8 @@ int checkDoc(const fs::path& doc, const std::vector<stability::TableRow>& docume
   for (const Row& r : rows) {
     const auto d = std::find_if(documented.begin(), documented.end(), [&](const auto& x) { return same(x, r); });
     if (d == documented.end()) {
-      std::cerr << doc.string() << ": missing row: " << rowName(r.group, r.input, r.bound) << " | " << measuredCell(r) << "\n";
+      std::cerr << doc.string() << ": missing row: " << rowName(r.group, r.input, r.bound) << " | " << measuredCell(r)
+                << "\n";
       ++stale;
     } else if (const std::string why = stability::cellDifference(d->measured, measuredCell(r), r.bare); !why.empty()) {
       std::cerr << doc.string() << ": " << rowName(r.group, r.input, r.bound) << ": " << why << "\n";
@@ -631,16 +685,19 @@ int checkDoc(const fs::path& doc, const std::vector<stability::TableRow>& docume
       return std::any_of(list.begin(), list.end(), [&](const Row& r) { return same(d, r); });
     };
     if (!known(rows) && !known(skipped)) {
-      std::cerr << doc.string() << ": a row this program does not produce: " << rowName(d.group, d.input, d.bound) << "\n";
+      std::cerr << doc.string() << ": a row this program does not produce: " << rowName(d.group, d.input, d.bound)
+                << "\n";
       ++stale;
     }
   }
   if (stale)
-    std::cerr << doc.string() << ": " << stale << (stale == 1 ? " row" : " rows")
-              << " of the stability table not matching this run; regenerate the table with tools/update-stability-table.sh"
-              << " (it runs lenslab_stability --long and rewrites the table)\n";
+    std::cerr
+        << doc.string() << ": " << stale << (stale == 1 ? " row" : " rows")
+        << " of the stability table not matching this run; regenerate the table with tools/update-stability-table.sh"
+        << " (it runs lenslab_stability --long and rewrites the table)\n";
   else
-    std::cout << doc.string() << ": the stability table matches this run (" << rows.size() << " rows compared, " << skipped.size()
+    std::cout << doc.string() << ": the stability table matches this run (" << rows.size() << " rows compared, "
+              << skipped.size()
               << " slow rows not run; figures within the tolerances of tests/stability/TableCheck.h)\n";
   return stale ? 1 : 0;
 }
@@ -650,9 +707,12 @@ int run(int argc, char** argv) {
   std::string markdownFile, doc;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--long") longRun = true;
-    else if (a == "--markdown" && i + 1 < argc) markdownFile = argv[++i];
-    else if (a == "--check-doc" && i + 1 < argc) doc = argv[++i];
+    if (a == "--long")
+      longRun = true;
+    else if (a == "--markdown" && i + 1 < argc)
+      markdownFile = argv[++i];
+    else if (a == "--check-doc" && i + 1 < argc)
+      doc = argv[++i];
     else {
       std::cerr << "usage: lenslab_stability [--long] [--markdown FILE] [--check-doc docs/stability.md]\n";
       return 2;
@@ -662,7 +722,9 @@ int run(int argc, char** argv) {
   std::vector<stability::TableRow> documented;
   if (!doc.empty()) {
     std::ifstream in(doc);
-    if (!in) throw InputError(cat("--check-doc ", doc, ": cannot read the file; give the page that holds the table (docs/stability.md)"));
+    if (!in)
+      throw InputError(
+          cat("--check-doc ", doc, ": cannot read the file; give the page that holds the table (docs/stability.md)"));
     std::stringstream text;
     text << in.rdbuf();
     documented = stability::parseDocTable(text.str(), doc);
@@ -670,7 +732,8 @@ int run(int argc, char** argv) {
   const auto context = createHeadlessContext(Backend::OSMesa);
   // Which SIMD paths made these figures (llvmpipe names its vector width; Embree's is forced here).
   const char* embree = std::getenv("LENSLAB_EMBREE_CONFIG");
-  std::cout << "GL: " << context->renderer() << "; Embree config: " << (embree && *embree ? embree : "(default)") << "\n";
+  std::cout << "GL: " << context->renderer() << "; Embree config: " << (embree && *embree ? embree : "(default)")
+            << "\n";
   const auto start = std::chrono::steady_clock::now();
   const Scene rowsScene = loadGltf(kAssets / "rows/rows.gltf");
   depthRange();

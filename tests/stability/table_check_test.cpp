@@ -16,7 +16,7 @@ bool same(const std::string& documented, const std::string& measured, BareNumber
 TEST(TableCheck, PsnrFiguresCompareWithinAboutTwoDecibels) {
   EXPECT_TRUE(same("finite, 26.4 dB", "finite, 26.4 dB"));
   EXPECT_TRUE(same("finite, 26.4 dB", "finite, 26.1 dB"));  // llvmpipe without SSE
-  EXPECT_TRUE(same("44.1 dB", "42.7 dB"));  // Embree's SSE2 path on an AMD EPYC
+  EXPECT_TRUE(same("44.1 dB", "42.7 dB"));                  // Embree's SSE2 path on an AMD EPYC
   EXPECT_TRUE(same("33.5 dB", "35.2 dB"));
   EXPECT_FALSE(same("33.5 dB", "35.6 dB"));
   EXPECT_FALSE(same("33.5 dB", "31.4 dB"));
@@ -63,19 +63,21 @@ TEST(TableCheck, ColourDifferencesCompareRelativelyAboveTheRoundingFloor) {
 }
 
 TEST(TableCheck, TheDifferenceSaysWhatMoved) {
-  const std::string why = cellDifference("raster 33.5 dB, ray cast 40.0 dB", "raster 33.5 dB, ray cast 36.0 dB", BareNumbers::Exact);
+  const std::string why =
+      cellDifference("raster 33.5 dB, ray cast 40.0 dB", "raster 33.5 dB, ray cast 36.0 dB", BareNumbers::Exact);
   EXPECT_NE(why.find("40.0 dB"), std::string::npos) << why;
   EXPECT_NE(why.find("36.0 dB"), std::string::npos) << why;
   EXPECT_EQ(why.find('\n'), std::string::npos) << why;
 }
 
 TEST(TableCheck, ReadsTheTableBetweenItsMarkers) {
-  const std::string doc = "# page\n\n| not | the | table | row |\n<!-- stability-table:begin -->\n"
-                          "| | case | bound | measured |\n|---|---|---|---|\n"
-                          "| focus | f/2.8 | ≥ 40 dB | raster 105.7 dB |\n"
-                          "|  | f \\| 2 | refused in one line | a \\| b |\n"
-                          "| depth | z | 100 % | 100 % |\n"
-                          "<!-- stability-table:end -->\n| after | the | table | row |\n";
+  const std::string doc =
+      "# page\n\n| not | the | table | row |\n<!-- stability-table:begin -->\n"
+      "| | case | bound | measured |\n|---|---|---|---|\n"
+      "| focus | f/2.8 | ≥ 40 dB | raster 105.7 dB |\n"
+      "|  | f \\| 2 | refused in one line | a \\| b |\n"
+      "| depth | z | 100 % | 100 % |\n"
+      "<!-- stability-table:end -->\n| after | the | table | row |\n";
   const std::vector<TableRow> rows = parseDocTable(doc, "page.md");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].group, "focus");

@@ -17,8 +17,8 @@ namespace {
 using test::rowsDof;
 
 void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
-  EXPECT_NEAR(glm::length(a - b), 0.0, tolerance) << "(" << a.x << " " << a.y << " " << a.z << ") vs (" << b.x << " "
-                                                  << b.y << " " << b.z << ")";
+  EXPECT_NEAR(glm::length(a - b), 0.0, tolerance)
+      << "(" << a.x << " " << a.y << " " << a.z << ") vs (" << b.x << " " << b.y << " " << b.z << ")";
 }
 
 TEST(ViewNavigation, OrbitKeepsThePivotAndTheShape) {

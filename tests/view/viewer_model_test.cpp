@@ -93,7 +93,9 @@ TEST(ViewerModel, EditsCheckedOnTheSpotAreRefusedWithoutARestart) {
   EXPECT_TRUE(f.model.camera().camera.lens.effects.isZero());
 
   // A click on the background: nothing to focus on, said in the click's words.
-  const DepthAtPixel nothing = [](const Camera&, ImageSize, int, int) { return std::numeric_limits<double>::infinity(); };
+  const DepthAtPixel nothing = [](const Camera&, ImageSize, int, int) {
+    return std::numeric_limits<double>::infinity();
+  };
   EXPECT_FALSE(f.model.clickAt({10.0, 10.0}, nothing));
   EXPECT_EQ(f.model.error().rfind("click at image pixel", 0), 0u) << f.model.error();
   EXPECT_FALSE(f.model.needsRestart());
@@ -158,22 +160,30 @@ TEST(ViewerModel, EveryChangeRestartsTheAccumulation) {
   const std::vector<std::pair<const char*, std::function<void(ViewerModel&)>>> changes = {
       {"orbit", [](ViewerModel& m) { m.orbit(0.1, -0.05); }},
       {"look around", [](ViewerModel& m) { m.lookAround(-0.1, 0.05); }},
-      {"fly", [](ViewerModel& m) { m.fly({1.0, 0.0, 1.0}, 0.016, true); }},
+      {"fly",
+       [](ViewerModel& m) {
+         m.fly({1.0, 0.0, 1.0}, 0.016, true);
+       }},
       {"wheel", [](ViewerModel& m) { m.moveForward(2.0); }},
       {"lecture edit", [](ViewerModel& m) { m.editLecture(m.camera().camera); }},
       {"refocus", [](ViewerModel& m) { m.refocus(2.5); }},
       {"physical edit", [&](ViewerModel& m) { m.editPhysical(lens); }},
-      {"lens effects", [](ViewerModel& m) {
+      {"lens effects",
+       [](ViewerModel& m) {
          LensEffects e;
          e.distortion.k1 = -0.05;
          m.editLensEffects(e);
        }},
-      {"plan options", [](ViewerModel& m) {
+      {"plan options",
+       [](ViewerModel& m) {
          PlanOptions o = m.planOptions();
          o.apertureSamples = 5;
          m.setPlanOptions(o);
        }},
-      {"click", [&](ViewerModel& m) { ASSERT_TRUE(m.clickAt({80.0, 50.0}, atThree)); }},
+      {"click",
+       [&](ViewerModel& m) {
+         ASSERT_TRUE(m.clickAt({80.0, 50.0}, atThree));
+       }},
   };
   for (const auto& [name, change] : changes) {
     ASSERT_FALSE(f.model.needsRestart()) << name;

@@ -25,7 +25,8 @@ void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   o->require("distance_mm", "barrel");
   o->require("diameter_mm", "barrel");
   const double distance = o->number("distance_mm"), diameter = o->number("diameter_mm");
-  if (const std::optional<BarrelProblem> problem = barrelProblem(distance, diameter)) o->fail(problem->field, problem->message);
+  if (const std::optional<BarrelProblem> problem = barrelProblem(distance, diameter))
+    o->fail(problem->field, problem->message);
   if (!frame.perspective) camera.fail("barrel", "needs a perspective projection");
   lens.barrel = barrelFromMillimetres(distance, diameter);
 }
@@ -44,11 +45,13 @@ void interpolate(const Lens& a, const Lens&, double, Lens& out) { out.barrel = a
 void plan(const Lens& lens, const PlanView& view, EffectNeeds& needs) {
   const LensBarrel& b = lens.barrel;
   if (!lens.hasBarrel()) return;
-  const double seen = lens.apertureRadius * apertureReach(lens.aperture) * std::abs(1.0 - b.distance * view.inverseFocus);
+  const double seen =
+      lens.apertureRadius * apertureReach(lens.aperture) * std::abs(1.0 - b.distance * view.inverseFocus);
   if (!(b.distance * view.farthestCornerSlope + seen > b.radius)) return;
   needs.minApertureSamples = std::max(needs.minApertureSamples, kBarrelMinSamples);
-  needs.minSamplesWhy = "the lens barrel hides part of the aperture toward the corners (cat's-eye vignetting), a share "
-                        "resolved by that many aperture points";
+  needs.minSamplesWhy =
+      "the lens barrel hides part of the aperture toward the corners (cat's-eye vignetting), a share "
+      "resolved by that many aperture points";
 }
 
 }  // namespace

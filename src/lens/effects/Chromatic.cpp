@@ -34,14 +34,16 @@ std::array<double, 2> inverseFocusShiftsFromAbbe(double abbeNumber, double focal
 
 namespace {
 
-const std::set<std::string> kKeys = {"lateral_red", "lateral_blue", "focus_distance_red", "focus_distance_blue", "abbe_number"};
+const std::set<std::string> kKeys = {"lateral_red", "lateral_blue", "focus_distance_red", "focus_distance_blue",
+                                     "abbe_number"};
 
 void readAbbe(const KeyReader& o, const LensFrame& frame, Chromatic& c) {
   if (o.has("focus_distance_red") || o.has("focus_distance_blue"))
     o.fail("abbe_number", "and focus_distance_red/blue both set the axial aberration; give one");
   if (!frame.focalLength)
-    o.fail("abbe_number", "needs the physical form (its focal_length_mm); in this form give "
-                          "focus_distance_red and focus_distance_blue");
+    o.fail("abbe_number",
+           "needs the physical form (its focal_length_mm); in this form give "
+           "focus_distance_red and focus_distance_blue");
   const double abbe = o.number("abbe_number");
   if (!(abbe > 0.0)) o.fail("abbe_number", cat("is ", abbe, "; glasses have Abbe numbers of about 20 to 90"));
   const auto shifts = inverseFocusShiftsFromAbbe(abbe, *frame.focalLength);
@@ -56,8 +58,10 @@ void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   if (o->has("lateral_red")) c.lateralRed = o->number("lateral_red");
   if (o->has("lateral_blue")) c.lateralBlue = o->number("lateral_blue");
   if (o->has("abbe_number")) readAbbe(*o, frame, c);
-  if (o->has("focus_distance_red")) c.inverseFocusShiftRed = inverseOfDistance(*o, "focus_distance_red") - frame.inverseFocus;
-  if (o->has("focus_distance_blue")) c.inverseFocusShiftBlue = inverseOfDistance(*o, "focus_distance_blue") - frame.inverseFocus;
+  if (o->has("focus_distance_red"))
+    c.inverseFocusShiftRed = inverseOfDistance(*o, "focus_distance_red") - frame.inverseFocus;
+  if (o->has("focus_distance_blue"))
+    c.inverseFocusShiftBlue = inverseOfDistance(*o, "focus_distance_blue") - frame.inverseFocus;
 }
 
 void write(const Lens& lens, const LensFrame& frame, KeyWriter& camera) {
@@ -67,8 +71,10 @@ void write(const Lens& lens, const LensFrame& frame, KeyWriter& camera) {
   if (c.lateralRed != 0.0) o.number("lateral_red", c.lateralRed);
   if (c.lateralBlue != 0.0) o.number("lateral_blue", c.lateralBlue);
   if (c.hasAxial()) {
-    o.distance("focus_distance_red", distanceForInverse(frame.inverseFocus + c.inverseFocusShiftRed, frame, "chromatic.focus_distance_red"));
-    o.distance("focus_distance_blue", distanceForInverse(frame.inverseFocus + c.inverseFocusShiftBlue, frame, "chromatic.focus_distance_blue"));
+    o.distance("focus_distance_red",
+               distanceForInverse(frame.inverseFocus + c.inverseFocusShiftRed, frame, "chromatic.focus_distance_red"));
+    o.distance("focus_distance_blue", distanceForInverse(frame.inverseFocus + c.inverseFocusShiftBlue, frame,
+                                                         "chromatic.focus_distance_blue"));
   }
 }
 

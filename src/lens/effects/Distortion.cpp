@@ -37,8 +37,7 @@ Radial radial(const Distortion& d, double r) {
 }  // namespace
 
 bool Distortion::isZero() const {
-  return k1 == 0.0 && k2 == 0.0 && p1 == 0.0 && p2 == 0.0 && k3 == 0.0 && alpha == 0.0 && beta == 0.0 &&
-         gamma == 0.0;
+  return k1 == 0.0 && k2 == 0.0 && p1 == 0.0 && p2 == 0.0 && k3 == 0.0 && alpha == 0.0 && beta == 0.0 && gamma == 0.0;
 }
 
 glm::dvec2 Distortion::distort(glm::dvec2 undistorted) const {
@@ -151,7 +150,6 @@ std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 di
   return nearest;
 }
 
-
 namespace {
 
 const std::set<std::string> kKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
@@ -163,7 +161,8 @@ Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
   const std::size_t n = r.arraySize(key);
   if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
     r.fail(key, cat("as an array is OpenCV's distCoeffs [k1, k2, p1, p2] or [k1, k2, p1, p2, k3] (or the 8, 12 or 14 "
-                    "of the fuller models), not ", excerpt(r.text(key))));
+                    "of the fuller models), not ",
+                    excerpt(r.text(key))));
   std::vector<double> c(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::optional<double> value = r.element(key, i);
@@ -173,7 +172,8 @@ Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
   static const char* const kBeyond[] = {"k4", "k5", "k6", "s1", "s2", "s3", "s4", "tauX", "tauY"};
   for (std::size_t i = 5; i < n; ++i)
     if (c[i] != 0.0)
-      r.fail(key, cat("has ", kBeyond[i - 5], " = ", c[i], " (element ", i, "); lenslab's lens model is OpenCV's k1, k2, p1, "
+      r.fail(key, cat("has ", kBeyond[i - 5], " = ", c[i], " (element ", i,
+                      "); lenslab's lens model is OpenCV's k1, k2, p1, "
                       "p2, k3: the rational, thin-prism and tilt terms must be 0"));
   Distortion d;
   d.k1 = c[0], d.k2 = c[1], d.p1 = c[2], d.p2 = c[3], d.k3 = n > 4 ? c[4] : 0.0;
@@ -184,7 +184,8 @@ void read(const KeyReader& r, const LensFrame&, Lens& lens) {
   Distortion& d = lens.effects.distortion;
   if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
   if (r.has("dist")) {
-    if (!r.isArray("dist")) r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3], not ", r.text("dist")));
+    if (!r.isArray("dist"))
+      r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3], not ", r.text("dist")));
     d = distCoeffsOf(r, "dist");
   }
   if (!r.has("distortion")) return;
@@ -193,7 +194,9 @@ void read(const KeyReader& r, const LensFrame&, Lens& lens) {
     return;
   }
   const std::unique_ptr<KeyReader> o = r.object("distortion", kKeys);
-  const auto get = [&](const char* key, double& out) { if (o->has(key)) out = o->number(key); };
+  const auto get = [&](const char* key, double& out) {
+    if (o->has(key)) out = o->number(key);
+  };
   get("k1", d.k1), get("k2", d.k2), get("p1", d.p1), get("p2", d.p2), get("k3", d.k3);
   get("alpha", d.alpha), get("beta", d.beta), get("gamma", d.gamma);
 }
@@ -202,8 +205,14 @@ void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   const Distortion& k = lens.effects.distortion;
   if (k.isZero()) return;
   KeyWriter& d = camera.object("distortion");
-  for (const auto& [key, value] : {std::pair{"k1", k.k1}, {"k2", k.k2}, {"p1", k.p1}, {"p2", k.p2}, {"k3", k.k3},
-                                   {"alpha", k.alpha}, {"beta", k.beta}, {"gamma", k.gamma}})
+  for (const auto& [key, value] : {std::pair{"k1", k.k1},
+                                   {"k2", k.k2},
+                                   {"p1", k.p1},
+                                   {"p2", k.p2},
+                                   {"k3", k.k3},
+                                   {"alpha", k.alpha},
+                                   {"beta", k.beta},
+                                   {"gamma", k.gamma}})
     if (value != 0.0) d.number(key, value);
 }
 
@@ -212,7 +221,8 @@ void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   Distortion& d = out.effects.distortion;
   d.k1 = lerpValue(x.k1, y.k1, u), d.k2 = lerpValue(x.k2, y.k2, u), d.k3 = lerpValue(x.k3, y.k3, u);
   d.p1 = lerpValue(x.p1, y.p1, u), d.p2 = lerpValue(x.p2, y.p2, u);
-  d.alpha = lerpValue(x.alpha, y.alpha, u), d.beta = lerpValue(x.beta, y.beta, u), d.gamma = lerpValue(x.gamma, y.gamma, u);
+  d.alpha = lerpValue(x.alpha, y.alpha, u), d.beta = lerpValue(x.beta, y.beta, u),
+  d.gamma = lerpValue(x.gamma, y.gamma, u);
 }
 
 void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {

@@ -22,7 +22,7 @@ namespace lenslab {
 // odd powers: radial = 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶.
 struct Distortion {
   double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0;  // OpenCV
-  double alpha = 0.0, beta = 0.0, gamma = 0.0;             // the lecture's series
+  double alpha = 0.0, beta = 0.0, gamma = 0.0;              // the lecture's series
 
   bool isZero() const;
   // From the true perspective position to the distorted one; both in lenslab's frame (y up).
@@ -45,7 +45,6 @@ struct FoldOver {
   glm::dvec2 undistorted;
   glm::dvec2 distorted;
 };
-std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 distortedMin,
-                                     glm::dvec2 distortedMax);
+std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 distortedMin, glm::dvec2 distortedMax);
 
 }  // namespace lenslab

@@ -20,7 +20,8 @@ void read(const KeyReader& camera, const LensFrame& frame, Lens& lens) {
   o->require("corner_focus_distance", "field_curvature");
   if (!frame.perspective) camera.fail("field_curvature", "needs a perspective projection");
   const double corner = frame.cornerRadius;
-  lens.effects.fieldCurvature.inverseFocusPerRadius2 = (inverseOfDistance(*o, "corner_focus_distance") - frame.inverseFocus) / (corner * corner);
+  lens.effects.fieldCurvature.inverseFocusPerRadius2 =
+      (inverseOfDistance(*o, "corner_focus_distance") - frame.inverseFocus) / (corner * corner);
 }
 
 void write(const Lens& lens, const LensFrame& frame, KeyWriter& camera) {
@@ -28,8 +29,9 @@ void write(const Lens& lens, const LensFrame& frame, KeyWriter& camera) {
   if (f.isZero()) return;
   const double corner = frame.cornerRadius;
   camera.object("field_curvature")
-      .distance("corner_focus_distance", distanceForInverse(frame.inverseFocus + f.inverseFocusPerRadius2 * corner * corner,
-                                                            frame, "field_curvature.corner_focus_distance"));
+      .distance("corner_focus_distance",
+                distanceForInverse(frame.inverseFocus + f.inverseFocusPerRadius2 * corner * corner, frame,
+                                   "field_curvature.corner_focus_distance"));
 }
 
 void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
@@ -47,6 +49,7 @@ void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {
 }  // namespace
 
 extern const LensEffectModule kFieldCurvatureModule;
-const LensEffectModule kFieldCurvatureModule{"field_curvature", "accumulate/accumulate.frag", read, write, interpolate, plan};
+const LensEffectModule kFieldCurvatureModule{
+    "field_curvature", "accumulate/accumulate.frag", read, write, interpolate, plan};
 
 }  // namespace lenslab

@@ -24,9 +24,9 @@ namespace lenslab {
 // What some keys need of the camera they belong to: the axial colour's and the field curvature's
 // keys are focus distances, held as shifts of the camera's own 1/z_f.
 struct LensFrame {
-  std::string where;                  // the file (reading) or the camera's source (writing), for messages
-  double inverseFocus = 0.0;          // the camera's 1/z_f (green's; 0 at infinity)
-  double cornerRadius = 1.0;          // normalised radius of the window's farthest corner
+  std::string where;          // the file (reading) or the camera's source (writing), for messages
+  double inverseFocus = 0.0;  // the camera's 1/z_f (green's; 0 at infinity)
+  double cornerRadius = 1.0;  // normalised radius of the window's farthest corner
   bool perspective = true;
   std::optional<double> focalLength;  // world units, when the camera came in the physical form
 };
@@ -59,7 +59,7 @@ class KeyWriter {
   virtual void number(const std::string& key, double value) = 0;
   virtual void integer(const std::string& key, int value) = 0;
   virtual void distance(const std::string& key, double value) = 0;  // +infinity as "infinity"
-  virtual KeyWriter& object(const std::string& key) = 0;           // a new object under `key`
+  virtual KeyWriter& object(const std::string& key) = 0;            // a new object under `key`
 };
 
 // What the frame plan knows of the view when it asks a module (the aperture is the lens's).

@@ -15,8 +15,9 @@ extern const LensEffectModule kBarrelModule;
 
 const std::array<const LensEffectModule*, 6>& lensEffectModules() {
   // Field curvature before chromatic: the scene pass lists "field-curvature" before "channel-focus".
-  static const std::array<const LensEffectModule*, 6> modules = {
-      &kDistortionModule, &kFieldCurvatureModule, &kChromaticModule, &kVignettingModule, &kApertureModule, &kBarrelModule};
+  static const std::array<const LensEffectModule*, 6> modules = {&kDistortionModule, &kFieldCurvatureModule,
+                                                                 &kChromaticModule,  &kVignettingModule,
+                                                                 &kApertureModule,   &kBarrelModule};
   return modules;
 }
 

@@ -16,7 +16,9 @@ namespace glsl {
 #undef VIGNETTING_REAL
 }  // namespace glsl
 
-double vignettingPolynomial(double r2, double a1, double a2, double a3) { return glsl::vignettingPolynomial(r2, a1, a2, a3); }
+double vignettingPolynomial(double r2, double a1, double a2, double a3) {
+  return glsl::vignettingPolynomial(r2, a1, a2, a3);
+}
 
 bool Vignetting::isZero() const { return a1 == 0.0 && a2 == 0.0 && a3 == 0.0; }
 

@@ -21,7 +21,8 @@ Elements AccessorReader::read(int index) const {
   e.values.assign(e.count * e.components, 0.0);
   if (a.bufferView >= 0) {
     const std::size_t stride = model_.bufferViews[toIndex(a.bufferView)].byteStride;
-    decode(region(a.bufferView, a.byteOffset, a.count, layout, stride, where), a.count, layout, a.componentType, e.values.data());
+    decode(region(a.bufferView, a.byteOffset, a.count, layout, stride, where), a.count, layout, a.componentType,
+           e.values.data());
   }
   if (a.sparse.isSparse) substituteSparse(a, layout, where, e);
   checkMinMax(a, where, e);
@@ -30,7 +31,9 @@ Elements AccessorReader::read(int index) const {
   return e;
 }
 
-void AccessorReader::checkLayout(int index) const { (void)checkedLayout(model_.accessors[toIndex(index)], cat("accessor ", index)); }
+void AccessorReader::checkLayout(int index) const {
+  (void)checkedLayout(model_.accessors[toIndex(index)], cat("accessor ", index));
+}
 
 ElementLayout AccessorReader::checkedLayout(const tinygltf::Accessor& a, const std::string& where) const {
   const ElementLayout layout = elementLayout(a.type, a.componentType);
@@ -44,7 +47,8 @@ ElementLayout AccessorReader::checkedLayout(const tinygltf::Accessor& a, const s
            "; only BYTE, UNSIGNED_BYTE, SHORT and UNSIGNED_SHORT can be normalized");
   if (a.bufferView != -1) {
     requireIndex(a.bufferView, model_.bufferViews.size(), where, "bufferView");
-    (void)region(a.bufferView, a.byteOffset, a.count, layout, model_.bufferViews[toIndex(a.bufferView)].byteStride, where);
+    (void)region(a.bufferView, a.byteOffset, a.count, layout, model_.bufferViews[toIndex(a.bufferView)].byteStride,
+                 where);
   } else if (a.count > kMaxUnbackedComponents / layout.components) {
     refuse(where, ": count ", a.count, " without a bufferView is more than lenslab reads (",
            kMaxUnbackedComponents / layout.components, " of ", typeName(a.type), ")");
@@ -63,13 +67,15 @@ AccessorReader::Region AccessorReader::region(int viewIndex, std::size_t byteOff
   const std::size_t stride = byteStride != 0 ? byteStride : layout.size;
   const std::size_t length = view.size();
   // Written so that nothing overflows, however large the count the file claims.
-  if (byteOffset > length || layout.size > length - byteOffset || count - 1 > (length - byteOffset - layout.size) / stride)
+  if (byteOffset > length || layout.size > length - byteOffset ||
+      count - 1 > (length - byteOffset - layout.size) / stride)
     refuse(where, ": byteOffset + count*stride exceeds bufferView ", viewIndex, " (byteOffset ", byteOffset, ", count ",
            count, ", stride ", stride, ", length ", length, ")");
   return {view.data() + byteOffset, stride};
 }
 
-void AccessorReader::decode(const Region& r, std::size_t count, const ElementLayout& layout, int componentType, double* out) {
+void AccessorReader::decode(const Region& r, std::size_t count, const ElementLayout& layout, int componentType,
+                            double* out) {
   for (std::size_t e = 0; e < count; ++e)
     for (std::size_t c = 0; c < layout.components; ++c)
       *out++ = storedComponent(r.first + e * r.stride + layout.offset(c), componentType);
@@ -77,8 +83,8 @@ void AccessorReader::decode(const Region& r, std::size_t count, const ElementLay
 
 // glTF sparse accessors: `count` strictly increasing element indices, each replaced by the value
 // at the same position in the values view (both tightly packed).
-void AccessorReader::substituteSparse(const tinygltf::Accessor& a, const ElementLayout& layout, const std::string& where,
-                                      Elements& e) const {
+void AccessorReader::substituteSparse(const tinygltf::Accessor& a, const ElementLayout& layout,
+                                      const std::string& where, Elements& e) const {
   const auto& sparse = a.sparse;
   if (sparse.count < 1 || static_cast<std::size_t>(sparse.count) > e.count)
     refuse(where, ": sparse.count ", sparse.count, " must be from 1 to the accessor's count (", e.count, ")");
@@ -99,8 +105,10 @@ void AccessorReader::substituteSparse(const tinygltf::Accessor& a, const Element
   for (std::size_t i = 0; i < n; ++i) {
     if (targets[i] >= static_cast<double>(e.count))
       refuse(where, ": sparse index ", targets[i], " is not below the accessor's count (", e.count, ")");
-    if (i > 0 && targets[i] <= targets[i - 1]) refuse(where, ": sparse indices must strictly increase (", targets[i - 1], " then ", targets[i], ")");
-    std::copy_n(&values[i * e.components], e.components, &e.values[static_cast<std::size_t>(targets[i]) * e.components]);
+    if (i > 0 && targets[i] <= targets[i - 1])
+      refuse(where, ": sparse indices must strictly increase (", targets[i - 1], " then ", targets[i], ")");
+    std::copy_n(&values[i * e.components], e.components,
+                &e.values[static_cast<std::size_t>(targets[i]) * e.components]);
   }
 }
 
@@ -108,11 +116,13 @@ void AccessorReader::substituteSparse(const tinygltf::Accessor& a, const Element
 void AccessorReader::checkMinMax(const tinygltf::Accessor& a, const std::string& where, const Elements& e) {
   for (const auto* bound : {&a.minValues, &a.maxValues})
     if (!bound->empty() && bound->size() != e.components)
-      refuse(where, ": ", bound == &a.minValues ? "min" : "max", " has ", bound->size(), " numbers; a ", typeName(a.type),
-             " accessor needs ", e.components);
+      refuse(where, ": ", bound == &a.minValues ? "min" : "max", " has ", bound->size(), " numbers; a ",
+             typeName(a.type), " accessor needs ", e.components);
   if (a.minValues.empty() && a.maxValues.empty()) return;
   // Float data is compared with a little slack: writers round min/max to a few decimals.
-  auto slack = [&](double bound) { return a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ? 1e-6 * (1.0 + std::abs(bound)) : 0.0; };
+  auto slack = [&](double bound) {
+    return a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ? 1e-6 * (1.0 + std::abs(bound)) : 0.0;
+  };
   for (std::size_t i = 0; i < e.count; ++i)
     for (std::size_t c = 0; c < e.components; ++c) {
       const double v = e.at(i, c);
@@ -120,8 +130,8 @@ void AccessorReader::checkMinMax(const tinygltf::Accessor& a, const std::string&
       const bool low = !a.minValues.empty() && v < a.minValues[c] - slack(a.minValues[c]);
       const bool high = !a.maxValues.empty() && v > a.maxValues[c] + slack(a.maxValues[c]);
       if (low || high)
-        refuse(where, ": element ", i, " component ", c, " is ", v, ", ", low ? "below the declared min " : "above the declared max ",
-               low ? a.minValues[c] : a.maxValues[c]);
+        refuse(where, ": element ", i, " component ", c, " is ", v, ", ",
+               low ? "below the declared min " : "above the declared max ", low ? a.minValues[c] : a.maxValues[c]);
     }
 }
 

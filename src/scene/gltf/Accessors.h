@@ -44,7 +44,8 @@ class AccessorReader {
   Region region(int viewIndex, std::size_t byteOffset, std::size_t count, const ElementLayout& layout,
                 std::size_t byteStride, const std::string& where) const;
   static void decode(const Region& r, std::size_t count, const ElementLayout& layout, int componentType, double* out);
-  void substituteSparse(const tinygltf::Accessor& a, const ElementLayout& layout, const std::string& where, Elements& e) const;
+  void substituteSparse(const tinygltf::Accessor& a, const ElementLayout& layout, const std::string& where,
+                        Elements& e) const;
   static void checkMinMax(const tinygltf::Accessor& a, const std::string& where, const Elements& e);
 
   const tinygltf::Model& model_;

@@ -12,7 +12,8 @@ namespace {
 
 std::uint32_t littleEndian32(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
-  for (std::size_t i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+  for (std::size_t i = 0; i < 4; ++i)
+    v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
   return v;
 }
 
@@ -43,11 +44,13 @@ GlbChunks splitGlb(std::string_view bytes) {
     if (bytes.size() - at < 8) refuse("GLB chunk ", index, " is cut off in its 8-byte header");
     const std::uint32_t length = littleEndian32(bytes, at), type = littleEndian32(bytes, at + 4);
     if (length % 4 != 0) refuse("GLB chunk ", index, " has length ", length, ", not a multiple of 4");
-    if (length > bytes.size() - at - 8) refuse("GLB chunk ", index, " (", length, " bytes) runs past the end of the file");
+    if (length > bytes.size() - at - 8)
+      refuse("GLB chunk ", index, " (", length, " bytes) runs past the end of the file");
     const std::string_view data = bytes.substr(at + 8, length);
     if (index == 0 && type != kGlbJsonChunk) refuse("the first GLB chunk must be JSON (type 0x4E4F534A)");
     if (index > 0 && type == kGlbJsonChunk) refuse("GLB chunk ", index, " is a second JSON chunk");
-    if (type == kGlbBinChunk && index != 1) refuse("GLB chunk ", index, " is BIN; a BIN chunk must come right after the JSON");
+    if (type == kGlbBinChunk && index != 1)
+      refuse("GLB chunk ", index, " is BIN; a BIN chunk must come right after the JSON");
     if (index == 0) chunks.json = data;
     if (type == kGlbBinChunk) chunks.bin = data;
     at += 8 + length;

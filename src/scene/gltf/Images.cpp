@@ -45,11 +45,18 @@ ImageHeader inspectJpeg(Bytes b, const std::string& label) {
     if (b.size() - at < 4) refuse(label, ": JPEG data ends before its frame header (the file is cut off)");
     if (b[at] != 0xFF) refuse(label, ": JPEG segment marker expected at byte ", at);
     const unsigned marker = b[at + 1];
-    if (marker == 0xFF) { ++at; continue; }  // fill byte
-    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) { at += 2; continue; }
+    if (marker == 0xFF) {
+      ++at;
+      continue;
+    }  // fill byte
+    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
+      at += 2;
+      continue;
+    }
     if (marker == 0xD9 || marker == 0xDA) refuse(label, ": JPEG has no frame header before its image data");
     const std::uint32_t length = bigEndian(b, at + 2, 2);
-    if (length < 2 || length > b.size() - at - 2) refuse(label, ": JPEG data ends inside a segment (the file is cut off)");
+    if (length < 2 || length > b.size() - at - 2)
+      refuse(label, ": JPEG data ends inside a segment (the file is cut off)");
     const bool frame = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
     if (frame) {
       if (length < 8) refuse(label, ": JPEG frame header is too short");
@@ -124,16 +131,19 @@ TextureImage decodeImage(const tinygltf::Model& model, int index) {
   // one that sizes it in size_t (the per-side limit is the GPU's and stays).
   if (header.width < 1 || header.height < 1 || header.width > kMaxImageSide || header.height > kMaxImageSide ||
       std::uint64_t{header.width} * header.height > kMaxImagePixels)
-    refuse(label, ": ", header.width, "x", header.height, " pixels; lenslab decodes up to ", kMaxImageSide, " per side and ",
-           kMaxImagePixels, " in all");
+    refuse(label, ": ", header.width, "x", header.height, " pixels; lenslab decodes up to ", kMaxImageSide,
+           " per side and ", kMaxImagePixels, " in all");
   if (encoded.size() > INT_MAX) refuse(label, ": more than 2 GiB of encoded data");
   tinygltf::Image decoded;
   decoded.name = model.images[toIndex(index)].name;
   std::string error, warning;
-  if (!tinygltf::LoadImageData(&decoded, index, &error, &warning, 0, 0, encoded.data(), static_cast<int>(encoded.size()), nullptr))
+  if (!tinygltf::LoadImageData(&decoded, index, &error, &warning, 0, 0, encoded.data(),
+                               static_cast<int>(encoded.size()), nullptr))
     refuse(label, " could not be decoded: ", oneLine(error));
   TextureImage image;
-  image.name = !decoded.name.empty() ? decoded.name : model.images[toIndex(index)].uri.starts_with("data:") ? "" : model.images[toIndex(index)].uri;
+  image.name = !decoded.name.empty()                                   ? decoded.name
+               : model.images[toIndex(index)].uri.starts_with("data:") ? ""
+                                                                       : model.images[toIndex(index)].uri;
   image.width = decoded.width;
   image.height = decoded.height;
   image.rgba8 = toRgba8(decoded, label);

@@ -22,9 +22,12 @@ void checkNestingDepth(std::string_view text) {
   bool inString = false, escaped = false;
   for (const char c : text) {
     if (inString) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') inString = false;
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        inString = false;
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
@@ -64,7 +67,8 @@ std::string stringAt(const nlohmann::json& object, const char* key) {
 }  // namespace
 
 nlohmann::json parseJson(std::string_view text) {
-  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) refuse("the file is empty (glTF JSON starts with '{')");
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    refuse("the file is empty (glTF JSON starts with '{')");
   if (text.substr(0, 3) == "\xEF\xBB\xBF")
     refuse("the JSON starts with a UTF-8 byte-order mark, which glTF forbids (it must begin with '{')");
   checkNestingDepth(text);
@@ -83,10 +87,11 @@ nlohmann::json parseJson(std::string_view text) {
 // files beside the scene.
 void precheckJson(const nlohmann::json& root, bool binary) {
   if (!root.is_object()) refuse("the top level of the JSON must be an object, not ", root.type_name());
-  for (const char* key : {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
-                          "meshes", "nodes", "samplers", "scenes", "skins", "textures", "extensionsUsed",
-                          "extensionsRequired"})
-    if (root.contains(key) && !root[key].is_array()) refuse("\"", key, "\" must be an array, not ", root[key].type_name());
+  for (const char* key :
+       {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials", "meshes", "nodes",
+        "samplers", "scenes", "skins", "textures", "extensionsUsed", "extensionsRequired"})
+    if (root.contains(key) && !root[key].is_array())
+      refuse("\"", key, "\" must be an array, not ", root[key].type_name());
   if (root.contains("asset") && !root["asset"].is_object()) refuse("\"asset\" must be an object");
   for (const auto& e : arrayAt(root, "extensionsRequired"))
     if (!e.is_string() || std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), e.get<std::string>()) ==
@@ -98,12 +103,14 @@ void precheckJson(const nlohmann::json& root, bool binary) {
     if (buffers[i].is_object() && !buffers[i].contains("uri") && !(binary && i == 0))
       refuse("buffer ", i, " has no uri; only the first buffer of a .glb (its BIN chunk) may leave it out");
     if (const std::string uri = stringAt(buffers[i], "uri"); hasUriScheme(uri))
-      refuse("buffer ", i, ": uri ", uri, " is not a relative path; lenslab reads files beside the scene and data: URIs");
+      refuse("buffer ", i, ": uri ", uri,
+             " is not a relative path; lenslab reads files beside the scene and data: URIs");
   }
   const nlohmann::json& images = arrayAt(root, "images");
   for (std::size_t i = 0; i < images.size(); ++i)
     if (const std::string uri = stringAt(images[i], "uri"); hasUriScheme(uri))
-      refuse("image ", i, ": uri ", uri, " is not a relative path; lenslab reads files beside the scene and data: URIs");
+      refuse("image ", i, ": uri ", uri,
+             " is not a relative path; lenslab reads files beside the scene and data: URIs");
   // tinygltf 2.7 keeps only the matrix of a node that also has translation, rotation or scale.
   // tinygltf-2.7: matrix + TRS refused here from the JSON, since tinygltf 2.7 drops the TRS and the
   // Model cannot tell; can move to ModelChecks (nodes) when tinygltf is upgraded to one that keeps both.
@@ -117,13 +124,17 @@ void precheckJson(const nlohmann::json& root, bool binary) {
   // tinygltf-2.7: can move to ModelChecks (cameras) when tinygltf marks absent values.
   const nlohmann::json& cameras = arrayAt(root, "cameras");
   for (std::size_t i = 0; i < cameras.size(); ++i) {
-    if (!cameras[i].is_object() || !cameras[i].contains("perspective") || !cameras[i]["perspective"].is_object()) continue;
+    if (!cameras[i].is_object() || !cameras[i].contains("perspective") || !cameras[i]["perspective"].is_object())
+      continue;
     const nlohmann::json& p = cameras[i]["perspective"];
     for (const char* key : {"aspectRatio", "zfar"})
       if (p.contains(key) && !(p[key].is_number() && p[key].get<double>() > 0.0 && std::isfinite(p[key].get<double>())))
-        refuse("camera ", i, cameras[i].contains("name") && cameras[i]["name"].is_string()
-                                 ? cat(" \"", excerpt(cameras[i]["name"].get<std::string>()), "\"") : std::string(),
-               ": ", key, " is ", excerpt(p[key].dump()), "; when present it must be a positive finite number (leave it out ",
+        refuse("camera ", i,
+               cameras[i].contains("name") && cameras[i]["name"].is_string()
+                   ? cat(" \"", excerpt(cameras[i]["name"].get<std::string>()), "\"")
+                   : std::string(),
+               ": ", key, " is ", excerpt(p[key].dump()),
+               "; when present it must be a positive finite number (leave it out ",
                std::string_view(key) == "zfar" ? "for an infinite far plane)" : "to use the image's aspect ratio)");
   }
 }

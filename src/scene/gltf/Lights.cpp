@@ -21,24 +21,33 @@ std::optional<PunctualLight> placedLight(const tinygltf::Model& model, const tin
            " lights (valid: 0 to ", static_cast<long>(model.lights.size()) - 1, ")");
   const int index = static_cast<int>(indexValue);
   const tinygltf::Light& l = model.lights[toIndex(index)];
-  const auto field = [&](const char* name) { return cat("light ", index, l.name.empty() ? "" : cat(" \"", excerpt(l.name), "\""), " ", name); };
+  const auto field = [&](const char* name) {
+    return cat("light ", index, l.name.empty() ? "" : cat(" \"", excerpt(l.name), "\""), " ", name);
+  };
 
   PunctualLight light;
   light.name = l.name;
   light.gltfNode = nodeIndex;
-  if (l.type == "directional") light.type = LightType::Directional;
-  else if (l.type == "point") light.type = LightType::Point;
-  else if (l.type == "spot") light.type = LightType::Spot;
-  else refuse(field("type"), " is \"", excerpt(l.type), "\"; give directional, point or spot");
+  if (l.type == "directional")
+    light.type = LightType::Directional;
+  else if (l.type == "point")
+    light.type = LightType::Point;
+  else if (l.type == "spot")
+    light.type = LightType::Spot;
+  else
+    refuse(field("type"), " is \"", excerpt(l.type), "\"; give directional, point or spot");
   if (!l.color.empty()) {
-    if (l.color.size() != 3) refuse(field("color"), " has ", l.color.size(), " numbers; give 3 (linear RGB, each in [0, 1])");
+    if (l.color.size() != 3)
+      refuse(field("color"), " has ", l.color.size(), " numbers; give 3 (linear RGB, each in [0, 1])");
     for (int c = 0; c < 3; ++c)
       if (!(l.color[toIndex(c)] >= 0.0 && l.color[toIndex(c)] <= 1.0))
         refuse(field("color"), "[", c, "] is ", l.color[toIndex(c)], "; give a number in [0, 1]");
-    light.color = glm::vec3(static_cast<float>(l.color[0]), static_cast<float>(l.color[1]), static_cast<float>(l.color[2]));
+    light.color =
+        glm::vec3(static_cast<float>(l.color[0]), static_cast<float>(l.color[1]), static_cast<float>(l.color[2]));
   }
   if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity) || l.intensity > 3.0e38)
-    refuse(field("intensity"), " is ", l.intensity, "; give a finite number >= 0 (lux for directional, candela for point and spot)");
+    refuse(field("intensity"), " is ", l.intensity,
+           "; give a finite number >= 0 (lux for directional, candela for point and spot)");
   light.intensity = static_cast<float>(l.intensity);
   if (!(l.range >= 0.0) || !std::isfinite(l.range))
     refuse(field("range"), " is ", l.range, "; give a finite distance > 0, or leave it out for no range");
@@ -49,7 +58,8 @@ std::optional<PunctualLight> placedLight(const tinygltf::Model& model, const tin
     if (!(outer > 0.0 && outer <= kHalfPi))
       refuse(field("spot.outerConeAngle"), " is ", outer, "; give an angle in (0, pi/2] radians");
     if (!(inner >= 0.0 && inner < outer))
-      refuse(field("spot.innerConeAngle"), " is ", inner, "; give an angle in [0, outerConeAngle = ", outer, ") radians");
+      refuse(field("spot.innerConeAngle"), " is ", inner, "; give an angle in [0, outerConeAngle = ", outer,
+             ") radians");
     light.innerConeAngleRadians = static_cast<float>(inner);
     light.outerConeAngleRadians = static_cast<float>(outer);
   }
@@ -58,7 +68,8 @@ std::optional<PunctualLight> placedLight(const tinygltf::Model& model, const tin
   const double length = glm::length(shines);
   if (light.type != LightType::Point && (!(length > 0.0) || !std::isfinite(length)))
     refuse("node ", nodeIndex, " (", field("type"), " ", l.type,
-           "): its world transform scales −Z to nothing, so the light has no direction; give the node and its parents a non-zero scale");
+           "): its world transform scales −Z to nothing, so the light has no direction; give the node and its parents "
+           "a non-zero scale");
   if (length > 0.0 && std::isfinite(length)) light.worldDirection = shines / length;
   return light;
 }

@@ -23,7 +23,6 @@ constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 27;
 
 // The extensions lenslab implements, so the only ones a file may require.
 inline const std::vector<std::string> kSupportedExtensions = {"KHR_materials_unlit", "KHR_materials_emissive_strength",
-                                                            "KHR_lights_punctual",
-                                                            "KHR_texture_transform"};
+                                                              "KHR_lights_punctual", "KHR_texture_transform"};
 
 }  // namespace lenslab::gltf

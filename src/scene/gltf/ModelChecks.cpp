@@ -48,7 +48,8 @@ class ModelCheck {
     auto digits = [](std::string_view s) {
       return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
     };
-    if (dot == std::string::npos || !digits(std::string_view(version).substr(0, dot)) || !digits(std::string_view(version).substr(dot + 1)))
+    if (dot == std::string::npos || !digits(std::string_view(version).substr(0, dot)) ||
+        !digits(std::string_view(version).substr(dot + 1)))
       refuse("asset.version is \"", version, "\"; glTF 2.0 files say \"2.0\"");
     if (version.substr(0, dot) != "2") refuse("asset.version is ", version, "; lenslab reads glTF 2.x");
     const std::string& minimum = m_.asset.minVersion;
@@ -79,22 +80,27 @@ class ModelCheck {
 
   void meshes() const {
     for (std::size_t i = 0; i < m_.meshes.size(); ++i)
-      for (std::size_t k = 0; k < m_.meshes[i].primitives.size(); ++k) primitive(m_.meshes[i].primitives[k], cat("mesh ", i, " primitive ", k));
+      for (std::size_t k = 0; k < m_.meshes[i].primitives.size(); ++k)
+        primitive(m_.meshes[i].primitives[k], cat("mesh ", i, " primitive ", k));
   }
 
   void primitive(const tinygltf::Primitive& p, const std::string& where) const {
-    if (p.mode < -1 || p.mode > TINYGLTF_MODE_TRIANGLE_FAN) refuse(where, ": mode ", p.mode, " is not a glTF primitive mode (0 to 6)");
+    if (p.mode < -1 || p.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+      refuse(where, ": mode ", p.mode, " is not a glTF primitive mode (0 to 6)");
     if (p.indices != -1) requireIndex(p.indices, m_.accessors.size(), cat(where, " indices"), "accessor");
     if (p.material != -1) requireIndex(p.material, m_.materials.size(), where, "material");
     std::optional<std::size_t> count;
     for (const auto& [name, accessor] : p.attributes) {
       requireIndex(accessor, m_.accessors.size(), cat(where, " attribute ", name), "accessor");
       const std::size_t n = m_.accessors[toIndex(accessor)].count;
-      if (count && *count != n) refuse(where, ": attribute ", name, " has ", n, " elements, another has ", *count, "; all must have the same count");
+      if (count && *count != n)
+        refuse(where, ": attribute ", name, " has ", n, " elements, another has ", *count,
+               "; all must have the same count");
       count = n;
     }
     for (const auto& target : p.targets)
-      for (const auto& [name, accessor] : target) requireIndex(accessor, m_.accessors.size(), cat(where, " morph target ", name), "accessor");
+      for (const auto& [name, accessor] : target)
+        requireIndex(accessor, m_.accessors.size(), cat(where, " morph target ", name), "accessor");
   }
 
   void materials() const {
@@ -104,10 +110,12 @@ class ModelCheck {
       const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
       if (f.size() != 4) refuse(where, ": baseColorFactor has ", f.size(), " numbers; it needs 4 (RGBA)");
       for (std::size_t c = 0; c < 4; ++c)
-        if (!(f[c] >= 0.0 && f[c] <= 1.0)) refuse(where, ": baseColorFactor[", c, "] is ", f[c], "; each must be within [0, 1]");
+        if (!(f[c] >= 0.0 && f[c] <= 1.0))
+          refuse(where, ": baseColorFactor[", c, "] is ", f[c], "; each must be within [0, 1]");
       if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK" && m.alphaMode != "BLEND")
         refuse(where, ": alphaMode \"", m.alphaMode, "\" must be OPAQUE, MASK or BLEND");
-      if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff)) refuse(where, ": alphaCutoff ", m.alphaCutoff, " must be a finite number >= 0");
+      if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
+        refuse(where, ": alphaCutoff ", m.alphaCutoff, " must be a finite number >= 0");
       const std::pair<const char*, int> textures[] = {
           {"baseColorTexture", m.pbrMetallicRoughness.baseColorTexture.index},
           {"metallicRoughnessTexture", m.pbrMetallicRoughness.metallicRoughnessTexture.index},
@@ -120,15 +128,20 @@ class ModelCheck {
   }
 
   void samplersAndTextures() const {
-    auto oneOf = [](int v, std::initializer_list<int> valid) { return std::find(valid.begin(), valid.end(), v) != valid.end(); };
+    auto oneOf = [](int v, std::initializer_list<int> valid) {
+      return std::find(valid.begin(), valid.end(), v) != valid.end();
+    };
     for (std::size_t i = 0; i < m_.samplers.size(); ++i) {
       const tinygltf::Sampler& s = m_.samplers[i];
       for (const int wrap : {s.wrapS, s.wrapT})
         if (!oneOf(wrap, {10497, 33071, 33648}))
-          refuse("sampler ", i, ": wrap mode ", wrap, " must be 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
-      if (!oneOf(s.magFilter, {-1, 9728, 9729})) refuse("sampler ", i, ": magFilter ", s.magFilter, " must be 9728 (NEAREST) or 9729 (LINEAR)");
+          refuse("sampler ", i, ": wrap mode ", wrap,
+                 " must be 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
+      if (!oneOf(s.magFilter, {-1, 9728, 9729}))
+        refuse("sampler ", i, ": magFilter ", s.magFilter, " must be 9728 (NEAREST) or 9729 (LINEAR)");
       if (!oneOf(s.minFilter, {-1, 9728, 9729, 9984, 9985, 9986, 9987}))
-        refuse("sampler ", i, ": minFilter ", s.minFilter, " must be 9728, 9729 or 9984 to 9987 (NEAREST, LINEAR, *_MIPMAP_*)");
+        refuse("sampler ", i, ": minFilter ", s.minFilter,
+               " must be 9728, 9729 or 9984 to 9987 (NEAREST, LINEAR, *_MIPMAP_*)");
     }
     for (std::size_t i = 0; i < m_.textures.size(); ++i) {
       const tinygltf::Texture& t = m_.textures[i];
@@ -149,7 +162,8 @@ class ModelCheck {
     const tinygltf::Camera& c = m_.cameras[toIndex(index)];
     const std::string where = cat("camera ", index, c.name.empty() ? "" : cat(" \"", c.name, "\""));
     auto positive = [&](double v, const char* field) {
-      if (!std::isfinite(v) || !(v > 0.0)) refuse(where, ": ", field, " is ", v, "; it must be a positive finite number");
+      if (!std::isfinite(v) || !(v > 0.0))
+        refuse(where, ": ", field, " is ", v, "; it must be a positive finite number");
     };
     if (c.type == "perspective") {
       const tinygltf::PerspectiveCamera& p = c.perspective;
@@ -157,7 +171,7 @@ class ModelCheck {
       if (p.yfov >= std::numbers::pi) refuse(where, ": yfov is ", p.yfov, "; it must be below pi (radians)");
       positive(p.znear, "znear");
       if (p.aspectRatio != 0.0) positive(p.aspectRatio, "aspectRatio");  // tinygltf: 0 = absent
-      if (p.zfar != 0.0) {                                                // tinygltf: 0 = absent (infinite)
+      if (p.zfar != 0.0) {                                               // tinygltf: 0 = absent (infinite)
         positive(p.zfar, "zfar");
         if (p.zfar <= p.znear) refuse(where, ": zfar ", p.zfar, " must be greater than znear ", p.znear);
       }
@@ -166,7 +180,8 @@ class ModelCheck {
       positive(o.xmag, "xmag");
       positive(o.ymag, "ymag");
       positive(o.zfar, "zfar");
-      if (!std::isfinite(o.znear) || o.znear < 0.0) refuse(where, ": znear is ", o.znear, "; it must be a finite number >= 0");
+      if (!std::isfinite(o.znear) || o.znear < 0.0)
+        refuse(where, ": znear is ", o.znear, "; it must be a finite number >= 0");
       if (o.zfar <= o.znear) refuse(where, ": zfar ", o.zfar, " must be greater than znear ", o.znear);
     } else {
       refuse(where, ": type \"", c.type, "\" must be \"perspective\" or \"orthographic\"");
@@ -178,13 +193,16 @@ class ModelCheck {
       const tinygltf::Skin& s = m_.skins[i];
       for (const int joint : s.joints) requireIndex(joint, m_.nodes.size(), cat("skin ", i, " joints"), "node");
       if (s.skeleton != -1) requireIndex(s.skeleton, m_.nodes.size(), cat("skin ", i, " skeleton"), "node");
-      if (s.inverseBindMatrices != -1) requireIndex(s.inverseBindMatrices, m_.accessors.size(), cat("skin ", i, " inverseBindMatrices"), "accessor");
+      if (s.inverseBindMatrices != -1)
+        requireIndex(s.inverseBindMatrices, m_.accessors.size(), cat("skin ", i, " inverseBindMatrices"), "accessor");
     }
     for (std::size_t i = 0; i < m_.animations.size(); ++i) {
       const tinygltf::Animation& a = m_.animations[i];
       for (std::size_t s = 0; s < a.samplers.size(); ++s) {
-        requireIndex(a.samplers[s].input, m_.accessors.size(), cat("animation ", i, " sampler ", s, " input"), "accessor");
-        requireIndex(a.samplers[s].output, m_.accessors.size(), cat("animation ", i, " sampler ", s, " output"), "accessor");
+        requireIndex(a.samplers[s].input, m_.accessors.size(), cat("animation ", i, " sampler ", s, " input"),
+                     "accessor");
+        requireIndex(a.samplers[s].output, m_.accessors.size(), cat("animation ", i, " sampler ", s, " output"),
+                     "accessor");
       }
       for (std::size_t c = 0; c < a.channels.size(); ++c) {
         const tinygltf::AnimationChannel& channel = a.channels[c];
@@ -199,23 +217,27 @@ class ModelCheck {
   // An animation output holds one value per key time (three for cubic splines), times the number
   // of morph targets when it drives weights. Weights are not played, but a file that gets this
   // wrong is not to be trusted.
-  void animationCounts(const tinygltf::AnimationSampler& s, const tinygltf::AnimationChannel& channel, const std::string& where) const {
+  void animationCounts(const tinygltf::AnimationSampler& s, const tinygltf::AnimationChannel& channel,
+                       const std::string& where) const {
     const std::size_t times = m_.accessors[toIndex(s.input)].count;
     std::size_t perTime = s.interpolation == "CUBICSPLINE" ? 3 : 1;
     if (channel.target_path == "weights") {
       const tinygltf::Node& node = m_.nodes[toIndex(channel.target_node)];
-      if (node.mesh < 0 || toIndex(node.mesh) >= m_.meshes.size() || m_.meshes[toIndex(node.mesh)].primitives.empty()) return;
+      if (node.mesh < 0 || toIndex(node.mesh) >= m_.meshes.size() || m_.meshes[toIndex(node.mesh)].primitives.empty())
+        return;
       perTime *= m_.meshes[toIndex(node.mesh)].primitives[0].targets.size();
     }
     const std::size_t values = m_.accessors[toIndex(s.output)].count;
-    if (values != times * perTime) refuse(where, ": its output holds ", values, " values but ", times, " key times need ", times * perTime);
+    if (values != times * perTime)
+      refuse(where, ": its output holds ", values, " values but ", times, " key times need ", times * perTime);
   }
 
   // The extensions lenslab reads must sit where they belong (the validator's
   // UNEXPECTED_EXTENSION_OBJECT): unlit on a material, texture transforms on a texture reference.
   void extensionPlacement() const {
     auto check = [](const tinygltf::ExtensionMap& extensions, const std::string& where) {
-      if (extensions.count("KHR_materials_unlit")) refuse(where, " carries KHR_materials_unlit, which belongs on a material");
+      if (extensions.count("KHR_materials_unlit"))
+        refuse(where, " carries KHR_materials_unlit, which belongs on a material");
       if (extensions.count("KHR_texture_transform"))
         refuse(where, " carries KHR_texture_transform, which belongs on a texture reference (textureInfo)");
     };
@@ -240,7 +262,8 @@ class ModelCheck {
         requireIndex(child, m_.nodes.size(), cat("node ", i, " children"), "node");
         if (toIndex(child) == i) refuse("node ", i, " lists itself as a child: the node hierarchy has a loop");
         if (parent[toIndex(child)] != -1)
-          refuse("node ", child, " is a child of both node ", parent[toIndex(child)], " and node ", i, "; a glTF node has at most one parent");
+          refuse("node ", child, " is a child of both node ", parent[toIndex(child)], " and node ", i,
+                 "; a glTF node has at most one parent");
         parent[toIndex(child)] = static_cast<int>(i);
       }
     // With one parent each, walking up from any node reaches a root or goes round a loop.
@@ -273,11 +296,13 @@ class ModelCheck {
       const std::size_t sizes[] = {16, 3, 4, 3};
       for (std::size_t f = 0; f < 4; ++f) {
         const std::vector<double>& v = *fields[f].second;
-        if (!v.empty() && v.size() != sizes[f]) refuse(where, ": ", fields[f].first, " has ", v.size(), " numbers; it needs ", sizes[f]);
+        if (!v.empty() && v.size() != sizes[f])
+          refuse(where, ": ", fields[f].first, " has ", v.size(), " numbers; it needs ", sizes[f]);
         for (const double x : v)
           if (!std::isfinite(x)) refuse(where, ": ", fields[f].first, " holds a number that is not finite");
       }
-      if (n.rotation.size() == 4 && std::hypot(n.rotation[0], n.rotation[1], n.rotation[2]) == 0.0 && n.rotation[3] == 0.0)
+      if (n.rotation.size() == 4 && std::hypot(n.rotation[0], n.rotation[1], n.rotation[2]) == 0.0 &&
+          n.rotation[3] == 0.0)
         refuse(where, ": rotation (0, 0, 0, 0) is not a unit quaternion");
     }
   }
@@ -288,12 +313,14 @@ class ModelCheck {
       for (const int n : m_.scenes[s].nodes) {
         requireIndex(n, m_.nodes.size(), cat("scene ", s), "node");
         if (parents[toIndex(n)] != -1)
-          refuse("scene ", s, " lists node ", n, ", a child of node ", parents[toIndex(n)], "; a scene lists root nodes only");
+          refuse("scene ", s, " lists node ", n, ", a child of node ", parents[toIndex(n)],
+                 "; a scene lists root nodes only");
         if (std::find(seen.begin(), seen.end(), n) != seen.end()) refuse("scene ", s, " lists node ", n, " twice");
         seen.push_back(n);
       }
     }
-    if (m_.defaultScene != -1) requireIndex(m_.defaultScene, m_.scenes.size(), "\"scene\" (the default scene)", "scene");
+    if (m_.defaultScene != -1)
+      requireIndex(m_.defaultScene, m_.scenes.size(), "\"scene\" (the default scene)", "scene");
   }
 
   const tinygltf::Model& m_;
@@ -302,6 +329,8 @@ class ModelCheck {
 
 }  // namespace
 
-std::vector<int> checkModel(const tinygltf::Model& model, const AccessorReader& reader) { return ModelCheck(model, reader).run(); }
+std::vector<int> checkModel(const tinygltf::Model& model, const AccessorReader& reader) {
+  return ModelCheck(model, reader).run();
+}
 
 }  // namespace lenslab::gltf

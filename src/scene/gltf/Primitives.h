@@ -31,7 +31,8 @@ class PrimitiveConverter {
   void readTangents(const Elements& tangents, const std::string& where, Mesh& mesh) const;
   std::optional<Elements> readAttribute(const tinygltf::Primitive& p, const char* name, const AttributeFormat& format,
                                         std::optional<std::size_t> vertexCount, const std::string& where) const;
-  std::vector<std::uint32_t> vertexOrder(const tinygltf::Primitive& p, std::size_t vertexCount, const std::string& where) const;
+  std::vector<std::uint32_t> vertexOrder(const tinygltf::Primitive& p, std::size_t vertexCount,
+                                         const std::string& where) const;
 
   const tinygltf::Model& model_;
   const AccessorReader& reader_;

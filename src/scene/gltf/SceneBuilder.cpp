@@ -30,14 +30,15 @@ namespace {
 glm::dmat4 localTransform(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
   glm::dmat4 m(1.0);
-  if (node.translation.size() == 3) m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+  if (node.translation.size() == 3)
+    m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
   if (node.rotation.size() == 4) {
     const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // GLM: w first
     m = m * glm::mat4_cast(glm::normalize(q));  // writers round their quaternions; rotate, never shear
   }
   if (node.scale.size() == 3)
-    m = m * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0), glm::dvec4(0, node.scale[1], 0, 0), glm::dvec4(0, 0, node.scale[2], 0),
-                       glm::dvec4(0, 0, 0, 1));
+    m = m * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0), glm::dvec4(0, node.scale[1], 0, 0),
+                       glm::dvec4(0, 0, node.scale[2], 0), glm::dvec4(0, 0, 0, 1));
   return m;
 }
 
@@ -49,8 +50,10 @@ AnimatedNode restNode(const tinygltf::Node& node, int index, int parentSlot) {
   a.name = node.name;
   a.parentFromNodeAtRest = localTransform(node);
   if (node.matrix.size() == 16) return a;  // never animated (glTF); T, R, S stay identity
-  if (node.translation.size() == 3) a.translation = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
-  if (node.rotation.size() == 4) a.rotation = glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+  if (node.translation.size() == 3)
+    a.translation = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
+  if (node.rotation.size() == 4)
+    a.rotation = glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
   if (node.scale.size() == 3) a.scale = glm::dvec3(node.scale[0], node.scale[1], node.scale[2]);
   return a;
 }
@@ -68,8 +71,13 @@ Sampler convertSampler(const tinygltf::Sampler& s) {
 // materials, textures and images are added when first used, so indices come out compact.
 class SceneBuilder {
  public:
-  SceneBuilder(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents, Scene& scene)
-      : model_(model), reader_(reader), parents_(parents), scene_(scene), converter_(model, reader, scene.notes),
+  SceneBuilder(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents,
+               Scene& scene)
+      : model_(model),
+        reader_(reader),
+        parents_(parents),
+        scene_(scene),
+        converter_(model, reader, scene.notes),
         slotOfNode_(model.nodes.size(), -1) {}
 
   void build() {
@@ -91,8 +99,9 @@ class SceneBuilder {
     }
     const int index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
     if (model_.scenes.size() > 1)
-      noteOnce(scene_.notes, cat("the file has ", model_.scenes.size(), " scenes; scene ", index,
-                                 model_.defaultScene >= 0 ? " (its default)" : " (the first: no default is given)", " is drawn"));
+      noteOnce(scene_.notes,
+               cat("the file has ", model_.scenes.size(), " scenes; scene ", index,
+                   model_.defaultScene >= 0 ? " (its default)" : " (the first: no default is given)", " is drawn"));
     return model_.scenes[toIndex(index)].nodes;
   }
 
@@ -108,12 +117,14 @@ class SceneBuilder {
       const tinygltf::Node& node = model_.nodes[toIndex(index)];
       const glm::dmat4 worldFromNode = worldFromParent * localTransform(node);
       for (int i = 0; i < 16; ++i)
-        if (!std::isfinite(glm::value_ptr(worldFromNode)[i])) refuse("node ", index, ": its world transform is not finite");
+        if (!std::isfinite(glm::value_ptr(worldFromNode)[i]))
+          refuse("node ", index, ": its world transform is not finite");
       const int slot = static_cast<int>(scene_.animation.nodes.size());
       slotOfNode_[toIndex(index)] = slot;
       scene_.animation.nodes.push_back(restNode(node, index, parentSlot));
       placeNode(node, worldFromNode, scene_.animation.nodes.back());
-      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) pending.emplace_back(*it, worldFromNode, slot);
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+        pending.emplace_back(*it, worldFromNode, slot);
     }
   }
 
@@ -172,8 +183,9 @@ class SceneBuilder {
     if (!normalMap.present() || mesh.hasTangents) return;
     const TangentStats stats = generateTangents(mesh, normalMap.texCoord);
     if (stats.fallbackVertices > 0)
-      noteOnce(scene_.notes, cat("mesh ", meshIndex, " primitive ", k, ": ", stats.fallbackVertices,
-                                 " vertices have no uv gradient for their normal map's tangents (an arbitrary tangent is used)"));
+      noteOnce(scene_.notes,
+               cat("mesh ", meshIndex, " primitive ", k, ": ", stats.fallbackVertices,
+                   " vertices have no uv gradient for their normal map's tangents (an arbitrary tangent is used)"));
   }
 
   int materialFor(int gltfIndex) {
@@ -184,7 +196,9 @@ class SceneBuilder {
     const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
     material.baseColorFactor = glm::vec4(f[0], f[1], f[2], f[3]);
     material.unlit = m.extensions.count("KHR_materials_unlit") > 0;
-    material.alphaMode = m.alphaMode == "MASK" ? AlphaMode::Mask : m.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+    material.alphaMode = m.alphaMode == "MASK"    ? AlphaMode::Mask
+                         : m.alphaMode == "BLEND" ? AlphaMode::Blend
+                                                  : AlphaMode::Opaque;
     material.alphaCutoff = static_cast<float>(m.alphaCutoff);
     material.doubleSided = m.doubleSided;
     material.baseColorTexture = textureRefFor(m.pbrMetallicRoughness.baseColorTexture, gltfIndex, "baseColorTexture");
@@ -197,15 +211,18 @@ class SceneBuilder {
       if (!s.IsNumber() && found->second.Has("emissiveStrength"))
         refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength must be a number");
       if (!(strength >= 0.0) || !std::isfinite(strength))
-        refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength is ", strength, "; give a finite number >= 0");
+        refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength is ", strength,
+               "; give a finite number >= 0");
     }
-    if (e.size() == 3) material.emissive = glm::vec3(static_cast<float>(e[0] * strength), static_cast<float>(e[1] * strength),
-                                                     static_cast<float>(e[2] * strength));
+    if (e.size() == 3)
+      material.emissive = glm::vec3(static_cast<float>(e[0] * strength), static_cast<float>(e[1] * strength),
+                                    static_cast<float>(e[2] * strength));
     if (material.emits()) material.emissiveTexture = textureRefFor(m.emissiveTexture, gltfIndex, "emissiveTexture");
     // Normal map (tangents: meshFor); its scale multiplies the map's x and y.
     material.normalTexture = textureRefFor(m.normalTexture, gltfIndex, "normalTexture");
     material.normalScale = static_cast<float>(m.normalTexture.scale);
-    if (!std::isfinite(material.normalScale)) refuse("material ", gltfIndex, " normalTexture.scale must be a finite number");
+    if (!std::isfinite(material.normalScale))
+      refuse("material ", gltfIndex, " normalTexture.scale must be a finite number");
     readMetallicRoughness(m, gltfIndex, material);
     scene_.materials.push_back(std::move(material));
     return materials_[gltfIndex] = static_cast<int>(scene_.materials.size()) - 1;
@@ -217,15 +234,19 @@ class SceneBuilder {
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
     material.metallicFactor = static_cast<float>(pbr.metallicFactor);
     material.roughnessFactor = static_cast<float>(pbr.roughnessFactor);
-    material.metallicRoughnessTexture = textureRefFor(pbr.metallicRoughnessTexture, gltfIndex, "metallicRoughnessTexture");
+    material.metallicRoughnessTexture =
+        textureRefFor(pbr.metallicRoughnessTexture, gltfIndex, "metallicRoughnessTexture");
     material.occlusionTexture = textureRefFor(m.occlusionTexture, gltfIndex, "occlusionTexture");
     material.occlusionStrength = static_cast<float>(m.occlusionTexture.strength);
     if (!(material.metallicFactor >= 0.0f && material.metallicFactor <= 1.0f))
-      refuse("material ", gltfIndex, " pbrMetallicRoughness.metallicFactor is ", pbr.metallicFactor, "; give a number in [0, 1]");
+      refuse("material ", gltfIndex, " pbrMetallicRoughness.metallicFactor is ", pbr.metallicFactor,
+             "; give a number in [0, 1]");
     if (!(material.roughnessFactor >= 0.0f && material.roughnessFactor <= 1.0f))
-      refuse("material ", gltfIndex, " pbrMetallicRoughness.roughnessFactor is ", pbr.roughnessFactor, "; give a number in [0, 1]");
+      refuse("material ", gltfIndex, " pbrMetallicRoughness.roughnessFactor is ", pbr.roughnessFactor,
+             "; give a number in [0, 1]");
     if (!(material.occlusionStrength >= 0.0f && material.occlusionStrength <= 1.0f))
-      refuse("material ", gltfIndex, " occlusionTexture.strength is ", m.occlusionTexture.strength, "; give a number in [0, 1]");
+      refuse("material ", gltfIndex, " occlusionTexture.strength is ", m.occlusionTexture.strength,
+             "; give a number in [0, 1]");
   }
 
   // A textureInfo as a TextureRef of this scene (its uv set and KHR_texture_transform); none,
@@ -237,7 +258,8 @@ class SceneBuilder {
     (void)textureRef(-1, info.texCoord, info.extensions, where);  // refuses a malformed transform first
     const int set = effectiveTexCoord(info.texCoord, info.extensions);
     if (set != 0 && set != 1) {
-      noteOnce(scene_.notes, cat(where, " samples TEXCOORD_", set, "; lenslab reads TEXCOORD_0 and TEXCOORD_1, so that texture is left out"));
+      noteOnce(scene_.notes, cat(where, " samples TEXCOORD_", set,
+                                 "; lenslab reads TEXCOORD_0 and TEXCOORD_1, so that texture is left out"));
       return {};
     }
     return textureRef(textureFor(info.index), info.texCoord, info.extensions, where);
@@ -246,7 +268,8 @@ class SceneBuilder {
   int textureFor(int gltfIndex) {
     if (const auto found = textures_.find(gltfIndex); found != textures_.end()) return found->second;
     const tinygltf::Texture& t = model_.textures[toIndex(gltfIndex)];
-    if (t.source < 0) refuse("texture ", gltfIndex, " has no source image (lenslab reads PNG and JPEG through \"source\")");
+    if (t.source < 0)
+      refuse("texture ", gltfIndex, " has no source image (lenslab reads PNG and JPEG through \"source\")");
     Texture texture;
     texture.image = imageFor(t.source);
     if (t.sampler >= 0) texture.sampler = convertSampler(model_.samplers[toIndex(t.sampler)]);
@@ -275,7 +298,8 @@ class SceneBuilder {
       if (usable) axes[i] = glm::normalize(axes[i] / largest);
     }
     if (usable && std::abs(glm::determinant(axes)) > 1e-9) return;
-    refuse("node ", nodeIndex, node.name.empty() ? std::string() : cat(" \"", excerpt(node.name), "\""), " (camera ", node.camera,
+    refuse("node ", nodeIndex, node.name.empty() ? std::string() : cat(" \"", excerpt(node.name), "\""), " (camera ",
+           node.camera,
            "): its world transform is singular (a scale of 0, with its parents'), so the camera has no view direction; "
            "give the node and its parents a non-zero scale");
   }
@@ -328,7 +352,8 @@ class SceneBuilder {
 
 }  // namespace
 
-void buildScene(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents, Scene& scene) {
+void buildScene(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents,
+                Scene& scene) {
   SceneBuilder(model, reader, parents, scene).build();
 }
 

@@ -14,6 +14,7 @@ namespace lenslab::gltf {
 
 // Fills `scene` (its meshes, materials, textures, images, instances, cameras, animation and notes) from a
 // Model that checkModel passed; `parents` is what checkModel returned.
-void buildScene(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents, Scene& scene);
+void buildScene(const tinygltf::Model& model, const AccessorReader& reader, const std::vector<int>& parents,
+                Scene& scene);
 
 }  // namespace lenslab::gltf

@@ -28,7 +28,8 @@ glm::vec2 pair(const tinygltf::Value& object, const char* field, glm::vec2 fallb
   if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
     refuse(where, " KHR_texture_transform.", field, " must be an array of 2 numbers");
   const glm::dvec2 d(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
-  if (!std::isfinite(d.x) || !std::isfinite(d.y)) refuse(where, " KHR_texture_transform.", field, " must hold finite numbers");
+  if (!std::isfinite(d.x) || !std::isfinite(d.y))
+    refuse(where, " KHR_texture_transform.", field, " must hold finite numbers");
   return glm::vec2(d);
 }
 

@@ -43,19 +43,22 @@ bool readWholeInputFile(std::vector<unsigned char>* out, std::string* error, con
 
 }  // namespace
 
-tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& directory, std::vector<fs::path>& filesRead) {
+tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& directory,
+                           std::vector<fs::path>& filesRead) {
   if (input.size() > UINT_MAX) refuse("the file is larger than the 4 GiB that glTF allows");
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(&keepEncodedImage, nullptr);
-  gltf.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeInputFile, &tinygltf::WriteWholeFile, &filesRead});
+  gltf.SetFsCallbacks(
+      {&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeInputFile, &tinygltf::WriteWholeFile, &filesRead});
   tinygltf::Model model;
   std::string error, warning;
   bool ok = false;
   const auto size = static_cast<unsigned int>(input.size());
   try {
-    ok = binary ? gltf.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(input.data()),
-                                            size, directory.string())
-                : gltf.LoadASCIIFromString(&model, &error, &warning, input.data(), size, directory.string());
+    ok = binary
+             ? gltf.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(input.data()),
+                                         size, directory.string())
+             : gltf.LoadASCIIFromString(&model, &error, &warning, input.data(), size, directory.string());
   } catch (const std::exception& e) {
     refuse("tinygltf failed: ", e.what());
   }

@@ -26,7 +26,8 @@ const char* const kView = R"({"vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "w
 Lens everyEffect() {
   Lens lens;
   Distortion& d = lens.effects.distortion;
-  d.k1 = -0.05, d.k2 = 0.011, d.p1 = 0.0013, d.p2 = -0.0007, d.k3 = 0.0021, d.alpha = 0.012, d.beta = -0.019, d.gamma = 0.0031;
+  d.k1 = -0.05, d.k2 = 0.011, d.p1 = 0.0013, d.p2 = -0.0007, d.k3 = 0.0021, d.alpha = 0.012, d.beta = -0.019,
+  d.gamma = 0.0031;
   Chromatic& c = lens.effects.chromatic;
   c.lateralRed = 0.002, c.lateralBlue = -0.0015, c.inverseFocusShiftRed = -0.02, c.inverseFocusShiftBlue = 0.03;
   lens.effects.fieldCurvature.inverseFocusPerRadius2 = 0.1;
@@ -47,8 +48,14 @@ Camera cameraWith(const Lens& lens) {
 
 void expectSameLens(const Lens& a, const Lens& b) {
   const Distortion &x = a.effects.distortion, &y = b.effects.distortion;
-  for (const auto& [p, q] : {std::pair{x.k1, y.k1}, {x.k2, y.k2}, {x.p1, y.p1}, {x.p2, y.p2}, {x.k3, y.k3}, {x.alpha, y.alpha},
-                             {x.beta, y.beta}, {x.gamma, y.gamma}})
+  for (const auto& [p, q] : {std::pair{x.k1, y.k1},
+                             {x.k2, y.k2},
+                             {x.p1, y.p1},
+                             {x.p2, y.p2},
+                             {x.k3, y.k3},
+                             {x.alpha, y.alpha},
+                             {x.beta, y.beta},
+                             {x.gamma, y.gamma}})
     EXPECT_DOUBLE_EQ(p, q);
   const Chromatic &c = a.effects.chromatic, &e = b.effects.chromatic;
   EXPECT_DOUBLE_EQ(c.lateralRed, e.lateralRed);
@@ -66,7 +73,8 @@ void expectSameLens(const Lens& a, const Lens& b) {
 
 TEST(LensEffectModules, TheRegistryListsEachEffectOnce) {
   const std::set<std::string> keys = lensEffectKeys();
-  EXPECT_EQ(keys, (std::set<std::string>{"aperture", "barrel", "chromatic", "distortion", "field_curvature", "vignetting"}));
+  EXPECT_EQ(keys,
+            (std::set<std::string>{"aperture", "barrel", "chromatic", "distortion", "field_curvature", "vignetting"}));
   EXPECT_EQ(keys.size(), lensEffectModules().size());
 }
 
@@ -103,7 +111,8 @@ TEST(LensEffectModules, EachEffectIsInterpolatedAlongAPath) {
   EXPECT_DOUBLE_EQ(d.gamma, 0.25 * b.effects.distortion.gamma);
   EXPECT_DOUBLE_EQ(quarter.effects.chromatic.lateralRed, 0.25 * b.effects.chromatic.lateralRed);
   EXPECT_DOUBLE_EQ(quarter.effects.chromatic.inverseFocusShiftBlue, 0.25 * b.effects.chromatic.inverseFocusShiftBlue);
-  EXPECT_DOUBLE_EQ(quarter.effects.fieldCurvature.inverseFocusPerRadius2, 0.25 * b.effects.fieldCurvature.inverseFocusPerRadius2);
+  EXPECT_DOUBLE_EQ(quarter.effects.fieldCurvature.inverseFocusPerRadius2,
+                   0.25 * b.effects.fieldCurvature.inverseFocusPerRadius2);
   EXPECT_DOUBLE_EQ(quarter.effects.vignetting.a1, 0.25 * b.effects.vignetting.a1);
   EXPECT_DOUBLE_EQ(quarter.effects.vignetting.a3, 0.25 * b.effects.vignetting.a3);
   EXPECT_EQ(quarter.aperture, b.aperture);
@@ -118,7 +127,8 @@ TEST(LensEffectModules, APathCarriesEveryEffectBetweenItsKeys) {
       {"time": 0, "eye": [0,0,5], "target": [0,0,0], "f_number": 4, "vignetting": {"a1": -0.2},
        "distortion": {"k1": -0.1}, "chromatic": {"lateral_red": 0.002}},
       {"time": 2, "eye": [0,0,5], "target": [0,0,0], "f_number": 4, "vignetting": {"a1": -0.4},
-       "distortion": {"k1": -0.2}, "chromatic": {"lateral_red": 0.004}}]})", "path.json");
+       "distortion": {"k1": -0.2}, "chromatic": {"lateral_red": 0.004}}]})",
+                                          "path.json");
   const PathKey middle = cameraAt(path, 1.0);
   EXPECT_NEAR(middle.lens.effects.vignetting.a1, -0.3, 1e-15);
   EXPECT_NEAR(middle.lens.effects.distortion.k1, -0.15, 1e-15);
@@ -134,9 +144,9 @@ TEST(LensEffectModules, ZeroStrengthAsksNothingOfTheFrame) {
   const EffectNeeds none;
   const auto same = [](const EffectNeeds& x, const EffectNeeds& y) {
     return x.viewsPerSample == y.viewsPerSample && x.sceneVariants == y.sceneVariants &&
-           x.fieldCurvatureWarp == y.fieldCurvatureWarp && x.lensVariants == y.lensVariants && x.remapTables == y.remapTables &&
-           x.finalGain == y.finalGain && x.idleThroughPinhole == y.idleThroughPinhole &&
-           x.minApertureSamples == y.minApertureSamples;
+           x.fieldCurvatureWarp == y.fieldCurvatureWarp && x.lensVariants == y.lensVariants &&
+           x.remapTables == y.remapTables && x.finalGain == y.finalGain &&
+           x.idleThroughPinhole == y.idleThroughPinhole && x.minApertureSamples == y.minApertureSamples;
   };
   for (const LensEffectModule* module : lensEffectModules()) {
     SCOPED_TRACE(module->key);
@@ -164,8 +174,9 @@ TEST(LensEffectModules, ZeroVignettingAddsNoPass) {
   const std::string view = R"("vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-0.72,-0.48,0.72,0.48])";
   for (const std::string& lens : {std::string(), std::string(R"(, "aperture_radius": 0.05)")}) {
     const FramePlan plain = makeFramePlan(scene, parseCameraJson("{" + view + lens + "}", "a.json").camera, {120, 80});
-    const FramePlan zero =
-        makeFramePlan(scene, parseCameraJson("{" + view + lens + R"(, "vignetting": {"a1": 0, "a2": 0})" + "}", "b.json").camera, {120, 80});
+    const FramePlan zero = makeFramePlan(
+        scene, parseCameraJson("{" + view + lens + R"(, "vignetting": {"a1": 0, "a2": 0})" + "}", "b.json").camera,
+        {120, 80});
     ASSERT_EQ(plain.passes.size(), zero.passes.size());
     for (std::size_t i = 0; i < plain.passes.size(); ++i) {
       EXPECT_EQ(plain.passes[i].name, zero.passes[i].name);
@@ -190,7 +201,8 @@ TEST(LensEffectModules, VignettingPolynomialIsTheShadersText) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coefficient(-1.0, 1.0), radius2(0.0, 2.0);
   for (int i = 0; i < 4096; ++i) {
-    const double a1 = coefficient(random), a2 = 0.5 * coefficient(random), a3 = 0.2 * coefficient(random), r2 = radius2(random);
+    const double a1 = coefficient(random), a2 = 0.5 * coefficient(random), a3 = 0.2 * coefficient(random),
+                 r2 = radius2(random);
     const double exact = 1.0 + r2 * (a1 + r2 * (a2 + r2 * a3));
     EXPECT_EQ(vignettingPolynomial(r2, a1, a2, a3), exact);
     EXPECT_EQ(Vignetting({a1, a2, a3}).gain(r2), exact > 0.0 ? exact : 0.0);

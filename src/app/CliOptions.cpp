@@ -23,21 +23,25 @@ CLI::Validator numberOrInfinity(const NumberRange& range) {
 }
 
 void addSamplingOptions(CLI::App& cmd, LensOptions& o) {
-  cmd.add_option("--pattern", o.pattern, "aperture pattern: " + patternNames() + " (default: sobol; see docs/sampling.md)")
+  cmd.add_option("--pattern", o.pattern,
+                 "aperture pattern: " + patternNames() + " (default: sobol; see docs/sampling.md)")
       ->check(CLI::IsMember(patternNameList()));
   CLI::Option* samples =
-      cmd.add_option("--aperture-samples", o.apertureSamples,
-                     "scene passes, one per aperture point: a number, or auto (from the largest circle of confusion in view)")
+      cmd.add_option(
+             "--aperture-samples", o.apertureSamples,
+             "scene passes, one per aperture point: a number, or auto (from the largest circle of confusion in view)")
           ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 65536))
           ->capture_default_str();
-  CLI::Option* max = cmd.add_option("--max-samples", o.maxSamples, "the most aperture samples auto may choose (with --target-psnr: per tile)")
+  CLI::Option* max = cmd.add_option("--max-samples", o.maxSamples,
+                                    "the most aperture samples auto may choose (with --target-psnr: per tile)")
                          ->check(CLI::Range(1, 65536))
                          ->capture_default_str();
   // A fixed count leaves nothing for a cap to do: say so rather than ignore it.
   cmd.parse_complete_callback([samples, max, &o] {
     if (max->count() > 0 && samples->count() > 0 && o.apertureSamples != "auto")
-      throw CLI::ValidationError("--max-samples", cat("caps the count that auto (or --target-psnr) chooses; --aperture-samples ",
-                                                      o.apertureSamples, " fixes it: give one or the other"));
+      throw CLI::ValidationError("--max-samples",
+                                 cat("caps the count that auto (or --target-psnr) chooses; --aperture-samples ",
+                                     o.apertureSamples, " fixes it: give one or the other"));
   });
 }
 
@@ -48,7 +52,7 @@ void addSeedOption(CLI::App& cmd, LensOptions& o) {
 void addFocusOptions(CLI::App& cmd, LensOptions& o) {
   CLI::Option* distance = cmd.add_option("--focus-distance", o.focusDistance,
                                          "put the plane of focus this far from the PRP (world units, or infinity)")
-                                  ->check(numberOrInfinity({.unit = "world units"}));
+                              ->check(numberOrInfinity({.unit = "world units"}));
   // --focus-at sets the focus after --focus-distance would: one of the two.
   addPairOption(cmd, "--focus-at", [&o](double x, double y) { o.focusAt = glm::dvec2(x, y); },
                 "focus on the depth under pixel X,Y of the image", {.unit = "pixels"})
@@ -56,9 +60,10 @@ void addFocusOptions(CLI::App& cmd, LensOptions& o) {
 }
 
 void addApertureShapeOptions(CLI::App& cmd, LensOptions& o) {
-  cmd.add_option("--blades", o.blades,
-                 "aperture blades: 0 for a round aperture, 3 to 64 for a polygon of the same area (out-of-focus highlights "
-                 "take its shape); over the camera file's \"aperture\"")
+  cmd.add_option(
+         "--blades", o.blades,
+         "aperture blades: 0 for a round aperture, 3 to 64 for a polygon of the same area (out-of-focus highlights "
+         "take its shape); over the camera file's \"aperture\"")
       ->type_name("N");
   cmd.add_option("--squeeze", o.squeeze,
                  "anamorphic squeeze: the aperture taller than wide by this ratio, e.g. 1.33 or 2 (1: none); over the "
@@ -69,9 +74,10 @@ void addApertureShapeOptions(CLI::App& cmd, LensOptions& o) {
 namespace {
 
 // An option that takes a point as X,Y,Z (three finite numbers).
-void addPointOption(CLI::App& cmd, const std::string& name, std::optional<glm::dvec3>& point, const std::string& description) {
-  cmd.add_option_function<std::vector<double>>(name, [&point](const std::vector<double>& xyz) { point = glm::dvec3(xyz[0], xyz[1], xyz[2]); },
-                                               description)
+void addPointOption(CLI::App& cmd, const std::string& name, std::optional<glm::dvec3>& point,
+                    const std::string& description) {
+  cmd.add_option_function<std::vector<double>>(
+         name, [&point](const std::vector<double>& xyz) { point = glm::dvec3(xyz[0], xyz[1], xyz[2]); }, description)
       ->check(numberIn({.unit = "world units"}))
       ->delimiter(',')
       ->expected(3)
@@ -81,9 +87,10 @@ void addPointOption(CLI::App& cmd, const std::string& name, std::optional<glm::d
 }  // namespace
 
 void addCameraNodeOption(CLI::App& cmd, CameraOptions& o) {
-  cmd.add_option("--camera-node", o.cameraNode,
-                 "use this glTF camera of the scene: its node's name, its camera's name, or its index (as `lenslab info` "
-                 "lists them; default: the first)")
+  cmd.add_option(
+         "--camera-node", o.cameraNode,
+         "use this glTF camera of the scene: its node's name, its camera's name, or its index (as `lenslab info` "
+         "lists them; default: the first)")
       ->type_name("NAME|INDEX");
 }
 
@@ -92,13 +99,16 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o, bool withPose, bool withA
                  "lens focal length in mm, overriding the camera's (a new focal length changes the field of view)")
       ->check(numberIn({.min = 0.01, .max = 1e6, .unit = "millimetres"}))
       ->type_name("MM");
-  cmd.add_option("--f-number", o.fNumber, "aperture as an f-number N (radius f/2N), e.g. 2.8, for depth of field; infinity: a pinhole")
+  cmd.add_option("--f-number", o.fNumber,
+                 "aperture as an f-number N (radius f/2N), e.g. 2.8, for depth of field; infinity: a pinhole")
       ->type_name("N");
   cmd.add_option("--sensor", o.sensor, "sensor size: WxH in mm (e.g. 36x24), or " + namedSensorList())
       ->type_name("WxH|NAME");
   if (withPose) {
     addPointOption(cmd, "--eye", o.eye, "put the lens centre here (world units), overriding the camera's");
-    addPointOption(cmd, "--target", o.target, "look at this point (world units), overriding the camera's; a camera focused on its target stays focused on it");
+    addPointOption(cmd, "--target", o.target,
+                   "look at this point (world units), overriding the camera's; a camera focused on its target stays "
+                   "focused on it");
   }
   addCameraNodeOption(cmd, o);
   if (!withAnimation) return;
@@ -118,13 +128,16 @@ void addTargetOption(CLI::App& cmd, LensOptions& o) {
 }
 
 void addTimeOption(CLI::App& cmd, std::optional<double>& seconds, const std::string& description) {
-  cmd.add_option("--time", seconds, description)->check(numberIn({.min = -1e9, .max = 1e9, .unit = "seconds"}))->type_name("SECONDS");
+  cmd.add_option("--time", seconds, description)
+      ->check(numberIn({.min = -1e9, .max = 1e9, .unit = "seconds"}))
+      ->type_name("SECONDS");
 }
 
 CLI::Option* addPairOption(CLI::App& cmd, const std::string& name, std::function<void(double, double)> set,
                            const std::string& description, const NumberRange& range) {
-  return cmd.add_option_function<std::vector<double>>(name, [set](const std::vector<double>& xy) { set(xy[0], xy[1]); },
-                                                      description)
+  return cmd
+      .add_option_function<std::vector<double>>(
+          name, [set](const std::vector<double>& xy) { set(xy[0], xy[1]); }, description)
       ->check(numberIn(range))
       ->delimiter(',')
       ->expected(2)
@@ -132,13 +145,26 @@ CLI::Option* addPairOption(CLI::App& cmd, const std::string& name, std::function
 }
 
 void addBackgroundOption(CLI::App& cmd, std::optional<glm::vec3>& background) {
-  cmd.add_option_function<std::vector<double>>("--background", [&background](const std::vector<double>& rgb) {
-       background = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]));
-     },
-     "colour where no surface is seen, linear R,G,B (e.g. 0,0,0); default: the scene's (a dark blue grey, 0.05,0.06,0.08)")
+  cmd.add_option_function<std::vector<double>>(
+         "--background",
+         [&background](const std::vector<double>& rgb) {
+           background = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]));
+         },
+         "colour where no surface is seen, linear R,G,B (e.g. 0,0,0); default: the scene's (a dark blue grey, "
+         "0.05,0.06,0.08)")
       ->check(numberIn({.min = 0.0, .max = 65504.0, .unit = "linear values"}))
       ->delimiter(',')
       ->expected(3);
+}
+
+void addLensFileOptions(CLI::App& cmd, std::string& file, const std::string& description, double* tolerancePx) {
+  cmd.add_option("--lens", file, description)->type_name("FILE");
+  if (!tolerancePx) return;
+  cmd.add_option("--lens-tolerance", *tolerancePx,
+                 "with --lens: the largest error of the fitted lens, in pixels of this image, for the real-time path")
+      ->check(numberIn({.min = 0.0, .max = 1e6, .unit = "pixels"}))
+      ->type_name("PX")
+      ->capture_default_str();
 }
 
 void addColmapOptions(CLI::App& cmd, CameraOptions& o) {

@@ -45,6 +45,12 @@ void addTimeOption(CLI::App& command, std::optional<double>& seconds, const std:
 // --background R,G,B: the colour (linear RGB, each finite, 0 to 65504) where no surface is seen.
 void addBackgroundOption(CLI::App& command, std::optional<glm::vec3>& background);
 
+// --lens FILE: a lens prescription (assets/lenses/; docs/lenses.md) that the command `fits` (render:
+// with --lens-tolerance PX, the fit's largest error for the real-time path, 0 to 1e6, when
+// `tolerancePx` is given) or traces (raycast, sweep); `description` says which.
+void addLensFileOptions(CLI::App& command, std::string& file, const std::string& description,
+                        double* tolerancePx = nullptr);
+
 // Every number option's check (each value of a list option's): core/NumberInput's rules, so nan,
 // inf and 1e309 are refused as not finite and the message names the option, the unit and the range.
 // CLI11's Range is not used for floating-point options: nan passes it.

@@ -29,27 +29,29 @@ struct Frame {
   double y(double h) const { return y0 + 0.5 * height - h * scale(); }
 };
 
-void polyline(std::ostringstream& out, const std::vector<glm::dvec2>& points, const char* colour, double width, double opacity = 1.0) {
-  out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << width << "\" stroke-opacity=\"" << opacity << "\" points=\"";
+void polyline(std::ostringstream& out, const std::vector<glm::dvec2>& points, const char* colour, double width,
+              double opacity = 1.0) {
+  out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << width << "\" stroke-opacity=\""
+      << opacity << "\" points=\"";
   for (const glm::dvec2& p : points) out << number(p.x) << "," << number(p.y) << " ";
   out << "\"/>\n";
 }
 
-void text(std::ostringstream& out, double x, double y, const std::string& s, const char* anchor = "start", int size = 12) {
-  out << "<text x=\"" << number(x) << "\" y=\"" << number(y) << "\" font-size=\"" << size << "\" text-anchor=\"" << anchor
-      << "\" font-family=\"sans-serif\">" << s << "</text>\n";
+void text(std::ostringstream& out, double x, double y, const std::string& s, const char* anchor = "start",
+          int size = 12) {
+  out << "<text x=\"" << number(x) << "\" y=\"" << number(y) << "\" font-size=\"" << size << "\" text-anchor=\""
+      << anchor << "\" font-family=\"sans-serif\">" << s << "</text>\n";
 }
 
-// The lens in section: each surface's profile, the glass between them shaded, the stop, the film,
-// and rays from three field points (a parallel bundle from infinity, or from the point in focus).
-void drawLayout(std::ostringstream& out, const LensPrescription& lens, const LensReport& report, const LensAnalysisOptions& o, const Frame& f) {
-  const double filmZ = lens.lengthMm() + report.filmDistanceMm;
+// The lens in section: each surface's profile, the glass between them shaded, the stop.
+void drawSurfaces(std::ostringstream& out, const LensPrescription& lens, const LensReport& report, const Frame& f) {
   for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
     const double z = lens.vertexMm(i), half = 0.5 * s.apertureMm;
     if (s.isStop()) {
       const double stopHalf = 0.5 * report.stopDiameterMm, outer = stopHalf + 0.08 * f.yMax;
-      for (double sign : {-1.0, 1.0}) polyline(out, {{f.x(z), f.y(sign * stopHalf)}, {f.x(z), f.y(sign * outer)}}, "#000", 2.5);
+      for (double sign : {-1.0, 1.0})
+        polyline(out, {{f.x(z), f.y(sign * stopHalf)}, {f.x(z), f.y(sign * outer)}}, "#000", 2.5);
       continue;
     }
     std::vector<glm::dvec2> profile;
@@ -63,9 +65,20 @@ void drawLayout(std::ostringstream& out, const LensPrescription& lens, const Len
       const LensSurface& next = lens.surfaces[i + 1];
       const double rim = std::min(half, 0.5 * next.apertureMm);
       for (double sign : {-1.0, 1.0})
-        polyline(out, {{f.x(z + s.sagMm(rim)), f.y(sign * rim)}, {f.x(lens.vertexMm(i + 1) + next.sagMm(rim)), f.y(sign * rim)}}, "#333", 1.2);
+        polyline(
+            out,
+            {{f.x(z + s.sagMm(rim)), f.y(sign * rim)}, {f.x(lens.vertexMm(i + 1) + next.sagMm(rim)), f.y(sign * rim)}},
+            "#333", 1.2);
     }
   }
+}
+
+// The lens in section (drawSurfaces), the film, and rays from three field points (a parallel
+// bundle from infinity, or from the point in focus).
+void drawLayout(std::ostringstream& out, const LensPrescription& lens, const LensReport& report,
+                const LensAnalysisOptions& o, const Frame& f) {
+  drawSurfaces(out, lens, report, f);
+  const double filmZ = lens.lengthMm() + report.filmDistanceMm;
   const double halfDiagonal = 0.5 * glm::length(o.sensorMm);
   polyline(out, {{f.x(filmZ), f.y(-halfDiagonal)}, {f.x(filmZ), f.y(halfDiagonal)}}, "#000", 2.0);
   text(out, f.x(filmZ), f.y(-halfDiagonal) + 16, "film", "middle");
@@ -124,9 +137,10 @@ void drawLayout(std::ostringstream& out, const LensPrescription& lens, const Len
 
 // A small chart of the report's field table: `value` against the field fraction.
 template <class Value>
-void drawChart(std::ostringstream& out, const LensReport& report, double x0, double y0, double w, double h, const std::string& title,
-               Value value, double lo, double hi) {
-  out << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << w << "\" height=\"" << h << "\" fill=\"none\" stroke=\"#999\"/>\n";
+void drawChart(std::ostringstream& out, const LensReport& report, double x0, double y0, double w, double h,
+               const std::string& title, Value value, double lo, double hi) {
+  out << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << w << "\" height=\"" << h
+      << "\" fill=\"none\" stroke=\"#999\"/>\n";
   text(out, x0 + 0.5 * w, y0 - 6, title, "middle");
   const auto px = [&](double t) { return x0 + t * w; };
   const auto py = [&](double v) { return y0 + h - (v - lo) / (hi - lo) * h; };
@@ -145,8 +159,9 @@ void drawChart(std::ostringstream& out, const LensReport& report, double x0, dou
 std::string lensPlotSvg(const LensPrescription& lens, const LensReport& report, const LensAnalysisOptions& o) {
   std::ostringstream out;
   const double width = 960, height = 400;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " "
-      << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << " " << height
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   const double filmZ = lens.lengthMm() + report.filmDistanceMm;
   double yMax = 0.5 * glm::length(o.sensorMm);
   for (const LensSurface& s : lens.surfaces) yMax = std::max(yMax, 0.5 * s.apertureMm);
@@ -154,20 +169,25 @@ std::string lensPlotSvg(const LensPrescription& lens, const LensReport& report, 
   const Frame frame{20, 40, 600, 330, -lead, filmZ + 0.02 * filmZ, 1.1 * yMax};
   text(out, 20, 22, lens.comments.empty() ? lens.source : lens.comments.front(), "start", 14);
   // Rays from far off the axis start outside the panel: it clips them.
-  out << "<clipPath id=\"layout\"><rect x=\"" << frame.x0 << "\" y=\"" << frame.y0 << "\" width=\"" << frame.width + 20 << "\" height=\""
-      << frame.height << "\"/></clipPath>\n<g clip-path=\"url(#layout)\">\n";
+  out << "<clipPath id=\"layout\"><rect x=\"" << frame.x0 << "\" y=\"" << frame.y0 << "\" width=\"" << frame.width + 20
+      << "\" height=\"" << frame.height << "\"/></clipPath>\n<g clip-path=\"url(#layout)\">\n";
   drawLayout(out, lens, report, o, frame);
   out << "</g>\n";
   text(out, 20, height - 8,
-       "focal length " + number(report.firstOrder.focalLengthMm) + " mm, f/" + number(report.firstOrder.fNumber) + ", field " +
-           number(report.fieldOfViewDegrees.z) + " deg diagonal on " + number(o.sensorMm.x) + " x " + number(o.sensorMm.y) + " mm",
+       "focal length " + number(report.firstOrder.focalLengthMm) + " mm, f/" + number(report.firstOrder.fNumber) +
+           ", field " + number(report.fieldOfViewDegrees.z) + " deg diagonal on " + number(o.sensorMm.x) + " x " +
+           number(o.sensorMm.y) + " mm",
        "start", 12);
   double dLo = 0.0, dHi = 0.0;
-  for (const FieldSample& s : report.field) dLo = std::min(dLo, s.distortionPercent), dHi = std::max(dHi, s.distortionPercent);
+  for (const FieldSample& s : report.field)
+    dLo = std::min(dLo, s.distortionPercent), dHi = std::max(dHi, s.distortionPercent);
   const double span = std::max(1.0, dHi - dLo);
-  drawChart(out, report, 690, 50, 240, 120, "distortion (%)", [](const FieldSample& s) { return s.distortionPercent; }, dLo - 0.1 * span,
-            dHi + 0.1 * span);
-  drawChart(out, report, 690, 240, 240, 120, "relative illumination", [](const FieldSample& s) { return s.relativeIllumination; }, 0.0, 1.05);
+  drawChart(
+      out, report, 690, 50, 240, 120, "distortion (%)", [](const FieldSample& s) { return s.distortionPercent; },
+      dLo - 0.1 * span, dHi + 0.1 * span);
+  drawChart(
+      out, report, 690, 240, 240, 120, "relative illumination",
+      [](const FieldSample& s) { return s.relativeIllumination; }, 0.0, 1.05);
   out << "</svg>\n";
   return out.str();
 }

@@ -13,7 +13,6 @@
 #include "camera/FocusOnPixel.h"
 #include "camera/ImageMap.h"
 #include "camera/ImageSize.h"
-#include "camera/ViewSpec.h"
 #include "core/Clock.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -22,7 +21,6 @@
 #include "plan/CameraSelection.h"
 #include "io/ImageFile.h"
 #include "io/OutputPath.h"
-#include "core/TextFile.h"
 #include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "raycast/RayCaster.h"
@@ -33,7 +31,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstdint>
 #include <iostream>
 #include <memory>
@@ -60,26 +57,25 @@ struct RenderOptions {
   LensOptions lens;
   CameraOptions camera;
   std::optional<glm::vec3> background;
-  int tileSizePx = 0;  // render: 0 = tile only when one render target cannot hold the image
+  int tileSizePx = 0;                 // render: 0 = tile only when one render target cannot hold the image
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
   std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
   ExposureOptions exposure;           // PNG output only
   EnvironmentRequest environment;
-  std::string lensFile;  // --lens: a prescription (lens/LensPrescription.h)
+  std::string lensFile;          // --lens: a prescription (lens/LensPrescription.h)
   double lensTolerancePx = 2.0;  // render --lens: the fitted camera's largest error for the real-time path
 };
 
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
 constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
-
 // The selected AOVs of `camera` (the camera the image was rendered with) from the ray caster, as
 // EXR channels; none when none is selected.
-std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, ImageSize size, const AovSelection& aovs) {
+std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, ImageSize size,
+                                 const AovSelection& aovs) {
   if (!aovs.any()) return {};
   return aovChannels(caster.aovImages(camera, size, aovs));
 }
-
 
 // render's camera after --focus-at (focused on the raster's depth there) and --lens (the thin lens
 // fitted for the focus as it now is: the field curvature and the pupil's place follow focus).
@@ -108,10 +104,11 @@ Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedC
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
 // `out`'s temporary file in `outputs`. `aovChannelValues` gets the selected AOVs (`aovs`) of the
 // camera rendered with (refused for a tiled image).
-std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
-                               const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out, RunStats& stats,
-                               ProgressReporter& progress, const DisplayEncoding& display, const AovSelection& aovs,
-                               std::vector<ImageChannel>& aovChannelValues, const std::optional<FittedLens>& fitted) {
+std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected,
+                               ImageSize size, const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out,
+                               RunStats& stats, ProgressReporter& progress, const DisplayEncoding& display,
+                               const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues,
+                               const std::optional<FittedLens>& fitted) {
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   stats.contextSeconds = secondsSince(t);
@@ -130,10 +127,12 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   // Memory bounded by the tile, not the frame (app/TiledFile.h).
   const TilePlan tiles = tilesForFile(camera, size, plan, out, o.tileSizePx);
   if (tiles.tiled && plan.adaptive)
-    throw InputError(cat("--target-psnr: ", tiles.why, "; per-tile budgets are not combined with that yet: give a smaller "
+    throw InputError(cat("--target-psnr: ", tiles.why,
+                         "; per-tile budgets are not combined with that yet: give a smaller "
                          "--width, or --aperture-samples"));
   if (tiles.tiled && aovs.any())
-    throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why, "; the AOVs are written with an image rendered in one "
+    throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why,
+                         "; the AOVs are written with an image rendered in one "
                          "piece: give a smaller --width (and no --tile-size), or use raycast"));
   if (tiles.tiled) {
     renderTiledToFile(renderer, camera, plan, size, tiles, outputs, out, display, stats, progress);
@@ -146,47 +145,55 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   return image;
 }
 
-Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size, RunStats& stats,
-              ProgressReporter& progress, const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues) {
+Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
+              RunStats& stats, ProgressReporter& progress, const AovSelection& aovs,
+              std::vector<ImageChannel>& aovChannelValues) {
   Camera camera = selected.camera;
   if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
   if (size.pixelCount() > kMaxRaycastPixels)
     throw InputError(cat("--width/--height: raycast holds the whole ", size.widthPx, "x", size.heightPx,
-                         " image in memory as float RGBA (", size.pixelCount() * 16 / (1 << 20), " MiB); it takes at most ",
-                         kMaxRaycastPixels, " pixels (4 GiB): give a smaller size, or use render, which tiles"));
+                         " image in memory as float RGBA (", size.pixelCount() * 16 / (1 << 20),
+                         " MiB); it takes at most ", kMaxRaycastPixels,
+                         " pixels (4 GiB): give a smaller size, or use render, which tiles"));
   auto t = std::chrono::steady_clock::now();
   const RayCaster caster(scene);
   stats.setupSeconds = secondsSince(t);
   stats.renderer = "lenslab ray caster (Embree, TBB)";
   stats.backend = "cpu";
   if (o.lens.focusAt) {
-    const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, [&](const Camera& c, ImageSize depthSize, int x, int y) {
-      return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
-    }, "--focus-at");
+    const SelectedCamera focused = focusOnPixel(
+        selected, size, *o.lens.focusAt,
+        [&](const Camera& c, ImageSize depthSize, int x, int y) {
+          return caster.depthAt(c, {x + 0.5, y + 0.5}, depthSize);
+        },
+        "--focus-at");
     camera = withDepthRangeFitted(focused.camera, scene.bounds);
     stats.setCamera(focused);
   }
   stats.camera = camera.source;
+  stats.plan.apertureSamples = o.samplesPerPixel;
+  const RaycastOptions options{o.samplesPerPixel, o.lens.seed};
+  const auto onRows = [&](int done, int rows) { progress.update(done, rows); };
+  Image image;
   if (!o.lensFile.empty()) {
     const RealLensMap frame(lensCameraFor(lensRequestFor(o.lensFile, selected, camera)), camera, size);
-    const LensCamera& lens = frame.lens();
-    stats.plan.apertureSamples = o.samplesPerPixel;
     stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified film x exit-pupil samples per pixel (--spp)");
-    stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel traced through every surface of ", o.lensFile,
-                                          lens.dispersion() ? ", per channel at 610, 550 and 465 nm" : ""), {}}};
+    stats.plan.passes = {{"raycast",
+                          cat(o.samplesPerPixel, " rays per pixel traced through every surface of ", o.lensFile,
+                              frame.lens().dispersion() ? ", per channel at 610, 550 and 465 nm" : ""),
+                          {}}};
     t = std::chrono::steady_clock::now();
-    Image image = caster.render(frame, RaycastOptions{o.samplesPerPixel, o.lens.seed}, [&](int done, int rows) { progress.update(done, rows); });
-    stats.renderSeconds = secondsSince(t);
-    aovChannelValues = aovsOf(caster, camera, size, aovs);
-    return image;
+    image = caster.render(frame, options, onRows);
+  } else {
+    stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
+    stats.plan.passes = {
+        {"raycast",
+         cat(o.samplesPerPixel, " rays per pixel through ", camera.lens.isPinhole() ? "the PRP" : "the thin lens",
+             camera.lens.effects.isZero() ? "" : ", each through the inverse lens model (exact)"),
+         {}}};
+    t = std::chrono::steady_clock::now();
+    image = caster.render(camera, size, options, onRows);
   }
-  stats.plan.apertureSamples = o.samplesPerPixel;
-  stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
-  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel through ", camera.lens.isPinhole() ? "the PRP" : "the thin lens",
-                                        camera.lens.effects.isZero() ? "" : ", each through the inverse lens model (exact)"), {}}};
-  t = std::chrono::steady_clock::now();
-  Image image = caster.render(camera, size, RaycastOptions{o.samplesPerPixel, o.lens.seed},
-                              [&](int done, int rows) { progress.update(done, rows); });
   stats.renderSeconds = secondsSince(t);
   aovChannelValues = aovsOf(caster, camera, size, aovs);
   return image;
@@ -195,27 +202,30 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
 // render --lens: the fitted thin lens where its worst error is within --lens-tolerance pixels,
 // else the lens traced exactly (as raycast --lens), the aperture samples as rays per pixel: then
 // true, with `exact` holding those rays. `fitted` gets the fit.
-bool traceLensExactly(const RenderOptions& o, const SelectedCamera& selected, ImageSize size, std::optional<FittedLens>& fitted,
-                      RenderOptions& exact) {
+bool traceLensExactly(const RenderOptions& o, const SelectedCamera& selected, ImageSize size,
+                      std::optional<FittedLens>& fitted, RenderOptions& exact) {
   if (o.method != Method::Raster || o.lensFile.empty()) return false;
   const LensRequest request = lensRequestFor(o.lensFile, selected, selected.camera);
   fitted = fitFor(request);
   const double errorPx = fitErrorPx(*fitted, request, size.widthPx);
   if (errorPx <= o.lensTolerancePx) {
     if (!o.quiet)
-      std::cerr << "lenslab: note: --lens " << o.lensFile << ": the fitted thin lens, off by up to " << std::round(errorPx * 100.0) / 100.0
-                << " px at this size (lenslab lens " << o.lensFile << " shows each effect's error)\n";
+      std::cerr << "lenslab: note: --lens " << o.lensFile << ": the fitted thin lens, off by up to "
+                << std::round(errorPx * 100.0) / 100.0 << " px at this size (lenslab lens " << o.lensFile
+                << " shows each effect's error)\n";
     return false;
   }
-  exact.samplesPerPixel = std::all_of(o.lens.apertureSamples.begin(), o.lens.apertureSamples.end(), ::isdigit) && !o.lens.apertureSamples.empty()
+  exact.samplesPerPixel = std::all_of(o.lens.apertureSamples.begin(), o.lens.apertureSamples.end(), ::isdigit) &&
+                                  !o.lens.apertureSamples.empty()
                               ? std::stoi(o.lens.apertureSamples)
                               : 64;
   if (!o.quiet)
     std::cerr << "lenslab: note: --lens " << o.lensFile << ": "
-              << (fitted->usable ? cat("the fitted thin lens is off by up to ", std::round(errorPx * 100.0) / 100.0, " px at this size")
+              << (fitted->usable ? cat("the fitted thin lens is off by up to ", std::round(errorPx * 100.0) / 100.0,
+                                       " px at this size")
                                  : cat("no thin lens fits (", fitted->why, ")"))
-              << ", above --lens-tolerance " << o.lensTolerancePx << ": tracing the lens exactly, " << exact.samplesPerPixel
-              << " rays per pixel\n";
+              << ", above --lens-tolerance " << o.lensTolerancePx << ": tracing the lens exactly, "
+              << exact.samplesPerPixel << " rays per pixel\n";
   return true;
 }
 
@@ -224,14 +234,14 @@ void reportWritten(const RenderOptions& o, const fs::path& out, ImageSize size, 
   if (o.quiet) return;
   if (stats.estimate)
     std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", estimated "
-              << stats.estimate->psnrDb << " dB with " << stats.estimate->meanSamples << " samples per pixel on average ("
-              << stats.estimate->minSamples << " to " << stats.estimate->maxSamples << " per tile), " << stats.renderer
-              << ", " << stats.seconds << " s)\n";
+              << stats.estimate->psnrDb << " dB with " << stats.estimate->meanSamples
+              << " samples per pixel on average (" << stats.estimate->minSamples << " to " << stats.estimate->maxSamples
+              << " per tile), " << stats.renderer << ", " << stats.seconds << " s)\n";
   else
     std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
-              << stats.plan.apertureSamples
-              << (o.method == Method::Raster ? " aperture sample" : " sample") << (stats.plan.apertureSamples == 1 ? "" : "s")
-              << (o.method == Method::Raster ? "" : " per pixel") << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
+              << stats.plan.apertureSamples << (o.method == Method::Raster ? " aperture sample" : " sample")
+              << (stats.plan.apertureSamples == 1 ? "" : "s") << (o.method == Method::Raster ? "" : " per pixel")
+              << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
 }
 
 int runRender(const RenderOptions& o) {
@@ -252,14 +262,15 @@ int runRender(const RenderOptions& o) {
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
-  for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds)) std::cerr << "lenslab: warning: " << w << "\n";
-  if (scene.triangleCount() == 0)
-    throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
+  for (const std::string& w : poseForOneImage(scene, o.camera.animation, o.timeSeconds))
+    std::cerr << "lenslab: warning: " << w << "\n";
+  if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
   // The camera as selected and refocused; rendered with its open near/far fitted to the scene.
   SelectedCamera selected = chooseCamera(scene, cameraPath, o.camera, requestedAspect);
   // With --lens the prescription's stop is the aperture: a camera file without one still focuses.
-  const std::vector<std::string> focusNotes = o.lensFile.empty() ? focusWarnings(selected.camera, o.lens) : std::vector<std::string>{};
+  const std::vector<std::string> focusNotes =
+      o.lensFile.empty() ? focusWarnings(selected.camera, o.lens) : std::vector<std::string>{};
   selected = applyLensOptions(selected, o.lens);
   for (const std::string& w : focusNotes) std::cerr << "lenslab: warning: " << w << "\n";
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
@@ -314,28 +325,29 @@ int runRender(const RenderOptions& o) {
   return 0;
 }
 
-}  // namespace
-
-namespace {
-
 std::function<int()> addImageCommand(CLI::App& app, Method method) {
   auto options = std::make_shared<RenderOptions>();
   options->method = method;
-  CLI::App* cmd = method == Method::Raster
-      ? app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model")
-      : app.add_subcommand("raycast", "Ray cast a glTF scene on the CPU: the reference for `render`, same camera and shading");
+  CLI::App* cmd =
+      method == Method::Raster
+          ? app.add_subcommand("render", "Render a glTF scene headless through the lecture's camera model")
+          : app.add_subcommand("raycast",
+                               "Ray cast a glTF scene on the CPU: the reference for `render`, same camera and shading");
   cmd->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
-  cmd->add_option("--camera", options->cameraFile,
-                  "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default: the scene's first "
-                  "glTF camera, else an automatic framing; the lens and pose options below override it field by field");
-  cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")->capture_default_str();
-  cmd->add_option("--width", options->width,
-                  method == Method::Raster
-                      ? "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^30 "
-                        "pixels in all: images beyond one GL render target are rendered in tiles and written a strip at a "
-                        "time (20000x13333 on llvmpipe: see docs/usage.md, Image sizes)"
-                      : "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^28 "
-                        "pixels in all (the ray caster holds the whole float image)");
+  cmd->add_option(
+      "--camera", options->cameraFile,
+      "camera JSON (lecture, physical or OpenCV-intrinsics form, with any lens effects); default: the scene's first "
+      "glTF camera, else an automatic framing; the lens and pose options below override it field by field");
+  cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")
+      ->capture_default_str();
+  cmd->add_option(
+      "--width", options->width,
+      method == Method::Raster
+          ? "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^30 "
+            "pixels in all: images beyond one GL render target are rendered in tiles and written a strip at a "
+            "time (20000x13333 on llvmpipe: see docs/usage.md, Image sizes)"
+          : "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^28 "
+            "pixels in all (the ray caster holds the whole float image)");
   cmd->add_option("--height", options->height, "image height in pixels (limits as --width)");
   if (method == Method::Raster) {
     cmd->add_option("--tile-size", options->tileSizePx,
@@ -346,25 +358,20 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
     cmd->add_option("--backend", options->backend, "osmesa (CPU, anywhere) or egl (GPU device, else Mesa surfaceless)")
         ->check(CLI::IsMember({"osmesa", "egl"}))
         ->capture_default_str();
-    cmd->add_option("--lens", options->lensFile,
-                    "render through the real-time camera fitted to this lens prescription (assets/lenses/; docs/lenses.md): "
-                    "the thin lens at its entrance pupil with the distortion, colour, field curvature and vignetting its rays "
-                    "show; where that fit is off by more than --lens-tolerance, the lens is traced exactly instead")
-        ->type_name("FILE");
-    cmd->add_option("--lens-tolerance", options->lensTolerancePx,
-                    "with --lens: the largest error of the fitted lens, in pixels of this image, for the real-time path")
-        ->check(CLI::Range(0.0, 1e6))
-        ->type_name("PX")
-        ->capture_default_str();
+    addLensFileOptions(*cmd, options->lensFile,
+                       "render through the real-time camera fitted to this lens prescription (assets/lenses/; "
+                       "docs/lenses.md): the thin lens at its entrance pupil with the distortion, colour, field "
+                       "curvature and vignetting its rays show; where that fit is off by more than --lens-tolerance, "
+                       "the lens is traced exactly instead",
+                       &options->lensTolerancePx);
   } else {
     cmd->add_option("--spp", options->samplesPerPixel, "samples per pixel (stratified pixel x lens)")
         ->check(CLI::Range(1, 1 << 20))
         ->capture_default_str();
-    cmd->add_option("--lens", options->lensFile,
-                    "trace every ray through this lens prescription (assets/lenses/; docs/lenses.md) instead of the thin lens: "
-                    "the camera's pose, sensor, f-number and focus distance, the lens's own focal length, distortion and "
-                    "vignetting")
-        ->type_name("FILE");
+    addLensFileOptions(*cmd, options->lensFile,
+                       "trace every ray through this lens prescription (assets/lenses/; docs/lenses.md) instead of "
+                       "the thin lens: the camera's pose, sensor, f-number and focus distance, the lens's own focal "
+                       "length, distortion and vignetting");
   }
   addColmapOptions(*cmd, options->camera);
   if (method == Method::Raster) addSamplingOptions(*cmd, options->lens);

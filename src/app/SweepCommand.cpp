@@ -66,23 +66,23 @@ void refuseTargetsSharingAName(const std::vector<double>& targetsDb) {
     if (added) continue;
     if (named->second == target)
       throw InputError(cat("--target-psnr: ", target, " dB is given twice; give each target once"));
-    throw InputError(cat("--target-psnr: ", shortestText(named->second), " and ", shortestText(target),
-                         " dB both name the image ", named->first,
-                         " (targets name their images to 10 significant digits); give targets that differ within them"));
+    throw InputError(cat(
+        "--target-psnr: ", shortestText(named->second), " and ", shortestText(target), " dB both name the image ",
+        named->first, " (targets name their images to 10 significant digits); give targets that differ within them"));
   }
 }
 
 // --lens: the lens placed at the camera (`exactLens`) and the thin lens fitted to it (returned),
 // with which the frame's real-lens map is made once the image size is known.
-Camera prepareExactLens(SweepCommandOptions& o, const SelectedCamera& selected, const Camera& camera, const Scene& scene,
-                        std::optional<LensCamera>& exactLens) {
+Camera prepareExactLens(SweepCommandOptions& o, const SelectedCamera& selected, const Camera& camera,
+                        const Scene& scene, std::optional<LensCamera>& exactLens) {
   const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
   const FittedLens fit = fitFor(request);
   exactLens.emplace(lensCameraFor(request));
   o.sweep.inputFiles.push_back(o.lensFile);
-  o.sweep.inputOptions.push_back(cat("lens settings ", shortestText(request.settings.sensorMm.x), " ",
-                                     shortestText(request.settings.sensorMm.y), " ", shortestText(request.settings.fNumber.value_or(0.0)),
-                                     " ", shortestText(request.settings.focusDistance)));
+  o.sweep.inputOptions.push_back(cat(
+      "lens settings ", shortestText(request.settings.sensorMm.x), " ", shortestText(request.settings.sensorMm.y), " ",
+      shortestText(request.settings.fNumber.value_or(0.0)), " ", shortestText(request.settings.focusDistance)));
   const Camera fitted = withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds);
   o.sweep.lensAblations = fittedCameraAblations(fitted);
   return fitted;
@@ -93,12 +93,12 @@ Camera prepareExactLens(SweepCommandOptions& o, const SelectedCamera& selected, 
 void addReferenceInputs(SweepCommandOptions& o, const std::optional<fs::path>& cameraPath) {
   if (cameraPath) o.sweep.inputFiles.push_back(*cameraPath);
   if (o.background)
-    o.sweep.inputOptions.push_back(cat("background ", shortestText(o.background->r), " ", shortestText(o.background->g), " ",
-                                       shortestText(o.background->b)));
+    o.sweep.inputOptions.push_back(cat("background ", shortestText(o.background->r), " ", shortestText(o.background->g),
+                                       " ", shortestText(o.background->b)));
   if (!o.environment.file.empty()) {
     o.sweep.inputFiles.push_back(o.environment.file);
-    o.sweep.inputOptions.push_back(cat("environment ", shortestText(o.environment.intensity), " ",
-                                       shortestText(o.environment.rotationDegrees)));
+    o.sweep.inputOptions.push_back(
+        cat("environment ", shortestText(o.environment.intensity), " ", shortestText(o.environment.rotationDegrees)));
   }
 }
 
@@ -117,8 +117,10 @@ void prepareOutputs(OutputSet& outputs, const fs::path& out) {
 void attachReporters(SweepOptions& sweep, std::unique_ptr<ProgressReporter>& progress, bool quiet) {
   sweep.log = [&progress, quiet](const std::string& line) {
     if (quiet) return;
-    if (progress) progress->note("lenslab: sweep: " + line);
-    else std::cerr << "lenslab: sweep: " << line << "\n";
+    if (progress)
+      progress->note("lenslab: sweep: " + line);
+    else
+      std::cerr << "lenslab: sweep: " << line << "\n";
   };
   sweep.progress = [&progress, quiet](const std::string& unit, std::int64_t done, std::int64_t total) {
     if (!progress || progress->unit() != unit) {
@@ -135,40 +137,42 @@ struct SweepTimes {
 };
 
 std::string sweepHeader(const SweepCommandOptions& o, const fs::path& scenePath, const Camera& camera, ImageSize size,
-                        const std::optional<EnvironmentSummary>& environment, const GlContext& context, const SweepResult& result,
-                        const SweepTimes& times) {
+                        const std::optional<EnvironmentSummary>& environment, const GlContext& context,
+                        const SweepResult& result, const SweepTimes& times) {
   return cat(
-      "# Error against run time: ", scenePath.filename().string(), "\n\n",
-      "- scene `", scenePath.string(), "`, camera ", camera.source, ", ", size.widthPx, "x", size.heightPx, "\n",
+      "# Error against run time: ", scenePath.filename().string(), "\n\n", "- scene `", scenePath.string(),
+      "`, camera ", camera.source, ", ", size.widthPx, "x", size.heightPx, "\n",
       environment ? cat("- environment `", environment->file, "`, intensity ", environment->intensity, ", rotation ",
                         environment->rotationDegrees, "°\n")
                   : std::string(),
       "- renderer: ", context.renderer(), " (", o.backend, "); ray caster: Embree + TBB on this machine's CPU\n",
       o.lensFile.empty() ? std::string()
-                         : cat("- lens `", o.lensFile, "`: the reference and the ray-cast rows trace it exactly; the raster rows are the "
+                         : cat("- lens `", o.lensFile,
+                               "`: the reference and the ray-cast rows trace it exactly; the raster rows are the "
                                "thin lens fitted to it (`lenslab lens` gives the fit)\n"),
       "- reference: ray cast at ", o.sweep.referenceSpp, " spp",
       result.referenceCached ? " (from the cache)" : cat(", ", result.referenceSeconds, " s"),
       " (the pixel integral: each sample's texture filtered over its own stratum); its own noise, from its two ",
       "halves: RMSE ", result.referenceNoiseRmse, ", so no method can show more than about ",
-      -20.0 * std::log10(result.referenceNoiseRmse), " dB here\n",
-      "- GL context creation ", times.contextSeconds, " s; scene upload, shader compilation and a warm-up frame ",
-      result.setupSeconds, " s; neither is in the rows, which time each frame with the GPU finished and read back ",
+      -20.0 * std::log10(result.referenceNoiseRmse), " dB here\n", "- GL context creation ", times.contextSeconds,
+      " s; scene upload, shader compilation and a warm-up frame ", result.setupSeconds,
+      " s; neither is in the rows, which time each frame with the GPU finished and read back ",
       "(median of 3 for raster and post-process)\n",
-      "- occlusion-edge pixels (within their circle of confusion of a depth step): ", result.edgeFraction * 100.0, " %\n",
-      "- whole sweep: ", times.sweepSeconds, " s\n");
+      "- occlusion-edge pixels (within their circle of confusion of a depth step): ", result.edgeFraction * 100.0,
+      " %\n", "- whole sweep: ", times.sweepSeconds, " s\n");
 }
 
 Image errorPlot(const SweepResult& result) {
   const std::map<std::string, glm::vec3> colours = {
-      {"raster lecture17", {0.8f, 0.1f, 0.6f}}, {"raster concentric", {0.1f, 0.3f, 0.9f}},
-      {"raster r2", {0.0f, 0.6f, 0.3f}},        {"raster random", {0.9f, 0.5f, 0.0f}},
+      {"raster lecture17", {0.8f, 0.1f, 0.6f}},   {"raster concentric", {0.1f, 0.3f, 0.9f}},
+      {"raster r2", {0.0f, 0.6f, 0.3f}},          {"raster random", {0.9f, 0.5f, 0.0f}},
       {"raycast stratified", {0.8f, 0.0f, 0.0f}}, {"postprocess gather", {0.3f, 0.3f, 0.3f}},
       {"raster sobol", {0.5f, 0.3f, 0.8f}},       {"adaptive sobol", {0.0f, 0.75f, 0.85f}}};
   std::vector<PlotSeries> series;
   for (const SweepRow& row : result.rows) {
     const std::string key = row.method + " " + row.pattern;
-    if (series.empty() || series.back().name != key) series.push_back({key, colours.count(key) ? colours.at(key) : glm::vec3(0.0f), {}});
+    if (series.empty() || series.back().name != key)
+      series.push_back({key, colours.count(key) ? colours.at(key) : glm::vec3(0.0f), {}});
     series.back().points.push_back({row.seconds, row.rmse});
   }
   return logLogPlot(series, "seconds", "RMSE", "error against run time");
@@ -219,13 +223,15 @@ int runSweepCommand(SweepCommandOptions& o) {
   times.sweepSeconds = secondsSince(t);
 
   outputs.add(out / "sweep.csv", sweepCsv(result));
-  outputs.add(out / "sweep.md", sweepMarkdown(result, sweepHeader(o, scenePath, camera, size, environment, *context, result, times)));
+  outputs.add(out / "sweep.md",
+              sweepMarkdown(result, sweepHeader(o, scenePath, camera, size, environment, *context, result, times)));
   writeImage(outputs, out / "error_vs_time.png", errorPlot(result));
   outputs.commit();
-  const auto images = std::count_if(result.rows.begin(), result.rows.end(), [](const SweepRow& r) { return !r.image.empty(); });
+  const auto images =
+      std::count_if(result.rows.begin(), result.rows.end(), [](const SweepRow& r) { return !r.image.empty(); });
   if (!o.quiet)
-    std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and " << images
-              << " images in " << (out / "images").string() << "\n";
+    std::cerr << "lenslab: sweep: wrote " << (out / "sweep.csv").string() << ", sweep.md, error_vs_time.png and "
+              << images << " images in " << (out / "images").string() << "\n";
   return 0;
 }
 
@@ -237,35 +243,48 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("scene", o->scene, "glTF 2.0 scene; default: the bundled 'rows' with camera-dof.json");
   cmd->add_option("--camera", o->cameraFile, "camera JSON with an aperture (f_number or aperture_radius)");
   cmd->add_option("--out,-o", o->outDir, "folder for sweep.csv, sweep.md, error_vs_time.png and images/")->required();
-  cmd->add_option("--width", o->width,
-                  "image width in pixels (default about 320 here, the nearest that keeps pixels square: the reference is costly)");
+  cmd->add_option(
+      "--width", o->width,
+      "image width in pixels (default about 320 here, the nearest that keeps pixels square: the reference is costly)");
   cmd->add_option("--height", o->height, "image height in pixels");
-  cmd->add_option("--backend", o->backend, "osmesa or egl")->check(CLI::IsMember({"osmesa", "egl"}))->capture_default_str();
-  cmd->add_option("--lens", o->lensFile,
-                  "sweep the real-time camera fitted to this lens prescription against the lens traced exactly (the reference "
-                  "and the raycast rows), with each fitted effect also left out in turn (docs/lenses.md)")
-      ->type_name("FILE");
-  cmd->add_option("--reference-spp", o->sweep.referenceSpp, "samples per pixel of the reference")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-  cmd->add_option("--max-views", o->sweep.maxViews, "largest raster budget (views)")->check(CLI::Range(1, 65536))->capture_default_str();
-  cmd->add_option("--max-spp", o->sweep.maxSpp, "largest ray-cast budget (spp)")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  cmd->add_option("--backend", o->backend, "osmesa or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}))
+      ->capture_default_str();
+  addLensFileOptions(*cmd, o->lensFile,
+                     "sweep the real-time camera fitted to this lens prescription against the lens traced exactly (the "
+                     "reference and the raycast rows), with each fitted effect also left out in turn (docs/lenses.md)");
+  cmd->add_option("--reference-spp", o->sweep.referenceSpp, "samples per pixel of the reference")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd->add_option("--max-views", o->sweep.maxViews, "largest raster budget (views)")
+      ->check(CLI::Range(1, 65536))
+      ->capture_default_str();
+  cmd->add_option("--max-spp", o->sweep.maxSpp, "largest ray-cast budget (spp)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
   cmd->add_option("--seed", o->lens.seed, "seed for every sampler")->capture_default_str();
   cmd->add_option("--target-psnr", o->sweep.targetsDb, "the adaptive method's targets (dB), e.g. 30,40")
       ->delimiter(',')
       ->check(numberIn({.min = 10.0, .max = 100.0, .unit = "dB"}))
       ->type_name("DB[,DB...]")
       ->capture_default_str();
-  cmd->add_option("--methods", o->sweep.series, "the series to run: " + [] {
-        std::string names;
-        for (const std::string& n : sweepSeriesNames()) names += (names.empty() ? "" : ",") + n;
-        return names;
-      }() + " (default all)")
+  cmd->add_option(
+         "--methods", o->sweep.series,
+         "the series to run: " +
+             [] {
+               std::string names;
+               for (const std::string& n : sweepSeriesNames()) names += (names.empty() ? "" : ",") + n;
+               return names;
+             }() +
+             " (default all)")
       ->delimiter(',')
       ->check(CLI::IsMember(sweepSeriesNames()))
       ->type_name("LIST");
   addBackgroundOption(*cmd, o->background);
   addEnvironmentOptions(*cmd, o->environment);
   addCameraOptions(*cmd, o->camera, /*withPose=*/true, /*withAnimation=*/false);
-  cmd->add_option("--focus-distance", o->lens.focusDistance, "put the plane of focus this far from the PRP (or infinity)")
+  cmd->add_option("--focus-distance", o->lens.focusDistance,
+                  "put the plane of focus this far from the PRP (or infinity)")
       ->check(numberOrInfinity({.unit = "world units"}));
   addApertureShapeOptions(*cmd, o->lens);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
@@ -279,7 +298,8 @@ std::function<int()> addSweepCommand(CLI::App& app) {
     };
     const auto refuseUnless = [&](const char* option, std::initializer_list<const char*> series, const char* what) {
       if (cmd->count(option) > 0 && !runs(series))
-        throw InputError(cat(option, " sets ", what, ", which --methods leaves out; add it to --methods or drop ", option));
+        throw InputError(
+            cat(option, " sets ", what, ", which --methods leaves out; add it to --methods or drop ", option));
     };
     refuseUnless("--max-spp", {"raycast"}, "the raycast series' largest budget");
     refuseUnless("--target-psnr", {"adaptive"}, "the adaptive series' targets");

@@ -120,7 +120,7 @@ expect_refusal "focus on nothing" "nothing of the scene" -- render --camera "$sr
 number_options=(
   "render --time VALUE" "render --focal-length VALUE" "render --focus-distance VALUE" "render --focus-at VALUE,1"
   "render --target-psnr VALUE" "render --eye VALUE,0,0" "render --target 0,VALUE,0" "render --background 0,0,VALUE"
-  "render --f-number VALUE" "render --sensor VALUEx24" "raycast --time VALUE" "raycast --focus-at 1,VALUE"
+  "render --f-number VALUE" "render --sensor VALUEx24" "render --lens-tolerance VALUE" "raycast --time VALUE" "raycast --focus-at 1,VALUE"
   "capture --fps VALUE" "sweep --target-psnr 30,VALUE" "sweep --focus-distance VALUE"
   "view --frame-budget-ms VALUE" "view --click VALUE,VALUE" "view --window-size VALUE,100" "view --time VALUE"
 )

@@ -29,7 +29,9 @@ void addSamplingOptions(CLI::App& cmd, LensOptions& o) {
   CLI::Option* samples =
       cmd.add_option(
              "--aperture-samples", o.apertureSamples,
-             "scene passes, one per aperture point: a number, or auto (from the largest circle of confusion in view)")
+             "scene passes, one per aperture point, each jittered within the pixel: a number, or auto (from the "
+             "largest circle of confusion in view, and at least 16 for anti-aliasing, a pinhole's included); 1 "
+             "draws one plain pass")
           ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 65536))
           ->capture_default_str();
   CLI::Option* max = cmd.add_option("--max-samples", o.maxSamples,

@@ -51,9 +51,9 @@ PlanView planViewOf(const Camera& camera) {
 
 namespace {
 
-// Views of a pinhole: every view is the same view and only the sub-pixel jitter differs. An explicit
-// count is honoured as that many jittered views (anti-aliasing: the box-filtered pixel integral);
-// auto asks for none.
+// Views of a pinhole: every view is the same view and only the sub-pixel jitter differs, so views
+// are anti-aliasing (the box-filtered pixel integral): auto gives kAntialiasSamples of them, an
+// explicit count that many (1: one view from the PRP).
 void planPinholeSamples(const PlanOptions& options, FramePlan& plan) {
   if (options.pattern == AperturePattern::Lecture17) {
     plan.apertureSamples = 17;
@@ -62,9 +62,14 @@ void planPinholeSamples(const PlanOptions& options, FramePlan& plan) {
     plan.apertureSamples = options.apertureSamples;
     plan.samplesWhy =
         cat("pinhole camera: ", options.apertureSamples, " sub-pixel-jittered views as asked (anti-aliasing)");
-  } else {
+  } else if (options.apertureSamples == 1) {
     plan.apertureSamples = 1;
-    plan.samplesWhy = "pinhole camera: one view from the PRP";
+    plan.samplesWhy = "pinhole camera: one view from the PRP, as asked (not anti-aliased)";
+  } else {
+    plan.apertureSamples = std::min(kAntialiasSamples, std::max(options.maxSamples, 1));
+    plan.samplesWhy = cat("pinhole camera: auto, ", plan.apertureSamples,
+                          " sub-pixel-jittered views (anti-aliasing: the pixel integral; --aperture-samples 1 for "
+                          "one view)");
   }
 }
 
@@ -124,9 +129,12 @@ void planLensSamples(const PlanOptions& options, const std::string& range, const
     return;
   }
   plan.apertureSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
-  if (plan.apertureSamples == 1)
-    plan.samplesWhy = cat("the scene lies inside the depth of field: ", range);
-  else
+  const int antialias = std::min(kAntialiasSamples, std::max(options.maxSamples, 1));
+  if (plan.apertureSamples < antialias) {
+    plan.apertureSamples = antialias;
+    plan.samplesWhy =
+        cat("auto: ", antialias, " views for anti-aliasing, which the blur does not need more than (", range, ")");
+  } else
     plan.samplesWhy =
         cat("auto: ceil(pi/4 x ", plan.cocMaxPx, "^2)",
             plan.apertureSamples == options.maxSamples ? cat(" capped at --max-samples ", options.maxSamples)

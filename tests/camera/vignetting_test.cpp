@@ -146,7 +146,8 @@ TEST(VignettingPlan, TheGainIsPlannedLastAndOnlyWhenItIsNotZero) {
   EXPECT_FALSE(z.vignetting);
 
   const Camera dark = parseCameraJson("{" + kView + R"(, "vignetting": {"a1": -0.5}})", "dark.json").camera;
-  FramePlan p = makeFramePlan(scene, dark, size);  // a pinhole: one view, then the gain
+  // A pinhole, one view asked: the view, then the gain.
+  FramePlan p = makeFramePlan(scene, dark, size, PlanOptions{AperturePattern::Sobol, 1, 256, 1});
   EXPECT_TRUE(p.vignetting);
   EXPECT_EQ(passNames(p), (std::vector<std::string>{"scene", "vignetting"}));
   EXPECT_FALSE(p.remap);

@@ -76,9 +76,10 @@ else
 fi
 
 # Depth of field: auto sample count, each pattern, focus tools.
-if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --max-samples 8 --out "$work/dof.png" --stats "$work/dof.json" -q; then
-  # The count comes from the blur seen (a pre-pass), not the bounds (which would ask for the cap, 8).
-  if grep -qF '"aperture_samples": 2' "$work/dof.json" && grep -qF '"bounds_aperture_samples": 8' "$work/dof.json" &&
+if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 480 --max-samples 64 --out "$work/dof.png" --stats "$work/dof.json" -q; then
+  # The count comes from the blur seen (a pre-pass: circles up to 5.6 px, ceil(pi/4 x 5.6^2) = 25),
+  # not the bounds (which would ask for the cap, 64).
+  if grep -qF '"aperture_samples": 25' "$work/dof.json" && grep -qF '"bounds_aperture_samples": 64' "$work/dof.json" &&
      grep -qF '"visible_blur"' "$work/dof.json" && grep -qF '"accumulate"' "$work/dof.json" && grep -qF '"coc_px"' "$work/dof.json"; then pass
   else fail "dof stats: $(cat "$work/dof.json")"; fi
 else
@@ -90,8 +91,12 @@ for pattern in lecture17 concentric r2 random; do
 done
 if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --max-samples 4 --focus-at 66,42 --out "$work/focus.png" --stats "$work/focus.json" -q &&
    grep -qF 'focused at pixel 66,42' "$work/focus.json"; then pass; else fail "--focus-at"; fi
-# A pinhole camera is one scene pass, no accumulation.
-if grep -qF '"accumulate"' "$work/stats.json"; then fail "pinhole plan accumulates"; else pass; fi
+# A pinhole camera is anti-aliased by default (16 jittered views), one scene pass when asked for one.
+if grep -qF '"aperture_samples": 16' "$work/stats.json" && grep -qF 'anti-aliasing' "$work/stats.json"; then pass
+else fail "pinhole default is not anti-aliased: $(cat "$work/stats.json")"; fi
+if "$lenslab" render --width 120 --aperture-samples 1 --out "$work/one.png" --stats "$work/one.json" -q &&
+   ! grep -qF '"accumulate"' "$work/one.json" && grep -qF '"aperture_samples": 1' "$work/one.json"; then pass
+else fail "--aperture-samples 1 with a pinhole accumulates"; fi
 expect_refusal "bad sample count" "--aperture-samples" -- render --aperture-samples lots --out "$work/out.png"
 
 # To a target error: the estimate and the samples in --stats; refusals name the option.

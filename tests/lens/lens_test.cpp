@@ -219,20 +219,32 @@ ViewSpec viewFiveAway() {
   return v;
 }
 
-TEST(FramePlan, PinholeAndInFocusScenesAreOnePlainPass) {
+// A sharp frame, pinhole or wholly in focus, is anti-aliased by auto (kAntialiasSamples jittered
+// views) and one plain pass when one view is asked for.
+TEST(FramePlan, PinholeAndInFocusScenesAreAntialiasedOrOnePlainPass) {
   const ViewSpec v = viewFiveAway();
+  const PlanOptions oneView{AperturePattern::Sobol, 1, 256, 1};
   const Camera pinhole = cameraFocusedOnViewPlane(v, 0.0, "test");
   FramePlan plan = makeFramePlan(planeAt(5.0), pinhole, {100, 100});
+  EXPECT_EQ(plan.apertureSamples, kAntialiasSamples) << plan.samplesWhy;
+  EXPECT_NE(plan.samplesWhy.find("anti-aliasing"), std::string::npos) << plan.samplesWhy;
+  plan = makeFramePlan(planeAt(5.0), pinhole, {100, 100}, oneView);
   EXPECT_EQ(plan.apertureSamples, 1);
   ASSERT_EQ(plan.passes.size(), 1u);
   EXPECT_EQ(plan.passes[0].name, "scene");
+  // Auto never asks for more than --max-samples.
+  EXPECT_EQ(
+      makeFramePlan(planeAt(5.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Sobol, 0, 4, 1}).apertureSamples,
+      4);
 
   // A wide aperture, but the whole scene is a plane on the plane of focus.
   const Camera lens = cameraFocusedOnViewPlane(v, 0.5, "test");
   plan = makeFramePlan(planeAt(5.0), lens, {100, 100});
+  EXPECT_EQ(plan.apertureSamples, kAntialiasSamples) << plan.samplesWhy;
+  EXPECT_NEAR(plan.cocMaxPx, 0.0, 1e-9);
+  plan = makeFramePlan(planeAt(5.0), lens, {100, 100}, oneView);
   EXPECT_EQ(plan.apertureSamples, 1) << plan.samplesWhy;
   EXPECT_EQ(plan.passes.size(), 1u);
-  EXPECT_NEAR(plan.cocMaxPx, 0.0, 1e-9);
 
   // Off the plane of focus: CoC on the window 2R·|z − z_f|/z = 1·5/10 = 0.5 → 25 px; N = ceil(π/4·625).
   plan = makeFramePlan(planeAt(10.0), lens, {100, 100});
@@ -262,7 +274,9 @@ TEST(FramePlan, TheBarrelClipsAtTheUndistortedCorners) {
   Camera lens = cameraFocusedOnViewPlane(viewFiveAway(), 0.1, "test");
   lens.lens.barrel = LensBarrel{0.2, 0.155};
   const FramePlan straight = makeFramePlan(planeAt(5.0), lens, {100, 100});
-  EXPECT_EQ(straight.apertureSamples, 1) << "the window's corners see the whole aperture: " << straight.samplesWhy;
+  EXPECT_EQ(straight.apertureSamples, kAntialiasSamples)
+      << "the window's corners see the whole aperture: " << straight.samplesWhy;
+  EXPECT_EQ(straight.samplesWhy.find("barrel"), std::string::npos) << straight.samplesWhy;
   lens.lens.effects.distortion.k1 = -0.8;
   const FramePlan distorted = makeFramePlan(planeAt(5.0), lens, {100, 100});
   EXPECT_EQ(distorted.apertureSamples, 64) << distorted.samplesWhy;
@@ -270,7 +284,7 @@ TEST(FramePlan, TheBarrelClipsAtTheUndistortedCorners) {
 }
 
 // An explicit count with a pinhole is honoured: N sub-pixel-jittered views of the same PRP (the
-// box-filtered pixel integral, i.e. anti-aliasing); auto stays one view. (It used to be ignored.)
+// box-filtered pixel integral, i.e. anti-aliasing); auto gives kAntialiasSamples, 1 one view.
 TEST(FramePlan, AnExplicitCountWithAPinholeGivesJitteredViews) {
   const ViewSpec v = viewFiveAway();
   const Camera pinhole = cameraFocusedOnViewPlane(v, 0.0, "test");
@@ -281,7 +295,10 @@ TEST(FramePlan, AnExplicitCountWithAPinholeGivesJitteredViews) {
   ASSERT_EQ(asked.passes.size(), 3u);
   EXPECT_EQ(asked.passes[1].name, "accumulate");
   EXPECT_NE(asked.samplesWhy.find("anti-aliasing"), std::string::npos);
-  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}).apertureSamples, 1);
+  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}).apertureSamples, kAntialiasSamples);
+  EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Concentric, 1, 256, 1})
+                .passes.size(),
+            1u);
   EXPECT_EQ(makeFramePlan(planeAt(8.0), pinhole, {100, 100}, PlanOptions{AperturePattern::Lecture17, 0, 256, 1})
                 .apertureSamples,
             17);

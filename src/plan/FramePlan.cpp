@@ -20,6 +20,11 @@ int autoApertureSamples(double cocPx, int maxSamples) {
 
 namespace {
 
+// The fewest views auto gives (kAntialiasSamples), within --max-samples.
+int antialiasSamples(const PlanOptions& options) {
+  return std::min(kAntialiasSamples, std::max(options.maxSamples, 1));
+}
+
 // Depth range of the scene's bounds seen from the PRP, clipped to [near, far].
 void depthRange(const Scene& scene, const Camera& camera, FramePlan& plan) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -66,7 +71,7 @@ void planPinholeSamples(const PlanOptions& options, FramePlan& plan) {
     plan.apertureSamples = 1;
     plan.samplesWhy = "pinhole camera: one view from the PRP, as asked (not anti-aliased)";
   } else {
-    plan.apertureSamples = std::min(kAntialiasSamples, std::max(options.maxSamples, 1));
+    plan.apertureSamples = antialiasSamples(options);
     plan.samplesWhy = cat("pinhole camera: auto, ", plan.apertureSamples,
                           " sub-pixel-jittered views (anti-aliasing: the pixel integral; --aperture-samples 1 for "
                           "one view)");
@@ -129,7 +134,7 @@ void planLensSamples(const PlanOptions& options, const std::string& range, const
     return;
   }
   plan.apertureSamples = autoApertureSamples(plan.cocMaxPx, options.maxSamples);
-  const int antialias = std::min(kAntialiasSamples, std::max(options.maxSamples, 1));
+  const int antialias = antialiasSamples(options);
   if (plan.apertureSamples < antialias) {
     plan.apertureSamples = antialias;
     plan.samplesWhy =

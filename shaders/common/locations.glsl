@@ -87,6 +87,22 @@
 #define LOCATION_GATHER_BARREL_PER_PIXEL 61
 #define LOCATION_GATHER_BARREL_LENS 62               // 62–69
 
+// The cell filter (accumulate/cell_filter.frag), one view at a time, set by render/Accumulator.cpp.
+#define LOCATION_CELL_WEIGHT 0
+#define LOCATION_CELL_SPREAD_AT_INFINITY 1     // mat2 as vec4, column-major
+#define LOCATION_CELL_SPREAD_PER_INVERSE_DEPTH 2
+#define LOCATION_CELL_INVERSE_DEPTH 3
+#define LOCATION_CELL_LENS_POINT 4
+#define LOCATION_CELL_RADII2 5
+#define LOCATION_CELL_FIRST_EDGE 6
+#define LOCATION_CELL_LAST_EDGE 7
+#define LOCATION_CELL_WHOLE_RING 8
+#define LOCATION_CELL_AREA 9
+#define LOCATION_CELL_DISPLACEMENTS 10  // the box of x − y to gather: min x, y, max x, y
+#define LOCATION_CELL_MARGIN 12      // the views' margin around the sum, pixels
+#define LOCATION_CELL_DEPTH_REFERENCE 13
+#define LOCATION_CELL_SQUARE_BOX 11  // a box of the concentric square: min x, y, max x, y (or all 0: a ring's sector)
+
 // The vignetting gain's inputs (common/vignetting.glsl) in the post passes that multiply by it:
 // accumulate/resolve.frag and lens/vignetting.frag, set by render/VignettePass.cpp.
 #define LOCATION_VIGNETTING_AT_ORIGIN 40

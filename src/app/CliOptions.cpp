@@ -38,6 +38,11 @@ void addSamplingOptions(CLI::App& cmd, LensOptions& o) {
                                     "the most aperture samples auto may choose (with --target-psnr: per tile)")
                          ->check(CLI::Range(1, 65536))
                          ->capture_default_str();
+  cmd.add_option("--cell-filter", o.cellFilter,
+                 "on: spread each view over its cell of the aperture at each pixel's depth: fewer views for the "
+                 "same error, each view costing more (thin-lens frames without warping lens effects; see "
+                 "docs/depth-of-field.md); off (default)")
+      ->check(CLI::IsMember({"on", "off"}));
   // A fixed count leaves nothing for a cap to do: say so rather than ignore it.
   cmd.parse_complete_callback([samples, max, &o] {
     if (max->count() > 0 && samples->count() > 0 && o.apertureSamples != "auto")

@@ -17,7 +17,9 @@ namespace lenslab {
 FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera, ImageSize size,
                     const PlanOptions& options, RunStats& stats) {
   std::optional<VisibleBlur> visible;
-  if (!camera.lens.isPinhole() && (options.apertureSamples == 0 || options.targetPsnrDb)) {
+  // The cell filter reads the largest circle in view for how far its images reach.
+  if (!camera.lens.isPinhole() &&
+      (options.apertureSamples == 0 || options.targetPsnrDb || options.cellFilter.value_or(false))) {
     const auto t = std::chrono::steady_clock::now();
     visible = measureVisibleBlur(renderer, camera, size);
     stats.prepassSeconds = secondsSince(t);

@@ -68,6 +68,7 @@ nlohmann::json planJson(const FramePlan& plan) {
                       {"aperture_samples", plan.apertureSamples},
                       {"aperture_samples_why", plan.samplesWhy},
                       {"pattern", patternName(plan.pattern)},
+                      {"cell_filter", plan.cellFilterWhy},
                       {"seed", plan.seed},
                       {"coc_px", {{"min", plan.cocMinPx}, {"max", plan.cocMaxPx}}},
                       {"depth_range", {{"min", plan.depthMin}, {"max", distanceJson(plan.depthMax)}}},

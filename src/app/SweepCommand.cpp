@@ -167,7 +167,8 @@ Image errorPlot(const SweepResult& result) {
       {"raster lecture17", {0.8f, 0.1f, 0.6f}},   {"raster concentric", {0.1f, 0.3f, 0.9f}},
       {"raster r2", {0.0f, 0.6f, 0.3f}},          {"raster random", {0.9f, 0.5f, 0.0f}},
       {"raycast stratified", {0.8f, 0.0f, 0.0f}}, {"postprocess gather", {0.3f, 0.3f, 0.3f}},
-      {"raster sobol", {0.5f, 0.3f, 0.8f}},       {"adaptive sobol", {0.0f, 0.75f, 0.85f}}};
+      {"raster sobol", {0.5f, 0.3f, 0.8f}},       {"adaptive sobol", {0.0f, 0.75f, 0.85f}},
+      {"cell-filter sobol", {0.9f, 0.75f, 0.0f}}};
   std::vector<PlotSeries> series;
   for (const SweepRow& row : result.rows) {
     const std::string key = row.method + " " + row.pattern;
@@ -303,7 +304,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
     };
     refuseUnless("--max-spp", {"raycast"}, "the raycast series' largest budget");
     refuseUnless("--target-psnr", {"adaptive"}, "the adaptive series' targets");
-    refuseUnless("--max-views", {"concentric", "r2", "random", "sobol", "adaptive"},
+    refuseUnless("--max-views", {"concentric", "r2", "random", "sobol", "cells", "adaptive"},
                  "the raster series' largest budget");
     return runSweepCommand(*o);
   };

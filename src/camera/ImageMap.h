@@ -148,6 +148,9 @@ class ThinLensMap final : public ImageMap {
   // everything the lens pass samples, plus 2 pixels for its footprint. No limit on the size here:
   // a render larger than one GL target is made in tiles (plan/TilePlan.h).
   ThinLensMap overscanned() const;
+  // This map with the render widened by `padPx` whole pixels on each side (left = right, top =
+  // bottom): the lens pass's overscan, or the cell filter's margin (its images reach in from outside).
+  ThinLensMap paddedBy(glm::ivec2 padPx) const;
 
   // Conversions on the output image (continuous pixels, origin top left, +y down).
   glm::dvec2 windowFromPixel(glm::dvec2 pixel) const;

@@ -215,7 +215,6 @@ ThinLensMap ThinLensMap::overscanned() const {
   const Camera& camera = camera_;
   Overscan o{camera, size_, {0, 0}};
   if (!camera.lens.effects.needsRemap()) return ThinLensMap(camera, size_, std::move(o));
-  const Window& w = camera.view.window;
   const int width = size_.widthPx, height = size_.heightPx;
   // The output image's border maps to the border of the region it shows (no fold inside), so the
   // border's true positions bound everything the post pass samples.
@@ -239,17 +238,23 @@ ThinLensMap ThinLensMap::overscanned() const {
   // Two more pixels for the lens pass's footprint (the per-view gather reaches about 1.5 texels,
   // the field-curvature warp's Catmull–Rom 2); the same on both sides keeps the window's centre.
   const double padX = std::max(-lo.x, hi.x - width), padY = std::max(-lo.y, hi.y - height);
-  o.padPx = {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2,
-             static_cast<int>(std::ceil(std::max(0.0, padY))) + 2};
+  return paddedBy(
+      {static_cast<int>(std::ceil(std::max(0.0, padX))) + 2, static_cast<int>(std::ceil(std::max(0.0, padY))) + 2});
+}
+
+ThinLensMap ThinLensMap::paddedBy(glm::ivec2 padPx) const {
+  Overscan o{camera_, size_, padPx};
+  const int width = size_.widthPx, height = size_.heightPx;
   o.size = {width + 2 * o.padPx.x, height + 2 * o.padPx.y};
   // No limit on the size here: a render larger than one GL target is made in tiles (plan/TilePlan.h).
+  const Window& w = camera_.view.window;
   const glm::dvec2 pitch(w.width() / width, w.height() / height);
   Window& ow = o.camera.view.window;
   ow.umin -= o.padPx.x * pitch.x;
   ow.umax += o.padPx.x * pitch.x;
   ow.vmin -= o.padPx.y * pitch.y;
   ow.vmax += o.padPx.y * pitch.y;
-  return ThinLensMap(camera, size_, std::move(o));
+  return ThinLensMap(camera_, size_, std::move(o));
 }
 
 void ThinLensMap::fillRemapRows(Channel c, int firstRow, int lastRow, glm::vec2* out) const {

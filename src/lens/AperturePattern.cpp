@@ -1,5 +1,6 @@
 #include "lens/AperturePattern.h"
 
+#include "lens/ApertureCells.h"
 #include "lens/SobolSequence.h"
 
 #include <algorithm>
@@ -13,12 +14,13 @@ namespace lenslab {
 namespace {
 
 // The one list of the patterns' names: the command line, the panel and the reports read it.
-constexpr std::array<std::pair<AperturePattern, const char*>, 5> kNames{{
+constexpr std::array<std::pair<AperturePattern, const char*>, 6> kNames{{
     {AperturePattern::Lecture17, "lecture17"},
     {AperturePattern::Concentric, "concentric"},
     {AperturePattern::R2, "r2"},
     {AperturePattern::Random, "random"},
     {AperturePattern::Sobol, "sobol"},
+    {AperturePattern::Rings, "rings"},
 }};
 
 }  // namespace
@@ -60,6 +62,27 @@ glm::dvec2 concentricDisk(glm::dvec2 u) {
     theta = 2.0 * kQuarterPi - kQuarterPi * (offset.x / offset.y);
   }
   return r * glm::dvec2(std::cos(theta), std::sin(theta));
+}
+
+glm::dvec2 concentricSquare(glm::dvec2 disk) {
+  constexpr double kQuarterPi = std::numbers::pi / 4.0;
+  const double r = glm::length(disk);
+  const double phi = std::atan2(disk.y, disk.x);
+  glm::dvec2 offset;
+  // The four triangles of the square, each a quarter turn of the disk: r along the axis it faces,
+  // the angle from that axis along the other (concentricDisk's two branches, solved for a and b).
+  if (std::abs(phi) <= kQuarterPi) {
+    offset = {r, r * phi / kQuarterPi};
+  } else if (std::abs(phi) >= 3.0 * kQuarterPi) {
+    const double theta = phi > 0.0 ? phi - std::numbers::pi : phi + std::numbers::pi;
+    offset = {-r, -r * theta / kQuarterPi};
+  } else if (phi > 0.0) {
+    offset = {r * (2.0 * kQuarterPi - phi) / kQuarterPi, r};
+  } else {
+    const double theta = phi + std::numbers::pi;
+    offset = {-r * (2.0 * kQuarterPi - theta) / kQuarterPi, -r};
+  }
+  return 0.5 * (offset + 1.0);
 }
 
 namespace {
@@ -149,6 +172,7 @@ std::vector<LensSample> makeApertureSamples(AperturePattern pattern, int count, 
     case AperturePattern::Concentric: return concentric(count, seed);
     case AperturePattern::R2: return r2(count, seed);
     case AperturePattern::Random: return random(count, seed);
+    case AperturePattern::Rings: return makeCellSamples(AperturePattern::Rings, count, seed).samples;
     case AperturePattern::Sobol: {
       // One stream: the N points are one 4-D net (per-tile budgets use sobolSample's two streams).
       std::vector<LensSample> samples;

@@ -20,6 +20,8 @@ enum class AperturePattern {
   Random,      // independent uniform points, for comparison
   Sobol,       // Owen-scrambled Sobol' points in two interleaved streams: every prefix well spread
                // (lens/SobolSequence.h); the progressive order that per-tile budgets stop early in
+  Rings,       // one point in each of N equal-area cells, rings of sectors (lens/ApertureCells.h):
+               // the cells the cell filter gives each view
 };
 
 const char* patternName(AperturePattern pattern);
@@ -38,5 +40,8 @@ std::vector<LensSample> makeApertureSamples(AperturePattern pattern, int count, 
 // Shirley and Chiu's concentric map from [0, 1)² onto the unit disk: area-preserving, and it keeps
 // strata compact (squares map to wedges of rings).
 glm::dvec2 concentricDisk(glm::dvec2 u);
+// Its inverse: the point of [0, 1)² that concentricDisk sends to `disk` (outside [0, 1]² for a point
+// outside the unit disk). shaders/accumulate/cell_filter.frag has the same in GLSL.
+glm::dvec2 concentricSquare(glm::dvec2 disk);
 
 }  // namespace lenslab

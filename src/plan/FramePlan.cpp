@@ -2,6 +2,7 @@
 
 #include "camera/DepthRange.h"
 #include "core/Text.h"
+#include "lens/ApertureCells.h"
 #include "lens/effects/LensEffectRegistry.h"
 #include "plan/TileBudget.h"
 
@@ -184,6 +185,42 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
   plan.adaptive = std::move(a);
 }
 
+// Whether each view is filtered by its aperture cell's image: only where asked, and only for a thin
+// lens's plain views (the filter knows the thin lens's spread and not the lens effects' warps).
+void planCellFilter(const ThinLensMap& map, const PlanOptions& options, FramePlan& plan) {
+  const Camera& camera = map.camera();
+  if (!options.cellFilter.value_or(false)) {
+    plan.cellFilterWhy = options.cellFilter ? "off (--cell-filter off)" : "off (not asked for: --cell-filter on)";
+    return;
+  }
+  const ApertureShape& shape = camera.lens.aperture;
+  const char* against = !plan.accumulates() || camera.lens.isPinhole() ? "a pinhole or a single view has no cells"
+                        : plan.adaptive ? "per-tile budgets (--target-psnr) draw views in parts"
+                        : plan.remap    ? "distortion and lateral colour move each view's samples as they are summed"
+                        : plan.fieldCurvature     ? "field curvature warps each view as it is summed"
+                        : camera.lens.hasBarrel() ? "the barrel masks each view per pixel"
+                        : camera.view.projection != Projection::Perspective ? "a parallel projection"
+                        : (shape.blades != 0 && shape.roundness < 1.0)
+                            ? "aperture blades (the cell filter handles round and squeezed apertures)"
+                            : nullptr;
+  if (against) {
+    plan.cellFilterWhy = cat("off: ", against);
+    plan.warnings.push_back(cat("--cell-filter on is not used: ", against));
+    return;
+  }
+  plan.cellFilter = true;
+  // Views rendered with a margin as wide as the images reach, so that those reaching in from beyond
+  // the frame's edge are there to gather.
+  const int margin = std::min(kCellFilterMaxReachPx,
+                              static_cast<int>(std::ceil(plan.cocMaxPx * apertureReach(camera.lens.aperture))) + 1);
+  plan.overscan = map.paddedBy({margin, margin}).overscan();
+  // The pattern's own cells where it has them (sobol at a power of two), else rings of equal cells.
+  if (!hasCells(plan.pattern, plan.apertureSamples)) plan.pattern = AperturePattern::Rings;
+  plan.cellFilterWhy =
+      cat("on: each of the ", plan.apertureSamples, " views spread over its cell of the aperture (",
+          plan.pattern == AperturePattern::Sobol ? "sobol's elementary boxes" : "rings of equal-area cells", ")");
+}
+
 // The passes that run, each with why, from the views planned and what the effects need.
 void planPasses(const Camera& camera, std::size_t triangles, const EffectNeeds& needs,
                 const std::vector<std::string>& sceneVariants, FramePlan& plan) {
@@ -221,8 +258,12 @@ void planPasses(const Camera& camera, std::size_t triangles, const EffectNeeds& 
     plan.passes.push_back(scenePass);
     plan.passes.push_back(
         {"accumulate",
-         cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"),
-         {}});
+         plan.cellFilter
+             ? cat("spreads each view over its aperture cell's image at each pixel's depth and adds it into a float "
+                   "sum (",
+                   plan.apertureSamples * plan.viewsPerSample, " times)")
+             : cat("adds each view into a float sum (", plan.apertureSamples * plan.viewsPerSample, " times)"),
+         plan.cellFilter ? std::vector<std::string>{"cell-filter"} : std::vector<std::string>{}});
     plan.passes.push_back({"resolve",
                            plan.viewsPerSample == 3 ? "divides each channel's sum by its view count"
                                                     : "divides the sum by the sample count",
@@ -290,6 +331,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   plan.remapTables = needs.remapTables;
   if (plan.remap) map.validateForwardLinearisation();
   plan.overscan = rendered.overscan();
+  planCellFilter(map, options, plan);
   planPasses(camera, scene.triangleCount(), needs, sceneVariants, plan);
   if (camera.lens.isPinhole() && needs.idleThroughPinhole)
     plan.warnings.push_back(

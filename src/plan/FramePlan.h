@@ -41,6 +41,9 @@ struct PlanOptions {
   // against its own converged limit reaches this.
   std::optional<double> targetPsnrDb;
   int tileSizePx = 32;
+  // Filter each view by its aperture cell's image (render/Accumulator.h): true asks for it, false
+  // refuses it; not given, the plan leaves it off.
+  std::optional<bool> cellFilter;
 };
 
 // Per-tile budgets, when a target error is asked for.
@@ -89,6 +92,8 @@ struct FramePlan {
   Overscan overscan;                  // what the scene passes render: the image, or more for the lens pass
   std::optional<VisibleBlurSummary> visible;  // from a pinhole depth pre-pass, when one ran
   std::optional<AdaptivePlan> adaptive;       // per-tile budgets to a target error
+  bool cellFilter = false;                    // each view filtered by its aperture cell's image ('rings' cells)
+  std::string cellFilterWhy;                  // why it is on or off, for --stats
 
   bool accumulates() const { return apertureSamples > 1; }
 };

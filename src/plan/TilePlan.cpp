@@ -24,9 +24,10 @@ bool fits(const FramePlan& plan, const Tile& tile, const RenderTargetLimits& lim
 
 std::int64_t area(const PixelRect& r) { return std::int64_t{r.width()} * r.height(); }
 
-// What the full frame renders, in its pixels: the image, plus the lens pass's overscan.
+// What the full frame renders, in its pixels: the image, plus the lens pass's overscan or the cell
+// filter's margin.
 PixelRect fullRender(ImageSize size, const FramePlan& plan) {
-  const glm::ivec2 pad = plan.remap ? plan.overscan.padPx : glm::ivec2(0);
+  const glm::ivec2 pad = plan.remap || plan.cellFilter ? plan.overscan.padPx : glm::ivec2(0);
   return {-pad.x, -pad.y, size.widthPx + pad.x, size.heightPx + pad.y};
 }
 
@@ -88,6 +89,8 @@ std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& 
   const PixelRect frame = fullRender(size, plan);
   const double shift = curvatureShiftPx(camera, size, plan);
   const int curvature = shift > 0.0 ? static_cast<int>(std::ceil(shift)) + 2 : 0;  // + the Catmull–Rom taps
+  // The cell filter gathers images from as far as its margin: a tile renders that much around it.
+  const glm::ivec2 margin = glm::ivec2(curvature) + (plan.cellFilter ? plan.overscan.padPx : glm::ivec2(0));
   const ThinLensMap map(camera, size);
   std::vector<Tile> tiles;
   for (int y0 = 0; y0 < size.heightPx; y0 += tileHeight)
@@ -95,7 +98,7 @@ std::vector<Tile> layout(const Camera& camera, ImageSize size, const FramePlan& 
       const PixelRect rect{x0, y0, std::min(x0 + tileWidth, size.widthPx), std::min(y0 + tileHeight, size.heightPx)};
       // With the lens pass: the tile's pre-image (where its pixels' samples come from), else the tile.
       const PixelRect source = plan.remap ? preImage(map, rect) : rect;
-      const Tile tile{rect, quadAligned(intersect(grown(source, curvature, curvature), frame), frame)};
+      const Tile tile{rect, quadAligned(intersect(grown(source, margin.x, margin.y), frame), frame)};
       if (!fits(plan, tile, limits, memory)) return {};
       tiles.push_back(tile);
     }
@@ -206,7 +209,8 @@ TileView tileView(const Camera& camera, ImageSize size, const FramePlan& plan, c
                        {tile.rect.x0 - tile.rendered.x0, tile.rect.y0 - tile.rendered.y0}};
     v.crop = {0, 0, v.size.widthPx, v.size.heightPx};
   } else {
-    // The margins (field curvature's warp) are rendered and resolved with the tile, then cut off.
+    // The margins (field curvature's warp, the cell filter's reach) are rendered and resolved with
+    // the tile, then cut off.
     v.camera = subWindowCamera(camera, size, tile.rendered);
     v.size = tile.rendered.size();
     v.plan.overscan = {v.camera, v.size, {0, 0}};

@@ -41,6 +41,10 @@ PlanOptions toPlanOptions(const LensOptions& o) {
       throw InputError(cat("--aperture-samples ", o.apertureSamples, ": give a whole number from 1 to 65536, or auto"));
     p.apertureSamples = n;
   }
+  if (o.cellFilter == "on" || o.cellFilter == "off")
+    p.cellFilter = o.cellFilter == "on";
+  else if (!o.cellFilter.empty())
+    throw InputError(cat("--cell-filter ", o.cellFilter, ": give on or off"));
   p.maxSamples = o.maxSamples;
   p.seed = o.seed;
   return p;

@@ -25,6 +25,7 @@ struct LensOptions {
   std::optional<glm::dvec2> focusAt;  // pixel (x, y), from "X,Y"
   std::optional<int> blades;          // the aperture's blades (0: round), over the camera's
   std::optional<double> squeeze;      // the aperture's anamorphic squeeze, over the camera's
+  std::string cellFilter;             // "on", "off", or empty: the plan's choice (off)
 };
 
 // Throws InputError for a bad pattern or sample count.

@@ -5,6 +5,8 @@
 #include "../../shaders/common/locations.glsl"
 
 #include <algorithm>
+#include <initializer_list>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -28,11 +30,24 @@ void nearestClamp(GLuint texture) {
   glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+// A framebuffer drawing into `targets`' colour textures as attachments 0, 1, …
+gl::Framebuffer sumFramebuffer(std::initializer_list<const gl::RenderTarget*> targets) {
+  gl::Framebuffer fb = gl::Framebuffer::create();
+  std::vector<GLenum> buffers;
+  for (const gl::RenderTarget* t : targets) {
+    const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(buffers.size());
+    glNamedFramebufferTexture(fb.id(), attachment, t->colorTexture(), 0);
+    buffers.push_back(attachment);
+  }
+  glNamedFramebufferDrawBuffers(fb.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
+  if (glCheckNamedFramebufferStatus(fb.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("accumulator: the framebuffer of the sums is incomplete");
+  return fb;
+}
+
 }  // namespace
 
-Accumulator::Accumulator()
-    : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")),
-      resolve_(gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag")) {}
+Accumulator::Accumulator() : accumulate_(gl::buildProgram("common/fullscreen.vert", "accumulate/accumulate.frag")) {}
 
 void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, const LensGather* lens,
                         const Barrel* barrel) {
@@ -58,39 +73,37 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
       if (barrel_) defines.push_back("BARREL");
       gather = gl::buildProgram("common/fullscreen.vert", "accumulate/gather_lens.frag", defines);
     }
-    if (!resolvePerPixel_)
-      resolvePerPixel_ = gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag", {"PER_PIXEL_WEIGHT"});
   }
-  const int sumWidth = lens_ ? lens_->outWidthPx : widthPx, sumHeight = lens_ ? lens_->outHeightPx : heightPx;
+  const int sumWidth = lens_ ? lens_->outWidthPx : widthPx - 2 * cellMarginPx_.x,
+            sumHeight = lens_ ? lens_->outHeightPx : heightPx - 2 * cellMarginPx_.y;
   if (!sum_ || sum_->width() != sumWidth || sum_->height() != sumHeight) {
     // The old targets go first (the framebuffer holds their storage until it goes): a tiled
     // render's tiles differ in size, and both at once would double the peak.
     gatherFramebuffer_ = {};
+    cellFramebuffer_ = {};
+    behind_.reset();
+    holes_.reset();
     weight_.reset();
     sum_.reset();
     sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
   }
-  if (lens_ && !weight_) {
-    weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
-    gatherFramebuffer_ = gl::Framebuffer::create();
-    glNamedFramebufferTexture(gatherFramebuffer_.id(), GL_COLOR_ATTACHMENT0, sum_->colorTexture(), 0);
-    glNamedFramebufferTexture(gatherFramebuffer_.id(), GL_COLOR_ATTACHMENT1, weight_->colorTexture(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(gatherFramebuffer_.id(), 2, buffers);
-    if (glCheckNamedFramebufferStatus(gatherFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("accumulator: the lens gather's framebuffer is incomplete");
+  if ((lens_ || cellFilter_) && !weight_) weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+  if (lens_ && !gatherFramebuffer_) gatherFramebuffer_ = sumFramebuffer({sum_.get(), weight_.get()});
+  if (cellFilter_ && !behind_) {
+    behind_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+    holes_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+    cellFramebuffer_ = sumFramebuffer({sum_.get(), weight_.get(), behind_.get(), holes_.get()});
   }
   mayAdd_ = !curvature_ && !lens_ && !barrel_;
   requestedWidth_ = widthPx;
   requestedHeight_ = heightPx;
   if (mayAdd_ && !addBatch_) addBatch_ = gl::buildProgram("common/fullscreen.vert", "accumulate/add_batch.frag");
   const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-  sum_->bind();
-  glClearBufferfv(GL_COLOR, 0, zero);
-  if (weight_) {
-    weight_->bind();
-    glClearBufferfv(GL_COLOR, 0, zero);
-  }
+  for (const std::unique_ptr<gl::RenderTarget>* target : {&sum_, &weight_, &behind_, &holes_})
+    if (*target) {
+      (*target)->bind();
+      glClearBufferfv(GL_COLOR, 0, zero);
+    }
   // A frame restarted before its views were added leaves them in the partial sum.
   if (partial_) glClearNamedFramebufferfv(addFramebuffer_.id(), GL_COLOR, 0, zero);
   pending_ = 0;
@@ -153,6 +166,7 @@ void Accumulator::allocateLayers(int widthPx, int heightPx) {
   nearestClamp(views_.id());
   depth_ = gl::Texture::create();
   glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, widthPx, heightPx);
+  nearestClamp(depth_.id());  // texelFetch by the cell filter: a complete texture without mipmaps
   for (int layer = 0; layer < layers; ++layer) {
     gl::Framebuffer fb = gl::Framebuffer::create();
     glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, views_.id(), 0, layer);
@@ -182,8 +196,10 @@ void Accumulator::resetDepthStencil(float depth, int stencil, bool inRegionOnly)
 }
 
 Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels, glm::vec2 curvatureShiftPx,
-                                        glm::vec2 jitterPx, glm::vec2 barrelLens) {
+                                        glm::vec2 jitterPx, glm::vec2 barrelLens, const CellView* cell) {
   if (!sum_) throw std::logic_error("Accumulator::nextView before start");
+  if (cellFilter_ && (!cell || lens_ || curvature_ || barrel_))
+    throw std::logic_error("Accumulator::nextView: the cell filter needs each view's cell and no lens effect");
   ++count_;
   // Alpha is shared out so that a full set of channel views adds 1, as one full view does.
   const float channelCount = channels.r + channels.g + channels.b;
@@ -199,7 +215,8 @@ Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels
     return {{addFramebuffer_.id(), sum_->width(), sum_->height()}, weight};
   }
   allocateLayers(requestedWidth_, requestedHeight_);
-  if (pending_ == static_cast<int>(framebuffers_.size())) flushLayers();
+  if (pending_ == batchSize()) flushLayers();
+  if (cellFilter_) pendingCell_ = *cell;
   pendingWeights_[static_cast<std::size_t>(pending_)] = weight;
   pendingShifts_[static_cast<std::size_t>(pending_)] = curvatureShiftPx;
   pendingJitters_[static_cast<std::size_t>(pending_)] = jitterPx;
@@ -247,6 +264,10 @@ void Accumulator::flush() {
 
 void Accumulator::flushLayers() {
   if (pending_ == 0) return;
+  if (cellFilter_) {
+    filterView();
+    return;
+  }
   if (lens_) {
     const gl::DrawTarget both{gatherFramebuffer_.id(), sum_->width(), sum_->height()};
     both.bind();
@@ -296,18 +317,22 @@ void Accumulator::flushLayers() {
     glBindTextureUnit(5, lens_->inverse[2]);
     for (GLuint unit = 1; unit <= 5; ++unit) glBindSampler(unit, 0);  // texelFetch only
   }
-  if (regionSet_) {
-    glEnable(GL_SCISSOR_TEST);
-    for (const PixelBox& b : region_) {
-      glScissor(b.x, b.y, b.width, b.height);
-      drawFullScreen(fullScreen_, program, views_.id());
-    }
-    glDisable(GL_SCISSOR_TEST);
-  } else {
-    drawFullScreen(fullScreen_, program, views_.id());
-  }
+  drawViewsInRegion(program);
   glDisable(GL_BLEND);
   pending_ = 0;
+}
+
+void Accumulator::drawViewsInRegion(GLuint program) const {
+  if (!regionSet_) {
+    drawFullScreen(fullScreen_, program, views_.id());
+    return;
+  }
+  glEnable(GL_SCISSOR_TEST);
+  for (const PixelBox& b : region_) {
+    glScissor(b.x, b.y, b.width, b.height);
+    drawFullScreen(fullScreen_, program, views_.id());
+  }
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Accumulator::setRegion(const std::vector<PixelBox>* boxes) {
@@ -343,26 +368,32 @@ void Accumulator::resolve(const gl::RenderTarget& out, const VignetteGain* vigne
   flush();
   out.bind();
   glDisable(GL_BLEND);
-  GLuint program = lens_ ? resolvePerPixel_.id() : resolve_.id();
-  if (vignetting) {
-    gl::Program& v = resolveVignetted_[lens_ ? 1 : 0];
-    if (!v) {
-      std::vector<std::string> defines{"VIGNETTING"};
-      if (lens_) defines.push_back("PER_PIXEL_WEIGHT");
-      v = gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag", defines);
-    }
-    program = v.id();
-    setVignetteGain(program, *vignetting);
+  // The variant: [lens gather's per-pixel weights or the cell filter's fill][vignetting].
+  const int kind = lens_ ? 1 : cellFilter_ ? 2 : 0;
+  gl::Program& program = resolvePrograms_[kind][vignetting ? 1 : 0];
+  if (!program) {
+    std::vector<std::string> defines;
+    if (kind == 1) defines.push_back("PER_PIXEL_WEIGHT");
+    if (kind == 2) defines.push_back("CELL_FILL");
+    if (vignetting) defines.push_back("VIGNETTING");
+    program = gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag", defines);
   }
+  if (vignetting) setVignetteGain(program.id(), *vignetting);
   if (lens_) {
     glBindTextureUnit(1, weight_->colorTexture());
     glBindSampler(1, 0);
-    drawFullScreen(fullScreen_, program, sum_->colorTexture());
+    drawFullScreen(fullScreen_, program.id(), sum_->colorTexture());
     return;
   }
+  if (cellFilter_) {
+    glBindTextureUnit(2, weight_->colorTexture());
+    glBindTextureUnit(3, behind_->colorTexture());
+    glBindTextureUnit(4, holes_->colorTexture());
+    for (GLuint unit = 2; unit <= 4; ++unit) glBindSampler(unit, 0);
+  }
   const glm::vec4 inverseWeight = glm::vec4(1.0f) / glm::max(weightSum_, glm::vec4(1e-30f));
-  glProgramUniform4fv(program, 0, 1, &inverseWeight.x);
-  drawFullScreen(fullScreen_, program, sum_->colorTexture());
+  glProgramUniform4fv(program.id(), 0, 1, &inverseWeight.x);
+  drawFullScreen(fullScreen_, program.id(), sum_->colorTexture());
 }
 
 }  // namespace lenslab

@@ -14,6 +14,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/FullScreenPass.h"
 #include "gl/Object.h"
+#include "lens/ApertureCells.h"
 #include "plan/TileBudget.h"
 #include "render/VignetteGain.h"
 
@@ -65,6 +66,25 @@ class Accumulator {
     glm::vec2 normalisedPerPixel;
     float reach = 0.0f;
   };
+  // The cell filter (cell_filter.frag): each view, drawn into a layer, is spread over its cell's
+  // image at each pixel's depth as it is added, one view at a time (the views share one depth
+  // buffer, which the filter reads). Made by render/LensViews per view.
+  struct CellView {
+    glm::mat2 spreadAtInfinity{0.0f};       // image pixels (GL orientation) per unit of the unit disk
+    glm::mat2 spreadPerInverseDepth{0.0f};  // plus this times 1/Z
+    glm::vec2 inverseDepthFromNdc{0.0f};    // 1/Z = x·z_ndc + y
+    glm::vec2 lensPoint{0.0f};              // the view's point of the unit disk
+    ApertureCell cell;
+    // The displacements x − y (pixels, per axis) from a neighbour y to the pixels x its image can cover.
+    glm::ivec2 displacementMinPx{0}, displacementMaxPx{0};
+    float depthReference = 1.0f;  // a depth in view (world units), the scale of the fill's weights
+  };
+  // Before start(); the views are then `marginPx` wider than the sum on each side.
+  void setCellFilter(bool on, glm::ivec2 marginPx = glm::ivec2(0)) {
+    cellFilter_ = on;
+    cellMarginPx_ = on ? marginPx : glm::ivec2(0);
+  }
+  bool cellFilter() const { return cellFilter_; }
   // Views from the next one on go into layers even where they could be added straight into the
   // sum: an added view draws the scene twice (depth, then colour), so where vertices cost more
   // than pixels (a big scene at a small size) layers are cheaper. Tests and benchmarks compare too.
@@ -96,9 +116,10 @@ class Accumulator {
   // `jitterPx`: the view's sub-pixel offset (GL orientation), used with start's LensGather.
   // `barrelLens`: with start's Barrel, the view's aperture point seen in the opening's plane over
   // the opening's radius, p·(1 − distance/z_f) / radius.
+  // `cell`: the view's cell, with setCellFilter.
   View nextView(glm::vec3 background, glm::vec3 channels = glm::vec3(1.0f),
                 glm::vec2 curvatureShiftPx = glm::vec2(0.0f), glm::vec2 jitterPx = glm::vec2(0.0f),
-                glm::vec2 barrelLens = glm::vec2(0.0f));
+                glm::vec2 barrelLens = glm::vec2(0.0f), const CellView* cell = nullptr);
   // Views added from now on reach only these rectangles of the sum (nullptr: all of it); the views
   // pending so far are added first, with the region they were drawn for. Per-tile budgets.
   void setRegion(const std::vector<PixelBox>* boxes);
@@ -109,11 +130,14 @@ class Accumulator {
   int count() const { return count_; }
   // Views per batch: layers (kMaxBatch before any), or views whose background is added by one pass.
   int batchSize() const {
-    return addsViews() ? kAddedBatch : framebuffers_.empty() ? kMaxBatch : static_cast<int>(framebuffers_.size());
+    return addsViews()             ? kAddedBatch
+           : cellFilter_           ? 1
+           : framebuffers_.empty() ? kMaxBatch
+                                   : static_cast<int>(framebuffers_.size());
   }
   // Whether the next view is added straight into the sum (no field-curvature warp, no lens
   // gather, not setLayered).
-  bool addsViews() const { return mayAdd_ && !forceLayers_; }
+  bool addsViews() const { return mayAdd_ && !forceLayers_ && !cellFilter_; }
   // A model of what a view costs as the accumulator draws it now, for benchmarks to print: scene
   // passes per view (an added view draws the scene twice: depth, then colour), full-screen passes
   // per view, and the bytes per pixel its own work moves per view apart from the scene's fragments
@@ -130,8 +154,11 @@ class Accumulator {
   void resolve(const gl::RenderTarget& out, const VignetteGain* vignetting = nullptr);
 
  private:
-  void flush();            // adds the pending views to the sum
-  void flushLayers();      // the pending layers, summed into the sum
+  void flush();        // adds the pending views to the sum
+  void flushLayers();  // the pending layers, summed into the sum
+  void filterView();   // the cell filter: the pending view, spread over its cell, into the sum
+  // A full-screen pass of `program` over the view layers (texture unit 0), within setRegion's rectangles.
+  void drawViewsInRegion(GLuint program) const;
   void flushBackground();  // added views: their partial sum and weight · background, into the sum
   void allocateAddTarget();
   void resetDepthStencil(float depth, int stencil, bool inRegionOnly);
@@ -147,14 +174,18 @@ class Accumulator {
   gl::Program gatherLens_[8];        // the lens gather: [gatherVariant()], built on first use
   // The lens gather's variant for start's effects: barrel · 4 + field curvature · 2 + lateral colour.
   int gatherVariant() const { return (barrel_ ? 4 : 0) + (curvature_ ? 2 : 0) + (lens_ && lens_->lateral ? 1 : 0); }
-  gl::Program resolve_;
-  gl::Program resolvePerPixel_;      // with the lens gather's per-pixel weights, built on first use
-  gl::Program resolveVignetted_[2];  // with VIGNETTING: [per-pixel weights], built on first use
-  gl::Program addBatch_;             // added views: a batch's partial sum and background into the sum
+  // The resolve's variants, built on first use: [plain, the lens gather's per-pixel weights
+  // (PER_PIXEL_WEIGHT), the cell filter's fill (CELL_FILL)][VIGNETTING].
+  gl::Program resolvePrograms_[3][2];
+  gl::Program cellFilterProgram_;  // the cell filter, built on first use
+  gl::Program addBatch_;           // added views: a batch's partial sum and background into the sum
   gl::FullScreenPass fullScreen_;
   std::unique_ptr<gl::RenderTarget> sum_;
-  std::unique_ptr<gl::RenderTarget> weight_;  // the lens gather's per-pixel weights
+  std::unique_ptr<gl::RenderTarget> weight_;  // per-pixel weights: the lens gather's, the cell filter's coverage
   gl::Framebuffer gatherFramebuffer_;         // sum_ and weight_ as two colour attachments
+  std::unique_ptr<gl::RenderTarget> behind_;  // the cell filter's farthest surfaces (cell_filter.frag)
+  std::unique_ptr<gl::RenderTarget> holes_;   // and the coverage its views miss behind edges
+  gl::Framebuffer cellFramebuffer_;           // sum_, weight_ and behind_
   std::optional<LensGather> lens_;
   gl::TextureArray views_;  // RGBA32F, one layer per view of a batch
   gl::Texture depth_;       // shared by the views (each clears it)
@@ -163,6 +194,9 @@ class Accumulator {
   // next view may add, stencil 1 outside the region).
   bool mayAdd_ = false;  // no field curvature, no lens gather
   bool forceLayers_ = false;
+  bool cellFilter_ = false;
+  glm::ivec2 cellMarginPx_{0};
+  CellView pendingCell_;
   int pendingAdded_ = 0;
   GLuint addSum_ = 0;       // the sum texture addFramebuffer_ was made for
   int requestedWidth_ = 0;  // start's view size (the layers are made on first use)

@@ -41,6 +41,12 @@ class LensViews {
   // channel `c`'s focus; 0 without a barrel.
   glm::vec2 barrelLens(const LensSample& s, Channel c) const;
 
+  // The cell filter's inputs for the view of sample `s` in aperture cell `cell`, channel `c`: its
+  // spread (camera/CellSpread.h) and how far a neighbour's image can reach: over the frame's depths,
+  // and no farther than the cell's share of the largest circle of confusion in view (the pre-pass's,
+  // when it ran), and at most kCellFilterMaxReachPx (lens/ApertureCells.h).
+  Accumulator::CellView cellView(const LensSample& s, const ApertureCell& cell, Channel c) const;
+
   // The field-curvature warp's coordinates for the views (Accumulator::Curvature), if the plan has one.
   std::optional<Accumulator::Curvature> curvatureWarp() const;
   // The barrel's per-pixel mask for the views (Accumulator::Barrel), if the camera has a barrel.
@@ -54,6 +60,8 @@ class LensViews {
 
   ThinLensMap map_;
   bool fieldCurvature_ = false;
+  double depthMin_ = 0.0, depthMax_ = 0.0;  // the plan's depth range of the scene in view
+  double cocMaxPx_ = 0.0;                   // and its largest circle of confusion (the pre-pass's, when it ran)
   std::vector<ChannelView> channels_;
 };
 

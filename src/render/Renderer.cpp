@@ -37,7 +37,8 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
   plan_ = plan;
   // The plan's overscan is for the camera it was made for; a plan reused for another camera
   // without the lens pass (a sweep's ablations) renders that camera's own image.
-  views_.emplace(ThinLensMap(camera, size, plan.remap ? plan.overscan : Overscan{camera, size, {0, 0}}), plan);
+  views_.emplace(
+      ThinLensMap(camera, size, plan.remap || plan.cellFilter ? plan.overscan : Overscan{camera, size, {0, 0}}), plan);
   size_ = views_->map().overscan().size;
   outSize_ = size;
   done_ = 0;
@@ -60,8 +61,16 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     // No lens: the pinhole view from the PRP, at the pixel centres.
     samples_ = {LensSample{{0.0, 0.0}, {0.0, 0.0}}};
   } else {
-    samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
+    if (plan.cellFilter) {
+      CellSamples cells = makeCellSamples(plan.pattern, plan.apertureSamples, plan.seed);
+      samples_ = std::move(cells.samples);
+      cells_ = std::move(cells.cells);
+    } else {
+      samples_ = makeApertureSamples(plan.pattern, plan.apertureSamples, plan.seed);
+      cells_.clear();
+    }
     if (!accumulator_) accumulator_ = std::make_unique<Accumulator>();
+    accumulator_->setCellFilter(plan.cellFilter, plan.overscan.padPx);
     const std::optional<Accumulator::Curvature> curvature = views_->curvatureWarp();
     // With distortion or lateral colour each view's samples go straight to where the lens puts
     // them, as the views are summed: no resampling of the mean afterwards.
@@ -85,10 +94,13 @@ void Renderer::drawSample(const std::vector<SamplePart>& parts, Accumulator& sum
   // surfaces need every one over what lies behind (ScenePass::drawBlended).
   sum.setLayered(anyBlended(gpuScene_.scene()) ||
                  Accumulator::layersAreCheaper(triangles, static_cast<double>(size_.widthPx) * size_.heightPx));
+  const ApertureCell* cell = parts.front().cell;
   for (const LensViews::ChannelView& channel : views.channelViews()) {
-    const Accumulator::View view =
-        sum.nextView(constantBackground(gpuScene_.scene()), channel.mask, views.curvatureShiftPx(first),
-                     LensViews::jitterPx(first), views.barrelLens(first, channel.channel));
+    const std::optional<Accumulator::CellView> cellView =
+        cell ? std::optional(views.cellView(first, *cell, channel.channel)) : std::nullopt;
+    const Accumulator::View view = sum.nextView(
+        constantBackground(gpuScene_.scene()), channel.mask, views.curvatureShiftPx(first), LensViews::jitterPx(first),
+        views.barrelLens(first, channel.channel), cellView ? &*cellView : nullptr);
     for (const SamplePart& part : parts)
       scenePass_.draw(gpuScene_, views.clipFromWorld(part.sample, channel.channel), view.target, lodBias, part.boxes,
                       view.addWeight ? &*view.addWeight : nullptr);
@@ -110,7 +122,8 @@ int Renderer::addSamples(int count) {
                                                        : target(output_, size_);
       scenePass_.draw(gpuScene_, views_->clipFromWorld(s, Channel::Green), out.drawTarget(), lodBias);
     } else {
-      drawSample({{s, nullptr}}, *accumulator_, lodBias);
+      drawSample({{s, nullptr, cells_.empty() ? nullptr : &cells_[static_cast<std::size_t>(done_)]}}, *accumulator_,
+                 lodBias);
     }
   }
   return added;

@@ -102,6 +102,7 @@ class Renderer {
   struct SamplePart {
     LensSample sample;
     const std::vector<PixelBox>* boxes = nullptr;
+    const ApertureCell* cell = nullptr;  // the sample's cell, for the cell filter
   };
   void drawSample(const std::vector<SamplePart>& parts, Accumulator& sum, float lodBias);
   int regionOf(int tile) const;
@@ -138,6 +139,7 @@ class Renderer {
   ImageSize size_;     // the size the scene passes render at (the map's overscan().size)
   ImageSize outSize_;  // the image's size (the map's size())
   std::vector<LensSample> samples_;
+  std::vector<ApertureCell> cells_;  // with the cell filter: samples_[i]'s cell
   int done_ = 0;
 
   // Per-tile budgets.

@@ -95,6 +95,11 @@ struct SweepRun {
     if (!wanted(series) || series == "adaptive") return {};
     if (series == "lecture17") return {17};
     if (series == "raycast") return doublings(o.maxSpp);
+    if (series == "cells") {  // from 2: one view has no cells to spread over
+      std::vector<int> views = doublings(o.maxViews);
+      views.erase(views.begin());
+      return views;
+    }
     // The gather baseline blurs the pinhole image with round disks and knows no lens effects:
     // comparing it with an exact distorted (or polygonal) reference would measure what it lacks,
     // not the method.
@@ -143,6 +148,24 @@ void runRasterSeries(SweepRun& run) {
     }
     say(o, cat("raster ", patternName(pattern), ": done"));
   }
+  // The cell filter on sobol's own cells (powers of two); its pre-pass (the largest circle in view,
+  // which bounds how far it gathers) is part of each frame's time.
+  if (!run.wanted("cells")) return;
+  for (int n : run.budgetsOf("cells")) {
+    PlanOptions options{AperturePattern::Sobol, n, n, o.seed};
+    options.cellFilter = true;
+    Image image;
+    const double seconds = medianOf3(
+        [&] {
+          const VisibleBlur visible = measureVisibleBlur(run.renderer, run.camera, run.size);
+          const FramePlan plan = makeFramePlan(run.scene, run.camera, run.size, options, &visible);
+          if (!plan.cellFilter) throw InputError(cat("sweep: cells: ", plan.cellFilterWhy));
+          return run.renderer.render(run.camera, plan, run.size);
+        },
+        image);
+    run.record("cell-filter", "sobol", n, seconds, image);
+  }
+  say(o, "cell filter: done");
 }
 
 // The whole of an adaptive frame is timed: the pre-pass, the plan from it, and the rounds.
@@ -255,7 +278,7 @@ double maskedRmse(const Image& a, const Image& b, const std::vector<bool>& mask)
 }
 
 std::vector<std::string> sweepSeriesNames() {
-  return {"lecture17", "concentric", "r2", "random", "sobol", "adaptive", "raycast", "postprocess"};
+  return {"lecture17", "concentric", "r2", "random", "sobol", "cells", "adaptive", "raycast", "postprocess"};
 }
 
 SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, const SweepOptions& o) {

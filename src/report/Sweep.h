@@ -2,6 +2,7 @@
 // The error-against-run-time sweep: how fast each method converges to the ray-cast truth.
 //   reference   the ray caster at high spp (cached by a hash of its inputs: report/ReferenceCache.h)
 //   raster      accumulation of aperture views, each pattern, N = 1, 2, 4, … (lecture17: 17)
+//   cells       sobol views each spread over its cell of the aperture (the cell filter), N = 1, 2, 4, …
 //   raycast     the ray caster at 1, 2, 4, … spp
 //   postprocess a single-pass gather depth of field from the pinhole colour and depth (baseline)
 //   adaptive    per-tile budgets to each target PSNR (plan/TileBudget.h), pre-pass included in
@@ -38,7 +39,7 @@ struct SweepOptions {
   int maxSpp = 64;     // ray-cast budgets 1, 2, 4, … up to this
   std::vector<int> gatherTaps = {8, 32, 128};
   std::vector<double> targetsDb = {25.0, 30.0, 35.0, 40.0, 45.0};  // the adaptive method's
-  // Which series run: lecture17, concentric, r2, random, sobol, adaptive, raycast, postprocess.
+  // Which series run: lecture17, concentric, r2, random, sobol, cells, adaptive, raycast, postprocess.
   std::vector<std::string> series = sweepSeriesNames();
   std::uint32_t seed = 1;
   // sweep --lens: the frame's real-lens map (camera/ImageMap.h), at the sweep's size. The reference

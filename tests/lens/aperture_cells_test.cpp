@@ -1,0 +1,122 @@
+// lens/ApertureCells: the aperture cut into N equal cells, one per view of the cell filter. Each
+// sample lies in its own cell, the cells tile the unit disk without overlap (every point of the
+// disk in exactly one), each holds π/N of it; 'sobol' at a power of two is the pattern's own points,
+// one in each box of its net; the concentric map's inverse undoes it.
+#include "lens/ApertureCells.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace lenslab {
+namespace {
+
+glm::dvec2 randomDiskPoint(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (;;) {
+    const glm::dvec2 p(u(rng), u(rng));
+    if (glm::dot(p, p) < 1.0) return p;
+  }
+}
+
+TEST(ConcentricSquare, UndoesTheConcentricMap) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 20000; ++i) {
+    const glm::dvec2 square(u(rng), u(rng));
+    const glm::dvec2 back = concentricSquare(concentricDisk(square));
+    ASSERT_NEAR(back.x, square.x, 1e-12) << i;
+    ASSERT_NEAR(back.y, square.y, 1e-12) << i;
+  }
+}
+
+TEST(ConcentricSquare, APointOutsideTheDiskIsOutsideTheSquare) {
+  for (const glm::dvec2 p :
+       {glm::dvec2(1.2, 0.0), glm::dvec2(0.0, -1.5), glm::dvec2(-0.9, 0.9), glm::dvec2(2.0, 1.0)}) {
+    const glm::dvec2 u = concentricSquare(p);
+    EXPECT_TRUE(u.x < 0.0 || u.x > 1.0 || u.y < 0.0 || u.y > 1.0) << p.x << ", " << p.y;
+  }
+}
+
+struct CellCase {
+  AperturePattern pattern;
+  int count;
+};
+
+class Cells : public testing::TestWithParam<CellCase> {};
+
+TEST_P(Cells, EachSampleLiesInItsOwnCellOfAnEqualShare) {
+  const CellCase c = GetParam();
+  const CellSamples cells = makeCellSamples(c.pattern, c.count, 7);
+  ASSERT_EQ(cells.samples.size(), static_cast<std::size_t>(c.count));
+  ASSERT_EQ(cells.cells.size(), static_cast<std::size_t>(c.count));
+  double total = 0.0;
+  for (int i = 0; i < c.count; ++i) {
+    const ApertureCell& cell = cells.cells[static_cast<std::size_t>(i)];
+    EXPECT_TRUE(cell.contains(cells.samples[static_cast<std::size_t>(i)].lens)) << "sample " << i;
+    EXPECT_NEAR(cell.area(), std::numbers::pi / c.count, 1e-12) << "cell " << i;
+    total += cell.area();
+    for (const glm::dvec2& p : cell.outline(8)) EXPECT_LE(glm::length(p), 1.0 + 1e-12);
+    const glm::dvec2 pixel = cells.samples[static_cast<std::size_t>(i)].pixel;
+    EXPECT_TRUE(pixel.x >= -0.5 && pixel.x < 0.5 && pixel.y >= -0.5 && pixel.y < 0.5);
+  }
+  EXPECT_NEAR(total, std::numbers::pi, 1e-9);
+}
+
+TEST_P(Cells, TileTheDiskWithoutOverlap) {
+  const CellCase c = GetParam();
+  const CellSamples cells = makeCellSamples(c.pattern, c.count, 7);
+  std::mt19937 rng(11);
+  std::vector<int> hits(static_cast<std::size_t>(c.count), 0);
+  constexpr int kPoints = 40000;
+  for (int i = 0; i < kPoints; ++i) {
+    const glm::dvec2 p = randomDiskPoint(rng);
+    int inside = 0;
+    for (int k = 0; k < c.count; ++k)
+      if (cells.cells[static_cast<std::size_t>(k)].contains(p)) {
+        ++inside;
+        ++hits[static_cast<std::size_t>(k)];
+      }
+    ASSERT_EQ(inside, 1) << "point " << p.x << ", " << p.y;
+  }
+  // Equal areas: each cell's share of uniform points within 5 standard deviations of 1/N.
+  const double share = 1.0 / c.count, sigma = std::sqrt(share * (1.0 - share) / kPoints);
+  for (int k = 0; k < c.count; ++k)
+    EXPECT_NEAR(hits[static_cast<std::size_t>(k)] / double(kPoints), share, 5.0 * sigma + 1e-12) << "cell " << k;
+}
+
+INSTANTIATE_TEST_SUITE_P(RingsAndSobol, Cells,
+                         testing::Values(CellCase{AperturePattern::Rings, 1}, CellCase{AperturePattern::Rings, 2},
+                                         CellCase{AperturePattern::Rings, 3}, CellCase{AperturePattern::Rings, 7},
+                                         CellCase{AperturePattern::Rings, 16}, CellCase{AperturePattern::Rings, 30},
+                                         CellCase{AperturePattern::Sobol, 1}, CellCase{AperturePattern::Sobol, 2},
+                                         CellCase{AperturePattern::Sobol, 4}, CellCase{AperturePattern::Sobol, 8},
+                                         CellCase{AperturePattern::Sobol, 16}, CellCase{AperturePattern::Sobol, 64}));
+
+TEST(Cells, SobolCellsAreThePatternsOwnPointsOnePerBox) {
+  for (const int count : {4, 8, 32, 256}) {
+    const CellSamples cells = makeCellSamples(AperturePattern::Sobol, count, 3);
+    const std::vector<LensSample> pattern = makeApertureSamples(AperturePattern::Sobol, count, 3);
+    for (int i = 0; i < count; ++i) {
+      EXPECT_EQ(cells.samples[static_cast<std::size_t>(i)].lens, pattern[static_cast<std::size_t>(i)].lens);
+      for (int j = 0; j < i; ++j)
+        EXPECT_NE(cells.cells[static_cast<std::size_t>(i)].squareMin,
+                  cells.cells[static_cast<std::size_t>(j)].squareMin)
+            << count << " points: " << i << " and " << j << " share a box";
+    }
+  }
+}
+
+TEST(Cells, OnlyRingsAndPowersOfTwoOfSobolHaveCells) {
+  EXPECT_TRUE(hasCells(AperturePattern::Rings, 5));
+  EXPECT_TRUE(hasCells(AperturePattern::Sobol, 64));
+  EXPECT_FALSE(hasCells(AperturePattern::Sobol, 24));
+  EXPECT_FALSE(hasCells(AperturePattern::Concentric, 16));
+  EXPECT_THROW(makeCellSamples(AperturePattern::Sobol, 24, 1), std::logic_error);
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -38,8 +38,8 @@ layout(location = 2) out vec4 behindOut;  // the view's own surface, weighted to
 layout(location = 3) out vec4 holeOut;    // the coverage this view misses behind an edge
 
 // Pixels². A cell image smaller than kPointArea stays in its own pixel, as in plain accumulation
-// (spread over its neighbours it measured worse than kept: `occluder` at 128 views, 49.5 dB against
-// 51.3 with 1 px², 51.6 with 1.5); one of at least kFewSamplesArea is tested at the pixel centre
+// (spread over its neighbours from 1 px² on it measured worse: `occluder` at 128 views, 49.5 dB
+// against 51.3 kept, as plain views); one of at least kFewSamplesArea is tested at the pixel centre
 // only, a smaller one at 2 × 2 points of each pixel, or 4 × 4 below kHoleArea. Below kHoleArea the
 // coverage a pixel gathers scatters about 1 by more than an edge's hole would show (the images'
 // edges are pixel-sized), so where this pixel's own image is that small its shortfall is not a hole:

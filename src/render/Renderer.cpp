@@ -52,6 +52,8 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     if (!lensPass_) lensPass_ = std::make_unique<LensPass>();
     lensPass_->prepare(views_->map(), plan.apertureSamples > 1, tables);
   }
+  // The accumulator outlives frames: a frame without the cell filter turns it off.
+  if (accumulator_) accumulator_->setCellFilter(false);
   adaptive_ = plan.adaptive.has_value();
   if (adaptive_) {
     beginAdaptive();

@@ -167,7 +167,9 @@ void main() {
   sum = weight * colour;
   weightOut = weight * covered;
   holeOut = weight * hole;
-  float depthRatio = clamp(1.0 / (max(here, 1e-30) * depthReference), 1e-4, 1e4);
+  // Depth ratios beyond 100 weigh alike: (10^2)^8 times a bright environment's radiance, summed over
+  // 65536 views, stays far inside a float.
+  float depthRatio = clamp(1.0 / (max(here, 1e-30) * depthReference), 1e-2, 1e2);
   float farness = pow(depthRatio, 8.0);
   behindOut = farness * vec4(weight.rgb * same.rgb / sameCover, (weight.r + weight.g + weight.b) / 3.0);
 }

@@ -84,6 +84,24 @@ std::vector<PixelBox> coveringBoxes(const std::vector<PixelBox>& boxes, double p
   return out;
 }
 
+std::vector<double> pooledMse(const TileGrid& grid, const std::vector<int>& samples, const std::vector<double>& mse,
+                              int radius) {
+  std::vector<double> out(mse.size(), 0.0);
+  for (int t = 0; t < grid.count(); ++t) {
+    const int column = t % grid.columns, row = t / grid.columns;
+    double c = 0.0, pixels = 0.0;
+    for (int r = std::max(row - radius, 0); r <= std::min(row + radius, grid.rows - 1); ++r)
+      for (int k = std::max(column - radius, 0); k <= std::min(column + radius, grid.columns - 1); ++k) {
+        const std::size_t s = static_cast<std::size_t>(r * grid.columns + k);
+        c += grid.pixels(static_cast<int>(s)) * mse[s] * samples[s];
+        pixels += grid.pixels(static_cast<int>(s));
+      }
+    const std::size_t i = static_cast<std::size_t>(t);
+    out[i] = samples[i] > 0 && pixels > 0.0 ? c / pixels / samples[i] : mse[i];
+  }
+  return out;
+}
+
 double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles) {
   double sum = 0.0, pixels = 0.0;
   for (int t = 0; t < grid.count(); ++t) {

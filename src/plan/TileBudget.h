@@ -75,6 +75,14 @@ bool perTilePays(const TileGrid& grid, const std::vector<TileState>& tiles, doub
 // it does), counted from the most any tile has now, and capped at `maxSamples`.
 int wholeFrameMoreSamples(const TileGrid& grid, const std::vector<TileState>& tiles, double targetMse, int maxSamples);
 
+// Each tile's error estimate pooled with its neighbours' (the tiles within `radius` in the grid):
+// the error × samples of each (its c, which the count does not change), pixel-weighted, over the
+// tile's own count. One tile's two-stream estimate is a noisy draw; a tile whose draw came out low
+// would stop early and keep it, and the frame's estimate would lean optimistic by the tiles it
+// stopped. The neighbourhood's c is the same blur and texture, seen by several independent draws.
+std::vector<double> pooledMse(const TileGrid& grid, const std::vector<int>& samples, const std::vector<double>& mse,
+                              int radius);
+
 // The frame's pixel-weighted mean squared error.
 double frameMse(const TileGrid& grid, const std::vector<TileState>& tiles);
 

@@ -152,8 +152,11 @@ void Renderer::complete(const std::function<void()>& afterBatch) {
 
 Renderer::Progress Renderer::progress() const {
   if (adaptive_) {
+    // A tile at the target can go on again when its neighbours' estimates (pooled with its own)
+    // rise; the count shown is the most that have been at the target, so that progress never falls.
     const FrameEstimate e = estimate();
-    return {e.tiles - e.tilesActive, e.tiles};
+    tilesAtTargetShown_ = std::max(tilesAtTargetShown_, e.tiles - e.tilesActive);
+    return {tilesAtTargetShown_, e.tiles};
   }
   return {done_, samplesPlanned()};
 }

@@ -150,7 +150,9 @@ class Renderer {
   std::unique_ptr<Accumulator> streamB_;  // odd samples; accumulator_ holds the even ones
   TileGrid grid_;
   std::vector<TileState> tiles_;
+  std::vector<double> rawMse_;  // each tile's own two-stream estimate, before pooling
   int rounds_ = 0;
+  mutable int tilesAtTargetShown_ = 0;                         // progress(): the most tiles at the target so far
   int regionTiles_ = 1, regionColumns_ = 1, regionCount_ = 1;  // regions of tiles with their own scramble
   gl::Texture tileWeights_[2];  // per tile, per stream: RGBA32F, the samples each stream added
   gl::Texture blockError_;      // RG32F, one texel per 8 × 8 block: squared error, value count

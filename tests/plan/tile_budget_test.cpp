@@ -108,6 +108,29 @@ TEST(TileBudget, TilesPayOnlyWhereTheirErrorsDiffer) {
   EXPECT_TRUE(perTilePays(g, half, 1e-4, 100000, 1.5));
 }
 
+TEST(TileBudget, PooledEstimatesShareTheNeighboursErrorTimesSamples) {
+  const TileGrid g = makeTileGrid({96, 96}, 32);  // 3 × 3 tiles of equal size
+  std::vector<int> samples(9, 16);
+  std::vector<double> mse(9, 1e-3);
+  // Alike everywhere: pooling changes nothing.
+  for (const double m : pooledMse(g, samples, mse, 1)) EXPECT_DOUBLE_EQ(m, 1e-3);
+  // The centre's own draw came out at nothing: it gets its neighbours' error, not zero (a tile
+  // that stopped on a lucky draw would keep it).
+  mse[4] = 0.0;
+  EXPECT_NEAR(pooledMse(g, samples, mse, 1)[4], 8.0 / 9.0 * 1e-3, 1e-15);
+  // The neighbourhood's c = error × samples, over the tile's own count: four times the samples,
+  // a quarter of the error.
+  mse[4] = 1e-3;
+  samples[4] = 64;
+  mse[4] = 1e-3 * 16 / 64;
+  EXPECT_NEAR(pooledMse(g, samples, mse, 1)[4], 1e-3 * 16 / 64, 1e-15);
+  // A corner pools its own 2 × 2; radius 0 is the tile's own estimate.
+  mse[0] = 4e-3;
+  EXPECT_NEAR(pooledMse(g, samples, mse, 1)[0], (4e-3 + 2 * 1e-3 + 1e-3 * 16 / 64 * 64 / 16) / 4, 1e-15);
+  const std::vector<double> own = pooledMse(g, samples, mse, 0);
+  for (std::size_t t = 0; t < own.size(); ++t) EXPECT_DOUBLE_EQ(own[t], mse[t]);
+}
+
 TEST(TileBudget, PsnrAndMseAreInverse) {
   EXPECT_NEAR(psnrFromMse(mseFromPsnr(37.5)), 37.5, 1e-12);
   EXPECT_NEAR(psnrFromMse(1e-4), 40.0, 1e-12);

@@ -7,12 +7,15 @@
 // its two independent halves). Frames cover the range two ways: every tile capped at N samples
 // (N = 2 … 256), and targets of 30 … 45 dB with per-tile budgets.
 //
-// The bounds: the mean |estimate − truth| over a scene's frames within 1 dB, and every frame within
-// 2 dB (measured worst: 1.55 dB). A frame's own error is one draw of a random error; where it is made of few independent
-// parts (a blurred checkerboard errs alike wherever one set of aperture points is used) it strays
-// from its expectation, which is all any estimate can know — regions of tiles with their own
-// scrambles (Renderer::step) make the parts many. Tiles that stop early are those whose estimate
-// came out low, which leans the frame's estimate to the optimistic side by a few tenths of a dB.
+// The bounds: the mean |estimate − truth| over a scene's frames within 0.75 dB (measured 0.68,
+// 0.64, 0.54), no frame that stopped at its target more than 1 dB optimistic (measured worst
+// +0.98, rows at 35 dB), and every frame within 2 dB (measured worst: 1.54 dB). A frame's own
+// error is one draw of a random error; where it is made of few independent parts (a blurred
+// checkerboard errs alike wherever one set of aperture points is used) it strays from its
+// expectation, which is all any estimate can know — regions of tiles with their own scrambles
+// (Renderer::step) make the parts many. Tiles whose own estimate came out low would stop early and
+// keep it; each tile's estimate is pooled with its neighbours' (plan/TileBudget.h pooledMse) so that
+// the frame's does not lean optimistic by the tiles it stopped.
 #include "camera/DepthRange.h"
 #include "../common/gl_test_context.h"
 #include "io/CameraJson.h"
@@ -50,7 +53,7 @@ struct Case {
 
 class Estimate : public ::testing::TestWithParam<Case> {};
 
-TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
+TEST_P(Estimate, IsWithinThreeQuartersOfADecibelOfTheTruthFrom25To45Decibels) {
   LENSLAB_REQUIRE_GL();
   const Case c = GetParam();
   const std::filesystem::path assets = LENSLAB_TEST_ASSET_DIR;
@@ -71,7 +74,7 @@ TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
   Renderer renderer(scene);
   const VisibleBlur visible = measureVisibleBlur(renderer, camera, size);
   int inRange = 0;
-  double worst = 0.0, sumAbs = 0.0;
+  double worst = 0.0, sumAbs = 0.0, worstStopped = -99.0;
   const auto check = [&](const std::string& label, int maxSamples, double target) {
     PlanOptions options{AperturePattern::Sobol, 0, maxSamples, seed};
     options.targetPsnrDb = target;
@@ -85,16 +88,20 @@ TEST_P(Estimate, IsWithinOneDecibelOfTheTruthFrom25To45Decibels) {
     worst = std::max(worst, std::abs(e.psnrDb - truth));
     sumAbs += std::abs(e.psnrDb - truth);
     EXPECT_NEAR(e.psnrDb, truth, 2.0) << label;
+    if (target < 99.0 && e.targetMet) {  // stopped at its target: the estimate is what the user is told
+      worstStopped = std::max(worstStopped, e.psnrDb - truth);
+      EXPECT_LE(e.psnrDb - truth, 1.0) << label << ": stopped at its target, more than 1 dB optimistic";
+    }
   };
   for (int n = 2; n <= c.maxCap; n *= 2) check("at most " + std::to_string(n), n, 99.0);
   for (const double target : {30.0, 35.0, 40.0, 45.0})
     if (target <= c.maxTarget) check("target " + std::to_string(static_cast<int>(target)) + " dB", 1024, target);
   std::printf(
-      "  %s: %d frames with the truth in 25-45 dB, mean |estimate - truth| %.2f dB, worst %.2f dB (reference noise "
-      "%.1f dB)\n",
-      c.name, inRange, inRange ? sumAbs / inRange : 0.0, worst, psnrFromMse(referenceNoiseMse));
+      "  %s: %d frames with the truth in 25-45 dB, mean |estimate - truth| %.2f dB, worst %.2f dB, stopped at the "
+      "target at most %+.2f dB optimistic (reference noise %.1f dB)\n",
+      c.name, inRange, inRange ? sumAbs / inRange : 0.0, worst, worstStopped, psnrFromMse(referenceNoiseMse));
   ASSERT_GE(inRange, 6) << "too few frames landed in 25-45 dB for the check to mean anything";
-  EXPECT_LE(sumAbs / inRange, 1.0);
+  EXPECT_LE(sumAbs / inRange, 0.75);
 }
 
 INSTANTIATE_TEST_SUITE_P(

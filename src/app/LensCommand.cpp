@@ -78,8 +78,7 @@ nlohmann::json fitJson(const FittedLens& fit) {
   };
 }
 
-void printFit(std::ostream& out, const FittedLens& fit,
-              const std::function<void(const char*, const std::string&)>& line) {
+void printFit(const FittedLens& fit, const std::function<void(const char*, const std::string&)>& line) {
   if (!fit.usable) {
     line("real-time fit", cat("none: ", fit.why));
     return;
@@ -191,7 +190,7 @@ void printReport(std::ostream& out, const LensPrescription& lens, const LensRepo
     line("colour", "no Abbe numbers in the file: one wavelength");
   line("rms spot", cat(fixed(1000.0 * r.rmsSpotMm.x, 2), " / ", fixed(1000.0 * r.rmsSpotMm.y, 2), " / ",
                        fixed(1000.0 * r.rmsSpotMm.z, 2), " um at 0 / 0.5 / 1.0 of the half diagonal"));
-  printFit(out, fit, line);
+  printFit(fit, line);
   out << "\nfield   height_mm   angle_deg   distortion_%   relative_illumination\n";
   for (const FieldSample& s : r.field) {
     char row[128];

@@ -101,6 +101,8 @@
 #define LOCATION_CELL_DISPLACEMENTS 10  // the box of x − y to gather: min x, y, max x, y
 #define LOCATION_CELL_MARGIN 12      // the views' margin around the sum, pixels
 #define LOCATION_CELL_DEPTH_REFERENCE 13
+#define LOCATION_CELL_RECTANGLE_CENTRE 14  // the cell's moment rectangle (ApertureCell::momentRectangle)
+#define LOCATION_CELL_RECTANGLE_AXES 15    // its half-axes, as a vec4 (axis0, axis1)
 #define LOCATION_CELL_SQUARE_BOX 11  // a box of the concentric square: min x, y, max x, y (or all 0: a ring's sector)
 
 // The vignetting gain's inputs (common/vignetting.glsl) in the post passes that multiply by it:

@@ -64,6 +64,41 @@ std::vector<glm::dvec2> ApertureCell::outline(int perSide) const {
   return points;
 }
 
+ApertureCell::Rectangle ApertureCell::momentRectangle() const {
+  // The outline as a polygon: its area, centroid and second moments (Green's theorem), then the
+  // rectangle along the covariance's eigenvectors with the same variances (h²/3 per half-length
+  // h), scaled to the cell's exact area.
+  const std::vector<glm::dvec2> polygon = outline(32);
+  double a = 0.0;
+  glm::dvec2 first(0.0);
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::dvec2 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+    const double w = p.x * q.y - q.x * p.y;
+    a += w;
+    first += w * (p + q);
+    xx += w * (p.x * p.x + p.x * q.x + q.x * q.x);
+    yy += w * (p.y * p.y + p.y * q.y + q.y * q.y);
+    xy += w * (p.x * q.y + 2.0 * p.x * p.y + 2.0 * q.x * q.y + q.x * p.y);
+  }
+  a *= 0.5;
+  Rectangle r;
+  if (std::abs(a) < 1e-300) return r;
+  r.centre = first / (6.0 * a);
+  const double cxx = xx / (12.0 * a) - r.centre.x * r.centre.x, cyy = yy / (12.0 * a) - r.centre.y * r.centre.y;
+  const double cxy = xy / (24.0 * a) - r.centre.x * r.centre.y;
+  // Eigen-decomposition of [[cxx, cxy], [cxy, cyy]].
+  const double mean = 0.5 * (cxx + cyy), spread = std::sqrt(0.25 * (cxx - cyy) * (cxx - cyy) + cxy * cxy);
+  const double l0 = std::max(mean + spread, 0.0), l1 = std::max(mean - spread, 0.0);
+  const double angle = 0.5 * std::atan2(2.0 * cxy, cxx - cyy);
+  const glm::dvec2 e0(std::cos(angle), std::sin(angle)), e1(-e0.y, e0.x);
+  double h0 = std::sqrt(3.0 * l0), h1 = std::sqrt(3.0 * l1);
+  const double scale = h0 * h1 > 0.0 ? std::sqrt(area() / (4.0 * h0 * h1)) : 1.0;
+  r.axis0 = scale * h0 * e0;
+  r.axis1 = scale * h1 * e1;
+  return r;
+}
+
 bool hasCells(AperturePattern pattern, int count) {
   return pattern == AperturePattern::Rings ||
          (pattern == AperturePattern::Sobol && count >= 1 && (count & (count - 1)) == 0);

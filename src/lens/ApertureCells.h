@@ -35,6 +35,14 @@ struct ApertureCell {
   bool contains(glm::dvec2 diskPoint) const;
   // Points of its boundary on the unit disk, `perSide` along each of its four sides.
   std::vector<glm::dvec2> outline(int perSide) const;
+  // The rectangle with the cell's area, centroid and second moments: centre + s·axis0 + t·axis1
+  // for s, t in [−1, 1] (half-axes, on the unit disk). A small cell image is measured as this
+  // rectangle's image (a parallelogram), whose exact overlap with each pixel is cheap; over any
+  // grid of pixels its overlaps sum to its area.
+  struct Rectangle {
+    glm::dvec2 centre{0.0}, axis0{0.0}, axis1{0.0};
+  };
+  Rectangle momentRectangle() const;
   double area() const {  // of the unit disk (the map preserves area: π per unit of the square)
     if (square) return std::numbers::pi * (squareMax.x - squareMin.x) * (squareMax.y - squareMin.y);
     return 0.5 * sweepAngle * (outerRadius * outerRadius - innerRadius * innerRadius);

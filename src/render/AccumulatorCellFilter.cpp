@@ -40,6 +40,11 @@ void Accumulator::filterView() {
   glProgramUniform4fv(program, LOCATION_CELL_SQUARE_BOX, 1, &box.x);
   glProgramUniform2i(program, LOCATION_CELL_MARGIN, cellMarginPx_.x, cellMarginPx_.y);
   glProgramUniform1f(program, LOCATION_CELL_DEPTH_REFERENCE, c.depthReference);
+  const ApertureCell::Rectangle rectangle = c.cell.momentRectangle();
+  const glm::vec2 rectangleCentre(rectangle.centre);
+  const glm::vec4 rectangleAxes(glm::vec2(rectangle.axis0), glm::vec2(rectangle.axis1));
+  glProgramUniform2fv(program, LOCATION_CELL_RECTANGLE_CENTRE, 1, &rectangleCentre.x);
+  glProgramUniform4fv(program, LOCATION_CELL_RECTANGLE_AXES, 1, &rectangleAxes.x);
   const gl::DrawTarget three{cellFramebuffer_.id(), sum_->width(), sum_->height()};
   three.bind();
   glEnable(GL_BLEND);

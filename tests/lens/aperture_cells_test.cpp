@@ -110,6 +110,29 @@ TEST(Cells, SobolCellsAreThePatternsOwnPointsOnePerBox) {
   }
 }
 
+TEST(Cells, TheMomentRectangleHasTheCellsAreaAndCentroid) {
+  // A ring sector's centroid: along its middle angle at (2/3)(r1³ − r0³)/(r1² − r0²) · sin(h)/h,
+  // h half its sweep.
+  const ApertureCell sector{0.5, 0.8, 0.3, 1.2};
+  const ApertureCell::Rectangle r = sector.momentRectangle();
+  const double h = 0.6, along = 2.0 / 3.0 * (0.512 - 0.125) / (0.64 - 0.25) * std::sin(h) / h;
+  EXPECT_NEAR(r.centre.x, along * std::cos(0.9), 1e-3);
+  EXPECT_NEAR(r.centre.y, along * std::sin(0.9), 1e-3);
+  // 0.3 deep and about 0.78 wide at its middle radius: the long axis runs across the sector.
+  EXPECT_GT(glm::length(r.axis0), glm::length(r.axis1));
+  EXPECT_NEAR(std::abs(glm::dot(glm::normalize(r.axis0), glm::dvec2(std::cos(0.9), std::sin(0.9)))), 0.0, 1e-6);
+  for (const int count : {4, 16, 64}) {
+    const CellSamples cells = makeCellSamples(AperturePattern::Sobol, count, 5);
+    for (const ApertureCell& c : cells.cells) {
+      const ApertureCell::Rectangle m = c.momentRectangle();
+      const double area = 4.0 * std::abs(m.axis0.x * m.axis1.y - m.axis0.y * m.axis1.x);
+      EXPECT_NEAR(area, c.area(), 1e-9 * c.area()) << count << " cells";
+      EXPECT_TRUE(c.contains(m.centre)) << count << " cells: the centroid of a box's image lies in it";
+      EXPECT_NEAR(glm::dot(m.axis0, m.axis1), 0.0, 1e-12);
+    }
+  }
+}
+
 TEST(Cells, OnlyRingsAndPowersOfTwoOfSobolHaveCells) {
   EXPECT_TRUE(hasCells(AperturePattern::Rings, 5));
   EXPECT_TRUE(hasCells(AperturePattern::Sobol, 64));

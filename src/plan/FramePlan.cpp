@@ -194,8 +194,8 @@ void planCellFilter(const ThinLensMap& map, const PlanOptions& options, FramePla
     // time than the plain frame of the same PSNR (docs/performance.md, "Fewer views: the cell filter").
     plan.cellFilterWhy = options.cellFilter
                              ? "off (--cell-filter off)"
-                             : "off (auto: measured on llvmpipe, the filter cost 3.7-6.7x the time of a plain "
-                               "frame of higher PSNR; --cell-filter on asks for it)";
+                             : "off (auto: measured on llvmpipe, a filtered frame took 2.5-4.1x the time of a "
+                               "plain frame of the same PSNR; --cell-filter on asks for it)";
     return;
   }
   const ApertureShape& shape = camera.lens.aperture;

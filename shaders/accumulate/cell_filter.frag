@@ -3,7 +3,9 @@
 // ONE). The view was seen from one point p of its cell of the aperture (lens/ApertureCells.h); a
 // point at inverse depth 1/Z that the view shows at pixel y is, seen from any point q of the cell,
 // at y + M·(q − p), M = spreadAtInfinity + (1/Z)·spreadPerInverseDepth (the thin lens's circle of
-// confusion per unit of aperture: affine in 1/Z, zero on the plane of focus). So the view's pixel y
+// confusion per unit of aperture: affine in 1/Z, zero on the plane of focus; p and q are points of
+// the aperture's shape, whose cells are the disk's cells carried by the shape's map, curved and
+// squeezed, and undone here by diskFromAperture). So the view's pixel y
 // stands for the cell's image, the cell scaled by M, and this pixel x gathers every neighbour y
 // whose image covers it: q = p + M⁻¹·(x − y) inside the cell, with weight 1 / (the image's area in
 // pixels), at most 1 (an image smaller than a pixel stays in its own pixel).
@@ -33,6 +35,8 @@ layout(location = LOCATION_CELL_SQUARE_BOX) uniform vec4 squareBox;
 layout(location = LOCATION_CELL_MARGIN) uniform ivec2 marginPx;
 layout(location = LOCATION_CELL_RECTANGLE_CENTRE) uniform vec2 rectangleCentre;
 layout(location = LOCATION_CELL_RECTANGLE_AXES) uniform vec4 rectangleAxes;
+layout(location = LOCATION_CELL_SECTORS) uniform vec4 sectors;
+layout(location = LOCATION_CELL_SECTOR_SCALE) uniform vec4 sectorScale;
 layout(location = LOCATION_CELL_DEPTH_REFERENCE) uniform float depthReference;  // Z_ref, world units  // the view's pixel of sum pixel (0, 0)
 layout(location = 0) out vec4 sum;
 layout(location = 1) out vec4 weightOut;  // the coverage summed beside the colour
@@ -66,6 +70,24 @@ vec2 concentricSquare(vec2 q) {
   else if (phi > 0.0) offset = vec2(r * (2.0 * quarterPi - phi) / quarterPi, r);
   else offset = vec2(-r * (2.0 * quarterPi - (phi + 4.0 * quarterPi)) / quarterPi, -r);
   return 0.5 * (offset + 1.0);
+}
+
+// lens/ApertureShape.cpp's diskFromAperture: the point of the unit disk that the shape's map
+// carries to aperture point a. The cells are the disk's; M and the view's point are the aperture's.
+float twiceSectorArea(float theta) {
+  float t = tan(theta);
+  return sectors.z * sectors.z * t + 2.0 * sectors.z * sectors.w * asinh(t) + sectors.w * sectors.w * theta;
+}
+
+vec2 diskFromAperture(vec2 a) {
+  vec2 p = vec2(a.x * sectorScale.y, a.y / sectorScale.y);
+  float r = length(p);
+  if (sectorScale.z == 0.0 || r == 0.0) return p;
+  float psi = atan(p.y, p.x);
+  float normal = sectors.x + 2.0 * sectors.y * round((psi - sectors.x) / (2.0 * sectors.y));
+  float theta = clamp(psi - normal, -sectors.y, sectors.y);
+  float phi = normal - sectors.y + sectors.y * (twiceSectorArea(theta) + sectorScale.w) / sectorScale.w;
+  return r / (sectorScale.x * (sectors.z / cos(theta) + sectors.w)) * vec2(cos(phi), sin(phi));
 }
 
 bool inCell(vec2 q) {
@@ -118,7 +140,7 @@ float overlapArea(vec2 o, vec2 a, vec2 b, vec2 lo, vec2 hi) {
 float imageWeight(ivec2 d, mat2 m, float imageArea) {
   if (imageArea < kPointArea) return d == ivec2(0) ? 1.0 : 0.0;
   if (imageArea >= kFewSamplesArea) {
-    return inCell(lensPoint + inverse(m) * vec2(d)) ? 1.0 / imageArea : 0.0;
+    return inCell(diskFromAperture(lensPoint + inverse(m) * vec2(d))) ? 1.0 / imageArea : 0.0;
   } else {
     // A small image is measured as its cell's moment rectangle (a parallelogram in the image): its
     // exact overlap with the pixel. A test at one point would jump between 0 and 1 (the image's

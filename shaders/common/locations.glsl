@@ -103,6 +103,8 @@
 #define LOCATION_CELL_DEPTH_REFERENCE 13
 #define LOCATION_CELL_RECTANGLE_CENTRE 14  // the cell's moment rectangle (ApertureCell::momentRectangle)
 #define LOCATION_CELL_RECTANGLE_AXES 15    // its half-axes, as a vec4 (axis0, axis1)
+#define LOCATION_CELL_SECTORS 16  // the shape's map (lens/ApertureShape.h's ApertureSectors): first normal, half angle, straight, round
+#define LOCATION_CELL_SECTOR_SCALE 17  // scale, squeeze root, blades (0: a circle), twice a sector's area
 #define LOCATION_CELL_SQUARE_BOX 11  // a box of the concentric square: min x, y, max x, y (or all 0: a ring's sector)
 
 // The vignetting gain's inputs (common/vignetting.glsl) in the post passes that multiply by it:

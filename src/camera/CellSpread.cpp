@@ -25,15 +25,21 @@ CellSpread cellSpread(const ThinLensMap& map, const LensSample& s, Channel c) {
   const double ndc[2] = {0.5, 0.125};
   glm::dmat2 spread[2];
   double inverseDepth[2];
-  constexpr double kStep = 1e-3;  // of the unit disk; the map is affine in it, so any step is exact
+  // Steps of the aperture point (lens/ApertureShape.h: after the shape's map, whose cells are
+  // curved and which is not affine in the disk's point), taken back to the disk the samples live on.
+  const ApertureShape& shape = map.overscan().camera.lens.aperture;
+  const glm::dvec2 aperturePoint = apertureFromDisk(s.lens, shape);
+  constexpr double kStep = 1e-3;  // of the aperture; the image is affine in it, so any step is exact
   for (int k = 0; k < 2; ++k) {
     const glm::dvec4 h = centreFromWorld * glm::dvec4(0.0, 0.0, ndc[k], 1.0);
     const glm::dvec3 world = glm::dvec3(h) / h.w;
     inverseDepth[k] = 1.0 / depthFromReverseZ(spec, ndc[k]);
     for (int axis = 0; axis < 2; ++axis) {
+      glm::dvec2 step(0.0);
+      step[axis] = kStep;
       LensSample plus = s, minus = s;
-      plus.lens[axis] += kStep;
-      minus.lens[axis] -= kStep;
+      plus.lens = diskFromAperture(aperturePoint + step, shape);
+      minus.lens = diskFromAperture(aperturePoint - step, shape);
       spread[k][axis] = (renderPixel(map.clipFromWorld(plus, c), world, size) -
                          renderPixel(map.clipFromWorld(minus, c), world, size)) /
                         (2.0 * kStep);

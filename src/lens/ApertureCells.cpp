@@ -43,7 +43,7 @@ bool ApertureCell::contains(glm::dvec2 p) const {
   return cross(first, p) >= 0.0 && cross(p, last) > 0.0;
 }
 
-std::vector<glm::dvec2> ApertureCell::outline(int perSide) const {
+std::vector<glm::dvec2> ApertureCell::outline(int perSide, const ApertureShape& shape) const {
   std::vector<glm::dvec2> points;
   for (int side = 0; side < 4; ++side)
     for (int i = 0; i < perSide; ++i) {
@@ -54,21 +54,22 @@ std::vector<glm::dvec2> ApertureCell::outline(int perSide) const {
                             : side == 2 ? glm::dvec2(1.0 - t, 1.0)
                                         : glm::dvec2(0.0, 1.0 - t);
       if (square) {
-        points.push_back(concentricDisk(squareMin + st * (squareMax - squareMin)));
+        points.push_back(apertureFromDisk(concentricDisk(squareMin + st * (squareMax - squareMin)), shape));
       } else {
         const double angle = startAngle + st.x * sweepAngle;
         const double radius = innerRadius + st.y * (outerRadius - innerRadius);
-        points.push_back(radius * glm::dvec2(std::cos(angle), std::sin(angle)));
+        points.push_back(apertureFromDisk(radius * glm::dvec2(std::cos(angle), std::sin(angle)), shape));
       }
     }
   return points;
 }
 
-ApertureCell::Rectangle ApertureCell::momentRectangle() const {
+ApertureCell::Rectangle ApertureCell::momentRectangle(const ApertureShape& shape) const {
   // The outline as a polygon: its area, centroid and second moments (Green's theorem), then the
   // rectangle along the covariance's eigenvectors with the same variances (h²/3 per half-length
-  // h), scaled to the cell's exact area.
-  const std::vector<glm::dvec2> polygon = outline(32);
+  // h), scaled to the cell's exact area. (On a shaped aperture the outline's sides are curves,
+  // and cross the seams between blades: 32 points a side follow them.)
+  const std::vector<glm::dvec2> polygon = outline(32, shape);
   double a = 0.0;
   glm::dvec2 first(0.0);
   double xx = 0.0, xy = 0.0, yy = 0.0;

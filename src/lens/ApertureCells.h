@@ -13,6 +13,7 @@
 // radius test and two cross products (no angle), which a shader does for every neighbour it reads.
 // Points are on the unit disk (lens/AperturePattern.h's LensSample.lens), before the shape map.
 #include "lens/AperturePattern.h"
+#include "lens/ApertureShape.h"
 
 #include <glm/glm.hpp>
 
@@ -33,16 +34,18 @@ struct ApertureCell {
   glm::dvec2 squareMin{0.0}, squareMax{1.0};
 
   bool contains(glm::dvec2 diskPoint) const;
-  // Points of its boundary on the unit disk, `perSide` along each of its four sides.
-  std::vector<glm::dvec2> outline(int perSide) const;
+  // Points of its boundary, `perSide` along each of its four sides: on the unit disk, or carried by
+  // `shape`'s map onto the aperture (lens/ApertureShape.h; the map keeps areas, so the cell's
+  // image there has the same area).
+  std::vector<glm::dvec2> outline(int perSide, const ApertureShape& shape = {}) const;
   // The rectangle with the cell's area, centroid and second moments: centre + s·axis0 + t·axis1
-  // for s, t in [−1, 1] (half-axes, on the unit disk). A small cell image is measured as this
-  // rectangle's image (a parallelogram), whose exact overlap with each pixel is cheap; over any
-  // grid of pixels its overlaps sum to its area.
+  // for s, t in [−1, 1] (half-axes, on the unit disk, or of the cell's image on the aperture of
+  // `shape`). A small cell image is measured as this rectangle's image (a parallelogram), whose
+  // exact overlap with each pixel is cheap; over any grid of pixels its overlaps sum to its area.
   struct Rectangle {
     glm::dvec2 centre{0.0}, axis0{0.0}, axis1{0.0};
   };
-  Rectangle momentRectangle() const;
+  Rectangle momentRectangle(const ApertureShape& shape = {}) const;
   double area() const {  // of the unit disk (the map preserves area: π per unit of the square)
     if (square) return std::numbers::pi * (squareMax.x - squareMin.x) * (squareMax.y - squareMin.y);
     return 0.5 * sweepAngle * (outerRadius * outerRadius - innerRadius * innerRadius);

@@ -94,6 +94,41 @@ glm::dvec2 apertureFromDisk(glm::dvec2 p, const ApertureShape& s) {
   return squeezed(radius * glm::dvec2(std::cos(normal + theta), std::sin(normal + theta)), s);
 }
 
+glm::dvec2 diskFromAperture(glm::dvec2 a, const ApertureShape& s) {
+  const double q = std::sqrt(s.anamorphicSqueeze);
+  const glm::dvec2 p(a.x * q, a.y / q);
+  if (s.blades == 0 || s.roundness >= 1.0) return p;
+  const double r = glm::length(p);
+  if (r == 0.0) return p;
+  const Sector sector(s);
+  const double psi = std::atan2(p.y, p.x);
+  const double normal0 = firstNormalAngle(s);
+  const double k = std::round((psi - normal0) / (2.0 * sector.alpha));
+  const double normal = normal0 + 2.0 * sector.alpha * k;
+  const double theta = std::clamp(psi - normal, -sector.alpha, sector.alpha);
+  // G is odd: the area from −α to θ over the sector's, as a fraction of the disk's sector 2α.
+  const double whole = sector.twiceArea(sector.alpha);
+  const double fraction = 0.5 * (sector.twiceArea(theta) + whole) / whole;
+  const double phi = normal - sector.alpha + 2.0 * sector.alpha * fraction;
+  const double radius = r / (areaScale(s) * sector.boundary(theta));
+  return radius * glm::dvec2(std::cos(phi), std::sin(phi));
+}
+
+ApertureSectors apertureSectors(const ApertureShape& s) {
+  ApertureSectors out;
+  out.squeezeRoot = std::sqrt(s.anamorphicSqueeze);
+  if (s.blades == 0 || s.roundness >= 1.0) return out;
+  const Sector sector(s);
+  out.blades = s.blades;
+  out.firstNormalRad = firstNormalAngle(s);
+  out.halfAngleRad = sector.alpha;
+  out.straight = sector.a;
+  out.round = sector.b;
+  out.scale = areaScale(s);
+  out.twiceArea = sector.twiceArea(sector.alpha);
+  return out;
+}
+
 double apertureReach(const ApertureShape& s) {
   const double q = std::sqrt(s.anamorphicSqueeze);
   const double squeeze = std::max(q, 1.0 / q);

@@ -53,6 +53,24 @@ std::optional<ApertureProblem> apertureShapeProblem(const ApertureShape& shape);
 // the circle by the roundness; the whole is scaled to the disk's area, then squeezed.
 glm::dvec2 apertureFromDisk(glm::dvec2 unitDisk, const ApertureShape& shape);
 
+// Its inverse: the point of the unit disk that apertureFromDisk carries to `aperture` (units of the
+// aperture radius). Closed form: unsqueezed, the polar angle in its blade's sector gives that
+// sector's area up to it, which is the disk's angle; the radius over the boundary R(θ) is the
+// disk's radius. The cell filter asks it where a point of the shape lies in the disk's cells.
+glm::dvec2 diskFromAperture(glm::dvec2 aperture, const ApertureShape& shape);
+
+// The numbers that define both maps, for a shader that undoes the map (accumulate/cell_filter.frag):
+// the sector boundary R(θ) = straight / cos θ + round, θ from the blade's normal within ±halfAngle;
+// blade k's normal at firstNormal + 2·halfAngle·k; the polygon scaled by `scale` to the disk's
+// area; then x divided and y multiplied by squeezeRoot. blades 0: a circle (only the squeeze).
+// twiceArea: ∫₀^halfAngle R² dθ, twice the area of half a sector.
+struct ApertureSectors {
+  int blades = 0;
+  double firstNormalRad = 0.0, halfAngleRad = 0.0, straight = 0.0, round = 1.0, scale = 1.0, squeezeRoot = 1.0;
+  double twiceArea = 1.0;
+};
+ApertureSectors apertureSectors(const ApertureShape& shape);
+
 // The largest distance from the centre of any aperture point, in units of the aperture radius
 // (1 for a circle): how far the circle of confusion of a shaped aperture reaches.
 double apertureReach(const ApertureShape& shape);

@@ -186,7 +186,8 @@ void planAdaptive(const Camera& camera, ImageSize size, const PlanOptions& optio
 }
 
 // Whether each view is filtered by its aperture cell's image: only where asked, and only for a thin
-// lens's plain views (the filter knows the thin lens's spread and not the lens effects' warps).
+// lens's plain views, of any aperture shape (the filter knows the thin lens's spread and the
+// shape's map, not the lens effects' warps).
 void planCellFilter(const ThinLensMap& map, const PlanOptions& options, FramePlan& plan) {
   const Camera& camera = map.camera();
   if (!options.cellFilter.value_or(false)) {
@@ -198,16 +199,13 @@ void planCellFilter(const ThinLensMap& map, const PlanOptions& options, FramePla
                                "plain frame of the same PSNR; --cell-filter on asks for it)";
     return;
   }
-  const ApertureShape& shape = camera.lens.aperture;
   const char* against = !plan.accumulates() || camera.lens.isPinhole() ? "a pinhole or a single view has no cells"
                         : plan.adaptive ? "per-tile budgets (--target-psnr) draw views in parts"
                         : plan.remap    ? "distortion and lateral colour move each view's samples as they are summed"
                         : plan.fieldCurvature     ? "field curvature warps each view as it is summed"
                         : camera.lens.hasBarrel() ? "the barrel masks each view per pixel"
                         : camera.view.projection != Projection::Perspective ? "a parallel projection"
-                        : (shape.blades != 0 && shape.roundness < 1.0)
-                            ? "aperture blades (the cell filter handles round and squeezed apertures)"
-                            : nullptr;
+                                                                            : nullptr;
   if (against) {
     plan.cellFilterWhy = cat("off: ", against);
     plan.warnings.push_back(cat("--cell-filter on is not used: ", against));

@@ -70,11 +70,12 @@ class Accumulator {
   // image at each pixel's depth as it is added, one view at a time (the views share one depth
   // buffer, which the filter reads). Made by render/LensViews per view.
   struct CellView {
-    glm::mat2 spreadAtInfinity{0.0f};       // image pixels (GL orientation) per unit of the unit disk
+    glm::mat2 spreadAtInfinity{0.0f};       // image pixels (GL orientation) per unit of aperture point
     glm::mat2 spreadPerInverseDepth{0.0f};  // plus this times 1/Z
     glm::vec2 inverseDepthFromNdc{0.0f};    // 1/Z = x·z_ndc + y
-    glm::vec2 lensPoint{0.0f};              // the view's point of the unit disk
-    ApertureCell cell;
+    glm::vec2 lensPoint{0.0f};              // the view's aperture point (after the shape's map)
+    ApertureCell cell;                      // on the unit disk, before the shape's map
+    ApertureShape shape;
     // The displacements x − y (pixels, per axis) from a neighbour y to the pixels x its image can cover.
     glm::ivec2 displacementMinPx{0}, displacementMaxPx{0};
     float depthReference = 1.0f;  // a depth in view (world units), the scale of the fill's weights

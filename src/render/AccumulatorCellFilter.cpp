@@ -40,7 +40,12 @@ void Accumulator::filterView() {
   glProgramUniform4fv(program, LOCATION_CELL_SQUARE_BOX, 1, &box.x);
   glProgramUniform2i(program, LOCATION_CELL_MARGIN, cellMarginPx_.x, cellMarginPx_.y);
   glProgramUniform1f(program, LOCATION_CELL_DEPTH_REFERENCE, c.depthReference);
-  const ApertureCell::Rectangle rectangle = c.cell.momentRectangle();
+  const ApertureSectors sectors = apertureSectors(c.shape);
+  const glm::vec4 sectorAngles(sectors.firstNormalRad, sectors.halfAngleRad, sectors.straight, sectors.round);
+  const glm::vec4 sectorScale(sectors.scale, sectors.squeezeRoot, sectors.blades, sectors.twiceArea);
+  glProgramUniform4fv(program, LOCATION_CELL_SECTORS, 1, &sectorAngles.x);
+  glProgramUniform4fv(program, LOCATION_CELL_SECTOR_SCALE, 1, &sectorScale.x);
+  const ApertureCell::Rectangle rectangle = c.cell.momentRectangle(c.shape);
   const glm::vec2 rectangleCentre(rectangle.centre);
   const glm::vec4 rectangleAxes(glm::vec2(rectangle.axis0), glm::vec2(rectangle.axis1));
   glProgramUniform2fv(program, LOCATION_CELL_RECTANGLE_CENTRE, 1, &rectangleCentre.x);

@@ -73,11 +73,13 @@ Accumulator::CellView LensViews::cellView(const LensSample& s, const ApertureCel
   // The displacements x − y from a neighbour y to a pixel x its image covers: M(1/Z)·(q − p) for q
   // in the cell. M is affine in 1/Z, so all of them lie in the box of those at the two ends.
   glm::dvec2 least(0.0), most(0.0);
-  const std::vector<glm::dvec2> outline = cell.outline(16);
+  const ApertureShape& shape = rendered().lens.aperture;
+  const glm::dvec2 aperturePoint = apertureFromDisk(s.lens, shape);
+  const std::vector<glm::dvec2> outline = cell.outline(16, shape);
   for (const double inverseDepth : {lo, hi}) {
     const glm::dmat2 m = spread.at(inverseDepth);
     for (const glm::dvec2& point : outline) {
-      const glm::dvec2 d = m * (point - s.lens);
+      const glm::dvec2 d = m * (point - aperturePoint);
       least = glm::min(least, d);
       most = glm::max(most, d);
     }
@@ -86,7 +88,8 @@ Accumulator::CellView LensViews::cellView(const LensSample& s, const ApertureCel
   v.spreadAtInfinity = glm::mat2(spread.atInfinity);
   v.spreadPerInverseDepth = glm::mat2(spread.perInverseDepth);
   v.inverseDepthFromNdc = glm::vec2(spread.inverseDepthFromNdc);
-  v.lensPoint = glm::vec2(s.lens);
+  v.lensPoint = glm::vec2(aperturePoint);
+  v.shape = shape;
   v.depthReference = static_cast<float>(1.0 / (0.5 * spread.inverseDepthFromNdc.x + spread.inverseDepthFromNdc.y));
   v.cell = cell;
   const auto whole = [](double d) {

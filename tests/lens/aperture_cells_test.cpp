@@ -133,6 +133,32 @@ TEST(Cells, TheMomentRectangleHasTheCellsAreaAndCentroid) {
   }
 }
 
+TEST(Cells, OnAShapedApertureTheMomentRectangleIsTheCellImages) {
+  // The cell carried onto six blades, squeezed: the rectangle keeps the image's area (the map keeps
+  // areas) and its centroid, against the mean of points spread uniformly over the cell and mapped.
+  const ApertureShape shape{6, 20.0, 0.2, 1.5};
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const int count : {4, 16}) {
+    const CellSamples cells = makeCellSamples(AperturePattern::Sobol, count, 5);
+    for (const ApertureCell& c : cells.cells) {
+      const ApertureCell::Rectangle m = c.momentRectangle(shape);
+      const double area = 4.0 * std::abs(m.axis0.x * m.axis1.y - m.axis0.y * m.axis1.x);
+      EXPECT_NEAR(area, c.area(), 1e-9 * c.area()) << count << " cells";
+      glm::dvec2 mean(0.0);
+      const int n = 20000;
+      for (int i = 0; i < n; ++i) {
+        const glm::dvec2 square = c.squareMin + glm::dvec2(u(rng), u(rng)) * (c.squareMax - c.squareMin);
+        mean += apertureFromDisk(concentricDisk(square), shape) / double(n);
+      }
+      EXPECT_NEAR(glm::length(m.centre - mean), 0.0, 0.01) << count << " cells";
+      EXPECT_TRUE(c.contains(diskFromAperture(m.centre, shape))) << count << " cells";
+      // Not the disk's rectangle: the shape moved it.
+      EXPECT_GT(glm::length(m.centre - c.momentRectangle().centre), 0.01);
+    }
+  }
+}
+
 TEST(Cells, OnlyRingsAndPowersOfTwoOfSobolHaveCells) {
   EXPECT_TRUE(hasCells(AperturePattern::Rings, 5));
   EXPECT_TRUE(hasCells(AperturePattern::Sobol, 64));

@@ -11,6 +11,8 @@ namespace lenslab {
 
 // Camera JSON, camera paths and COLMAP text models: real ones are kilobytes to a few megabytes.
 constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t{64} << 20;
+// An environment image (.hdr, .exr): 16384 × 8192 RGB floats are 1.5 GiB; files are smaller.
+constexpr std::uintmax_t kMaxEnvironmentFileBytes = std::uintmax_t{2} << 30;
 // A .gltf/.glb and its .bin buffers: glTF's own limit (lengths are 32-bit), 4 GiB.
 constexpr std::uintmax_t kMaxGltfFileBytes = (std::uintmax_t{1} << 32) - 1;
 

@@ -2,8 +2,10 @@
 
 #include "core/Error.h"
 #include "core/Text.h"
+#include "core/TextFile.h"
 #include "io/AtomicFile.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -52,12 +54,14 @@ std::string hex(std::uint64_t v) {
   return s.str();
 }
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(cat(path.string(), ": cannot read it: ", std::strerror(errno)));
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+const char* const kEnvironmentWhat = "environment image (.hdr or .exr)";
+
+// The fewest bytes a Radiance .hdr of this size can hold after its header: each scanline at
+// least a 4-byte run-length header and, per channel of RGBE, one 2-byte run per 127 texels
+// (the most a run holds). A header that claims more than its file can hold is refused before a
+// texel is allocated.
+std::uintmax_t fewestHdrBytes(int width, int height) {
+  return static_cast<std::uintmax_t>(height) * (4u + 4u * 2u * ((static_cast<std::uintmax_t>(width) + 126u) / 127u));
 }
 
 template <class T>
@@ -92,14 +96,26 @@ bool takeImage(std::string_view& in, EnvironmentImage& image) {
   return true;
 }
 
-}  // namespace
-
-EnvironmentImage readEnvironmentImage(const fs::path& path) {
+void checkEnvironmentExtension(const fs::path& path) {
   const std::string ext = lowerExtension(path);
   if (ext != ".hdr" && ext != ".exr")
     throw InputError(cat(
         path.string(), ": an environment is a .hdr or .exr file (equirectangular, linear radiance), not '", ext, "'"));
-  auto in = OIIO::ImageInput::open(path.string());
+}
+
+}  // namespace
+
+EnvironmentImage readEnvironmentImage(const fs::path& path) {
+  checkEnvironmentExtension(path);
+  return decodeEnvironmentImage(path, readInputFile(path, kEnvironmentWhat, kMaxEnvironmentFileBytes));
+}
+
+EnvironmentImage decodeEnvironmentImage(const fs::path& path, const std::string& bytes) {
+  checkEnvironmentExtension(path);
+  // Decoded from the bytes the bounded reader read, not from the path again: what was checked is
+  // what is decoded.
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  auto in = OIIO::ImageInput::open(path.string(), nullptr, &memory);
   if (!in) throw InputError(cat(path.string(), ": cannot read the environment: ", oneLine(OIIO::geterror())));
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels != 3 && spec.nchannels != 4)
@@ -108,11 +124,27 @@ EnvironmentImage readEnvironmentImage(const fs::path& path) {
   if (spec.width != 2 * spec.height || spec.height < 2)
     throw InputError(cat(path.string(), ": the environment is ", spec.width, " × ", spec.height,
                          "; an equirectangular image is twice as wide as high, at least 4 × 2"));
-  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  if (spec.width > kMaxEnvironmentWidthPx)
+    throw InputError(cat(path.string(), ": the environment claims ", spec.width, " × ", spec.height,
+                         " texels; lenslab reads at most ", kMaxEnvironmentWidthPx, " × ", kMaxEnvironmentWidthPx / 2));
+  if (lowerExtension(path) == ".hdr" && bytes.size() < fewestHdrBytes(spec.width, spec.height))
+    throw InputError(cat(path.string(), ": the header claims ", spec.width, " × ", spec.height,
+                         " texels, but the file's ", bytes.size(), " bytes cannot hold them (at least ",
+                         fewestHdrBytes(spec.width, spec.height),
+                         "); the file is cut short or not what its header says"));
+  const std::size_t texels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+  std::vector<float> pixels;
+  EnvironmentImage image{spec.width, spec.height, {}};
+  try {
+    pixels.resize(texels * static_cast<std::size_t>(spec.nchannels));
+    image.rgb.resize(texels);
+  } catch (const std::bad_alloc&) {
+    throw InputError(cat(path.string(), ": the environment's ", spec.width, " × ", spec.height, " texels need ",
+                         (texels * (static_cast<std::size_t>(spec.nchannels) + 3) * sizeof(float)) >> 20,
+                         " MiB, more memory than is free (or than ulimit -v allows); give a smaller environment"));
+  }
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
     throw InputError(cat(path.string(), ": cannot read the environment: ", oneLine(in->geterror())));
-  EnvironmentImage image{spec.width, spec.height, {}};
-  image.rgb.resize(static_cast<std::size_t>(spec.width) * spec.height);
   for (int y = 0; y < spec.height; ++y)
     for (int x = 0; x < spec.width; ++x) {
       const float* p = &pixels[(static_cast<std::size_t>(y) * spec.width + x) * spec.nchannels];
@@ -179,9 +211,8 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   // The extension first, so that a typo fails before the file is read.
-  const std::string ext = lowerExtension(path);
-  if (ext != ".hdr" && ext != ".exr") readEnvironmentImage(path);  // throws, naming the file
-  const std::string bytes = readBytes(path);
+  checkEnvironmentExtension(path);
+  const std::string bytes = readInputFile(path, kEnvironmentWhat, kMaxEnvironmentFileBytes);
   const std::string key = environmentCacheKey(bytes, settings);
   LoadedEnvironment loaded;
   std::optional<fs::path> entry;
@@ -190,7 +221,8 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
     std::error_code ec;
     if (fs::is_regular_file(*entry, ec)) {
       try {
-        if (std::optional<PrefilteredEnvironment> maps = decodeEnvironmentCache(key, readBytes(*entry))) {
+        if (std::optional<PrefilteredEnvironment> maps = decodeEnvironmentCache(
+                key, readInputFile(*entry, "environment cache entry", 4 * kMaxEnvironmentFileBytes))) {
           loaded.maps = std::make_shared<const PrefilteredEnvironment>(std::move(*maps));
           loaded.fromCache = true;
           loaded.seconds = elapsed();
@@ -203,8 +235,8 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
   } else {
     loaded.warning = "environment cache: neither XDG_CACHE_HOME nor HOME is set, so the prefiltered maps are not kept";
   }
-  loaded.maps =
-      std::make_shared<const PrefilteredEnvironment>(prefilterEnvironment(readEnvironmentImage(path), settings));
+  loaded.maps = std::make_shared<const PrefilteredEnvironment>(
+      prefilterEnvironment(decodeEnvironmentImage(path, bytes), settings));
   if (entry) {
     try {
       std::error_code ec;

@@ -20,10 +20,18 @@
 
 namespace lenslab {
 
-// The image in `path` (.hdr or .exr, RGB or RGBA: alpha is dropped). Throws InputError, one line
-// naming the file, for another extension, another channel count, a width not twice the height,
-// or a pixel that is not finite or negative.
+// The largest environment: 16384 × 8192 texels (16K, the largest panoramas published).
+constexpr int kMaxEnvironmentWidthPx = 16384;
+
+// The image in `path` (.hdr or .exr, RGB or RGBA: alpha is dropped), read through the bounded
+// reader (core/TextFile.h: a regular file of at most kMaxEnvironmentFileBytes). Throws InputError,
+// one line naming the file, for another extension, a folder or device, a file too large, another
+// channel count, a width not twice the height or over kMaxEnvironmentWidthPx, a header claiming
+// more texels than the file's bytes can hold or than memory can, or a pixel that is not finite or
+// negative.
 EnvironmentImage readEnvironmentImage(const std::filesystem::path& path);
+// The same from the file's bytes, already read (`path` names it in messages).
+EnvironmentImage decodeEnvironmentImage(const std::filesystem::path& path, const std::string& bytes);
 
 // $XDG_CACHE_HOME/lenslab when XDG_CACHE_HOME is an absolute path, else $HOME/.cache/lenslab;
 // nullopt when neither can be found.

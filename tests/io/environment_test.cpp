@@ -18,6 +18,7 @@
 #include <numbers>
 #include <random>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace lenslab {
@@ -324,6 +325,51 @@ TEST(EnvironmentFile, RefusesBadFilesInOneLine) {
     EXPECT_EQ(m.find('\n'), std::string::npos);
     EXPECT_NE(m.find(p.string()), std::string::npos);
   }
+}
+
+TEST(EnvironmentFile, ReadsOnlyRegularFilesOfABoundedSizeWhoseHeaderTheBytesCanHold) {
+  // Through the bounded reader (core/TextFile.h), both ways in: the image alone and the cached load.
+  const auto messages = [](const fs::path& path) {
+    std::vector<std::string> out;
+    for (int way = 0; way < 2; ++way) {
+      try {
+        if (way == 0)
+          readEnvironmentImage(path);
+        else
+          loadEnvironment(path, smallSettings(), std::nullopt);
+        out.push_back("");
+      } catch (const InputError& e) {
+        out.push_back(e.what());
+      }
+    }
+    return out;
+  };
+  const fs::path fifo = scratch("fifo.hdr");
+  for (const char* name : {"fifo.hdr", "folder.hdr", "zero.exr"}) fs::remove(scratch(name));
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);  // opened for reading, it would block forever
+  const fs::path folder = scratch("folder.hdr");
+  fs::create_directories(folder);
+  const fs::path zero = scratch("zero.exr");
+  fs::create_symlink("/dev/zero", zero);  // read to its end, it would fill memory
+  // A 150-byte Radiance header claiming 65536 × 32768, and one claiming 4096 × 2048 in 60 bytes.
+  const fs::path huge = scratch("huge.hdr"), short_ = scratch("short.hdr");
+  std::ofstream(huge, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 32768 +X 65536\n"
+                                        << std::string(100, '\x02');
+  std::ofstream(short_, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2048 +X 4096\n"
+                                          << std::string(10, '\x02');
+  const std::pair<fs::path, std::string> cases[] = {
+      {fifo, "not a regular file"},
+      {folder, "is a folder"},
+      {zero, "not a regular file"},
+      {huge, "at most 16384 × 8192"},
+      {short_, "cannot hold them"},
+  };
+  for (const auto& [path, expected] : cases)
+    for (const std::string& m : messages(path)) {
+      EXPECT_NE(m.find(expected), std::string::npos) << path << ": " << m;
+      EXPECT_NE(m.find(path.string()), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
 }
 
 // The frame plan counts the environment's blur: at infinity, beyond the scene's bounds. A small

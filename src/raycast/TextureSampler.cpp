@@ -40,6 +40,18 @@ int wrap(int i, int size, Wrap mode) {
 
 bool mipmapped(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
 
+// A texel coordinate moved by whole periods of its wrap mode into [0, period) (clamped ones into
+// a texel of the edge), in double: a scaled or offset uv (KHR_texture_transform) can lie 10^20
+// texels out, where a cast to int overflows. The wrap sees the same texel and the bilinear
+// weights the same fraction; a coordinate that is not finite reads the level's middle (at such
+// coordinates the footprint is the whole texture, and the coarsest level is its average).
+double reduced(double x, int size, Wrap mode) {
+  if (!std::isfinite(x)) return 0.5 * size;
+  if (mode == Wrap::ClampToEdge) return std::clamp(x, -1.0, size + 1.0);
+  const double period = mode == Wrap::MirroredRepeat ? 2.0 * size : static_cast<double>(size);
+  return x - period * std::floor(x / period);
+}
+
 }  // namespace
 
 TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srgb) {
@@ -86,15 +98,16 @@ TextureSampler::TextureSampler(const TextureImage& image, bool mipmaps, bool srg
 }
 
 glm::vec4 TextureSampler::bilinear(const Level& level, const Sampler& s, glm::vec2 uv, bool linear) const {
-  const float x = uv.x * static_cast<float>(level.width), y = uv.y * static_cast<float>(level.height);
+  const double x = reduced(static_cast<double>(uv.x) * level.width, level.width, s.wrapS),
+               y = reduced(static_cast<double>(uv.y) * level.height, level.height, s.wrapT);
   auto texel = [&](int i, int j) {
     return level
         .texels[static_cast<std::size_t>(wrap(j, level.height, s.wrapT) * level.width + wrap(i, level.width, s.wrapS))];
   };
   if (!linear) return texel(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
-  const float fx = x - 0.5f, fy = y - 0.5f;
+  const double fx = x - 0.5, fy = y - 0.5;
   const int i0 = static_cast<int>(std::floor(fx)), j0 = static_cast<int>(std::floor(fy));
-  const float a = fx - static_cast<float>(i0), b = fy - static_cast<float>(j0);
+  const float a = static_cast<float>(fx - i0), b = static_cast<float>(fy - j0);
   return (1 - a) * (1 - b) * texel(i0, j0) + a * (1 - b) * texel(i0 + 1, j0) + (1 - a) * b * texel(i0, j0 + 1) +
          a * b * texel(i0 + 1, j0 + 1);
 }
@@ -102,8 +115,11 @@ glm::vec4 TextureSampler::bilinear(const Level& level, const Sampler& s, glm::ve
 glm::vec4 TextureSampler::sample(const Sampler& s, glm::vec2 uv, glm::vec2 dUvDx, glm::vec2 dUvDy) const {
   const Level& base = levels_.front();
   const glm::vec2 size(static_cast<float>(base.width), static_cast<float>(base.height));
-  const float rho = std::max(glm::length(dUvDx * size), glm::length(dUvDy * size));
-  const float lambda = rho > 0.0f ? std::log2(rho) : -1000.0f;
+  // In double: a footprint 10^30 texels wide squares past float. One that is not finite (the
+  // difference of two overflowed coordinates) covers the whole texture.
+  const double rho =
+      std::max(glm::length(glm::dvec2(dUvDx) * glm::dvec2(size)), glm::length(glm::dvec2(dUvDy) * glm::dvec2(size)));
+  const float lambda = !std::isfinite(rho) ? 1000.0f : rho > 0.0 ? static_cast<float>(std::log2(rho)) : -1000.0f;
   if (lambda <= 0.0f) return bilinear(base, s, uv, s.magFilter != Filter::Nearest);
   if (!mipmapped(s.minFilter) || levels() == 1)
     return bilinear(base, s, uv,

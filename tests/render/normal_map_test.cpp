@@ -342,5 +342,59 @@ TEST(TextureTransform, ScaledUvWidensTheFootprintInBothRenderersAlike) {
   EXPECT_LE(castSpread, 0.05);
 }
 
+// Scaled 10^10 to 10^30 times (repeated or mirrored), the checker repeats far more often
+// than a pixel can show: the footprint is the whole texture, and both renderers read the coarsest
+// level, the checker's mean. In float such a coordinate has no fraction left, and cast to an int
+// it overflowed (the ray caster gave black, NaN or 7.5e30 while the raster stayed right).
+TEST(TextureTransform, HugeScalesAndOffsetsReadTheTexturesMeanInBothRenderers) {
+  LENSLAB_REQUIRE_GL();
+  Scene scene;
+  scene.source = "hugely scaled checker";
+  TextureImage image;
+  image.name = "checker";
+  image.width = image.height = 64;
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const std::uint8_t v = (i + j) % 2 ? 255 : 0;
+      image.rgba8.insert(image.rgba8.end(), {v, v, v, 255});
+    }
+  scene.images.push_back(image);
+  for (const Wrap wrap : {Wrap::Repeat, Wrap::MirroredRepeat})
+    scene.textures.push_back({0, Sampler{wrap, wrap, Filter::Linear, Filter::LinearMipmapLinear}});
+  scene.meshes.push_back(quadMesh(1.0, 1.0, 0));
+  scene.instances.push_back({0, glm::dmat4(1.0)});
+  const PhysicalCamera c = lookingAt({0.0, 0.0, 1.2}, {0.0, 0.0, 0.0});
+  const Camera camera = toCamera(c, "test");
+  const ImageSize size = resolveImageSize(camera, 48, std::nullopt);
+  struct Case {
+    float scale, offset;
+    int texture;
+  };
+  // (An offset is brought within one period of the wrap as the file is read: scene/gltf/TextureInfo.h.)
+  for (const Case& k : {Case{1e10f, 0.0f, 0}, Case{1e12f, 0.0f, 0}, Case{1e20f, 0.0f, 0}, Case{1e30f, 0.0f, 0},
+                        Case{-1e20f, 0.5f, 1}, Case{1e25f, 1.5f, 1}}) {
+    Material m;
+    m.unlit = true;
+    m.baseColorTexture.texture = k.texture;
+    m.baseColorTexture.uvFromTexCoord =
+        glm::mat3(glm::vec3(k.scale, 0, 0), glm::vec3(0, k.scale, 0), glm::vec3(k.offset, k.offset, 1));
+    scene.materials = {m};
+    scene.bounds = computeBounds(scene);
+    const Image rasterImage = raster(scene, camera, size, 1);
+    const Image castImage = RayCaster(scene).render(camera, size, RaycastOptions{1, 3});
+    double worstRaster = 0.0, worstCast = 0.0;
+    for (int y = size.heightPx / 4; y < 3 * size.heightPx / 4; ++y)
+      for (int x = size.widthPx / 4; x < 3 * size.widthPx / 4; ++x) {
+        const float r = rasterImage.at(x, y).g, cast = castImage.at(x, y).g;
+        worstRaster = std::max(worstRaster, std::isfinite(r) ? std::abs(r - 0.5) : 1e30);
+        worstCast = std::max(worstCast, std::isfinite(cast) ? std::abs(cast - 0.5) : 1e30);
+      }
+    std::printf("[ measure  ] checker scaled %g, offset %g: worst |value - 0.5| raster %.3g, ray cast %.3g\n", k.scale,
+                k.offset, worstRaster, worstCast);
+    EXPECT_LE(worstRaster, 0.02) << "scale " << k.scale << ", offset " << k.offset;
+    EXPECT_LE(worstCast, 0.02) << "scale " << k.scale << ", offset " << k.offset;
+  }
+}
+
 }  // namespace
 }  // namespace lenslab

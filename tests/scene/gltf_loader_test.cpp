@@ -21,6 +21,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -1286,10 +1287,11 @@ TEST_F(GltfMaps, TextureTransformAndTexCoordAreReadOnEveryTextureReference) {
   const Scene scene = load(b);
   const Material& m = scene.materials[0];
   EXPECT_EQ(m.baseColorTexture.texCoord, 1) << "the extension's texCoord overrides the textureInfo's";
-  // The extension's formula: u' = cos·2u + sin·3v + 0.5, v' = −sin·2u + cos·3v − 0.25 at 90°.
+  // The extension's formula: u' = cos·2u + sin·3v + 0.5, v' = −sin·2u + cos·3v − 0.25 at 90°, the
+  // offset within the repeat's period (−0.25 and 0.75 show the same texel).
   const glm::vec3 mapped = m.baseColorTexture.uvFromTexCoord * glm::vec3(0.1f, 0.2f, 1.0f);
   EXPECT_NEAR(mapped.x, 3.0f * 0.2f + 0.5f, 1e-6f);
-  EXPECT_NEAR(mapped.y, -2.0f * 0.1f - 0.25f, 1e-6f);
+  EXPECT_NEAR(mapped.y, -2.0f * 0.1f + 0.75f, 1e-6f);
   EXPECT_EQ(m.emissiveTexture.texCoord, 1);
   EXPECT_EQ(m.emissiveTexture.uvFromTexCoord, glm::mat3(1.0f));
   EXPECT_EQ(m.normalTexture.texCoord, 0);
@@ -1297,12 +1299,49 @@ TEST_F(GltfMaps, TextureTransformAndTexCoordAreReadOnEveryTextureReference) {
   EXPECT_FALSE(noted(scene, "KHR_texture_transform"));
 }
 
+TEST_F(GltfMaps, ATextureTransformsRotationOfAnySizeIsReducedToOneTurn) {
+  // 1e300 radians is a float's infinity (whose cosine is NaN) unless it is reduced in double first.
+  for (const double turns : {1e300, -1e20, 1e6 * 2.0 * std::numbers::pi + 0.5}) {
+    GltfBuilder b = texturedSquare();
+    json material;
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {
+        {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"rotation", turns}}}}}};
+    b.gltf["materials"] = json::array({material});
+    const glm::mat3 m = load(b).materials[0].baseColorTexture.uvFromTexCoord;
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) EXPECT_TRUE(std::isfinite(m[c][r])) << turns;
+    EXPECT_NEAR(m[0][0], std::cos(std::remainder(turns, 2.0 * std::numbers::pi)), 1e-6) << turns;
+  }
+}
+
+TEST_F(GltfMaps, ATextureTransformsOffsetKeepsItsFractionWithinTheWrapsPeriod) {
+  // 10^7 + 0.3 as a float is 10^7: the fraction, the part that shows, would be lost. Brought within
+  // the period in double first (1 for repeat, 2 for mirrored repeat; a clamped texture keeps it).
+  const std::pair<int, double> cases[] = {{10497, 0.3}, {33648, 0.3}, {33071, 1e7 + 0.3}};
+  for (const auto& [wrap, expected] : cases) {
+    GltfBuilder b = texturedSquare();
+    b.gltf["samplers"] = json::array({{{"wrapS", wrap}, {"wrapT", wrap}}});
+    b.gltf["textures"][0]["sampler"] = 0;
+    json material;
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {
+        {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"offset", {1e7 + 0.3, -3.0}}}}}}};
+    b.gltf["materials"] = json::array({material});
+    const glm::mat3 m = load(b).materials[0].baseColorTexture.uvFromTexCoord;
+    EXPECT_NEAR(m[2][0], expected, 1e-6 * std::max(1.0, expected)) << "wrap " << wrap;
+    EXPECT_NEAR(m[2][1], wrap == 33071 ? -3.0 : wrap == 33648 ? 1.0 : 0.0, 1e-6) << "wrap " << wrap;
+  }
+}
+
 TEST_F(GltfMaps, MalformedTextureTransformsAreRefusedNamingTheField) {
   const std::pair<json, const char*> cases[] = {
       {{{"offset", {1, 2, 3}}},
        "material 0 baseColorTexture KHR_texture_transform.offset must be an array of 2 numbers"},
-      {{{"rotation", "left"}}, "material 0 baseColorTexture KHR_texture_transform.rotation must be a finite number"},
+      {{{"rotation", "left"}}, "material 0 baseColorTexture KHR_texture_transform.rotation must be a number (radians)"},
       {{{"scale", {1, "x"}}}, "KHR_texture_transform.scale must be an array of 2 numbers"},
+      // Past a float's reach: the range named.
+      {{{"scale", {1e31, 1}}},
+       "KHR_texture_transform.scale: 1e+31 is out of range; give a finite value from -1e+30 to 1e+30"},
+      {{{"offset", {0, -1e35}}}, "KHR_texture_transform.offset: -1e+35 is out of range"},
       {{{"texCoord", -1}}, "KHR_texture_transform.texCoord must be an integer >= 0"}};
   for (const auto& [transform, message] : cases) {
     GltfBuilder b = texturedSquare();

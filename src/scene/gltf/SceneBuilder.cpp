@@ -262,7 +262,9 @@ class SceneBuilder {
                                  "; lenslab reads TEXCOORD_0 and TEXCOORD_1, so that texture is left out"));
       return {};
     }
-    return textureRef(textureFor(info.index), info.texCoord, info.extensions, where);
+    const int texture = textureFor(info.index);
+    return textureRef(texture, info.texCoord, info.extensions, where,
+                      scene_.textures[static_cast<std::size_t>(texture)].sampler);
   }
 
   int textureFor(int gltfIndex) {

@@ -358,11 +358,8 @@ TEST(EnvironmentFile, ReadsOnlyRegularFilesOfABoundedSizeWhoseHeaderTheBytesCanH
   std::ofstream(short_, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2048 +X 4096\n"
                                           << std::string(10, '\x02');
   const std::pair<fs::path, std::string> cases[] = {
-      {fifo, "not a regular file"},
-      {folder, "is a folder"},
-      {zero, "not a regular file"},
-      {huge, "at most 16384 × 8192"},
-      {short_, "cannot hold them"},
+      {fifo, "not a regular file"},   {folder, "is a folder"},      {zero, "not a regular file"},
+      {huge, "at most 16384 × 8192"}, {short_, "cannot hold them"},
   };
   for (const auto& [path, expected] : cases)
     for (const std::string& m : messages(path)) {

@@ -18,7 +18,9 @@ const int kViewTransformPbrNeutral = 1;
 vec3 pbrNeutral(vec3 color) {
   const float startCompression = 0.8f - 0.04f;
   const float desaturation = 0.15f;
-  color = max(color, vec3(0.0f));  // negative radiance has no display; NaN-free input assumed
+  // Negative radiance has no display; NaN-free input assumed. Above 1e30 every value maps as 1e30
+  // does (to the peak): ∞ would otherwise meet 1/∞ below and make NaN, shown as black.
+  color = clamp(color, vec3(0.0f), vec3(1e30f));
   float x = min(color.r, min(color.g, color.b));
   // The offset: 0.04 for colours with every channel ≥ 0.08, a quadratic toe below (x − 6.25x²,
   // which meets 0.04 at x = 0.08 with the same slope of 0), so that black stays black.

@@ -226,7 +226,7 @@ struct CaptureRun {
 
     OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
     outputs.add(cameraFile, cameraText);
-    applyDisplayForFile(imageFile, image, display.encoding);
+    prepareForFile(imageFile, image, display.encoding, cat("frame ", frame, ": "), std::cerr);
     writeImage(outputs, imageFile, image, aovChannelValues);
     const ManifestFrame entry{frame,
                               time,

@@ -70,4 +70,11 @@ Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& p
   return image;
 }
 
+void prepareForFile(const std::filesystem::path& path, Image& image, const DisplayEncoding& display,
+                    const std::string& where, std::ostream& warnings) {
+  if (const std::optional<std::string> overflow = radianceOverflowWarning(image))
+    warnings << "lenslab: warning: " << where << *overflow << "\n";
+  applyDisplayForFile(path, image, display);
+}
+
 }  // namespace lenslab

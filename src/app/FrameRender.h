@@ -6,11 +6,14 @@
 #include "camera/Camera.h"
 #include "camera/ImageSize.h"
 #include "core/Image.h"
+#include "io/ImageFile.h"
 #include "io/Progress.h"
 #include "plan/FramePlan.h"
 #include "render/Renderer.h"
 #include "scene/Scene.h"
 
+#include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -28,5 +31,10 @@ FramePlan planFrame(Renderer& renderer, const Scene& scene, const Camera& camera
 // Sets stats.estimate (with a target).
 Image renderPlanned(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size, RunStats& stats,
                     ProgressReporter* progress, bool quiet);
+
+// The image made ready for `path` (io/ImageFile.h's applyDisplayForFile), after one warning line
+// on `warnings` ("lenslab: warning: <where>…") if its radiance ran past a float's range.
+void prepareForFile(const std::filesystem::path& path, Image& image, const DisplayEncoding& display,
+                    const std::string& where, std::ostream& warnings);
 
 }  // namespace lenslab

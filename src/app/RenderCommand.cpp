@@ -312,7 +312,7 @@ int runRender(const RenderOptions& o) {
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
     progress.setDetail(cat("writing ", out.string()));
-    applyDisplayForFile(out, *image, display.encoding);
+    prepareForFile(out, *image, display.encoding, "", std::cerr);
     writeImage(outputs, out, *image, aovChannelValues);
     stats.writeSeconds = secondsSince(t);
   }

@@ -258,6 +258,15 @@ std::optional<EnvironmentSummary> applyEnvironment(Scene& scene, const Environme
     throw InputError(cat("--environment-intensity ", request.intensity, ": give a finite number ≥ 0"));
   const LoadedEnvironment loaded = loadEnvironment(request.file, PrefilterSettings{}, environmentCacheFolder());
   if (!loaded.warning.empty()) warnings << "lenslab: warning: " << loaded.warning << "\n";
+  // The scaled radiance stays a float (scene/Scene.h's kMaxRadiance): refused here, in one line,
+  // rather than written as an image of inf.
+  float brightest = 0.0f;
+  for (const glm::vec3& texel : loaded.maps->background.rgb)
+    brightest = std::max({brightest, texel.r, texel.g, texel.b});
+  if (static_cast<double>(brightest) * request.intensity > kMaxRadiance)
+    throw InputError(cat("--environment-intensity ", request.intensity, ": times ", request.file,
+                         "'s brightest texel, ", brightest, ", it exceeds a float's largest radiance (", kMaxRadiance,
+                         "); give at most ", kMaxRadiance / brightest));
   scene.environment = std::make_shared<const EnvironmentLookup>(
       loaded.maps, EnvironmentPlacement{request.rotationDegrees, static_cast<float>(request.intensity)});
   EnvironmentSummary s;

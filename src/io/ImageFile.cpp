@@ -118,6 +118,17 @@ std::string encodeImage(const fs::path& path, const Image& image, const std::vec
   return std::string(bytes.begin(), bytes.end());
 }
 
+std::optional<std::string> radianceOverflowWarning(const Image& linear) {
+  std::size_t pixels = 0;
+  for (std::size_t i = 0; i + 3 < linear.rgba.size(); i += 4)
+    pixels +=
+        !std::isfinite(linear.rgba[i]) || !std::isfinite(linear.rgba[i + 1]) || !std::isfinite(linear.rgba[i + 2]);
+  if (pixels == 0) return std::nullopt;
+  return cat(pixels, " pixel", pixels == 1 ? "" : "s",
+             " hold radiance past a float's range (above 3.4e38: written as inf in .exr, white in .png); scale the "
+             "scene's lights or emission down");
+}
+
 void writeImage(OutputSet& outputs, const fs::path& path, const Image& image, const std::vector<float>* depthZ) {
   outputs.add(path, encodeImage(path, image, depthZ));
 }

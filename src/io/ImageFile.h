@@ -8,6 +8,7 @@
 #include "io/ToneMap.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,11 @@ struct ImageChannel {
 // depth (spec.z_channel). Only .exr holds them; a .png with channels is refused naming them.
 std::string encodeImage(const std::filesystem::path& path, const Image& linear,
                         const std::vector<ImageChannel>& channels);
+
+// Where an image holds radiance past a float's range (a pixel of ∞ or NaN: lights or emission
+// brighter than 3.4e38), the one-line warning that says how many pixels and what to
+// do; nullopt where every value is finite.
+std::optional<std::string> radianceOverflowWarning(const Image& linear);
 
 // One file, whole or not at all.
 void writeImage(const std::filesystem::path& path, const Image& linear);

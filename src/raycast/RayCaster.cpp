@@ -29,8 +29,17 @@ namespace {
 
 const Material kDefaultMaterial{};
 
-// alphaMode BLEND surfaces composited along one ray at most; ones beyond are passed through.
-constexpr int kMaxBlendLayers = 16;
+// Surfaces followed along one ray at most (blend surfaces composited, back faces and masked texels
+// passed through, then the surface that stops it). Every blend surface is composited, as the
+// raster composites every one; a ray that meets more surfaces than this is refused in one line
+// naming its pixel, not cut short in silence.
+constexpr int kMaxSurfacesPerRay = 4096;
+
+InputError tooManySurfaces(const std::string& scene, glm::dvec2 pixel) {
+  return InputError(cat(scene, ": more than ", kMaxSurfacesPerRay, " surfaces lie along the ray at pixel ", pixel.x,
+                        ",", pixel.y,
+                        " (blend layers, back faces and cut-out texels); the ray caster follows at most that many"));
+}
 // The AOVs describe the nearest surface at least this opaque (Cycles' pass alpha threshold):
 // a faint blend surface leaves the AOVs to what lies behind it.
 constexpr float kAovAlphaThreshold = 0.5f;
@@ -160,7 +169,7 @@ struct RayCaster::Impl : EmbreeScene {
   // front to back (docs/materials.md): each adds transmittance · alpha · its shaded colour
   // (emission included, so premultiplied by alpha as the Khronos Sample Viewer blends it) and
   // leaves transmittance · (1 − alpha) to what is behind; the ray goes on from just past the blend
-  // surface (the skip masked texels take), kMaxBlendLayers of them at most. `rayAt(offset)` is the
+  // surface (the skip masked texels take), every one of them. `rayAt(offset)` is the
   // same sample's ray from the pixel `offset` over (relative to `origin`): textures filter over the
   // footprint those rays span, `footprintPx` pixels, the part of the pixel this sample stands for
   // (see render), not the whole pixel, so that the mean of the samples converges to the pixel
@@ -202,7 +211,8 @@ struct RayCaster::Impl : EmbreeScene {
       out.coverage = opaque ? 1.0f : 1.0f - transmittance;
       return out;
     };
-    for (int layer = 0; layer < 64; ++layer) {
+    for (int surface = 0;; ++surface) {
+      if (surface == kMaxSurfacesPerRay) throw tooManySurfaces(scene->source, pixel);
       const std::optional<RTCRayHit> rh = intersect(start, ray.direction, tNear, tStart, tEnd, camera, pixel);
       if (!rh) return behind(miss, false);
       const Geometry& g = geometries[rh->hit.geomID];
@@ -222,10 +232,10 @@ struct RayCaster::Impl : EmbreeScene {
       // would jump a telephoto's whole subject).
       const double skipTo = tStart + hitAfterStart * (1.0 + 1e-6) + 1e-9 * scale;
       const bool blend = material.alphaMode == AlphaMode::Blend;
-      // Passed through: a single-sided back face (the rasterizer culls it), a blend surface beyond
-      // kMaxBlendLayers, and a texel alphaMode MASK cuts out (shadeHit).
+      // Passed through: a single-sided back face (the rasterizer culls it), and a texel alphaMode
+      // MASK cuts out (shadeHit).
       std::optional<ShadedHit> shaded;
-      if ((front || material.doubleSided) && !(blend && blendLayers >= kMaxBlendLayers))
+      if (front || material.doubleSided)
         shaded = shadeHit(g, mesh, material, triangle, front, ray, tHit, rayAt, footprintPx);
       if (!shaded) {
         tNear = skipTo;
@@ -245,7 +255,6 @@ struct RayCaster::Impl : EmbreeScene {
       }
       return behind(here, true);
     }
-    return behind(miss, false);
   }
 };
 

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <initializer_list>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -203,7 +202,7 @@ Accumulator::View Accumulator::nextView(glm::vec3 background, glm::vec3 channels
   ++count_;
   // Alpha is shared out so that a full set of channel views adds 1, as one full view does.
   const float channelCount = channels.r + channels.g + channels.b;
-  const glm::vec4 weight(channels, channelCount / 3.0f);
+  const glm::vec4 weight = viewScale_ * glm::vec4(channels, channelCount / 3.0f);
   weightSum_ += weight;
   if (addsViews()) {
     if (pendingAdded_ == kAddedBatch || (pendingAdded_ > 0 && background != pendingBackground_)) flushBackground();

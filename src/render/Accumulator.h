@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -99,6 +100,15 @@ class Accumulator {
     return triangles > kTrianglesPerPixelForLayers * pixels;
   }
   static constexpr double kTrianglesPerPixelForLayers = 0.1;
+  // Each view's weight is scaled by 1 / (the views expected, rounded up to a power of two), so the
+  // sum holds about the mean, not N times it: a radiance near a float's largest (3.4e38) does not
+  // overflow as the views are summed. A power of two scales exactly, and the resolve divides by
+  // the scaled weights, so the image is the same bit for bit. Before start(); 1 view: no scale.
+  void setExpectedViews(int views) {
+    viewScale_ =
+        views > 1 ? std::ldexp(1.0f, -static_cast<int>(std::ceil(std::log2(static_cast<double>(views))))) : 1.0f;
+  }
+  float viewScale() const { return viewScale_; }
   // Clears the sum. Views are widthPx × heightPx; the sum too, unless `lens` is given.
   void start(int widthPx, int heightPx, const Curvature* curvature = nullptr, const LensGather* lens = nullptr,
              const Barrel* barrel = nullptr);
@@ -220,6 +230,7 @@ class Accumulator {
   std::vector<PixelBox> region_;        // setRegion's rectangles
   bool regionSet_ = false;
   glm::vec4 weightSum_{0.0f};
+  float viewScale_ = 1.0f;
 };
 
 }  // namespace lenslab

@@ -77,6 +77,7 @@ void Renderer::begin(const Camera& camera, const FramePlan& plan, ImageSize size
     // With distortion or lateral colour each view's samples go straight to where the lens puts
     // them, as the views are summed: no resampling of the mean afterwards.
     const std::optional<Accumulator::Barrel> barrel = views_->barrelMask();
+    accumulator_->setExpectedViews(plan.apertureSamples);
     accumulator_->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr,
                         plan.remap ? &lensPass_->gather() : nullptr, barrel ? &*barrel : nullptr);
   }

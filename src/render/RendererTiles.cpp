@@ -57,6 +57,7 @@ void Renderer::beginAdaptive() {
   const std::optional<Accumulator::Barrel> barrel = views_->barrelMask();
   for (std::unique_ptr<Accumulator>* slot : {&accumulator_, &streamB_}) {
     if (!*slot) *slot = std::make_unique<Accumulator>();
+    (*slot)->setExpectedViews(a.maxSamples / 2);  // each stream draws half
     (*slot)->start(size_.widthPx, size_.heightPx, curvature ? &*curvature : nullptr,
                    plan_.remap ? &lensPass_->gather() : nullptr, barrel ? &*barrel : nullptr);
   }
@@ -226,7 +227,10 @@ void Renderer::uploadTileWeights() {
   // Each stream's weight in a tile is its count of samples (a full view adds 1 to every channel
   // and alpha; with axial colour, the three channel views of a sample add 1 to each).
   std::vector<glm::vec4> weights(tiles_.size());
-  for (std::size_t t = 0; t < tiles_.size(); ++t) weights[t] = glm::vec4(static_cast<float>(tiles_[t].samples / 2));
+  // Scaled as each view's weight is (Accumulator::setExpectedViews).
+  const float scale = accumulator_->viewScale();
+  for (std::size_t t = 0; t < tiles_.size(); ++t)
+    weights[t] = glm::vec4(scale * static_cast<float>(tiles_[t].samples / 2));
   for (const gl::Texture& w : tileWeights_)
     glTextureSubImage2D(w.id(), 0, 0, 0, grid_.columns, grid_.rows, GL_RGBA, GL_FLOAT, weights.data());
 }

@@ -120,6 +120,11 @@ struct Instance {
 // ~1e20 and float clip coordinates overflow near 1e38. Loaders refuse vertices beyond it.
 constexpr double kMaxWorldCoordinate = 1e15;
 
+// The largest radiance, intensity or emission a scene may give: about a float's largest (3.4028e38), as
+// both renderers carry them in float. Loaders refuse more, naming this limit; a frame that sums
+// to more anyway is written with a warning (io/ImageFile.h's radianceOverflowWarning).
+constexpr double kMaxRadiance = 3.4e38;
+
 // A camera stored in the glTF file, with its node's placement (it looks along -Z, up +Y).
 struct SceneCamera {
   std::string name;      // the camera's name in the file, may be empty

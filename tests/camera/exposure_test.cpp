@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <functional>
 #include <random>
@@ -168,6 +169,18 @@ TEST(PbrNeutral, BelowTheStartOfCompressionOnlyTheOffsetIsTaken) {
   EXPECT_NEAR(mid.g, 0.26f, 1e-6f);
   EXPECT_NEAR(mid.b, 0.06f, 1e-6f);
   EXPECT_EQ(pbrNeutral(glm::vec3(0.0f)), glm::vec3(0.0f));  // black stays black
+}
+
+TEST(PbrNeutral, MapsInfinityAsTheLargestValuesNotToBlack) {
+  // A radiance past a float's range (∞) is the brightest there is: white, as 1e30 and 3e38 are.
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const glm::vec3 c : {glm::vec3(inf), glm::vec3(3e38f), glm::vec3(1e30f), glm::vec3(inf, 1e38f, 2.0f)}) {
+    const glm::vec3 out = pbrNeutral(c);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(std::isfinite(out[k])) << c.r << "," << c.g << "," << c.b;
+      EXPECT_GT(out[k], 0.99f) << c.r << "," << c.g << "," << c.b << " channel " << k;
+    }
+  }
 }
 
 TEST(PbrNeutral, MapsEverythingIntoZeroToOneMonotonicallyAndKeepsHue) {

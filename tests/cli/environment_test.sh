@@ -17,6 +17,7 @@ oiiotool --pattern constant:color=1,1,1 16x16 3 -d float -o "$work/square.exr" >
 oiiotool --pattern constant:color=1,1 16x8 2 -d float -o "$work/two.exr" >/dev/null 2>&1
 oiiotool --pattern constant:color=1,-1,1 16x8 3 -d float -o "$work/negative.exr" >/dev/null 2>&1
 oiiotool --pattern constant:color=1,1,1 16x8 3 -o "$work/sky.png" >/dev/null 2>&1
+oiiotool --pattern constant:color=1e20,1e20,1e20 16x8 3 -d float -o "$work/bright.exr" >/dev/null 2>&1
 printf 'not an image' >"$work/broken.hdr"
 for command in render raycast; do
   expect_refusal "$command square" "square.exr: the environment is 16 × 16; an equirectangular image is twice as wide as high" -- \
@@ -33,6 +34,8 @@ for command in render raycast; do
     $command --environment "$work/missing.hdr" --width 48 --out "$work/out.png"
   expect_refusal "$command intensity" "--environment-intensity" -- \
     $command --environment "$studio" --environment-intensity -1 --width 48 --out "$work/out.png"
+  expect_refusal "$command intensity past a float" "exceeds a float's largest radiance" -- \
+    $command --environment "$work/bright.exr" --environment-intensity 1e20 --width 48 --out "$work/out.png"
   expect_refusal "$command rotation nan" "--environment-rotation" -- \
     $command --environment "$studio" --environment-rotation nan --width 48 --out "$work/out.png"
 done
@@ -45,7 +48,7 @@ check holds "$work/first.json" 'j["environment"]["from_cache"] == False and j["e
 "$lenslab" render --environment "$studio" --width 64 -q --out "$work/second.exr" --stats "$work/second.json" 2>"$work/err2"
 check holds "$work/second.json" 'j["environment"]["from_cache"] == True and j["environment"]["specular_levels"] >= 2'
 check same_pixels "$work/first.exr" "$work/second.exr"
-entry=$(ls "$XDG_CACHE_HOME"/lenslab/environment-*.bin | head -1)
+entry=$(ls -t "$XDG_CACHE_HOME"/lenslab/environment-*.bin | head -1)  # the newest: the studio's
 printf 'garbage' | dd of="$entry" bs=1 seek=100 conv=notrunc 2>/dev/null
 "$lenslab" render --environment "$studio" --width 64 -q --out "$work/third.exr" --stats "$work/third.json" 2>/dev/null
 check holds "$work/third.json" 'j["environment"]["from_cache"] == False'

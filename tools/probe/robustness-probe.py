@@ -638,6 +638,75 @@ def define_cases():
          setup=lambda d: box_scene(d, "box.gltf", half=(5e-31,) * 3, at=(0, 0, 0)),
          short="render box.gltf (a 1e-30 m box; automatic framing)")
 
+    # ---- 6. radiance, materials and the newer inputs --------------------------------------------
+    R = "radiance"
+
+    def material(mutate, lights=None):
+        def setup(d):
+            doc, buffer = gltf_boxes([((0.5, 0.5, 0.5), (0, 0, 0))])
+            mutate(doc["materials"][0])
+            doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_lights_punctual"]
+            if lights is not None:
+                doc["extensions"] = {"KHR_lights_punctual": {"lights": lights}}
+                doc["nodes"].append({"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 2, 2]})
+                doc["scenes"][0]["nodes"].append(len(doc["nodes"]) - 1)
+            write_gltf(d, "m.gltf", doc, buffer)
+        return setup
+
+    def emissive(strength, factor=(1, 1, 1)):
+        def mutate(m):
+            m["emissiveFactor"] = list(factor)
+            m["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
+        return mutate
+    case("R01", R, RENDER + ["--aperture-samples", "4", "--out", "{D}/x.exr", "{D}/m.gltf"], "image", None, visible=True,
+         quick=True, setup=material(emissive(1e38)), short="render m.gltf --aperture-samples 4 (emission 1e38: summed views)")
+    case("R02", R, RENDER + ["--out", "{D}/x.exr", "{D}/m.gltf"], "refuse", "emissiveStrength", setup=material(emissive(1e300)),
+         short="render m.gltf (emissiveStrength 1e300)")
+    case("R03", R, RENDER + ["--out", "{D}/x.exr", "{D}/m.gltf"], "refuse", "emissiveFactor",
+         setup=material(emissive(1, (1, -1, 1))), short="render m.gltf (emissiveFactor -1)")
+    case("R04", R, RENDER + ["--out", "{D}/x.exr", "{D}/m.gltf"], "refuse", "3.4e+38",
+         setup=material(lambda m: None, [{"type": "point", "intensity": 3.5e38}]),
+         short="render m.gltf (a point light of 3.5e38 cd)")
+
+    def textured(scale):
+        def setup(d):
+            doc, buffer = gltf_boxes([((0.5, 0.5, 0.5), (0, 0, 0))])
+            # The box's texture coordinates: each vertex's x and y, a 2x2 checker (PNG as a data URI).
+            positions = box_mesh((0.5, 0.5, 0.5))[0]
+            blob = b"".join(struct.pack("<2f", p[0] + 0.5, p[1] + 0.5) for p in positions)
+            doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(blob)})
+            doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126,
+                                     "count": len(positions), "type": "VEC2"})
+            buffer += blob
+            doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = len(doc["accessors"]) - 1
+            png = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAAAAABX3VL4AAAADElEQVR4nGNg+A+EAAYAAf+T0eSJAAAAAElFTkSuQmCC"
+            doc["images"] = [{"uri": "data:image/png;base64," + png}]
+            doc["textures"] = [{"source": 0}]
+            doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {
+                "index": 0, "extensions": {"KHR_texture_transform": {"scale": [scale, scale]}}}
+            doc["extensionsUsed"] = ["KHR_texture_transform"]
+            doc["buffers"][0]["byteLength"] = len(buffer)
+            write_gltf(d, "t.gltf", doc, buffer)
+        return setup
+    for cid, scale, quick in (("R05", 1e12, True), ("R06", 1e20, False)):
+        case(cid, R, RAYCAST + ["--out", "{D}/x.exr", "{D}/t.gltf"], "image", None, visible=True, quick=quick,
+             setup=textured(scale), short="raycast t.gltf (KHR_texture_transform scale %g)" % scale)
+    case("R07", R, RENDER + ["--out", "{D}/x.exr", "{D}/t.gltf"], "refuse", ("scale", "1e+30"), setup=textured(1e31),
+         short="render t.gltf (KHR_texture_transform scale 1e31)")
+    env = ["render"] + W + ["--out", "{D}/x.png", rows_gltf, "--environment"]
+    case("R08", R, env + ["{D}/fifo.hdr"], "refuse", "fifo.hdr", quick=True,
+         setup=lambda d: os.mkfifo(os.path.join(d, "fifo.hdr")), short="render --environment fifo.hdr (a FIFO)")
+    case("R09", R, env + ["{D}/zero.hdr"], "refuse", "zero.hdr",
+         setup=lambda d: os.symlink("/dev/zero", os.path.join(d, "zero.hdr")), short="render --environment zero.hdr (/dev/zero)")
+    case("R10", R, env + ["{D}/folder.hdr"], "refuse", "folder.hdr",
+         setup=lambda d: os.mkdir(os.path.join(d, "folder.hdr")), short="render --environment folder.hdr (a folder)")
+    case("R11", R, env + ["{D}/huge.hdr"], "refuse", "huge.hdr",
+         setup=text_setup(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 32768 +X 65536\n" + b"\x02" * 100, "huge.hdr"),
+         short="render --environment huge.hdr (a 150-byte header claiming 65536 x 32768)")
+    case("R12", R, env + ["{D}/short.hdr"], "refuse", "short.hdr",
+         setup=text_setup(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2048 +X 4096\n" + b"\x02" * 10, "short.hdr"),
+         short="render --environment short.hdr (a header claiming 4096 x 2048 over 10 bytes)")
+
 
 def rerun_writes(d, run, argv, name):
     r = run(argv)
@@ -939,7 +1008,7 @@ def main():
     signal.signal(signal.SIGHUP, stop)
 
     define_cases()
-    order = ["faults", "signals", "numeric", "malformed", "scale"]
+    order = ["faults", "signals", "numeric", "malformed", "scale", "radiance"]
     cases = sorted(CASES, key=lambda c: (order.index(c.category), c.id))
     if args.quick:
         cases = [c for c in cases if c.quick]

@@ -112,6 +112,12 @@ class ModelCheck {
       for (std::size_t c = 0; c < 4; ++c)
         if (!(f[c] >= 0.0 && f[c] <= 1.0))
           refuse(where, ": baseColorFactor[", c, "] is ", f[c], "; each must be within [0, 1]");
+      const std::vector<double>& e = m.emissiveFactor;
+      if (e.size() != 3) refuse(where, ": emissiveFactor has ", e.size(), " numbers; it needs 3 (RGB)");
+      for (std::size_t c = 0; c < 3; ++c)
+        if (!(e[c] >= 0.0 && e[c] <= 1.0))
+          refuse(where, ": emissiveFactor[", c, "] is ", e[c],
+                 "; each must be within [0, 1] (KHR_materials_emissive_strength scales it beyond)");
       if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK" && m.alphaMode != "BLEND")
         refuse(where, ": alphaMode \"", m.alphaMode, "\" must be OPAQUE, MASK or BLEND");
       if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))

@@ -1,6 +1,7 @@
 // lenslab: the lecture's camera models, rendered. See README.md.
 #include "app/Commands.h"
 #include "core/Error.h"
+#include "core/MemoryLimit.h"
 #include "core/NearestName.h"
 #include "io/Interrupt.h"
 
@@ -8,6 +9,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace {
@@ -80,7 +82,12 @@ std::string unknownOptionMessage(const CLI::App& app) {
 
 int main(int argc, char** argv) {
   // First, before any thread starts: Ctrl-C and SIGTERM remove the run's unfinished files.
-  lenslab::installInterruptHandling();
+  try {
+    lenslab::installInterruptHandling();
+  } catch (const std::system_error& e) {  // its thread cannot start: too little address space
+    std::cerr << "lenslab: error: cannot start a thread (" << e.what() << ")" << lenslab::addressSpaceNote() << "\n";
+    return 1;
+  }
   CLI::App app{"lenslab — a renderer of the lecture's camera models: pinhole, thin lens, lens effects", "lenslab"};
   app.set_version_flag("--version", LENSLAB_VERSION);
   app.require_subcommand(1);
@@ -120,6 +127,9 @@ int main(int argc, char** argv) {
     // Nothing was written: every output is committed only when whole (io/AtomicFile.h).
     std::cerr << "lenslab: error: out of memory: this run needs more than the process may use (the machine's memory, "
                  "ulimit -v); give a smaller --width, or render in tiles (render --tile-size)\n";
+    return 1;
+  } catch (const std::system_error& e) {  // a thread (TBB's, Embree's, llvmpipe's) that cannot start
+    std::cerr << "lenslab: error: " << e.what() << lenslab::addressSpaceNote() << "\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "lenslab: error: " << e.what() << "\n";

@@ -3,11 +3,17 @@
 // a binary that renders through EGL on a GPU server should not need it.
 #include "gl/GlContext.h"
 
+#include "core/MemoryLimit.h"
+
 #include <glad/gl.h>
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
+#include <thread>
+#include <string>
 #include <vector>
 
 namespace lenslab {
@@ -20,9 +26,14 @@ struct OsmesaLibrary {
   decltype(&OSMesaDestroyContext) destroyContext = nullptr;
   decltype(&OSMesaGetProcAddress) getProcAddress = nullptr;
 
+  std::string error;  // dlopen's reason, when it failed
+
   OsmesaLibrary() {
-    for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
+    for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"}) {
       if ((handle = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
+      if (error.empty())
+        if (const char* why = dlerror()) error = why;
+    }
     if (!handle) return;
     createContextAttribs =
         reinterpret_cast<decltype(createContextAttribs)>(dlsym(handle, "OSMesaCreateContextAttribs"));
@@ -32,6 +43,13 @@ struct OsmesaLibrary {
   }
   bool ok() const { return createContextAttribs && makeCurrent && destroyContext && getProcAddress; }
 };
+
+// llvmpipe's rendering threads: LP_NUM_THREADS, else one per core (at most 32, Mesa's cap).
+unsigned llvmpipeThreads() {
+  if (const char* v = std::getenv("LP_NUM_THREADS"); v && *v)
+    return static_cast<unsigned>(std::clamp(std::atoi(v), 0, 32));
+  return std::min(std::max(std::thread::hardware_concurrency(), 1u), 32u);
+}
 
 // Loaded once, kept for the process (contexts come and go; the library stays).
 const OsmesaLibrary& osmesa() {
@@ -45,8 +63,16 @@ GlProc osmesaProc(const char* name) { return reinterpret_cast<GlProc>(osmesa().g
 class OsmesaContext final : public GlContext {
  public:
   OsmesaContext() {
-    if (!osmesa().ok())
-      throw std::runtime_error("OSMesa: cannot open libOSMesa.so.8 (install libosmesa6, or use --backend egl)");
+    // Under a low ulimit -v, llvmpipe fails to load, to make a context, or crashes compiling a
+    // shader: refused here in one line instead.
+    requireAddressSpace(addressSpaceForLlvmpipeBytes(llvmpipeThreads()), "OpenGL through OSMesa (llvmpipe)");
+    if (!osmesa().ok()) {
+      // Only a missing library wants installing; a library that cannot be mapped wants memory.
+      const std::string& why = osmesa().error;
+      if (why.find("No such file") != std::string::npos || why.empty())
+        throw std::runtime_error("OSMesa: cannot open libOSMesa.so.8 (install libosmesa6, or use --backend egl)");
+      throw std::runtime_error("OSMesa: cannot load libOSMesa.so.8: " + why + addressSpaceNote());
+    }
     const int attributes[] = {OSMESA_FORMAT,
                               OSMESA_RGBA,
                               OSMESA_DEPTH_BITS,
@@ -59,7 +85,7 @@ class OsmesaContext final : public GlContext {
                               5,
                               0};
     context_ = osmesa().createContextAttribs(attributes, nullptr);
-    if (!context_) throw std::runtime_error("OSMesa: could not create an OpenGL 4.5 core context");
+    if (!context_) throw std::runtime_error("OSMesa: could not create an OpenGL 4.5 core context" + addressSpaceNote());
     // OSMesaMakeCurrent needs a client buffer even though lenslab only draws into FBOs.
     buffer_.resize(4 * kBufferSide * kBufferSide);
     if (!osmesa().makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, kBufferSide, kBufferSide)) {

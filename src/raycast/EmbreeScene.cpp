@@ -1,5 +1,7 @@
 #include "raycast/EmbreeScene.h"
 
+#include "core/MemoryLimit.h"
+
 #include "core/Text.h"
 
 #include <algorithm>
@@ -19,7 +21,7 @@ EmbreeScene::EmbreeScene(const Scene& s) : scene(&s) {
     throw InputError(
         cat("LENSLAB_EMBREE_CONFIG: Embree refused the device configuration \"", config,
             "\"; valid is an Embree config string such as isa=sse2, isa=sse4.2, isa=avx, isa=avx2 or verbose=1"));
-  if (!device) throw std::runtime_error("Embree: could not create a device");
+  if (!device) throw std::runtime_error("Embree: could not create a device" + addressSpaceNote());
 }
 
 EmbreeScene::~EmbreeScene() {

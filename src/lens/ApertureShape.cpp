@@ -61,6 +61,17 @@ glm::dvec2 squeezed(glm::dvec2 p, const ApertureShape& s) {
   return {p.x / q, p.y * q};
 }
 
+// The blade whose sector holds the polar angle `angle`: its normal's direction, and the angle
+// from that normal (within ±α).
+struct BladeAngle {
+  double normal = 0.0, fromNormal = 0.0;
+};
+BladeAngle bladeAngle(double angle, const ApertureShape& s, const Sector& sector) {
+  const double normal0 = firstNormalAngle(s);
+  const double normal = normal0 + 2.0 * sector.alpha * std::round((angle - normal0) / (2.0 * sector.alpha));
+  return {normal, std::clamp(angle - normal, -sector.alpha, sector.alpha)};
+}
+
 }  // namespace
 
 std::optional<ApertureProblem> apertureShapeProblem(const ApertureShape& s) {
@@ -83,12 +94,8 @@ glm::dvec2 apertureFromDisk(glm::dvec2 p, const ApertureShape& s) {
   const double r = glm::length(p);
   if (r == 0.0) return p;
   const Sector sector(s);
-  const double phi = std::atan2(p.y, p.x);
-  const double normal0 = firstNormalAngle(s);
   // The blade whose sector holds φ, and φ's place in it.
-  const double k = std::round((phi - normal0) / (2.0 * sector.alpha));
-  const double normal = normal0 + 2.0 * sector.alpha * k;
-  const double d = std::clamp(phi - normal, -sector.alpha, sector.alpha);
+  const auto [normal, d] = bladeAngle(std::atan2(p.y, p.x), s, sector);
   const double theta = sector.angleAtFraction((d + sector.alpha) / (2.0 * sector.alpha));
   const double radius = areaScale(s) * r * sector.boundary(theta);
   return squeezed(radius * glm::dvec2(std::cos(normal + theta), std::sin(normal + theta)), s);
@@ -101,11 +108,7 @@ glm::dvec2 diskFromAperture(glm::dvec2 a, const ApertureShape& s) {
   const double r = glm::length(p);
   if (r == 0.0) return p;
   const Sector sector(s);
-  const double psi = std::atan2(p.y, p.x);
-  const double normal0 = firstNormalAngle(s);
-  const double k = std::round((psi - normal0) / (2.0 * sector.alpha));
-  const double normal = normal0 + 2.0 * sector.alpha * k;
-  const double theta = std::clamp(psi - normal, -sector.alpha, sector.alpha);
+  const auto [normal, theta] = bladeAngle(std::atan2(p.y, p.x), s, sector);
   // G is odd: the area from −α to θ over the sector's, as a fraction of the disk's sector 2α.
   const double whole = sector.twiceArea(sector.alpha);
   const double fraction = 0.5 * (sector.twiceArea(theta) + whole) / whole;

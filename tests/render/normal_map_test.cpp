@@ -294,6 +294,19 @@ TEST(TextureTransform, EachPixelShowsTheTexelTheTransformOfItsSecondUvSetPicks) 
 namespace lenslab {
 namespace {
 
+// A 64 × 64 checker of black and white texels; its mean in linear light is ½.
+TextureImage oneTexelChecker() {
+  TextureImage image;
+  image.name = "checker";
+  image.width = image.height = 64;
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const std::uint8_t v = (i + j) % 2 ? 255 : 0;
+      image.rgba8.insert(image.rgba8.end(), {v, v, v, 255});
+    }
+  return image;
+}
+
 // A uv transform that scales the texture by 8 shrinks it on screen by 8: its footprint, and so its
 // mip level, grows by log2 8 = 3. GL takes the derivatives of the transformed uv; the ray caster
 // carries its ray differentials through the transform. A 1-texel checker whose footprint is then
@@ -303,15 +316,7 @@ TEST(TextureTransform, ScaledUvWidensTheFootprintInBothRenderersAlike) {
   LENSLAB_REQUIRE_GL();
   Scene scene;
   scene.source = "scaled checker";
-  TextureImage image;
-  image.name = "checker";
-  image.width = image.height = 64;
-  for (int j = 0; j < 64; ++j)
-    for (int i = 0; i < 64; ++i) {
-      const std::uint8_t v = (i + j) % 2 ? 255 : 0;
-      image.rgba8.insert(image.rgba8.end(), {v, v, v, 255});
-    }
-  scene.images.push_back(image);
+  scene.images.push_back(oneTexelChecker());
   scene.textures.push_back({0, Sampler{Wrap::Repeat, Wrap::Repeat, Filter::Linear, Filter::LinearMipmapLinear}});
   Material m;
   m.unlit = true;
@@ -350,15 +355,7 @@ TEST(TextureTransform, HugeScalesAndOffsetsReadTheTexturesMeanInBothRenderers) {
   LENSLAB_REQUIRE_GL();
   Scene scene;
   scene.source = "hugely scaled checker";
-  TextureImage image;
-  image.name = "checker";
-  image.width = image.height = 64;
-  for (int j = 0; j < 64; ++j)
-    for (int i = 0; i < 64; ++i) {
-      const std::uint8_t v = (i + j) % 2 ? 255 : 0;
-      image.rgba8.insert(image.rgba8.end(), {v, v, v, 255});
-    }
-  scene.images.push_back(image);
+  scene.images.push_back(oneTexelChecker());
   for (const Wrap wrap : {Wrap::Repeat, Wrap::MirroredRepeat})
     scene.textures.push_back({0, Sampler{wrap, wrap, Filter::Linear, Filter::LinearMipmapLinear}});
   scene.meshes.push_back(quadMesh(1.0, 1.0, 0));

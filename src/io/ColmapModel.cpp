@@ -283,6 +283,8 @@ ColmapModel readColmapModel(const fs::path& dir) {
   return model;
 }
 
+constexpr double kMaxPrincipalPointSides = 100.0;
+
 OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
   const Where where{file, c.line};
   const ModelInfo* m = modelInfo(c.model);
@@ -318,6 +320,17 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
   if (!(k.fx > 0.0) || !(k.fy > 0.0))
     where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (",
                    m->name, " takes ", m->params, ")"));
+  // The principal point within 100 image sides of the image: a real camera's is near its centre,
+  // and one 1e30 pixels out leaves no window a double can hold.
+  const double side = std::max(c.widthPx, c.heightPx), reach = kMaxPrincipalPointSides * side;
+  const std::pair<const char*, double> centre[] = {{"cx", k.cx + 0.5}, {"cy", k.cy + 0.5}};
+  for (const auto& [name, value] : centre) {
+    const double middle = 0.5 * (name[1] == 'x' ? c.widthPx : c.heightPx);
+    if (!(std::abs(value - middle) <= reach))
+      where.fail(cat("camera ", c.id, " has ", name, " ", value, "; give the principal point in pixels, within ",
+                     kMaxPrincipalPointSides, " image sides of the image's centre (", middle - reach, " to ",
+                     middle + reach, ")"));
+  }
   return lens;
 }
 

@@ -229,11 +229,12 @@ TEST(ColmapText, ModelsLenslabDoesNotRenderAreRefusedByNameWhenUsed) {
   model.cameras = parseColmapCameras(
       "1 OPENCV_FISHEYE 640 480 500 500 320 240 0.1 0 0 0\n2 PINHOLE 640 480 500 500 320 240\n"
       "3 FULL_OPENCV 640 480 500 500 320 240 0 0 0 0 0 0.1 0 0\n4 SIMPLE_PINHOLE 640 480 -5 320 240\n"
-      "5 PINHOLE 70000 480 500 500 320 240\n",
+      "5 PINHOLE 70000 480 500 500 320 240\n6 PINHOLE 640 480 500 500 1e30 240\n",
       model.camerasFile);
   model.images = parseColmapImages(
       "1 1 0 0 0 0 0 0 1 fish.png\n\n2 1 0 0 0 0 0 0 2 pin.png\n\n3 1 0 0 0 0 0 0 3 full.png\n\n"
-      "4 1 0 0 0 0 0 0 4 neg.png\n\n5 1 0 0 0 0 0 0 5 wide.png\n\n6 1 0 0 0 0 0 0 9 lost.png\n\n",
+      "4 1 0 0 0 0 0 0 4 neg.png\n\n5 1 0 0 0 0 0 0 5 wide.png\n\n6 1 0 0 0 0 0 0 9 lost.png\n\n"
+      "7 1 0 0 0 0 0 0 6 far.png\n\n",
       "m/images.txt");
   // Another image's camera is fine: the fisheye is refused only for its own image.
   EXPECT_NO_THROW(colmapImageCamera(model, "pin.png"));
@@ -243,9 +244,12 @@ TEST(ColmapText, ModelsLenslabDoesNotRenderAreRefusedByNameWhenUsed) {
   expectHas(errorOf([&] { colmapImageCamera(model, "neg.png"); }), {"m/cameras.txt:4:", "focal length -5"});
   expectHas(errorOf([&] { colmapImageCamera(model, "wide.png"); }), {"m/cameras.txt:5:", "65536"});
   expectHas(errorOf([&] { colmapImageCamera(model, "lost.png"); }), {"m/images.txt:11:", "CAMERA_ID 9"});
+  // A principal point 1e30 pixels out is refused naming cx and its range (not as an empty window).
+  expectHas(errorOf([&] { colmapImageCamera(model, "far.png"); }),
+            {"m/cameras.txt:6:", "cx 1e+30", "within 100 image sides", "-63680 to 64320"});
   // An unknown name lists some that are there; a name without its folder finds it.
   expectHas(errorOf([&] { colmapImageCamera(model, "nothere.png"); }),
-            {"--image nothere.png", "6 images", "fish.png, pin.png, full.png, neg.png, wide.png, ..."});
+            {"--image nothere.png", "7 images", "fish.png, pin.png, full.png, neg.png, wide.png, ..."});
   model.images.push_back(model.images[1]);
   model.images.back().name = "left/cam0.png";
   expectHas(errorOf([&] { colmapImageCamera(model, "cam0.png"); }), {"did you mean left/cam0.png?"});

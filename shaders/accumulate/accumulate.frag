@@ -26,8 +26,18 @@ layout(location = LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL) uniform vec2 normali
 // opening's radius; outside it the barrel stops the ray and the view adds nothing there.
 layout(location = LOCATION_ACCUMULATE_BARREL_LENS) uniform vec2 barrelLens[ACCUMULATE_MAX_BATCH];
 layout(location = LOCATION_ACCUMULATE_BARREL_REACH) uniform float barrelReach;
+// Each view's sub-pixel jitter (view pixels): view i's texel at p shows the scene at p + jitter[i],
+// and that is the ray the barrel tests, so that a pixel's share converges to its area's (a
+// barrel whose opening passes less than a pixel is not point-sampled at the pixel centre).
+layout(location = LOCATION_GATHER_JITTER) uniform vec2 jitter[ACCUMULATE_MAX_BATCH];
 #endif
 layout(location = 0) out vec4 sum;
+#ifdef BARREL
+// Per pixel, the weight each channel received (resolve.frag's PER_PIXEL_WEIGHT): a view the
+// barrel stops counts in the colour's (it brings no light: the cat's eye darkens the pixel) but
+// not in alpha's (coverage is the share of the rays the lens passes that meet a surface).
+layout(location = 1) out vec4 weight;
+#endif
 
 #ifdef FIELD_CURVATURE
 #include "../common/catmull_rom.glsl"
@@ -47,32 +57,41 @@ vec4 catmullRom(vec2 p, int layer) {
 }
 #endif
 
-// View i's weight at this pixel, whose value comes from the view's position `viewPx`: its channel
-// weights, or nothing where the barrel hides its aperture point. The barrel is tested at the
-// view's own position: a view is a perspective from its aperture point, so that position is the
-// ray (with field curvature the pixel shows the view at x − shift·r², and the flat-focused ray
-// through that position is the curved-focused ray through x: the same line from the same point).
-vec4 weightAt(int i, vec2 viewPx) {
+// 1 where view i's aperture point reaches this pixel, whose value comes from the view's position
+// `viewPx`; 0 where the barrel hides it. The barrel is tested at the view's own sample: a view
+// is a perspective from its aperture point, so that position is the ray (with field curvature
+// the pixel shows the view at x − shift·r², and the flat-focused ray through that position is the
+// curved-focused ray through x: the same line from the same point).
+float passes(int i, vec2 viewPx) {
 #ifdef BARREL
-  vec2 n = normalisedAtOrigin + viewPx * normalisedPerPixel;
+  vec2 n = normalisedAtOrigin + (viewPx + jitter[i]) * normalisedPerPixel;
   vec2 atOpening = barrelLens[i] + barrelReach * n;
-  if (dot(atOpening, atOpening) > 1.0) return vec4(0.0);
+  if (dot(atOpening, atOpening) > 1.0) return 0.0;
 #endif
-  return weights[i];
+  return 1.0;
 }
 
 void main() {
-  vec4 total = vec4(0.0);
+  vec4 total = vec4(0.0), w = vec4(0.0);
 #ifdef FIELD_CURVATURE
   vec2 n = normalisedAtOrigin + gl_FragCoord.xy * normalisedPerPixel;
   float r2 = dot(n, n);
   for (int i = 0; i < viewCount; ++i) {
     vec2 viewPx = gl_FragCoord.xy - shiftPerRadius2[i] * r2;
-    total += weightAt(i, viewPx) * catmullRom(viewPx, i);
+    float p = passes(i, viewPx);
+    total += p * weights[i] * catmullRom(viewPx, i);
+    w += weights[i] * vec4(1.0, 1.0, 1.0, p);
   }
   total = max(total, vec4(0.0));
 #else
-  for (int i = 0; i < viewCount; ++i) total += weightAt(i, gl_FragCoord.xy) * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
+  for (int i = 0; i < viewCount; ++i) {
+    float p = passes(i, gl_FragCoord.xy);
+    total += p * weights[i] * texelFetch(views, ivec3(gl_FragCoord.xy, i), 0);
+    w += weights[i] * vec4(1.0, 1.0, 1.0, p);
+  }
 #endif
   sum = total;
+#ifdef BARREL
+  weight = w;
+#endif
 }

@@ -67,16 +67,21 @@ float passes(ivec2 t, int i) {
 #endif
 }
 
+// What a sample of view i at texel t adds to the weights: a sample the barrel stops still counts
+// in the colour's weight (a ray that brings no light: the cat's eye darkens the pixel, as the ray
+// caster's), but not in alpha's: coverage is the share of the rays the lens passes that meet a surface.
+vec4 weightOf(ivec2 t, int i) {
+  return weights[i] * vec4(1.0, 1.0, 1.0, passes(t, i));
+}
+
 // One sample: view `i`'s texel t, landing at `landed` in the output. Adds it when it lands inside
-// this pixel (a sample exactly on an edge: measure zero), and remembers the nearest. A sample the
-// barrel stops still counts in the weight: it is a ray that brings no light (as the ray caster's).
+// this pixel (a sample exactly on an edge: measure zero), and remembers the nearest.
 void visit(ivec2 t, int i, float area, vec2 landed, inout vec4 s, inout vec4 w, inout float nearest,
            inout ivec3 nearestSample) {
   vec2 d = landed - gl_FragCoord.xy;
   if (max(abs(d.x), abs(d.y)) < 0.5) {
-    vec4 share = weights[i] * area;
-    s += share * passes(t, i) * texelFetch(views, ivec3(t, i), 0);
-    w += share;
+    s += area * weights[i] * passes(t, i) * texelFetch(views, ivec3(t, i), 0);
+    w += area * weightOf(t, i);
   }
   float d2 = dot(d, d);
   if (d2 < nearest) {
@@ -143,7 +148,7 @@ void gather(vec2 centre, float scale, int channel, out vec4 s, out vec4 w) {
   if (nearest < 1e30) {
     s += 1e-6 * weights[nearestSample.z] * passes(nearestSample.xy, nearestSample.z) *
          texelFetch(views, ivec3(nearestSample.xy, nearestSample.z), 0);
-    w += 1e-6 * weights[nearestSample.z];
+    w += 1e-6 * weightOf(nearestSample.xy, nearestSample.z);
   }
 }
 

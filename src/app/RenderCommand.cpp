@@ -69,18 +69,18 @@ struct RenderOptions {
 // The ray caster holds the whole float RGBA image (16 bytes a pixel) in memory.
 constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
-// The selected AOVs of `camera` (the camera the image was rendered with) from the ray caster, as
-// EXR channels; none when none is selected.
-std::vector<ImageChannel> aovsOf(const RayCaster& caster, const Camera& camera, ImageSize size,
-                                 const AovSelection& aovs) {
-  if (!aovs.any()) return {};
-  return aovChannels(caster.aovImages(camera, size, aovs));
+// The selected AOVs of `map` (the lens the image was rendered with; with --lens the traced lens,
+// whichever renderer made the image) from the ray caster, as EXR channels; none when none is selected.
+std::vector<ImageChannel> aovsOf(const RayCaster& caster, const ImageMap& map, const AovSelection& aovs) {
+  return aovs.any() ? aovChannels(caster.aovImages(map, aovs)) : std::vector<ImageChannel>{};
 }
 
 // render's camera after --focus-at (focused on the raster's depth there) and --lens (the thin lens
 // fitted for the focus as it now is: the field curvature and the pupil's place follow focus).
+// With --lens, `frame` gets the traced lens's map, whose rays the AOVs follow.
 Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
-                     Renderer& renderer, const std::optional<FittedLens>& fitted, RunStats& stats) {
+                     Renderer& renderer, const std::optional<FittedLens>& fitted, RunStats& stats,
+                     std::unique_ptr<ImageMap>& frame) {
   Camera camera = selected.camera;
   if (o.lens.focusAt) {
     const SelectedCamera focused = focusOnPixel(selected, size, *o.lens.focusAt, rasterDepth(renderer), "--focus-at");
@@ -91,12 +91,13 @@ Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedC
     const LensRequest request = lensRequestFor(o.lensFile, selected, camera);
     const FittedLens& fit = fitted && !o.lens.focusAt ? *fitted : fitFor(request);
     // The frame is the real lens's map; the raster draws its real-time form, fitted().
-    const RealLensMap frame(lensCameraFor(request), camera, size,
-                            withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds));
+    auto lens = std::make_unique<RealLensMap>(
+        lensCameraFor(request), camera, size,
+        withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds));
     SelectedCamera lensCamera;
-    lensCamera.camera = frame.fitted().camera();
-    camera = lensCamera.camera;
+    camera = lensCamera.camera = lens->fitted().camera();
     stats.setCamera(lensCamera);
+    frame = std::move(lens);
   }
   return camera;
 }
@@ -118,7 +119,8 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   Renderer renderer(scene);
   stats.setupSeconds = secondsSince(t);
 
-  const Camera camera = refocusAndFit(o, scene, selected, size, renderer, fitted, stats);
+  std::unique_ptr<ImageMap> frame;
+  const Camera camera = refocusAndFit(o, scene, selected, size, renderer, fitted, stats, frame);
   const auto renderStart = std::chrono::steady_clock::now();
   const FramePlan plan = planFrame(renderer, scene, camera, size, planOptions, stats);
   for (const std::string& w : plan.warnings) std::cerr << "lenslab: warning: " << w << "\n";
@@ -131,9 +133,8 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
                          "; per-tile budgets are not combined with that yet: give a smaller "
                          "--width, or --aperture-samples"));
   if (tiles.tiled && aovs.any())
-    throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why,
-                         "; the AOVs are written with an image rendered in one "
-                         "piece: give a smaller --width (and no --tile-size), or use raycast"));
+    throw InputError(cat("--aov ", aovList(aovs), ": ", tiles.why, "; the AOVs are written with an image rendered in ",
+                         "one piece: give a smaller --width (and no --tile-size), or use raycast"));
   if (tiles.tiled) {
     renderTiledToFile(renderer, camera, plan, size, tiles, outputs, out, display, stats, progress);
     return std::nullopt;
@@ -141,7 +142,10 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
 
   Image image = renderPlanned(renderer, camera, plan, size, stats, &progress, o.quiet);
   stats.renderSeconds = secondsSince(renderStart);
-  if (aovs.any()) aovChannelValues = aovsOf(RayCaster(scene), camera, size, aovs);
+  if (aovs.any()) {
+    if (!frame) frame = std::make_unique<ThinLensMap>(camera, size);
+    aovChannelValues = aovsOf(RayCaster(scene), *frame, aovs);
+  }
   return image;
 }
 
@@ -174,28 +178,27 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   stats.plan.apertureSamples = o.samplesPerPixel;
   const RaycastOptions options{o.samplesPerPixel, o.lens.seed};
   const auto onRows = [&](int done, int rows) { progress.update(done, rows); };
-  Image image;
+  // The traced lens, or the thin lens with its effects: one loop casts either map's rays.
+  std::unique_ptr<ImageMap> map;
+  std::string rays;
   if (!o.lensFile.empty()) {
-    const RealLensMap frame(lensCameraFor(lensRequestFor(o.lensFile, selected, camera)), camera, size);
+    auto frame =
+        std::make_unique<RealLensMap>(lensCameraFor(lensRequestFor(o.lensFile, selected, camera)), camera, size);
     stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified film x exit-pupil samples per pixel (--spp)");
-    stats.plan.passes = {{"raycast",
-                          cat(o.samplesPerPixel, " rays per pixel traced through every surface of ", o.lensFile,
-                              frame.lens().dispersion() ? ", per channel at 610, 550 and 465 nm" : ""),
-                          {}}};
-    t = std::chrono::steady_clock::now();
-    image = caster.render(frame, options, onRows);
+    rays = cat("traced through every surface of ", o.lensFile,
+               frame->lens().dispersion() ? ", per channel at 610, 550 and 465 nm" : "");
+    map = std::move(frame);
   } else {
     stats.plan.samplesWhy = cat(o.samplesPerPixel, " stratified pixel x lens samples per pixel (--spp)");
-    stats.plan.passes = {
-        {"raycast",
-         cat(o.samplesPerPixel, " rays per pixel through ", camera.lens.isPinhole() ? "the PRP" : "the thin lens",
-             camera.lens.effects.isZero() ? "" : ", each through the inverse lens model (exact)"),
-         {}}};
-    t = std::chrono::steady_clock::now();
-    image = caster.render(camera, size, options, onRows);
+    rays = cat("through ", camera.lens.isPinhole() ? "the PRP" : "the thin lens",
+               camera.lens.effects.isZero() ? "" : ", each through the inverse lens model (exact)");
+    map = std::make_unique<ThinLensMap>(camera, size);
   }
+  stats.plan.passes = {{"raycast", cat(o.samplesPerPixel, " rays per pixel ", rays), {}}};
+  t = std::chrono::steady_clock::now();
+  const Image image = caster.render(*map, options, onRows);
   stats.renderSeconds = secondsSince(t);
-  aovChannelValues = aovsOf(caster, camera, size, aovs);
+  aovChannelValues = aovsOf(caster, *map, aovs);
   return image;
 }
 
@@ -232,16 +235,15 @@ bool traceLensExactly(const RenderOptions& o, const SelectedCamera& selected, Im
 // The line that says what was written (none with --quiet).
 void reportWritten(const RenderOptions& o, const fs::path& out, ImageSize size, const RunStats& stats) {
   if (o.quiet) return;
-  if (stats.estimate)
-    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", estimated "
-              << stats.estimate->psnrDb << " dB with " << stats.estimate->meanSamples
-              << " samples per pixel on average (" << stats.estimate->minSamples << " to " << stats.estimate->maxSamples
-              << " per tile), " << stats.renderer << ", " << stats.seconds << " s)\n";
-  else
-    std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", "
-              << stats.plan.apertureSamples << (o.method == Method::Raster ? " aperture sample" : " sample")
-              << (stats.plan.apertureSamples == 1 ? "" : "s") << (o.method == Method::Raster ? "" : " per pixel")
-              << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
+  const bool raster = o.method == Method::Raster;
+  const std::string samples = stats.estimate
+                                  ? cat("estimated ", stats.estimate->psnrDb, " dB with ", stats.estimate->meanSamples,
+                                        " samples per pixel on average (", stats.estimate->minSamples, " to ",
+                                        stats.estimate->maxSamples, " per tile)")
+                                  : cat(stats.plan.apertureSamples, raster ? " aperture sample" : " sample",
+                                        stats.plan.apertureSamples == 1 ? "" : "s", raster ? "" : " per pixel");
+  std::cerr << "lenslab: wrote " << out.string() << " (" << size.widthPx << "x" << size.heightPx << ", " << samples
+            << ", " << stats.renderer << ", " << stats.seconds << " s)\n";
 }
 
 int runRender(const RenderOptions& o) {
@@ -340,14 +342,12 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
       "glTF camera, else an automatic framing; the lens and pose options below override it field by field");
   cmd->add_option("--out,-o", options->out, "output image: .png (8-bit sRGB) or .exr (linear float)")
       ->capture_default_str();
-  cmd->add_option(
-      "--width", options->width,
-      method == Method::Raster
-          ? "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^30 "
-            "pixels in all: images beyond one GL render target are rendered in tiles and written a strip at a "
-            "time (20000x13333 on llvmpipe: see docs/usage.md, Image sizes)"
-          : "image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most 2^28 "
-            "pixels in all (the ray caster holds the whole float image)");
+  cmd->add_option("--width", options->width,
+                  cat("image width in pixels, 1 to 65536 (default 960; height follows the window's aspect); at most ",
+                      method == Method::Raster
+                          ? "2^30 pixels in all: images beyond one GL render target are rendered in tiles and written "
+                            "a strip at a time (20000x13333 on llvmpipe: see docs/usage.md, Image sizes)"
+                          : "2^28 pixels in all (the ray caster holds the whole float image)"));
   cmd->add_option("--height", options->height, "image height in pixels (limits as --width)");
   if (method == Method::Raster) {
     cmd->add_option("--tile-size", options->tileSizePx,

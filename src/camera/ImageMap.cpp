@@ -132,6 +132,12 @@ double ThinLensMap::gainAt(glm::dvec2 pixel) const {
   return camera_.lens.effects.vignetting.gain(glm::dot(n, n));
 }
 
+std::optional<CameraRay> ThinLensMap::centreRay(glm::dvec2 pixel) const {
+  std::optional<CameraRay> r = ray(pixel, {0.0, 0.0}, 1);
+  if (r) r->blocked = false;
+  return r;
+}
+
 RealLensMap::RealLensMap(LensCamera lens, const Camera& placed, ImageSize size, std::optional<Camera> fittedCamera)
     : ImageMap(placed, size), lens_(std::move(lens)) {
   if (fittedCamera) fitted_ = std::make_shared<const ThinLensMap>(*fittedCamera, size);
@@ -160,6 +166,19 @@ Ray RealLensMap::footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const {
       lens_.ray(r.pixel + offsetPx, size_.widthPx, size_.heightPx, r.lensPoint, r.channel);
   // A neighbour the lens stops: no footprint that way.
   return n ? Ray{n->origin, n->direction, 0.0, std::numeric_limits<double>::infinity()} : r.ray;
+}
+
+std::optional<CameraRay> RealLensMap::centreRay(glm::dvec2 pixel) const {
+  std::call_once(centreRays_->once, [&] { centreRays_->rays = std::make_unique<CentreRays>(lens_); });
+  const std::optional<LensCamera::WorldRay> w = centreRays_->rays->at(pixel, size_.widthPx, size_.heightPx);
+  if (!w) return std::nullopt;
+  CameraRay r;
+  r.ray = Ray{w->origin, w->direction, 0.0, std::numeric_limits<double>::infinity()};
+  r.weight = w->weight;
+  r.pixel = pixel;
+  r.lensPoint = {0.5, 0.5};
+  r.channel = 1;
+  return r;
 }
 
 }  // namespace lenslab

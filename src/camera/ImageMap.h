@@ -18,6 +18,7 @@
 #include "camera/Projection.h"
 #include "camera/Ray.h"
 #include "lens/AperturePattern.h"
+#include "lens/CentreRays.h"
 #include "lens/LensBarrel.h"
 #include "lens/LensCamera.h"
 #include "lens/LensEffects.h"
@@ -26,6 +27,7 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -118,6 +120,9 @@ class ImageMap {
                                        const CameraRay* near = nullptr) const = 0;
   // The same sample's ray from `offsetPx` over on the map's film (texture footprints: ray differentials).
   virtual Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const = 0;
+  // The one ray of film point `pixel` that ground truth follows (the AOVs, core/Aovs.h): it
+  // lines up with the image. nullopt where the lens passes no light from there.
+  virtual std::optional<CameraRay> centreRay(glm::dvec2 pixel) const = 0;
   // What the pixel's light is multiplied by after the samples' mean (a thin lens's vignetting).
   virtual double gainAt(glm::dvec2 /*pixel*/) const { return 1.0; }
 
@@ -190,6 +195,9 @@ class ThinLensMap final : public ImageMap {
   Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override {
     return lensRay(rayCamera_, r.lensPoint, r.pixel + offsetPx, size_, r.inverseFocusShift);
   }
+  // Green's ray from the lens centre, through the inverse lens model. The barrel dims the light
+  // it does not hide the surface behind it, so the ray is never blocked.
+  std::optional<CameraRay> centreRay(glm::dvec2 pixel) const override;
   double gainAt(glm::dvec2 pixel) const override;
 
   // The lens pass's tables (camera/LensMap.cpp), filled on every core: one inverse table for each
@@ -275,10 +283,19 @@ class RealLensMap final : public ImageMap {
   std::optional<CameraRay> ray(glm::dvec2 pixel, glm::dvec2 lens, int channel,
                                const CameraRay* near = nullptr) const override;
   Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override;
+  // Green's bundle's mean line (lens/CentreRays.h), the centre of the pixel's blur; its lens
+  // point is the pupil box's centre (for the texture footprint). Traced on first use.
+  std::optional<CameraRay> centreRay(glm::dvec2 pixel) const override;
 
  private:
   LensCamera lens_;
   std::shared_ptr<const ThinLensMap> fitted_;
+  // Built once, on the first centreRay, by whichever thread asks first; copies share it.
+  struct LazyCentreRays {
+    std::once_flag once;
+    std::unique_ptr<CentreRays> rays;
+  };
+  std::shared_ptr<LazyCentreRays> centreRays_ = std::make_shared<LazyCentreRays>();
 };
 
 }  // namespace lenslab

@@ -32,19 +32,27 @@ LensCamera::LensCamera(std::shared_ptr<const LensPrescription> lens, const LensC
   }
 }
 
-std::optional<LensCamera::WorldRay> LensCamera::ray(glm::dvec2 pixel, int widthPx, int heightPx, glm::dvec2 u,
-                                                    int channel) const {
+glm::dvec2 LensCamera::filmMmOf(glm::dvec2 pixel, int widthPx, int heightPx) const {
   // The image point (mm, right and up from the sensor's centre), and the film point behind the
   // lens that sees it: the film holds the image turned by 180°.
   const glm::dvec2 imageMm((pixel.x / widthPx - 0.5) * settings_.sensorMm.x,
                            (0.5 - pixel.y / heightPx) * settings_.sensorMm.y);
-  const std::optional<FilmRay> r = pupils_[static_cast<std::size_t>(channel)]->sample(-imageMm, u);
-  if (!r) return std::nullopt;
+  return -imageMm;
+}
+
+LensCamera::WorldRay LensCamera::toWorld(const glm::dvec3& originMm, const glm::dvec3& direction, double weight) const {
   // Lens coordinates: x right, y up, z toward the film (backward), the entrance pupil at the eye.
   const auto world = [&](const glm::dvec3& v) { return v.x * pose_.right + v.y * pose_.up - v.z * pose_.forward; };
-  const glm::dvec3 origin =
-      pose_.eye + pose_.worldPerMm * world(r->ray.origin - glm::dvec3(0.0, 0.0, entrancePupilMm_));
-  return WorldRay{origin, glm::normalize(world(r->ray.direction)), r->weight};
+  const glm::dvec3 origin = pose_.eye + pose_.worldPerMm * world(originMm - glm::dvec3(0.0, 0.0, entrancePupilMm_));
+  return WorldRay{origin, glm::normalize(world(direction)), weight};
+}
+
+std::optional<LensCamera::WorldRay> LensCamera::ray(glm::dvec2 pixel, int widthPx, int heightPx, glm::dvec2 u,
+                                                    int channel) const {
+  const std::optional<FilmRay> r =
+      pupils_[static_cast<std::size_t>(channel)]->sample(filmMmOf(pixel, widthPx, heightPx), u);
+  if (!r) return std::nullopt;
+  return toWorld(r->ray.origin, r->ray.direction, r->weight);
 }
 
 }  // namespace lenslab

@@ -50,12 +50,21 @@ class LensCamera {
   // corner) of a width × height image, through pupil sample `u` ∈ [0, 1)², for `channel` (0 red,
   // 1 green, 2 blue; one wavelength for all without dispersion); nullopt where the lens stops it.
   std::optional<WorldRay> ray(glm::dvec2 pixel, int widthPx, int heightPx, glm::dvec2 u, int channel = 1) const;
+  // The film point (mm, lens coordinates: the image turned by 180°) behind continuous pixel
+  // position `pixel` of a width × height image, as ray() uses it.
+  glm::dvec2 filmMmOf(glm::dvec2 pixel, int widthPx, int heightPx) const;
+  // A ray in lens coordinates (mm; origin relative to the first vertex, z toward the film) placed
+  // in the world: the origin as ray() places it, the direction made unit.
+  WorldRay toWorld(const glm::dvec3& originMm, const glm::dvec3& direction, double weight) const;
 
   bool dispersion() const { return pupils_[0] != pupils_[1]; }
   const LensPrescription& lens() const { return *lens_; }
   double filmDistanceMm() const { return filmDistanceMm_; }  // last vertex → film
   double stopDiameterMm() const { return stopDiameterMm_; }
   const LensCameraPose& pose() const { return pose_; }
+  const ExitPupil& pupil(int channel) const { return *pupils_[static_cast<std::size_t>(channel)]; }
+  double entrancePupilMm() const { return entrancePupilMm_; }  // from the first vertex, along +z
+  double halfDiagonalMm() const { return 0.5 * glm::length(settings_.sensorMm); }
 
  private:
   std::shared_ptr<const LensPrescription> lens_;

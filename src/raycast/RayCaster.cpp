@@ -75,7 +75,11 @@ struct RayCaster::Impl : EmbreeScene {
   // barrel stops, brings no light and sees no surface, background included. The returned ray is
   // relative to `origin`.
   Hit shadeAlong(const ImageMap& map, glm::dvec2 pixel, glm::dvec2 lens, int channel, double footprintPx) const {
-    const std::optional<CameraRay> r = map.ray(pixel, lens, channel);
+    return shadeCameraRay(map, map.ray(pixel, lens, channel), footprintPx);
+  }
+
+  // shadeAlong for a ray the map has cast (nullopt: one the lens does not pass).
+  Hit shadeCameraRay(const ImageMap& map, const std::optional<CameraRay>& r, double footprintPx) const {
     Ray ray = r ? r->ray : Ray{};
     ray.origin -= origin;
     if (!r || r->blocked) return Hit{glm::vec3(0.0f), false, std::numeric_limits<double>::infinity(), ray};
@@ -303,15 +307,19 @@ std::vector<float> RayCaster::depthImage(const Camera& camera, ImageSize size) c
 }
 
 AovImages RayCaster::aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const {
+  return aovImages(ThinLensMap(camera, size), selection);
+}
+
+AovImages RayCaster::aovImages(const ImageMap& map, const AovSelection& selection) const {
   if (selection.instance) requireExactInstances(*impl_->scene);
-  impl_->rebase(impl_->originFor(camera, size));
+  impl_->rebase(impl_->originFor(map.camera(), map.size()));
   const Impl& m = *impl_;
-  // Green's ray from the lens centre: through the inverse lens model, so depth lines up with the image.
-  const ThinLensMap map(camera, size);
-  const glm::dvec3 axis = -viewBasis(camera.view).n;
+  // Depth along the axis from the lens centre (the PRP; a real lens's entrance pupil), relative
+  // to the origin the rays are kept relative to.
+  const glm::dvec3 axis = -viewBasis(map.camera().view).n, eye = prpWorld(map.camera().view) - m.origin;
   return aovImagesThrough(map, selection, [&](glm::dvec2 pixel) {
-    const Impl::Hit hit = m.shadeAlong(map, pixel, {0.0, 0.0}, 1, 1.0);
-    const double depth = std::isinf(hit.t) ? hit.t : glm::dot(hit.t * hit.ray.direction, axis);
+    const Impl::Hit hit = m.shadeCameraRay(map, map.centreRay(pixel), 1.0);
+    const double depth = std::isinf(hit.t) ? hit.t : glm::dot(hit.ray.origin + hit.t * hit.ray.direction - eye, axis);
     return AovSurface{hit.surface, depth, hit.normal, hit.albedo, hit.gltfNode};
   });
 }

@@ -89,6 +89,10 @@ class RayCaster {
   // shaded with, in camera space (u, v, n: right, up, toward the viewer); the albedo its base
   // colour (factor × texture over one pixel × vertex colour, linear); the instance its glTF node.
   AovImages aovImages(const Camera& camera, ImageSize size, const AovSelection& selection) const;
+  // The same through any lens model: the first surface along each pixel centre's
+  // ImageMap::centreRay (a real lens's: the mean line of the bundle, lens/CentreRays.h), depth
+  // measured along the axis from the map's lens centre.
+  AovImages aovImages(const ImageMap& map, const AovSelection& selection) const;
 
  private:
   struct Impl;

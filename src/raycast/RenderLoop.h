@@ -100,9 +100,11 @@ Image renderThroughMap(const Map& map, const RaycastOptions& options, const std:
           for (int c = 0; c < channels; ++c) {
             const std::optional<CameraRay> r =
                 map.ray(pixel, lens.at(samples[i], i), channels == 3 ? c : 1, centre[c] ? &*centre[c] : nullptr);
-            if (!r) continue;  // outside what the lens passes: no light, and no part of the pixel's coverage
+            // Outside what the lens passes, or stopped by the barrel: no light (background
+            // included: the pixel darkens), and no part of the coverage, which is over the rays
+            // that pass (as a real lens's rims stop rays before they have a direction).
+            if (!r || r->blocked) continue;
             weights += r->weight / channels;
-            if (r->blocked) continue;  // the barrel stops it: no light, background included
             Ray ray = r->ray;
             ray.origin -= origin;
             // The texture's ray differentials: the same lens point, the film point one footprint over.

@@ -86,8 +86,8 @@ void Accumulator::start(int widthPx, int heightPx, const Curvature* curvature, c
     sum_.reset();
     sum_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
   }
-  if ((lens_ || cellFilter_) && !weight_) weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
-  if (lens_ && !gatherFramebuffer_) gatherFramebuffer_ = sumFramebuffer({sum_.get(), weight_.get()});
+  if ((perPixelWeight() || cellFilter_) && !weight_) weight_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
+  if (perPixelWeight() && !gatherFramebuffer_) gatherFramebuffer_ = sumFramebuffer({sum_.get(), weight_.get()});
   if (cellFilter_ && !behind_) {
     behind_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
     holes_ = std::make_unique<gl::RenderTarget>(sumWidth, sumHeight);
@@ -267,7 +267,7 @@ void Accumulator::flushLayers() {
     filterView();
     return;
   }
-  if (lens_) {
+  if (perPixelWeight()) {
     const gl::DrawTarget both{gatherFramebuffer_.id(), sum_->width(), sum_->height()};
     both.bind();
   } else {
@@ -301,6 +301,7 @@ void Accumulator::flushLayers() {
     glProgramUniform2fv(program, LOCATION_ACCUMULATE_NORMALISED_PER_PIXEL, 1, &barrel_->normalisedPerPixel.x);
     glProgramUniform2fv(program, LOCATION_ACCUMULATE_BARREL_LENS, pending_, &pendingBarrelLens_[0].x);
     glProgramUniform1f(program, LOCATION_ACCUMULATE_BARREL_REACH, barrel_->reach);
+    glProgramUniform2fv(program, LOCATION_GATHER_JITTER, pending_, &pendingJitters_[0].x);
   }
   if (lens_) {
     glProgramUniform2fv(program, LOCATION_GATHER_JITTER, pending_, &pendingJitters_[0].x);
@@ -351,7 +352,7 @@ GLuint Accumulator::sumTexture() {
 
 GLuint Accumulator::weightTexture() {
   flush();
-  return weight_ && lens_ ? weight_->colorTexture() : 0;
+  return weight_ && perPixelWeight() ? weight_->colorTexture() : 0;
 }
 
 Accumulator::ViewCost Accumulator::viewCost() const {
@@ -368,7 +369,7 @@ void Accumulator::resolve(const gl::RenderTarget& out, const VignetteGain* vigne
   out.bind();
   glDisable(GL_BLEND);
   // The variant: [lens gather's per-pixel weights or the cell filter's fill][vignetting].
-  const int kind = lens_ ? 1 : cellFilter_ ? 2 : 0;
+  const int kind = perPixelWeight() ? 1 : cellFilter_ ? 2 : 0;
   gl::Program& program = resolvePrograms_[kind][vignetting ? 1 : 0];
   if (!program) {
     std::vector<std::string> defines;
@@ -378,7 +379,7 @@ void Accumulator::resolve(const gl::RenderTarget& out, const VignetteGain* vigne
     program = gl::buildProgram("common/fullscreen.vert", "accumulate/resolve.frag", defines);
   }
   if (vignetting) setVignetteGain(program.id(), *vignetting);
-  if (lens_) {
+  if (perPixelWeight()) {
     glBindTextureUnit(1, weight_->colorTexture());
     glBindSampler(1, 0);
     drawFullScreen(fullScreen_, program.id(), sum_->colorTexture());

@@ -135,9 +135,12 @@ class Accumulator {
   // pending so far are added first, with the region they were drawn for. Per-tile budgets.
   void setRegion(const std::vector<PixelBox>* boxes);
   // The sum itself, for a caller that divides per tile (render/Renderer's two-stream resolve):
-  // RGBA32F; with the lens gather, the per-pixel weights beside it (else 0). Adds pending views first.
+  // RGBA32F; with perPixelWeight(), the per-pixel weights beside it (else 0). Adds pending views first.
   GLuint sumTexture();
   GLuint weightTexture();
+  // Whether each pixel sums its own weights: the lens gather's samples land unevenly, and where
+  // the barrel stops a view, alpha's weight leaves it out (coverage is over the rays that pass).
+  bool perPixelWeight() const { return lens_.has_value() || barrel_.has_value(); }
   int count() const { return count_; }
   // Views per batch: layers (kMaxBatch before any), or views whose background is added by one pass.
   int batchSize() const {

@@ -211,7 +211,7 @@ bool Renderer::step() {
 }
 
 const gl::Program& Renderer::streamsProgram(bool errorPerBlock) {
-  const bool perPixel = plan_.remap;  // the lens gather weighs each pixel apart
+  const bool perPixel = accumulator_->perPixelWeight();  // the lens gather or the barrel weighs each pixel apart
   gl::Program& program = streams_[(perPixel ? 2 : 0) + (errorPerBlock ? 1 : 0)];
   if (!program) {
     std::vector<std::string> defines;
@@ -223,7 +223,7 @@ const gl::Program& Renderer::streamsProgram(bool errorPerBlock) {
 }
 
 void Renderer::uploadTileWeights() {
-  if (plan_.remap) return;  // the lens gather sums its weights per pixel
+  if (accumulator_->perPixelWeight()) return;  // summed per pixel beside the colours
   // Each stream's weight in a tile is its count of samples (a full view adds 1 to every channel
   // and alpha; with axial colour, the three channel views of a sample add 1 to each).
   std::vector<glm::vec4> weights(tiles_.size());
@@ -238,7 +238,7 @@ void Renderer::uploadTileWeights() {
 void Renderer::bindStreams() {
   glBindTextureUnit(0, accumulator_->sumTexture());
   glBindTextureUnit(1, streamB_->sumTexture());
-  if (plan_.remap) {
+  if (accumulator_->perPixelWeight()) {
     glBindTextureUnit(2, accumulator_->weightTexture());
     glBindTextureUnit(3, streamB_->weightTexture());
   } else {

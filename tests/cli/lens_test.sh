@@ -80,19 +80,28 @@ else
   fail "lens --json fit: $(cat "$work/err")"
 fi
 if "$lenslab" render --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 48 --aperture-samples 8 \
-     --out "$work/fitted.exr" --stats "$work/fitted.json" 2>"$work/err"; then
+     --aov depth,instance --out "$work/fitted.exr" --stats "$work/fitted.json" 2>"$work/err"; then
   check grep -q "the fitted thin lens, off by up to" "$work/err"
   check holds "$work/fitted.json" "'(fitted)' in j['camera'] and j['lens']['barrel'] and j['renderer'] != 'lenslab ray caster (Embree, TBB)'"
 else
   fail "render --lens: $(cat "$work/err")"
 fi
 if "$lenslab" render --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 48 --aperture-samples 2 \
-     --lens-tolerance 0 --out "$work/traced.exr" --stats "$work/traced.json" 2>"$work/err"; then
+     --lens-tolerance 0 --aov depth,instance --out "$work/traced.exr" --stats "$work/traced.json" 2>"$work/err"; then
   check grep -q "above --lens-tolerance 0: tracing the lens exactly, 2 rays per pixel" "$work/err"
   check holds "$work/traced.json" "j['renderer'] == 'lenslab ray caster (Embree, TBB)' and j['command'] == 'render'"
 else
   fail "render --lens --lens-tolerance 0: $(cat "$work/err")"
 fi
+# The AOVs follow the traced lens whichever renderer made the image (docs/capture.md): the same
+# depth and instance from the fitted raster, the exact trace and raycast --lens.
+"$lenslab" raycast --camera "$dof" --lens "$lenses/double-gauss-50mm.lens" --f-number 4 --width 48 --spp 1 \
+  --aov depth,instance --out "$work/raycast-aov.exr" -q 2>"$work/err" || fail "raycast --lens --aov: $(cat "$work/err")"
+for f in fitted traced raycast-aov; do oiiotool "$work/$f.exr" --ch Z,instance -o "$work/$f-aov.exr" 2>/dev/null; done
+for f in traced raycast-aov; do
+  if same_pixels "$work/fitted-aov.exr" "$work/$f-aov.exr"; then pass; else fail "render --lens --aov and $f differ in depth or instance"; fi
+done
+
 # Past the fisheye's image circle no thin lens fits: render traces it exactly, as raycast does.
 if "$lenslab" render --camera "$dof" --lens "$lenses/fisheye-10mm.lens" --f-number 5.6 --width 18 --aperture-samples 1 \
      --out "$work/fisheye.png" 2>"$work/err"; then

@@ -43,6 +43,7 @@ class TelecentricMap final : public ImageMap {
     return r;
   }
   Ray footprintRay(const CameraRay& r, glm::dvec2 offsetPx) const override { return rayThrough(r.pixel + offsetPx); }
+  std::optional<CameraRay> centreRay(glm::dvec2 pixel) const override { return ray(pixel, {0.0, 0.0}, 1, nullptr); }
   double gainAt(glm::dvec2 /*pixel*/) const override { return gain_; }
 
  private:

@@ -300,6 +300,53 @@ TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
   EXPECT_NEAR(raster.at(24, 24).g, 1.0, 1e-4) << "the centre sees the whole aperture";
 }
 
+// A barrel whose opening passes light only within a few pixels of the centre (a small aperture
+// far behind a narrow opening): the share changes within a pixel, so a pixel's value is the
+// overlap averaged over its area, not taken at its centre. The raster tests each view's barrel at
+// that view's jittered sample, as the ray caster tests each ray at its film point.
+TEST(CatsEye, WhereTheShareChangesWithinAPixelThePixelAveragesItOverItsArea) {
+  LENSLAB_REQUIRE_GL();
+  Scene scene;
+  scene.source = "white wall";
+  scene.lighting.background = glm::vec3(0.0f);
+  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kFocus)), 4.0, 4.0, glm::vec3(1.0f));
+  Camera camera = bokehCamera(ApertureShape{});
+  camera.lens.apertureRadius = 0.001;
+  // The aperture, radius 0.0009 in the opening's plane, wholly inside the 0.0089 opening for
+  // |n| < 0.04 and wholly outside for |n| > 0.049: a disk of some 2 px radius whose rim is sharper
+  // than a pixel (n changes by 0.021 a pixel).
+  camera.lens.barrel = LensBarrel{0.2, 0.0089};
+  const ImageSize size{48, 48};
+  Renderer renderer(scene);
+  const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 1024, 1024, 3});
+  const Image raster = renderer.render(camera, plan, size);
+  const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{4096, 4});
+  const auto shareAt = [&](glm::dvec2 pixel) {
+    const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
+    const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
+    return roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
+  };
+  double worstRaster = 0.0, worstRaycast = 0.0, centreVersusArea = 0.0;
+  for (int y = 16; y < 32; ++y)
+    for (int x = 16; x < 32; ++x) {
+      constexpr int kSub = 16;
+      double area = 0.0;
+      for (int j = 0; j < kSub; ++j)
+        for (int i = 0; i < kSub; ++i) area += shareAt({x + (i + 0.5) / kSub, y + (j + 0.5) / kSub});
+      area /= kSub * kSub;
+      centreVersusArea = std::max(centreVersusArea, std::abs(shareAt({x + 0.5, y + 0.5}) - area));
+      worstRaster = std::max(worstRaster, std::abs(raster.at(x, y).g - area));
+      worstRaycast = std::max(worstRaycast, std::abs(raycast.at(x, y).g - area));
+    }
+  std::printf(
+      "  narrow barrel: the overlap at a pixel's centre is up to %.3f off its area's mean; worst |image - area "
+      "mean| raster %.4f, ray cast %.4f\n",
+      centreVersusArea, worstRaster, worstRaycast);
+  EXPECT_GT(centreVersusArea, 0.05) << "the test's share should change within a pixel";
+  EXPECT_LT(worstRaster, 0.02);
+  EXPECT_LT(worstRaycast, 0.02);
+}
+
 TEST(CatsEye, ABarrelThatClipsNothingChangesNothing) {
   LENSLAB_REQUIRE_GL();
   const Scene scene = markerScene();

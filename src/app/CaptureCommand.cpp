@@ -12,6 +12,7 @@
 #include "app/EnvironmentOptions.h"
 #include "app/ExposureOptions.h"
 #include "app/Commands.h"
+#include "app/CaptureColmap.h"
 #include "app/CaptureManifest.h"
 #include "app/FrameCameras.h"
 #include "app/FrameRender.h"
@@ -58,88 +59,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The folder COLMAP's NAMEs are relative to: --out's leading folders up to the first that holds
-// the frame number (give it to COLMAP as --image_path).
-fs::path framesFolder(const std::string& pattern) {
-  fs::path folder;
-  for (const fs::path& part : fs::path(pattern).parent_path()) {
-    if (part.string().find('%') != std::string::npos) break;
-    folder /= part;
-  }
-  return folder;
-}
-
-// The files of a COLMAP text model: cameras.txt, images.txt, points3D.txt.
-struct ColmapFiles {
-  std::string cameras, images, points3D;
-};
-
-// The cameras of every frame of `range` (its step included) as a COLMAP text model: whichever
-// frames this shard renders, the model is the whole range's, a pure function of the frames'
-// cameras (the path's keys, or the scene's camera over its animation), the range and the size
-// options, so every shard writes the same bytes. Identical intrinsics share one CAMERA_ID;
-// IMAGE_ID is the frame number + 1 (stable whatever the range). Throws InputError for a lens no
-// COLMAP model holds; warns once for each effect a pinhole model leaves out. A glTF camera
-// following its node poses `scene` at each frame's time.
-ColmapFiles colmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range) {
-  const fs::path base = framesFolder(o.out);
-  const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
-  std::vector<ColmapCamera> cameras;
-  std::vector<ColmapImage> images;
-  std::map<std::string, std::uint32_t> cameraIdOfParams;
-  std::set<std::string> warnings;
-  const std::string imageWhere = cat("--colmap-out: --out ", o.out);  // the frames' names come from --out
-  for (const int frame : shardFrames(range, Shard{})) {
-    // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
-    // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
-    if (frameCameras.followsNode() && !scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
-    const FrameKey f = frameKey(frameCameras, scene, o, frame);
-    const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
-    ColmapCamera camera =
-        colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
-    const std::string key = colmapCamerasText({camera});
-    const auto [it, added] = cameraIdOfParams.emplace(key, static_cast<std::uint32_t>(cameras.size() + 1));
-    if (added) {
-      camera.id = it->second;
-      cameras.push_back(camera);
-    }
-    const fs::path file = formatFramePath(o.out, frame);
-    const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
-    images.push_back(
-        colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, it->second, name, imageWhere));
-    // What a pinhole model cannot hold. Blur (depth of field, axial colour, field curvature) is
-    // centred where the pinhole at the lens centre projects, so the geometry stays right.
-    const LensEffects& e = f.camera.lens.effects;
-    if (!f.camera.lens.isPinhole())
-      warnings.insert(
-          "the depth of field (aperture and focus) is not in the model: COLMAP's cameras are pinholes "
-          "(each blur is centred where the model projects)");
-    if (e.chromatic.hasAxial())
-      warnings.insert("the axial colour is not in the model (it blurs, centred where the model projects)");
-    if (!e.fieldCurvature.isZero())
-      warnings.insert("the field curvature is not in the model (it blurs, centred where the model projects)");
-    if (e.chromatic.hasLateral())
-      warnings.insert(
-          "the lateral colour is not in the model: it holds green's geometry, while red's and blue's "
-          "images are magnified about the principal point");
-  }
-  if (!o.quiet)
-    for (const std::string& w : warnings) std::cerr << "lenslab: warning: --colmap-out: " << w << "\n";
-  return {colmapCamerasText(cameras), colmapImagesText(images), colmapPoints3DText()};
-}
-
-// Each file is written whole under a temporary name of its own (io/AtomicFile.h: the process id
-// and a random token, so shards on other machines sharing the folder never collide) and renamed
-// into place, so shards writing the same model at once leave one of their identical versions,
-// never a mixture or a partial file.
-void writeColmapModel(const fs::path& dir, const ColmapFiles& files) {
-  OutputSet outputs;
-  outputs.add(dir / "cameras.txt", files.cameras);
-  outputs.add(dir / "images.txt", files.images);
-  outputs.add(dir / "points3D.txt", files.points3D);
-  outputs.commit();
-}
-
 // Every output checked before any work (the frames' folders made first: a cluster's shards start
 // on an empty volume). The folders this run makes are in `madeFolders`, removed again, when still
 // empty, if it is refused or interrupted.
@@ -156,14 +75,19 @@ void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames
   checkAovOutput(aovs, o.out, "--out");
   checkOutputPath(manifest, OutputKind::JsonLines, "--manifest");
   checkNotInput(manifest, "--manifest", o.pathFile, "--path");
-  // Nor one of this run's frame camera files (f_0002.camera.json), which the manifest's lines would be
-  // appended to.
-  if (manifest.extension() == ".json")
-    for (const int f : frames)
-      if (frameCameraPath(formatFramePath(o.out, f)).lexically_normal() == manifest.lexically_normal())
-        throw InputError(cat("--manifest ", manifest.string(), ": is frame ", f, "'s camera file; give another name"));
+  // Nor one of the range's frame camera files (f_0002.camera.json), which the manifest's lines would
+  // be appended to; nor may the COLMAP model's folder be a frame's file or the manifest.
+  const std::string cameraPattern = frameCameraPath(o.out).string();
+  if (const std::optional<int> f = frameNamedBy(cameraPattern, manifest); f && inRange(range, *f))
+    throw InputError(cat("--manifest ", manifest.string(), ": is frame ", *f, "'s camera file; give another name"));
   checkAppendable(manifest, "--manifest");
   if (!o.colmapOut.empty()) {
+    for (const auto& [pattern, what] : {std::pair{o.out, "image"}, std::pair{cameraPattern, "camera file"}})
+      if (const std::optional<int> f = frameNamedBy(pattern, o.colmapOut); f && inRange(range, *f))
+        throw InputError(cat("--colmap-out ", o.colmapOut, ": is frame ", *f, "'s ", what, " (--out ", o.out,
+                             "); give the model a folder of its own"));
+    if (fs::absolute(o.colmapOut).lexically_normal() == fs::absolute(manifest).lexically_normal())
+      throw InputError(cat("--colmap-out ", o.colmapOut, ": is the manifest; give the model a folder of its own"));
     madeFolders.createFolders(o.colmapOut);
     checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
   }
@@ -274,14 +198,17 @@ int runCapture(const CaptureOptions& o) {
   checkCaptureOutputs(o, frames, range, manifest, aovs, madeFolders);
   // The frames already done, for --skip-existing: those with a line in the manifest.
   const std::set<std::string> framesInManifest = o.skipExisting ? manifestFiles(manifest) : std::set<std::string>{};
-  // Every frame's camera checked for what COLMAP can hold before any work; written before the
-  // first frame.
-  const std::optional<ColmapFiles> colmapFiles =
-      o.colmapOut.empty() ? std::nullopt : std::optional<ColmapFiles>(colmapModel(o, cameras, scene, range));
+  // Every frame's camera checked for what COLMAP can hold before any work, the model streamed
+  // into temporary files; they appear before the first frame (whole: io/AtomicFile.h).
+  OutputSet colmapModel;
+  if (!o.colmapOut.empty()) {
+    ProgressReporter modelProgress("capture: --colmap-out", "frames", o.quiet);
+    writeColmapModel(o, cameras, scene, range, o.colmapOut, colmapModel, modelProgress);
+  }
 
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
   Renderer renderer(scene);
-  if (colmapFiles) writeColmapModel(o.colmapOut, *colmapFiles);
+  colmapModel.commit();
 
   // One line a frame where nobody watches a bar (a cluster job's log), unless
   // LENSLAB_PROGRESS_SECONDS asks for fewer.

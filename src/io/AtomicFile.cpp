@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cerrno>
 #include <random>
+#include <stdexcept>
 #include <system_error>
 
 #include <fcntl.h>
@@ -96,6 +97,46 @@ void OutputSet::createFolders(const fs::path& folder) {
       folderHandles_.push_back(removeOnInterrupt(*p, RemovalKind::Folder));
     }
   }
+}
+
+namespace {
+
+constexpr std::size_t kStreamBufferBytes = std::size_t{1} << 20;
+
+}  // namespace
+
+StreamedFile::StreamedFile(OutputSet& set, const fs::path& target) : target_(target) {
+  const fs::path temporary = set.addStreamed(target);
+  fd_ = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
+    const int error = errno;
+    if (error == ENOENT)
+      throw InputError(cat(target.string(), ": the folder ", folderOf(target).string(), " does not exist"));
+    throw cannotWrite(target, error);
+  }
+  buffer_.reserve(kStreamBufferBytes);
+}
+
+StreamedFile::~StreamedFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void StreamedFile::write(std::string_view bytes) {
+  if (fd_ < 0) throw std::logic_error("StreamedFile::write after close");
+  buffer_.append(bytes);
+  if (buffer_.size() >= kStreamBufferBytes) flush();
+}
+
+void StreamedFile::flush() {
+  if (const int error = writeAll(fd_, buffer_); error != 0) throw cannotWrite(target_, error);
+  buffer_.clear();
+}
+
+void StreamedFile::close() {
+  flush();
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) throw cannotWrite(target_, errno);
 }
 
 void OutputSet::add(const fs::path& target, std::string_view bytes) {

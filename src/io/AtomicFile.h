@@ -14,6 +14,7 @@
 // io/Interrupt.h) removes the same, and waits for a commit() under way to finish.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -56,6 +57,27 @@ class OutputSet {
   std::vector<std::filesystem::path> createdFolders_;  // outermost first
   std::vector<std::uint64_t> folderHandles_;           // the same in io/Interrupt.h's list
   bool committed_ = false;
+};
+
+// A file of an OutputSet that lenslab writes a piece at a time (a COLMAP model of millions of
+// frames): memory holds a buffer of it, never the whole. Opened as add() opens its file; every
+// write(2) and the close(2) checked as add()'s are; its data fsync'ed by the set's commit().
+class StreamedFile {
+ public:
+  StreamedFile(OutputSet& set, const std::filesystem::path& target);
+  ~StreamedFile();  // closes the descriptor: the set removes the file unless it is committed
+  StreamedFile(const StreamedFile&) = delete;
+  StreamedFile& operator=(const StreamedFile&) = delete;
+  // Appends `bytes` (buffered). Throws InputError naming the target and the reason.
+  void write(std::string_view bytes);
+  // Writes what is buffered and closes; call before the set's commit(). Throws as write().
+  void close();
+
+ private:
+  void flush();
+  std::filesystem::path target_;
+  int fd_ = -1;
+  std::string buffer_;
 };
 
 // The set of one file: writes `bytes` to `target` atomically (checked, fsync'ed, renamed).

@@ -60,32 +60,44 @@ ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_
   return image;
 }
 
-std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras) {
-  std::string text =
-      cat("# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n",
-          "# Number of cameras: ", cameras.size(), "\n");
-  for (const ColmapCamera& c : cameras) {
-    text += cat(c.id, " ", c.model, " ", c.widthPx, " ", c.heightPx);
-    for (const double p : c.params) {
-      text += ' ';
-      text += shortest(p);
-    }
-    text += "\n";
+std::string colmapCamerasHeader() {
+  return "# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n";
+}
+
+std::string colmapCameraLine(const ColmapCamera& c) {
+  std::string text = cat(c.id, " ", c.model, " ", c.widthPx, " ", c.heightPx);
+  for (const double p : c.params) {
+    text += ' ';
+    text += shortest(p);
   }
+  text += "\n";
   return text;
 }
 
+std::string colmapCamerasFooter(std::size_t count) { return cat("# Number of cameras: ", count, "\n"); }
+
+std::string colmapImagesHeader(std::size_t count) {
+  return cat("# Image list with two lines of data per image:\n",
+             "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n", "#   POINTS2D[] as (X, Y, POINT3D_ID)\n",
+             "# Number of images: ", count, ", mean observations per image: 0\n");
+}
+
+std::string colmapImageLines(const ColmapImage& i) {
+  const glm::dquat& q = i.rotation;
+  return cat(i.id, " ", shortest(q.w), " ", shortest(q.x), " ", shortest(q.y), " ", shortest(q.z), " ",
+             shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ", i.cameraId,
+             " ", i.name, "\n\n");  // and its POINTS2D line, empty
+}
+
+std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras) {
+  std::string text = colmapCamerasHeader();
+  for (const ColmapCamera& c : cameras) text += colmapCameraLine(c);
+  return text + colmapCamerasFooter(cameras.size());
+}
+
 std::string colmapImagesText(const std::vector<ColmapImage>& images) {
-  std::string text =
-      cat("# Image list with two lines of data per image:\n",
-          "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n", "#   POINTS2D[] as (X, Y, POINT3D_ID)\n",
-          "# Number of images: ", images.size(), ", mean observations per image: 0\n");
-  for (const ColmapImage& i : images) {
-    const glm::dquat& q = i.rotation;
-    text += cat(i.id, " ", shortest(q.w), " ", shortest(q.x), " ", shortest(q.y), " ", shortest(q.z), " ",
-                shortest(i.translation.x), " ", shortest(i.translation.y), " ", shortest(i.translation.z), " ",
-                i.cameraId, " ", i.name, "\n\n");  // and its POINTS2D line, empty
-  }
+  std::string text = colmapImagesHeader(images.size());
+  for (const ColmapImage& i : images) text += colmapImageLines(i);
   return text;
 }
 

@@ -21,6 +21,16 @@ ColmapImage colmapImageOf(const OpenCvPose& pose, std::uint32_t id, std::uint32_
 
 // The files' text, with COLMAP's header comments; numbers in the shortest form that reads back
 // to the same double.
+// The text files a line (cameras) or two (images) at a time, for a model written as it is made:
+// cameras.txt is its header, a line per camera and a footer with the count (a comment, which
+// COLMAP's readers skip wherever it is: the count is known only at the end); images.txt's header
+// holds the count, known before the first image.
+std::string colmapCamerasHeader();
+std::string colmapCameraLine(const ColmapCamera& camera);
+std::string colmapCamerasFooter(std::size_t count);
+std::string colmapImagesHeader(std::size_t count);
+std::string colmapImageLines(const ColmapImage& image);
+// Whole files: the header, the lines, the footer.
 std::string colmapCamerasText(const std::vector<ColmapCamera>& cameras);
 std::string colmapImagesText(const std::vector<ColmapImage>& images);
 std::string colmapPoints3DText();  // no points: the poses are known, a tool triangulates them

@@ -80,6 +80,32 @@ std::string formatFramePath(const std::string& pattern, int frame) {
   return out;
 }
 
+std::optional<int> frameNamedBy(const std::string& pattern, const std::filesystem::path& path) {
+  const auto normal = [](const std::filesystem::path& p) { return std::filesystem::absolute(p).lexically_normal(); };
+  // Normalising leaves the conversion as it is: it holds no separator and no dot.
+  const std::string normalPattern = normal(pattern).string(), text = normal(path).string();
+  const Conversion c = findConversion(normalPattern, "--out");
+  const std::string before = formatFramePath(normalPattern.substr(0, c.begin) + "%d", 0),
+                    after = formatFramePath("%d" + normalPattern.substr(c.end), 0);
+  // The literal text either side of the number ("0" stands for it in both).
+  const std::string prefix = before.substr(0, before.size() - 1), suffix = after.substr(1);
+  if (text.size() <= prefix.size() + suffix.size() || text.compare(0, prefix.size(), prefix) != 0 ||
+      text.compare(text.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return std::nullopt;
+  std::string digits = text.substr(prefix.size(), text.size() - prefix.size() - suffix.size());
+  digits.erase(0, digits.find_first_not_of(' '));
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
+  const int frame = std::stoi(digits);
+  // Only the number's own spelling (its width and padding) names that frame.
+  if (formatFramePath(normalPattern, frame) != text) return std::nullopt;
+  return frame;
+}
+
+bool inRange(FrameRange range, int frame) {
+  return frame >= range.first && frame <= range.last && (frame - range.first) % range.step == 0;
+}
+
 FrameRange parseFrameRange(const std::string& text, int frameCount) {
   const std::string usage =
       cat("--frames ", text, ": give A:B (inclusive), A:, :B or one frame N, within 0:", frameCount - 1,

@@ -12,6 +12,7 @@
 // render identical frames.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ namespace lenslab {
 // Throws InputError naming `option` unless the pattern holds exactly one integer conversion.
 void checkFramePattern(const std::string& pattern, const std::string& option);
 std::string formatFramePath(const std::string& pattern, int frame);
+
+// The frame number whose file `pattern` names `path` (both taken as absolute, lexically normal
+// paths), or nothing: a check that an output (a folder, a manifest) is not one of the frames' files
+// without formatting every frame's name.
+std::optional<int> frameNamedBy(const std::string& pattern, const std::filesystem::path& path);
 
 struct FrameRange {
   int first = 0;
@@ -40,6 +46,8 @@ Shard parseShard(const std::string& text);
 // The frames of `range` that `shard` renders, in order: the I-th, (I+N)-th, … of the range's
 // frames (first, first + step, … ≤ last).
 std::vector<int> shardFrames(FrameRange range, Shard shard);
+// Whether `frame` is one of the range's frames (first, first + step, … ≤ last).
+bool inRange(FrameRange range, int frame);
 
 // The seed of one frame: a hash of the run's seed and the frame number (never the shard).
 std::uint32_t frameSeed(std::uint32_t seed, int frame);

@@ -126,6 +126,32 @@ if one_line_error "name with a space" "holds a space" -- capture "${common[@]}" 
   if [ -z "$(ls "$work/spaced" 2>/dev/null)" ] && [ ! -e "$work/spaced-sparse/cameras.txt" ]; then pass; else fail "name with a space: files written"; fi
 fi
 
+# --- the model's folder may not be a frame's file or the manifest: refused before any frame ---
+for target in "$work/clash/frame_0002.png" "$work/clash/frame_0001.camera.json" "$work/clash/manifest.jsonl"; do
+  if one_line_error "--colmap-out $(basename "$target")" "give the model a folder of its own" -- capture "${common[@]}" \
+       --frames 0:3 --out "$work/clash/frame_%04d.png" --colmap-out "$target" -q; then
+    if [ ! -e "$work/clash/frame_0000.png" ] && [ ! -e "$target" ]; then pass; else fail "--colmap-out $target: files written"; fi
+  fi
+done
+
+# --- a long path: the model is written as it is made (memory does not grow with the frames), one
+# camera shared by the frames that hold the intrinsics, a camera a frame where a zoom changes them ---
+cat >"$work/long.json" <<'EOF'
+{"fps": 24, "frames": 60000, "keys": [
+  {"time": 0, "eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 35},
+  {"time": 1000, "eye": [0, 1, 3], "target": [0, 0.55, -2], "focal_length_mm": 50}]}
+EOF
+if "$lenslab" capture --path "$work/long.json" --width 32 --shard 0/60000 --out "$work/long/f_%05d.png" \
+     --colmap-out "$work/long-sparse" -q 2>"$work/err"; then
+  # Frames 0 to 23 999 zoom (each its own focal length); from 24 000 on they hold 50 mm: one camera.
+  check grep -qx "# Number of cameras: 24001" "$work/long-sparse/cameras.txt"
+  check grep -q "^# Number of images: 60000," "$work/long-sparse/images.txt"
+  check test "$(awk 'NF == 10 && $1 == 60000 {print $9}' "$work/long-sparse/images.txt")" = 24001
+  check test "$(awk 'NF == 10 && $1 == 30000 {print $9}' "$work/long-sparse/images.txt")" = 24001
+else
+  fail "capture --colmap-out of 60000 frames: $(cat "$work/err")"
+fi
+
 # --- bad models and options: one line, no image ---
 mkdir -p "$work/bad/fisheye" "$work/bad/binary" "$work/bad/nopoints"
 printf '# fisheye\n1 OPENCV_FISHEYE 64 48 50 50 32 24 0.1 0 0 0\n' >"$work/bad/fisheye/cameras.txt"

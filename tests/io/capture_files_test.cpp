@@ -101,6 +101,27 @@ TEST(FrameSequence, ShardsPartitionTheRangeInterleaved) {
   for (const char* bad : {"5/5", "1", "-1/3", "1/0", "a/b", "1/2/3"}) EXPECT_THROW(parseShard(bad), InputError) << bad;
 }
 
+TEST(FrameSequence, APathNamesTheFrameWhoseFileItIs) {
+  EXPECT_EQ(frameNamedBy("out/frame_%04d.png", "out/frame_0012.png"), 12);
+  EXPECT_EQ(frameNamedBy("out/frame_%04d.png", "./out/../out/frame_0012.png"), 12);  // the same file
+  EXPECT_EQ(frameNamedBy("out/frame_%04d.png", std::filesystem::absolute("out/frame_0000.png")), 0);
+  EXPECT_EQ(frameNamedBy("out/%d/image.exr", "out/7/image.exr"), 7);
+  EXPECT_EQ(frameNamedBy("out/f%5d.png", "out/f   42.png"), 42);
+  EXPECT_EQ(frameNamedBy("out/100%%_%d.png", "out/100%_3.png"), 3);
+  // Another spelling of the number is another file; so are other names.
+  EXPECT_FALSE(frameNamedBy("out/frame_%04d.png", "out/frame_12.png"));
+  EXPECT_FALSE(frameNamedBy("out/frame_%d.png", "out/frame_0012.png"));
+  EXPECT_FALSE(frameNamedBy("out/frame_%04d.png", "out/frame_00a2.png"));
+  EXPECT_FALSE(frameNamedBy("out/frame_%04d.png", "out/frame_.png"));
+  EXPECT_FALSE(frameNamedBy("out/frame_%04d.png", "other/frame_0012.png"));
+  EXPECT_FALSE(frameNamedBy("out/frame_%04d.png", "out/frame_0012.png.bak"));
+  // In the range, step included.
+  EXPECT_TRUE(inRange(FrameRange{4, 20, 4}, 12));
+  EXPECT_FALSE(inRange(FrameRange{4, 20, 4}, 14));
+  EXPECT_FALSE(inRange(FrameRange{4, 20, 4}, 24));
+  EXPECT_FALSE(inRange(FrameRange{4, 20, 4}, 0));
+}
+
 TEST(FrameSequence, SeedsDependOnSeedAndFrameOnly) {
   std::set<std::uint32_t> seeds;
   for (int f = 0; f < 10000; ++f) seeds.insert(frameSeed(1, f));

@@ -15,7 +15,8 @@ namespace lenslab {
 namespace {
 
 TEST(CentreRays, TheTableTurnedToAPixelIsTheBundleTracedThere) {
-  const std::filesystem::path path = std::filesystem::path(LENSLAB_UNIT_ASSET_DIR) / "lenses" / "double-gauss-50mm.lens";
+  const std::filesystem::path path =
+      std::filesystem::path(LENSLAB_UNIT_ASSET_DIR) / "lenses" / "double-gauss-50mm.lens";
   const auto lens =
       std::make_shared<LensPrescription>(parseLensPrescription(readTextFile(path, "lens file"), path.string()));
   LensCameraSettings settings;
@@ -32,8 +33,8 @@ TEST(CentreRays, TheTableTurnedToAPixelIsTheBundleTracedThere) {
     const LensFitBundle direct =
         traceLensFitBundle(camera.pupil(1), camera.filmMmOf(pixel, width, height), camera.entrancePupilMm(), 48);
     // The direct line in the world (pose: eye at the origin, looking down −z, 1 mm = 1e-3).
-    const LensCamera::WorldRay line = camera.toWorld(
-        glm::dvec3(direct.meanA, camera.entrancePupilMm()), glm::dvec3(direct.meanB, -1.0), direct.share);
+    const LensCamera::WorldRay line = camera.toWorld(glm::dvec3(direct.meanA, camera.entrancePupilMm()),
+                                                     glm::dvec3(direct.meanB, -1.0), direct.share);
     const glm::dvec2 slopeTable = glm::dvec2(table->direction) / -table->direction.z;
     const glm::dvec2 slopeDirect = glm::dvec2(line.direction) / -line.direction.z;
     worstSlope = std::max(worstSlope, glm::length(slopeTable - slopeDirect));

@@ -90,7 +90,8 @@ EdgeOffsets edgeOffsets(const std::vector<float>& instance, const Image& image) 
 
 TEST(LensGroundTruth, AovsFollowTheTracedLensAndAlphaAgreesBetweenTheRenderers) {
   LENSLAB_REQUIRE_GL();
-  const std::filesystem::path path = std::filesystem::path(LENSLAB_TEST_ASSET_DIR) / "lenses" / "double-gauss-50mm.lens";
+  const std::filesystem::path path =
+      std::filesystem::path(LENSLAB_TEST_ASSET_DIR) / "lenses" / "double-gauss-50mm.lens";
   const auto lens =
       std::make_shared<LensPrescription>(parseLensPrescription(readTextFile(path, "lens file"), path.string()));
 
@@ -137,8 +138,8 @@ TEST(LensGroundTruth, AovsFollowTheTracedLensAndAlphaAgreesBetweenTheRenderers) 
   const std::vector<float> instance = caster.aovImages(frame, selection).instance;
   const Image traced = caster.render(frame, RaycastOptions{256, 5});
   Renderer renderer(scene);
-  const Image raster =
-      renderer.render(fitted, makeFramePlan(scene, fitted, size, PlanOptions{AperturePattern::Sobol, 256, 256, 1}), size);
+  const Image raster = renderer.render(
+      fitted, makeFramePlan(scene, fitted, size, PlanOptions{AperturePattern::Sobol, 256, 256, 1}), size);
 
   const EdgeOffsets tracedEdges = edgeOffsets(instance, traced), rasterEdges = edgeOffsets(instance, raster);
   Image tracedAlpha = traced, rasterAlpha = raster;

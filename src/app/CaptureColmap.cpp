@@ -1,0 +1,101 @@
+#include "app/CaptureColmap.h"
+
+#include "camera/Intrinsics.h"
+#include "core/Text.h"
+#include "io/ColmapExport.h"
+#include "scene/SceneAnimation.h"
+
+#include <iostream>
+#include <set>
+#include <unordered_map>
+
+namespace lenslab {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The folder COLMAP's NAMEs are relative to: --out's leading folders up to the first that holds
+// the frame number (give it to COLMAP as --image_path).
+fs::path framesFolder(const std::string& pattern) {
+  fs::path folder;
+  for (const fs::path& part : fs::path(pattern).parent_path()) {
+    if (part.string().find('%') != std::string::npos) break;
+    folder /= part;
+  }
+  return folder;
+}
+
+// What a pinhole model cannot hold. Blur (depth of field, axial colour, field curvature) is
+// centred where the pinhole at the lens centre projects, so the geometry stays right.
+void noteLeftOut(const Camera& camera, std::set<std::string>& warnings) {
+  const LensEffects& e = camera.lens.effects;
+  if (!camera.lens.isPinhole())
+    warnings.insert(
+        "the depth of field (aperture and focus) is not in the model: COLMAP's cameras are pinholes "
+        "(each blur is centred where the model projects)");
+  if (e.chromatic.hasAxial())
+    warnings.insert("the axial colour is not in the model (it blurs, centred where the model projects)");
+  if (!e.fieldCurvature.isZero())
+    warnings.insert("the field curvature is not in the model (it blurs, centred where the model projects)");
+  if (e.chromatic.hasLateral())
+    warnings.insert(
+        "the lateral colour is not in the model: it holds green's geometry, while red's and blue's "
+        "images are magnified about the principal point");
+}
+
+}  // namespace
+
+void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range,
+                      const fs::path& dir, OutputSet& outputs, ProgressReporter& progress) {
+  const fs::path base = framesFolder(o.out);
+  const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
+  StreamedFile cameras(outputs, dir / "cameras.txt"), images(outputs, dir / "images.txt");
+  const std::int64_t frameCount = (static_cast<std::int64_t>(range.last) - range.first) / range.step + 1;
+  cameras.write(colmapCamerasHeader());
+  images.write(colmapImagesHeader(static_cast<std::size_t>(frameCount)));
+  std::unordered_map<std::string, std::uint32_t> cameraIdOfParams;  // at most kColmapCamerasShared
+  std::uint32_t cameraCount = 0, lastId = 0;
+  std::string lastParams;
+  std::set<std::string> warnings;
+  const std::string imageWhere = cat("--colmap-out: --out ", o.out);  // the frames' names come from --out
+  std::int64_t done = 0;
+  for (std::int64_t frame64 = range.first; frame64 <= range.last; frame64 += range.step) {
+    const int frame = static_cast<int>(frame64);
+    // The camera file's K exactly (toIntrinsicsCameraJson computes it so), without reading the
+    // file back: that checks the lens for folds, ~30 ms a frame, which the frame's own render does.
+    if (frameCameras.followsNode() && !scene.animation.empty()) poseScene(scene, frameCameras.timeOf(frame));
+    const FrameKey f = frameKey(frameCameras, scene, o, frame);
+    const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
+    ColmapCamera camera =
+        colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
+    const std::string params = colmapCameraLine(camera);  // with id 0: the key of its intrinsics
+    // The previous frame's camera first: a path holding its intrinsics shares one however many
+    // distinct cameras came before.
+    if (params != lastParams) {
+      lastParams = params;
+      if (const auto it = cameraIdOfParams.find(params); it != cameraIdOfParams.end()) {
+        lastId = it->second;
+      } else {
+        lastId = camera.id = ++cameraCount;
+        if (cameraIdOfParams.size() < kColmapCamerasShared) cameraIdOfParams.emplace(params, lastId);
+        cameras.write(colmapCameraLine(camera));
+      }
+    }
+    const std::uint32_t cameraId = lastId;
+    const fs::path file = formatFramePath(o.out, frame);
+    const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
+    images.write(colmapImageLines(
+        colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, cameraId, name, imageWhere)));
+    noteLeftOut(f.camera, warnings);
+    if (++done % 1024 == 0) progress.update(done, frameCount);
+  }
+  cameras.write(colmapCamerasFooter(cameraCount));
+  cameras.close();
+  images.close();
+  outputs.add(dir / "points3D.txt", colmapPoints3DText());
+  progress.finish();
+  if (!o.quiet)
+    for (const std::string& w : warnings) std::cerr << "lenslab: warning: --colmap-out: " << w << "\n";
+}
+
+}  // namespace lenslab

@@ -1,0 +1,29 @@
+#pragma once
+// capture --colmap-out: the COLMAP text model of a capture's frames (cameras.txt, images.txt,
+// points3D.txt), written as it is made so that memory does not grow with the frame count.
+#include "app/FrameCameras.h"
+#include "io/AtomicFile.h"
+#include "io/FrameSequence.h"
+#include "io/Progress.h"
+#include "scene/Scene.h"
+
+namespace lenslab {
+
+// The cameras of every frame of `range` (its step included) as a COLMAP text model in `dir`,
+// written into temporary files of `outputs` (they appear at its commit(), before the first frame):
+// whichever frames this shard renders, the model is the whole range's, a pure function of the
+// frames' cameras (the path's keys, or the scene's camera over its animation), the range and the
+// size options, so every shard writes the same bytes. Identical intrinsics share one CAMERA_ID
+// (among the first kColmapCamerasShared distinct ones and the previous frame's; past them each
+// new one has its own);
+// IMAGE_ID is the frame number + 1 (stable whatever the range). Throws InputError for a lens no
+// COLMAP model holds; warns once for each effect a pinhole model leaves out. A glTF camera
+// following its node poses `scene` at each frame's time. `progress` counts the frames.
+void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range,
+                      const std::filesystem::path& dir, OutputSet& outputs, ProgressReporter& progress);
+
+// How many distinct cameras the model remembers to share their CAMERA_ID: memory stays bounded
+// for a path whose intrinsics change every frame (a zoom), which gets a camera a frame.
+constexpr std::size_t kColmapCamerasShared = 4096;
+
+}  // namespace lenslab

@@ -50,7 +50,15 @@ std::string readInputFile(const fs::path& file, const std::string& what, std::ui
 }
 
 std::string readTextFile(const fs::path& file, const std::string& what) {
-  return readInputFile(file, what, kMaxTextFileBytes);
+  std::string text = readInputFile(file, what, kMaxTextFileBytes);
+  // What editors write: a UTF-8 byte-order mark is no part of the text (Windows' Notepad adds one);
+  // UTF-16 (Notepad's "Unicode") is another encoding, named so that the user can save it as UTF-8.
+  // Line ends, LF or CRLF, are each parser's: every one reads both.
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
+    throw InputError(cat(file.string(), ": the ", what,
+                         " is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8"));
+  return text;
 }
 
 }  // namespace lenslab

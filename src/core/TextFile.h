@@ -21,7 +21,10 @@ constexpr std::uintmax_t kMaxGltfFileBytes = (std::uintmax_t{1} << 32) - 1;
 // than the limit (named), or unreadable.
 std::string readInputFile(const std::filesystem::path& file, const std::string& what, std::uintmax_t maxBytes);
 
-// readInputFile with kMaxTextFileBytes.
+// readInputFile with kMaxTextFileBytes, as text: a leading UTF-8 byte-order mark is dropped (editors
+// write one), UTF-16 is refused by name (save it as UTF-8). LF and CRLF line ends are left to the
+// parsers, which read both. (A glTF file is not read through here: the glTF spec forbids a BOM,
+// and the loader refuses one by name.)
 std::string readTextFile(const std::filesystem::path& file, const std::string& what);
 
 }  // namespace lenslab

@@ -88,6 +88,9 @@ double fieldAngleAt(const Setup& s, double h, double wavelengthNm) {
     const double mid = 0.5 * (lo + hi);
     (chiefRay(s, mid, wavelengthNm) ? lo : hi) = mid;
   }
+  if (lo < 1e-3)  // not even a micrometre: no sensor would do
+    throw InputError(cat(s.lens.source, ": no chief ray through the stop's centre reaches the film off the axis; ",
+                         "the lens covers no field (check each row's thickness and clear aperture)"));
   throw InputError(cat(s.lens.source, ": no chief ray reaches the film ", mmText(h),
                        " off the axis; the lens covers a circle of ", mmText(lo),
                        " radius there, so give a --sensor whose diagonal is at most ", mmText(2.0 * lo)));

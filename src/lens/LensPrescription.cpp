@@ -1,6 +1,7 @@
 #include "lens/LensPrescription.h"
 
 #include "core/Error.h"
+#include "core/NumberInput.h"
 #include "core/ParseNumber.h"
 #include "core/Text.h"
 
@@ -40,6 +41,15 @@ class RowReader {
     if (!value)
       refuse(column,
              cat("'", text, "' is not a number", column == 0 ? " (give mm, 0 for the stop, inf for a plane)" : ""));
+    // Lengths through the number layer, in a stated range: a lens is millimetres to metres, and
+    // 1e300 mm would overflow every sum along the axis.
+    if (column == 0 || column == 1 || column == 3) {
+      const double max = column == 0 ? kMaxLensRadiusMm : kMaxLensLengthMm;
+      // (A negative thickness or aperture gets its own message below.)
+      const NumberRange range{column == 0 ? -max : -INFINITY, max, "millimetres"};
+      if (const std::optional<std::string> problem = numberProblem(*value, range, text))
+        refuse(column, cat(*problem, column == 0 ? " (0 for the stop, inf for a plane)" : ""));
+    }
     return *value;
   }
 
@@ -122,6 +132,10 @@ LensPrescription parseLensPrescription(std::string_view text, const std::string&
     const std::vector<std::string_view> f = fields(line);
     if (f.empty()) continue;
     const int row = static_cast<int>(lens.surfaces.size()) + 1;
+    if (row > kMaxLensSurfaces)
+      throw InputError(cat(source, ": row ", row, " (line ", lineNumber, "): more than ", kMaxLensSurfaces,
+                           " surface rows; lenslab traces at most ", kMaxLensSurfaces,
+                           " (a camera lens has fewer than 60)"));
     const RowReader r(source, lineNumber, row);
     if (f.size() < 4 || f.size() > 5)
       throw InputError(cat(source, ": row ", row, " (line ", lineNumber, ") has ", f.size(),

@@ -50,6 +50,14 @@ struct LensPrescription {
   double lengthMm() const { return surfaces.empty() ? 0.0 : vertexMm(surfaces.size() - 1); }
 };
 
+// What a file may hold: thickness and aperture up to 10 m (a camera lens is millimetres long; past
+// this the sums along the axis lose their digits), |radius| up to 10 km (a nearly flat surface;
+// `inf` is a plane), and this many surface rows (the analysis traces every row for every ray: a
+// 1000-row file took minutes).
+constexpr double kMaxLensLengthMm = 1e4;
+constexpr double kMaxLensRadiusMm = 1e7;
+constexpr int kMaxLensSurfaces = 128;
+
 // Reads a prescription from `text` (`source` names it in messages). A bad row is refused with
 // one line naming the source, the row (its line) and the column, and what would be valid.
 LensPrescription parseLensPrescription(std::string_view text, const std::string& source);

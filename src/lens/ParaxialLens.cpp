@@ -44,6 +44,9 @@ FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDi
   FirstOrder f;
   const double length = lens.lengthMm();
   f.focalLengthMm = -1.0 / m.c;
+  if (f.focalLengthMm < 0.0)
+    throw InputError(cat(lens.source, ": the lens diverges (its focal length is ", f.focalLengthMm,
+                         " mm): it forms no real image on a film behind it; give a converging lens"));
   // A ray parallel to the axis leaves at height a with n·u = c: it meets the axis a/(−c) on.
   f.backFocalMm = -m.a / m.c;
   // And backward: the ray from the front focal point leaves parallel, c·y + d·u = 0 at y = s·u.

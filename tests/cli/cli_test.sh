@@ -210,6 +210,26 @@ expect_refusal "buffer /dev/zero" "zero.bin: is not a regular file" -- render "$
 expect_refusal "COLMAP FIFO" "cameras.txt: is not a regular file" -- render --colmap "$work/colmap-fifo" --image a.png --out "$work/out.png"
 lenslab=$real_lenslab
 
+# Text as editors save it: a UTF-8 byte-order mark and CRLF line ends read as plain UTF-8 does
+# (camera file, camera path, lens prescription, COLMAP model); UTF-16 is refused by name.
+mkdir -p "$work/enc/colmap"
+bom() { printf '\xEF\xBB\xBF'; cat "$1"; }
+crlf() { sed 's/$/\r/' "$1"; }
+bom "$src/assets/rows/camera.json" >"$work/enc/bom-camera.json"
+crlf "$src/assets/rows/camera.json" >"$work/enc/crlf-camera.json"
+bom "$src/assets/rows/dolly-zoom.json" | sed 's/$/\r/' >"$work/enc/bom-crlf-path.json"
+bom "$src/assets/lenses/double-gauss-50mm.lens" | sed 's/$/\r/' >"$work/enc/bom-crlf.lens"
+printf '\xFF\xFE{\0}\0' >"$work/enc/utf16-camera.json"
+"$lenslab" capture --path "$src/assets/rows/dolly-zoom.json" --frames 0:0 --width 32 --out "$work/enc/f/f_%d.png" \
+  --colmap-out "$work/enc/model" -q || fail "capture for the COLMAP encodings"
+for f in cameras images points3D; do bom "$work/enc/model/$f.txt" | sed 's/$/\r/' >"$work/enc/colmap/$f.txt"; done
+check "$lenslab" render --camera "$work/enc/bom-camera.json" --width 32 --out "$work/enc/bom.png" -q
+check "$lenslab" render --camera "$work/enc/crlf-camera.json" --width 32 --out "$work/enc/crlf.png" -q
+check "$lenslab" capture --path "$work/enc/bom-crlf-path.json" --frames 0:0 --width 32 --out "$work/enc/p/f_%d.png" -q
+check bash -c "\"$lenslab\" lens \"$work/enc/bom-crlf.lens\" >/dev/null"
+check "$lenslab" render --colmap "$work/enc/colmap" --image f_0.png --width 32 --out "$work/enc/colmap.png" -q
+expect_refusal "UTF-16 camera file" "utf16-camera.json: the camera file is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8" -- render --camera "$work/enc/utf16-camera.json" --out "$work/out.png"
+
 # Lens effects: the passes that ran are listed, a zero-strength effect adds none, the ray caster
 # takes the same camera, bad lens input is refused in one line.
 if "$lenslab" render "$src/assets/grid/grid.gltf" --camera "$src/assets/grid/camera-distortion.json" --width 160 \

@@ -75,6 +75,32 @@ TEST(LensPrescription, BadRowsAreRefusedNamingRowLineAndColumn) {
   EXPECT_NE(refusal("0 2 0 10 3\n").find("column 5 (abbe)"), std::string::npos);
 }
 
+// Lengths in a stated range (a 1e300 thickness overflowed every sum along the axis), at most
+// kMaxLensSurfaces rows (a thousand took minutes), and a lens that forms no real image named as such.
+TEST(LensPrescription, LengthsRowCountAndPowerAreBounded) {
+  const auto refusal = [](const std::string& text) {
+    return refusalOf([&] { parseLensPrescription(text, "l.lens"); });
+  };
+  EXPECT_EQ(
+      refusal("50 1e300 1.5 20\n-50 5 1 20\n0 0 0 10\n"),
+      "l.lens: row 1 (line 1), column 2 (thickness_mm): 1e300 is out of range; give a finite value of at most 10000");
+  EXPECT_NE(refusal("1e9 5 1.5 20\n-50 5 1 20\n0 0 0 10\n").find("column 1 (radius_mm): 1e9 is out of range"),
+            std::string::npos);
+  EXPECT_NE(refusal("50 5 1.5 2e4\n-50 5 1 20\n0 0 0 10\n").find("column 4 (aperture_mm): 2e4 is out of range"),
+            std::string::npos);
+  EXPECT_EQ(refusal("inf 5 1.5 20\n-1e7 5 1 20\n0 0 0 10\n"), "accepted");  // a plane and a nearly flat surface
+  std::string rows;
+  for (int i = 0; i < kMaxLensSurfaces - 1; ++i) rows += "inf 0.1 1 40\n";
+  EXPECT_EQ(refusal(rows + "0 0 0 10\n"), "accepted");
+  EXPECT_EQ(
+      refusal(rows + "inf 0.1 1 40\n0 0 0 10\n"),
+      "l.lens: row 129 (line 129): more than 128 surface rows; lenslab traces at most 128 (a camera lens has fewer "
+      "than 60)");
+  const LensPrescription diverging = parseLensPrescription("-50 5 1.5 20\n50 5 1 20\n0 0 0 10\n", "d.lens");
+  EXPECT_NE(refusalOf([&] { firstOrder(diverging); }).find("d.lens: the lens diverges (its focal length is -49."),
+            std::string::npos);
+}
+
 // A file whose second column is each surface's distance from the one before (a shifted column)
 // gives its first glass no thickness; surfaces that cross within the aperture are refused too.
 TEST(LensPrescription, ElementsOfNoThicknessOrCrossingSurfacesAreRefused) {

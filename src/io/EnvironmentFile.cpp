@@ -103,6 +103,28 @@ void checkEnvironmentExtension(const fs::path& path) {
         path.string(), ": an environment is a .hdr or .exr file (equirectangular, linear radiance), not '", ext, "'"));
 }
 
+// What image format `bytes` hold, by their first bytes ("" when none lenslab names).
+std::string imageFormatOf(std::string_view bytes) {
+  const std::pair<std::string_view, const char*> formats[] = {{"#?", "Radiance HDR"}, {"\x76\x2f\x31\x01", "OpenEXR"},
+                                                              {"\x89PNG", "PNG"},     {"\xFF\xD8\xFF", "JPEG"},
+                                                              {"II*\0", "TIFF"},      {"MM\0*", "TIFF"},
+                                                              {"GIF8", "GIF"},        {"BM", "BMP"}};
+  for (const auto& [magic, name] : formats)
+    if (bytes.starts_with(magic)) return name;
+  return "";
+}
+
+// The file holds what its name says: a PNG renamed .hdr would be decoded as its own 8-bit sRGB
+// values and taken for linear radiance, silently.
+void checkEnvironmentContent(const fs::path& path, std::string_view bytes) {
+  const std::string expected = lowerExtension(path) == ".hdr" ? "Radiance HDR" : "OpenEXR";
+  const std::string found = imageFormatOf(bytes);
+  if (found == expected) return;
+  throw InputError(cat(path.string(), ": the file is ", found.empty() ? "not" : cat("a ", found, " image, not"),
+                       " the ", expected,
+                       " image its name says; an environment is linear radiance in a .hdr or .exr file"));
+}
+
 }  // namespace
 
 EnvironmentImage readEnvironmentImage(const fs::path& path) {
@@ -112,6 +134,7 @@ EnvironmentImage readEnvironmentImage(const fs::path& path) {
 
 EnvironmentImage decodeEnvironmentImage(const fs::path& path, const std::string& bytes) {
   checkEnvironmentExtension(path);
+  checkEnvironmentContent(path, bytes);
   // Decoded from the bytes the bounded reader read, not from the path again: what was checked is
   // what is decoded.
   OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
@@ -213,6 +236,7 @@ LoadedEnvironment loadEnvironment(const fs::path& path, const PrefilterSettings&
   // The extension first, so that a typo fails before the file is read.
   checkEnvironmentExtension(path);
   const std::string bytes = readInputFile(path, kEnvironmentWhat, kMaxEnvironmentFileBytes);
+  checkEnvironmentContent(path, bytes);  // before the cache: an entry made from it is no proof
   const std::string key = environmentCacheKey(bytes, settings);
   LoadedEnvironment loaded;
   std::optional<fs::path> entry;

@@ -28,7 +28,7 @@ for command in render raycast; do
     $command --environment "$work/negative.exr" --width 48 --out "$work/out.png" --stats "$work/out.json"
   expect_refusal "$command png" "sky.png: an environment is a .hdr or .exr file" -- \
     $command --environment "$work/sky.png" --width 48 --out "$work/out.png"
-  expect_refusal "$command broken" "broken.hdr: cannot read the environment" -- \
+  expect_refusal "$command broken" "broken.hdr: the file is not the Radiance HDR image its name says" -- \
     $command --environment "$work/broken.hdr" --width 48 --out "$work/out.png"
   expect_refusal "$command missing" "missing.hdr" -- \
     $command --environment "$work/missing.hdr" --width 48 --out "$work/out.png"

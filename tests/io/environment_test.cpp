@@ -357,9 +357,22 @@ TEST(EnvironmentFile, ReadsOnlyRegularFilesOfABoundedSizeWhoseHeaderTheBytesCanH
                                         << std::string(100, '\x02');
   std::ofstream(short_, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2048 +X 4096\n"
                                           << std::string(10, '\x02');
+  // Files that are not what their names say: a PNG (8-bit sRGB, taken for radiance it would be
+  // silently wrong), text, a Radiance image named .exr.
+  const fs::path png = scratch("png.hdr"), text = scratch("text.hdr"), radiance = scratch("radiance.exr");
+  std::ofstream(png, std::ios::binary) << "\x89PNG\r\n\x1a\n" << std::string(100, '\0');
+  std::ofstream(text, std::ios::binary) << "sky, 4 by 2\n";
+  std::ofstream(radiance, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n"
+                                            << std::string(32, '\x02');
   const std::pair<fs::path, std::string> cases[] = {
-      {fifo, "not a regular file"},   {folder, "is a folder"},      {zero, "not a regular file"},
-      {huge, "at most 16384 × 8192"}, {short_, "cannot hold them"},
+      {fifo, "not a regular file"},
+      {folder, "is a folder"},
+      {zero, "not a regular file"},
+      {huge, "at most 16384 × 8192"},
+      {short_, "cannot hold them"},
+      {png, "the file is a PNG image, not the Radiance HDR image its name says"},
+      {text, "the file is not the Radiance HDR image its name says"},
+      {radiance, "the file is a Radiance HDR image, not the OpenEXR image its name says"},
   };
   for (const auto& [path, expected] : cases)
     for (const std::string& m : messages(path)) {

@@ -771,6 +771,34 @@ TEST_F(GltfWritten, NodeLoopsAndSharedChildrenAreRefused) {
   }
 }
 
+// glTF: a node's matrix must decompose to translation, rotation and scale; its rotation must be a
+// unit quaternion. A float's rounding passes; a projection, a skew and a scaling quaternion do not.
+TEST_F(GltfWritten, TransformsTheSpecificationForbidsAreRefusedByName) {
+  const auto withNode = [&](const char* key, const nlohmann::json& value) {
+    GltfBuilder b = square();
+    b.gltf["nodes"][0][key] = value;
+    return refusal(b);
+  };
+  EXPECT_TRUE(contains(withNode("matrix", {1, 0, 0, 0.3, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
+                       "node 0: matrix has the bottom row (0.3, 0, 0, 1), not (0, 0, 0, 1)"));
+  EXPECT_TRUE(contains(withNode("matrix", {1, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
+                       "node 0: matrix skews (its columns 1 and 2 are not perpendicular"));
+  EXPECT_TRUE(contains(withNode("rotation", {0, 0, 0, 2}),
+                       "node 0: rotation (0, 0, 0, 2) has length 2; glTF requires a unit quaternion"));
+  EXPECT_TRUE(contains(withNode("rotation", {0, 0, 0, 0}), "has length 0"));
+  // What exporters write: floats of a unit quaternion and of a scaled, turned, moved matrix; a
+  // zero scale (an object shrunk away) and a mirror are TRS too.
+  for (const auto& [key, value] : std::vector<std::pair<const char*, nlohmann::json>>{
+           {"rotation", {0.0, 0.70710677, 0.0, 0.70710677}},
+           {"matrix", {0, 0, -2, 0, 0, 3, 0, 0, 0.5, 0, 0, 0, 10, 20, 30, 1}},
+           {"scale", {0, 1, 1}},
+           {"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}}) {
+    GltfBuilder b = square();
+    b.gltf["nodes"][0][key] = value;
+    EXPECT_NO_THROW(load(b)) << key << " " << value.dump();
+  }
+}
+
 TEST_F(GltfWritten, TrsAndMatrixGiveTheSameTransform) {
   const glm::dvec3 t(1, -2, 3), s(2, 3, 0.5);
   const glm::dquat q = glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3)));

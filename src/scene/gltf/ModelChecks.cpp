@@ -17,6 +17,12 @@ namespace lenslab::gltf {
 
 namespace {
 
+// How far a node's rotation may be from unit length, and a matrix from TRS (relative to its
+// largest element; the cosine between columns): floats as exporters write them pass, a matrix with
+// a projection or a skew and a quaternion that scales do not.
+constexpr double kUnitQuaternionTolerance = 1e-3;
+constexpr double kTrsMatrixTolerance = 1e-4;
+
 class ModelCheck {
  public:
   ModelCheck(const tinygltf::Model& model, const AccessorReader& reader) : m_(model), reader_(reader) {}
@@ -307,10 +313,40 @@ class ModelCheck {
         for (const double x : v)
           if (!std::isfinite(x)) refuse(where, ": ", fields[f].first, " holds a number that is not finite");
       }
-      if (n.rotation.size() == 4 && std::hypot(n.rotation[0], n.rotation[1], n.rotation[2]) == 0.0 &&
-          n.rotation[3] == 0.0)
-        refuse(where, ": rotation (0, 0, 0, 0) is not a unit quaternion");
+      if (n.rotation.size() == 4) {
+        const double length = std::sqrt(n.rotation[0] * n.rotation[0] + n.rotation[1] * n.rotation[1] +
+                                        n.rotation[2] * n.rotation[2] + n.rotation[3] * n.rotation[3]);
+        // Exporters write floats: a unit quaternion's length is 1 to about 1e-7.
+        if (!(std::abs(length - 1.0) <= kUnitQuaternionTolerance))
+          refuse(where, ": rotation (", n.rotation[0], ", ", n.rotation[1], ", ", n.rotation[2], ", ", n.rotation[3],
+                 ") has length ", length, "; glTF requires a unit quaternion (length 1 within ",
+                 kUnitQuaternionTolerance, ")");
+      }
+      if (n.matrix.size() == 16) checkTrsMatrix(n.matrix, where);
     }
+  }
+
+  // glTF: a node's matrix "MUST be decomposable to TRS": no projection (its bottom row 0, 0, 0, 1)
+  // and no skew (the columns of its upper 3 × 3 perpendicular), each within a float's rounding.
+  static void checkTrsMatrix(const std::vector<double>& m, const std::string& where) {
+    double largest = 1.0;
+    for (const double x : m) largest = std::max(largest, std::abs(x));
+    const double tolerance = kTrsMatrixTolerance * largest;
+    if (std::abs(m[3]) > tolerance || std::abs(m[7]) > tolerance || std::abs(m[11]) > tolerance ||
+        std::abs(m[15] - 1.0) > tolerance)
+      refuse(where, ": matrix has the bottom row (", m[3], ", ", m[7], ", ", m[11], ", ", m[15],
+             "), not (0, 0, 0, 1); glTF requires a matrix decomposable to translation, rotation and scale");
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j) {
+        const double* a = &m[static_cast<std::size_t>(4 * i)];
+        const double* b = &m[static_cast<std::size_t>(4 * j)];
+        const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        const double norms =
+            std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+        if (std::abs(dot) > kTrsMatrixTolerance * norms)
+          refuse(where, ": matrix skews (its columns ", i + 1, " and ", j + 1, " are not perpendicular: cos ",
+                 dot / norms, "); glTF requires a matrix decomposable to translation, rotation and scale");
+      }
   }
 
   void scenes(const std::vector<int>& parents) const {

@@ -686,6 +686,24 @@ TEST_F(GltfWritten, PlusInABufferUriIsAPlus) {
   EXPECT_THROW(loadGltf(dir_ / "plus.gltf"), InputError);  // looks for a+b.bin, which is gone
 }
 
+// A buffer file whose length is not its byteLength: in lenslab's words, naming both lengths (tinygltf
+// says "File size mismatch : … requestedBytes …").
+TEST_F(GltfWritten, ABufferFileOfAnotherLengthNamesBoth) {
+  GltfBuilder b = square();
+  const fs::path file = b.writeGltfWithExternalBuffer(dir_ / "short.gltf", "short.bin", "short.bin");
+  const std::uintmax_t bytes = fs::file_size(dir_ / "short.bin");
+  fs::resize_file(dir_ / "short.bin", bytes - 4);
+  std::string m;
+  try {
+    loadGltf(file);
+  } catch (const InputError& e) {
+    m = e.what();
+  }
+  EXPECT_TRUE(contains(m, cat("short.bin holds ", bytes - 4, " bytes, but its buffer's byteLength says ", bytes,
+                              "; give the file's own length as byteLength")))
+      << m;
+}
+
 // Positions are refused beyond ±kMaxWorldCoordinate (after the node transforms), in one line
 // naming the mesh; a vertex at 1e38 drew part of its triangle in the raster and nothing in Embree.
 TEST_F(GltfWritten, PositionsBeyondTheBoundAreRefused) {

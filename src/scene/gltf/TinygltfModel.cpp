@@ -2,9 +2,11 @@
 
 #include "core/TextFile.h"
 #include "core/Error.h"
+#include "core/Text.h"
 #include "scene/gltf/Problems.h"
 
 #include <climits>
+#include <regex>
 #include <exception>
 #include <vector>
 
@@ -41,6 +43,16 @@ bool readWholeInputFile(std::vector<unsigned char>* out, std::string* error, con
   }
 }
 
+// tinygltf's messages that a user cannot act on as they stand, in lenslab's words.
+std::string inOurWords(const std::string& reason) {
+  static const std::regex sizeMismatch(R"(File size mismatch : (.*), requestedBytes (\d+), but got (\d+))");
+  std::smatch m;
+  if (std::regex_search(reason, m, sizeMismatch))
+    return cat("buffer file ", m[1].str(), " holds ", m[3].str(), " bytes, but its buffer's byteLength says ",
+               m[2].str(), "; give the file's own length as byteLength");
+  return reason;
+}
+
 }  // namespace
 
 tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& directory,
@@ -67,7 +79,7 @@ tinygltf::Model parseModel(std::string_view input, bool binary, const fs::path& 
     // tinygltf-2.7: the reason is taken from the warnings when the error is empty; can go when
     // tinygltf is upgraded to one that puts every reason for failing in the error.
     const std::string reason = oneLine(error.empty() ? warning : error);
-    refuse(reason.empty() ? std::string("tinygltf could not read it") : reason);
+    refuse(reason.empty() ? std::string("tinygltf could not read it") : inOurWords(reason));
   }
   return model;
 }

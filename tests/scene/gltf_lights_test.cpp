@@ -71,8 +71,10 @@ TEST_F(LightsFile, LightsArePlacedByTheirNodesInTheExtensionsUnits) {
 TEST_F(LightsFile, BadLightsAreRefusedNamingTheLightAndTheField) {
   const std::pair<json, const char*> cases[] = {
       {{{"type", "area"}}, "light 0 type is \"area\"; give directional, point or spot"},
-      {{{"type", "point"}, {"intensity", -1.0}}, "light 0 intensity is -1"},
-      {{{"type", "point"}, {"intensity", 3.5e38}}, "light 0 intensity is 3.5e+38; give a number from 0 to 3.4e+38"},
+      {{{"type", "point"}, {"intensity", -1.0}},
+       "light 0 intensity: -1 is out of range; give a finite value from 0 to 3.4e+38"},
+      {{{"type", "point"}, {"intensity", 3.5e38}},
+       "light 0 intensity: 3.5e+38 is out of range; give a finite value from 0 to 3.4e+38"},
       {{{"type", "point"}, {"color", {1.0, 2.0, 0.0}}}, "light 0 color[1] is 2; give a number in [0, 1]"},
       {{{"type", "point"}, {"color", {1.0, 0.0}}}, "light 0 color has 2 numbers"},
       {{{"type", "point"}, {"range", -2.0}}, "light 0 range is -2"},

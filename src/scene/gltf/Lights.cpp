@@ -45,9 +45,8 @@ std::optional<PunctualLight> placedLight(const tinygltf::Model& model, const tin
     light.color =
         glm::vec3(static_cast<float>(l.color[0]), static_cast<float>(l.color[1]), static_cast<float>(l.color[2]));
   }
-  if (!(l.intensity >= 0.0 && l.intensity <= kMaxRadiance))
-    refuse(field("intensity"), " is ", l.intensity, "; give a number from 0 to ", kMaxRadiance,
-           " (a float's largest; lux for directional, candela for point and spot)");
+  if (const std::optional<std::string> problem = numberProblem(l.intensity, NumberRange{0.0, kMaxRadiance, ""}))
+    refuse(field("intensity"), ": ", *problem, " (a float's largest; lux for directional, candela for point and spot)");
   light.intensity = static_cast<float>(l.intensity);
   if (!(l.range >= 0.0) || !std::isfinite(l.range))
     refuse(field("range"), " is ", l.range, "; give a finite distance > 0, or leave it out for no range");

@@ -211,9 +211,9 @@ class SceneBuilder {
       if (!s.IsNumber() && found->second.Has("emissiveStrength"))
         refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength must be a number");
       // Emitted radiance is a float from here to the pixel: at most a float's largest.
-      if (!(strength >= 0.0 && strength <= kMaxRadiance))
-        refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength is ", strength,
-               "; give a number from 0 to ", kMaxRadiance, " (a float's largest)");
+      if (const std::optional<std::string> problem = numberProblem(strength, NumberRange{0.0, kMaxRadiance, ""}))
+        refuse("material ", gltfIndex, " KHR_materials_emissive_strength.emissiveStrength: ", *problem,
+               " (a float's largest)");
     }
     if (e.size() == 3)
       material.emissive = glm::vec3(static_cast<float>(e[0] * strength), static_cast<float>(e[1] * strength),

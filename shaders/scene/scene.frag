@@ -200,7 +200,11 @@ SurfacePoint point() {
   p.position = shadingPosition;
   // The shading origin is this view's eye for a perspective view; a parallel view has no eye, its
   // direction toward the viewer is `towardViewer` and the origin a point near the scene.
-  p.towardViewer = parallelView ? towardViewer : normalize(-shadingPosition);
+  // Scaled before normalize: in a scene 1e-30 across the squared length underflows a float to 0,
+  // and normalize would give NaN (the ray caster works in double).
+  vec3 eyeward = -shadingPosition;
+  float largest = max(max(abs(eyeward.x), abs(eyeward.y)), abs(eyeward.z));
+  p.towardViewer = parallelView ? towardViewer : largest > 0.0 ? normalize(eyeward / largest) : vec3(0.0, 0.0, 1.0);
   return p;
 }
 

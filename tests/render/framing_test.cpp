@@ -11,6 +11,7 @@
 #include "../common/gl_test_context.h"
 #include "plan/CameraSelection.h"
 #include "plan/FramePlan.h"
+#include "io/ImageCompare.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
 #include "scene/GltfLoader.h"
@@ -26,7 +27,7 @@ namespace {
 // a root node scaled by `rootScale` (as a model exported at the wrong unit is) and moved by
 // `rootOffset` (as a model in geographic coordinates is).
 std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, double side, double rootScale,
-                                         double rootOffset = 0.0) {
+                                         double rootOffset = 0.0, bool lit = false) {
   test::AnimatedGltf g;
   const float h = static_cast<float>(0.5 * side);
   const auto half = [&](float y0, float y1) {
@@ -36,10 +37,11 @@ std::filesystem::path writeTwoToneSquare(const std::filesystem::path& file, doub
     return positions;
   };
   const int top = half(0.0f, h), bottom = half(-h, 0.0f);
-  g.gltf["extensionsUsed"] = {"KHR_materials_unlit"};
-  for (const auto& colour : {std::vector<double>{1, 0, 0, 1}, std::vector<double>{0, 0, 1, 1}})
-    g.gltf["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", colour}}},
-                                   {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
+  if (!lit) g.gltf["extensionsUsed"] = {"KHR_materials_unlit"};
+  for (const auto& colour : {std::vector<double>{1, 0, 0, 1}, std::vector<double>{0, 0, 1, 1}}) {
+    g.gltf["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", colour}}}, {"doubleSided", true}});
+    if (!lit) g.gltf["materials"].back()["extensions"] = {{"KHR_materials_unlit", nlohmann::json::object()}};
+  }
   g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", top}}}, {"material", 0}}}}});
   g.gltf["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", bottom}}}, {"material", 1}}}}});
   const int root =
@@ -73,6 +75,26 @@ Coverage coverage(const Image& image) {
 }
 
 class AutomaticFramingGl : public test::TempDirTest {};
+
+// Lit, so that shading takes the direction toward the eye: in a scene 1e-30 across its squared
+// length underflows a float (normalize gave NaN: the probe's C22 had 204 of 600 pixels NaN; the ray
+// caster works in double).
+TEST_F(AutomaticFramingGl, ALitSubjectOfAnySizeIsShadedFinitelyAsTheRayCastShadesIt) {
+  LENSLAB_REQUIRE_GL();
+  for (const double side : {1e-30, 1e-12, 1.0, 1e6}) {
+    const Scene scene = loadGltf(writeTwoToneSquare(dir_ / "lit.gltf", side, 1.0, 0.0, true));
+    const Camera camera = withDepthRangeFitted(chooseCamera(scene, std::nullopt, {}, 0.0).camera, scene.bounds);
+    const ImageSize size{48, 32};
+    Renderer renderer(scene);
+    const Image raster = renderer.render(
+        camera, makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Concentric, 16, 16, 1}), size);
+    int notFinite = 0;
+    for (const float v : raster.rgba) notFinite += std::isfinite(v) ? 0 : 1;
+    EXPECT_EQ(notFinite, 0) << "side " << side;
+    const Image cast = RayCaster(scene).render(camera, size, RaycastOptions{16, 1});
+    EXPECT_GE(compareImages(raster, cast, 0.0).psnrDb, 30.0) << "side " << side;
+  }
+}
 
 TEST_F(AutomaticFramingGl, AnySizeOfSubjectFillsTheFrameUpright) {
   LENSLAB_REQUIRE_GL();

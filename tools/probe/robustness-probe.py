@@ -707,6 +707,59 @@ def define_cases():
          setup=text_setup(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2048 +X 4096\n" + b"\x02" * 10, "short.hdr"),
          short="render --environment short.hdr (a header claiming 4096 x 2048 over 10 bytes)")
 
+    # ---- 7. inputs as people save them, and what their names and specifications promise --------
+    T = "inputs"
+    gauss = os.path.join(REPO, "assets", "lenses", "double-gauss-50mm.lens")
+    with open(gauss, "rb") as f:
+        gauss_bytes = f.read()
+    lens = ["lens"]
+    case("T01", T, lens + ["{D}/bom.lens"], "image", None, quick=True,
+         setup=text_setup(b"\xef\xbb\xbf" + gauss_bytes.replace(b"\n", b"\r\n"), "bom.lens"),
+         short="lens bom.lens (a UTF-8 byte-order mark and CRLF line ends)")
+    case("T02", T, lens + ["{D}/utf16.lens"], "refuse", "UTF-16",
+         setup=text_setup(b"\xff\xfe" + gauss_bytes.decode().encode("utf-16-le"), "utf16.lens"),
+         short="lens utf16.lens (UTF-16)")
+    case("T03", T, RENDER + ["--out", "{D}/x.png", "--camera", "{D}/cam.json"], "image", None,
+         setup=text_setup(b"\xef\xbb\xbf" + json.dumps(physical_camera()).encode(), "cam.json"),
+         short="render --camera cam.json (a UTF-8 byte-order mark)")
+    case("T04", T, lens + ["{D}/thick.lens"], "refuse", ("thickness_mm", "10000"),
+         setup=text_setup("50 1e300 1.5 20\n-50 5 1 20\n0 0 0 10\n", "thick.lens"),
+         short="lens thick.lens (a thickness of 1e300 mm)")
+    case("T05", T, lens + ["{D}/diverging.lens"], "refuse", "diverges",
+         setup=text_setup("-50 5 1.5 20\n50 5 1 20\n0 0 0 10\n", "diverging.lens"),
+         short="lens diverging.lens (a negative focal length)")
+    case("T06", T, lens + ["{D}/rows.lens"], "refuse", "at most 128",
+         setup=text_setup("inf 0.1 1 40\n" * 200 + "0 0 0 10\n", "rows.lens"),
+         short="lens rows.lens (201 surface rows)")
+    env7 = ["render"] + W + ["--out", "{D}/x.png", os.path.join(ROWS, "rows.gltf"), "--environment"]
+    png = base64.b64decode("iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAAAAABX3VL4AAAADElEQVR4nGNg+A+EAAYAAf+T0eSJAAAAAElFTkSuQmCC")
+    case("T07", T, env7 + ["{D}/png.hdr"], "refuse", "PNG image", setup=text_setup(png, "png.hdr"),
+         short="render --environment png.hdr (a PNG renamed .hdr)")
+
+    def node(mutate):
+        def setup(d):
+            doc, buffer = gltf_boxes([((0.5, 0.5, 0.5), (0, 0, 0))])
+            mutate(doc["nodes"][0])
+            write_gltf(d, "n.gltf", doc, buffer)
+        return setup
+    case("T08", T, RENDER + ["--out", "{D}/x.png", "{D}/n.gltf"], "refuse", "skews",
+         setup=node(lambda n: [n.pop(k, None) for k in ("translation", "rotation", "scale")] and
+                    n.update(matrix=[1, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1])),
+         short="render n.gltf (a node matrix with a skew)")
+    case("T09", T, RENDER + ["--out", "{D}/x.png", "{D}/n.gltf"], "refuse", "unit quaternion",
+         setup=node(lambda n: n.update(rotation=[0, 0, 0, 2])), short="render n.gltf (a rotation of length 2)")
+
+    def short_buffer(d):
+        doc, buffer = gltf_boxes([((0.5, 0.5, 0.5), (0, 0, 0))])
+        write_gltf(d, "s.gltf", doc, buffer)
+        with open(os.path.join(d, "box.bin"), "r+b") as f:
+            f.truncate(len(buffer) - 8)
+    case("T10", T, RENDER + ["--out", "{D}/x.png", "{D}/s.gltf"], "refuse", "byteLength", setup=short_buffer,
+         short="render s.gltf (a buffer file 8 bytes short of its byteLength)")
+    case("T11", T, ["capture", "--path", os.path.join(ROWS, "rack-focus.json"), "--frames", "0:3"] + W +
+         ["--out", "{D}/f/f_%04d.png", "--colmap-out", "{D}/f/f_0002.png"], "refuse", "folder of its own",
+         short="capture --out f/f_%04d.png --colmap-out f/f_0002.png (a frame's name)")
+
 
 def rerun_writes(d, run, argv, name):
     r = run(argv)
@@ -1008,7 +1061,7 @@ def main():
     signal.signal(signal.SIGHUP, stop)
 
     define_cases()
-    order = ["faults", "signals", "numeric", "malformed", "scale", "radiance"]
+    order = ["faults", "signals", "numeric", "malformed", "scale", "radiance", "inputs"]
     cases = sorted(CASES, key=lambda c: (order.index(c.category), c.id))
     if args.quick:
         cases = [c for c in cases if c.quick]

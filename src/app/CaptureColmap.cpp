@@ -5,6 +5,9 @@
 #include "io/ColmapExport.h"
 #include "scene/SceneAnimation.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <set>
 #include <unordered_map>
@@ -43,6 +46,32 @@ void noteLeftOut(const Camera& camera, std::set<std::string>& warnings) {
         "images are magnified about the principal point");
 }
 
+// Whether two cameras are one lens: the same model and size, and parameters within a relative
+// kColmapSameCameraTolerance (a path that keeps its lens computes fx in each frame from that
+// frame's view, and the 16th digit differs).
+bool sameLens(const ColmapCamera& a, const ColmapCamera& b) {
+  if (a.model != b.model || a.widthPx != b.widthPx || a.heightPx != b.heightPx || a.params.size() != b.params.size())
+    return false;
+  for (std::size_t i = 0; i < a.params.size(); ++i)
+    if (!(std::abs(a.params[i] - b.params[i]) <=
+          kColmapSameCameraTolerance * std::max({1.0, std::abs(a.params[i]), std::abs(b.params[i])})))
+      return false;
+  return true;
+}
+
+// The key of a camera's intrinsics among those remembered: its parameters to 12 significant digits,
+// so that cameras within the tolerance share it (but for one straddling a rounding step, which
+// then gets an id of its own).
+std::string lensKey(const ColmapCamera& c) {
+  std::string key = cat(c.model, " ", c.widthPx, " ", c.heightPx);
+  char digits[32];
+  for (const double p : c.params) {
+    std::snprintf(digits, sizeof digits, " %.12g", p == 0.0 ? 0.0 : p);
+    key += digits;
+  }
+  return key;
+}
+
 }  // namespace
 
 void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range,
@@ -53,9 +82,9 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
   const std::int64_t frameCount = (static_cast<std::int64_t>(range.last) - range.first) / range.step + 1;
   cameras.write(colmapCamerasHeader());
   images.write(colmapImagesHeader(static_cast<std::size_t>(frameCount)));
-  std::unordered_map<std::string, std::uint32_t> cameraIdOfParams;  // at most kColmapCamerasShared
+  std::unordered_map<std::string, ColmapCamera> cameraIdOfParams;  // at most kColmapCamerasShared, by lensKey
   std::uint32_t cameraCount = 0, lastId = 0;
-  std::string lastParams;
+  ColmapCamera last;  // the previous frame's (its id lastId)
   std::set<std::string> warnings;
   const std::string imageWhere = cat("--colmap-out: --out ", o.out);  // the frames' names come from --out
   std::int64_t done = 0;
@@ -68,16 +97,17 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
     const std::string where = cat("--colmap-out: ", frameCameras.name(), ": frame ", frame);
     ColmapCamera camera =
         colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
-    const std::string params = colmapCameraLine(camera);  // with id 0: the key of its intrinsics
     // The previous frame's camera first: a path holding its intrinsics shares one however many
     // distinct cameras came before.
-    if (params != lastParams) {
-      lastParams = params;
-      if (const auto it = cameraIdOfParams.find(params); it != cameraIdOfParams.end()) {
-        lastId = it->second;
+    if (lastId == 0 || !sameLens(camera, last)) {
+      const std::string key = lensKey(camera);
+      if (const auto it = cameraIdOfParams.find(key); it != cameraIdOfParams.end()) {
+        lastId = it->second.id;
+        last = it->second;
       } else {
         lastId = camera.id = ++cameraCount;
-        if (cameraIdOfParams.size() < kColmapCamerasShared) cameraIdOfParams.emplace(params, lastId);
+        last = camera;
+        if (cameraIdOfParams.size() < kColmapCamerasShared) cameraIdOfParams.emplace(key, camera);
         cameras.write(colmapCameraLine(camera));
       }
     }

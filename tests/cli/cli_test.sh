@@ -208,6 +208,10 @@ expect_refusal "glb /dev/zero" "zero.glb: is not a regular file" -- render "$wor
 expect_refusal "gltf FIFO" "fifo.gltf: is not a regular file" -- render "$work/fifo.gltf" --out "$work/out.png"
 expect_refusal "buffer /dev/zero" "zero.bin: is not a regular file" -- render "$work/zero-buffer.gltf" --out "$work/out.png"
 expect_refusal "COLMAP FIFO" "cameras.txt: is not a regular file" -- render --colmap "$work/colmap-fifo" --image a.png --out "$work/out.png"
+mkfifo "$work/fifo.lens" && mkdir "$work/folder.lens" && ln -s /dev/zero "$work/zero.lens"
+expect_refusal "lens FIFO" "fifo.lens: is not a regular file" -- lens "$work/fifo.lens"
+expect_refusal "lens folder" "folder.lens: is a folder; give the lens file as a file" -- lens "$work/folder.lens"
+expect_refusal "lens /dev/zero" "zero.lens: is not a regular file" -- raycast --lens "$work/zero.lens" --out "$work/out.png"
 lenslab=$real_lenslab
 
 # Text as editors save it: a UTF-8 byte-order mark and CRLF line ends read as plain UTF-8 does

@@ -152,6 +152,22 @@ else
   fail "capture --colmap-out of 60000 frames: $(cat "$work/err")"
 fi
 
+# --- one lens, one camera: an orbit at 35 mm computes fx from each frame's view, and the 16th digit
+# differs from frame to frame (it made 2 and 3 cameras); within 1e-9 they are one CAMERA_ID ---
+cat >"$work/orbit.json" <<'EOF'
+{"fps": 24, "frames": 24, "keys": [
+  {"time": 0, "eye": [3, 1, 0], "target": [0, 0.5, 0], "focal_length_mm": 35},
+  {"time": 0.5, "eye": [0, 1, 3], "target": [0, 0.5, 0], "focal_length_mm": 35},
+  {"time": 1, "eye": [-3, 1, 0], "target": [0, 0.5, 0], "focal_length_mm": 35}]}
+EOF
+if "$lenslab" capture --path "$work/orbit.json" --width 160 --shard 0/24 --out "$work/orbit/f_%02d.png" \
+     --colmap-out "$work/orbit-sparse" -q 2>"$work/err"; then
+  check grep -qx "# Number of cameras: 1" "$work/orbit-sparse/cameras.txt"
+  check test "$(awk 'NF == 10 && $1 != "#" {print $9}' "$work/orbit-sparse/images.txt" | sort -u)" = 1
+else
+  fail "capture an orbit --colmap-out: $(cat "$work/err")"
+fi
+
 # --- bad models and options: one line, no image ---
 mkdir -p "$work/bad/fisheye" "$work/bad/binary" "$work/bad/nopoints"
 printf '# fisheye\n1 OPENCV_FISHEYE 64 48 50 50 32 24 0.1 0 0 0\n' >"$work/bad/fisheye/cameras.txt"

@@ -40,6 +40,12 @@ PlanOptions toPlanOptions(const LensOptions& o) {
     if (error != std::errc() || stop != end || n < 1 || n > 65536)
       throw InputError(cat("--aperture-samples ", o.apertureSamples, ": give a whole number from 1 to 65536, or auto"));
     p.apertureSamples = n;
+    // The lecture's pattern is its 17 points: another count would be ignored in silence.
+    if (p.pattern == AperturePattern::Lecture17 && n != 17)
+      throw InputError(cat("--aperture-samples ", n,
+                           ": --pattern lecture17 is the lecture's 17 points, always 17 views; give 17 or leave "
+                           "--aperture-samples out (or another --pattern for ",
+                           n, " views)"));
   }
   if (o.cellFilter == "on" || o.cellFilter == "off")
     p.cellFilter = o.cellFilter == "on";

@@ -80,6 +80,10 @@ else fail "--quiet still printed: $(cat "$work/q.err")"; fi
 LENSLAB_PROGRESS_SECONDS=soon expect_refusal "bad progress interval" "LENSLAB_PROGRESS_SECONDS=soon" -- render --width 32 --out "$work/out.png"
 
 # ---- B1. a mistyped command or option: the nearest name ----
+# The lecture's pattern is 17 points: another count is refused by name, not ignored.
+expect_refusal "lecture17 with 5 views" "--aperture-samples 5: --pattern lecture17 is the lecture's 17 points, always 17 views" -- \
+  render --pattern lecture17 --aperture-samples 5 --width 32 --out "$work/out.png"
+check "$lenslab" render --pattern lecture17 --aperture-samples 17 --f-number 2 --width 32 --out "$work/l17.png" -q
 expect_refusal "unknown command" 'unknown command "rendr"; did you mean "render"? (see --help)' -- rendr --out "$work/out.png"
 expect_refusal "unknown command, nothing near" 'unknown command "paint"; the commands are render, raycast, capture, sweep, info, lens, view' -- paint
 expect_refusal "unknown option" 'render: unknown option --widht; did you mean --width? (see lenslab render --help)' -- render --widht 64 --out "$work/out.png"

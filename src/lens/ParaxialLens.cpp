@@ -77,10 +77,15 @@ double stopDiameterForFNumber(const LensPrescription& lens, std::optional<double
   const FirstOrder open = firstOrder(lens);
   const double stop = openStop * (open.focalLengthMm / *fNumber) / open.entrancePupilDiameterMm;
   if (stop > openStop * (1.0 + 1e-9)) {
-    const double fastest = std::ceil(open.fNumber * 100.0) / 100.0;
-    throw InputError(cat(lens.source, ": f/", *fNumber, " is faster than the design's full opening, f/", fastest,
+    // As people type it: a lens sold as f/2 is f/2.03 by its own first-order numbers.
+    if (*fNumber >= open.fNumber * (1.0 - kFNumberRounding)) return openStop;
+    // The full opening as `lenslab lens` prints it, and the least f-number that opens to it.
+    const double full = std::round(open.fNumber * 100.0) / 100.0;
+    const double least = std::ceil(open.fNumber * (1.0 - kFNumberRounding) * 100.0) / 100.0;
+    throw InputError(cat(lens.source, ": f/", *fNumber, " is faster than the design's full opening, f/", full,
                          " (it needs a stop of ", std::round(stop * 1000.0) / 1000.0, " mm; the design's opens to ",
-                         openStop, " mm); give --f-number ", fastest, " or more"));
+                         openStop, " mm); give --f-number ", least, " or more (", least, " to ", full,
+                         " open it fully)"));
   }
   return stop;
 }

@@ -44,6 +44,9 @@ FirstOrder firstOrder(const LensPrescription& lens, std::optional<double> stopDi
 // The stop's diameter that gives paraxial f-number `fNumber` (the stop row's own when not given):
 // the stop scales the entrance pupil in proportion (the front group's magnification). Refused
 // (naming the lens and the fastest f-number) where that is wider than the design's stop.
+// An f-number this much (relative) below the design's full opening is the full opening as people
+// round it (f/2 for a design's f/2.03, f/1.4 for f/1.43); one further below is refused.
+constexpr double kFNumberRounding = 0.025;
 double stopDiameterForFNumber(const LensPrescription& lens, std::optional<double> fNumber);
 
 // Where the film goes to focus at `focusDistanceMm`, measured from the film (as a camera's

@@ -54,6 +54,13 @@ refused "bad number" "bad.lens: row 2 (line 2), column 2 (thickness_mm): 'x' is 
 refused "missing file" "no-such.lens" -- lens "$work/no-such.lens"
 refused "beyond the image circle" "the lens covers a circle of" -- lens "$lenses/fisheye-10mm.lens"
 refused "f-number too fast" "f/1 is faster than the design's full opening" -- lens "$lenses/double-gauss-50mm.lens" --f-number 1
+refused "f-number past rounding" "f/1.95 is faster than the design's full opening, f/2.03" -- lens "$lenses/double-gauss-50mm.lens" --f-number 1.95
+# As people type it: the f/2 double Gauss (f/2.03 by its numbers) takes --f-number 2, at its full opening.
+if "$lenslab" lens "$lenses/double-gauss-50mm.lens" --f-number 2 --json >"$work/f2.json" 2>"$work/err"; then
+  check holds "$work/f2.json" "abs(j['f_number'] - 2.03) < 0.01"
+else
+  fail "lens --f-number 2: $(cat "$work/err")"
+fi
 refused "bad sensor" "--sensor" -- lens "$lenses/double-gauss-50mm.lens" --sensor 36
 refused "focus too close" "no real image" -- lens "$lenses/double-gauss-50mm.lens" --focus-mm 100
 

@@ -5,10 +5,18 @@
 #include "core/Error.h"
 #include "core/Text.h"
 #include "core/TextFile.h"
+#include "lens/ParaxialLens.h"
 
 #include <cmath>
 
 namespace lenslab {
+
+CameraOptions framingForLens(CameraOptions options, const std::string& file, const Scene& scene, bool cameraFile) {
+  if (file.empty() || cameraFile || options.namesBaseCamera() || !scene.cameras.empty() || options.focalLengthMm)
+    return options;
+  options.focalLengthMm = firstOrder(parseLensPrescription(readTextFile(file, "lens file"), file)).focalLengthMm;
+  return options;
+}
 
 LensRequest lensRequestFor(const std::string& file, const SelectedCamera& selected, const Camera& camera) {
   const auto refuse = [&](const std::string& why) { throw InputError(cat("--lens ", file, ": ", why)); };

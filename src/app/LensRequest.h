@@ -8,6 +8,8 @@
 #include "lens/LensCamera.h"
 #include "lens/LensFit.h"
 #include "lens/LensPrescription.h"
+#include "plan/CameraOptions.h"
+#include "scene/Scene.h"
 
 #include <memory>
 #include <string>
@@ -26,6 +28,12 @@ struct LensRequest {
 // parallel projection, lens effects or a barrel of its own (the lens has its own), a shaped
 // aperture, a window shifted off the axis.
 LensRequest lensRequestFor(const std::string& file, const SelectedCamera& selected, const Camera& camera);
+
+// The camera options for --lens `file` where automatic framing places the camera (no camera
+// file, no glTF or COLMAP camera): the prescription's own focal length, so that the subject is
+// framed in the field the lens renders (not the default 35 mm's). Unchanged otherwise, and where
+// --focal-length is given.
+CameraOptions framingForLens(CameraOptions options, const std::string& file, const Scene& scene, bool cameraFile);
 
 LensCamera lensCameraFor(const LensRequest& request);
 FittedLens fitFor(const LensRequest& request);

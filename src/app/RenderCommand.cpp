@@ -259,7 +259,6 @@ int runRender(const RenderOptions& o) {
   // The bundled scene's camera file is its base camera unless a glTF camera is asked for.
   const auto [scenePath, cameraPath] =
       resolveSceneAndCamera(o.scene, o.cameraFile, o.camera.namesBaseCamera() ? "" : "camera.json");
-
   checkNotInput(o.statsFile, "--stats", cameraPath.value_or(fs::path()), "--camera");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
@@ -268,8 +267,9 @@ int runRender(const RenderOptions& o) {
     std::cerr << "lenslab: warning: " << w << "\n";
   if (scene.triangleCount() == 0) throw InputError(cat(scenePath.string(), ": the scene has no triangles to render"));
   const double requestedAspect = (o.width && o.height) ? static_cast<double>(*o.width) / *o.height : 0.0;
-  // The camera as selected and refocused; rendered with its open near/far fitted to the scene.
-  SelectedCamera selected = chooseCamera(scene, cameraPath, o.camera, requestedAspect);
+  // The camera as selected (framed for --lens's field) and refocused; near/far fitted to the scene.
+  SelectedCamera selected = chooseCamera(
+      scene, cameraPath, framingForLens(o.camera, o.lensFile, scene, cameraPath.has_value()), requestedAspect);
   // With --lens the prescription's stop is the aperture: a camera file without one still focuses.
   const std::vector<std::string> focusNotes =
       o.lensFile.empty() ? focusWarnings(selected.camera, o.lens) : std::vector<std::string>{};

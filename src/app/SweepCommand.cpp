@@ -186,7 +186,9 @@ int runSweepCommand(SweepCommandOptions& o) {
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
   const std::optional<EnvironmentSummary> environment = applyEnvironment(scene, o.environment, std::cerr);
-  const SelectedCamera selected = applyLensOptions(chooseCamera(scene, cameraPath, o.camera, 0.0), o.lens);
+  const SelectedCamera selected = applyLensOptions(
+      chooseCamera(scene, cameraPath, framingForLens(o.camera, o.lensFile, scene, cameraPath.has_value()), 0.0),
+      o.lens);
   Camera camera = withDepthRangeFitted(selected.camera, scene.bounds);
   addReferenceInputs(o, cameraPath);
   std::optional<LensCamera> exactLens;

@@ -109,6 +109,24 @@ for f in traced raycast-aov; do
   if same_pixels "$work/fitted-aov.exr" "$work/$f-aov.exr"; then pass; else fail "render --lens --aov and $f differ in depth or instance"; fi
 done
 
+# Automatic framing under --lens frames the field the lens renders: the prescription's 50.36 mm,
+# not the default 35 mm (which cropped the subject once the lens rendered it).
+python3 - "$src/assets/grid/grid.gltf" "$work/nocam.gltf" <<'EOF'
+import json, sys
+g = json.load(open(sys.argv[1]))
+g.pop("cameras", None)
+for n in g["nodes"]:
+    n.pop("camera", None)
+g["buffers"][0]["uri"] = sys.argv[1].rsplit("/", 1)[0] + "/" + g["buffers"][0]["uri"]
+json.dump(g, open(sys.argv[2], "w"))
+EOF
+if "$lenslab" render "$work/nocam.gltf" --lens "$lenses/double-gauss-50mm.lens" --width 48 --aperture-samples 4 \
+     --out "$work/framed.png" --stats "$work/framed.json" -q 2>"$work/err"; then
+  check holds "$work/framed.json" "j['camera'].startswith('automatic framing') and '50.358' in j['camera']"
+else
+  fail "render --lens, automatic framing: $(cat "$work/err")"
+fi
+
 # Past the fisheye's image circle no thin lens fits: render traces it exactly, as raycast does.
 if "$lenslab" render --camera "$dof" --lens "$lenses/fisheye-10mm.lens" --f-number 5.6 --width 18 --aperture-samples 1 \
      --out "$work/fisheye.png" 2>"$work/err"; then

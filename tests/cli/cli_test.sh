@@ -86,7 +86,9 @@ else
   fail "dof render"
 fi
 for pattern in lecture17 concentric r2 random; do
-  if "$lenslab" render --camera "$src/assets/occluder/camera-dof.json" --width 64 --pattern $pattern --aperture-samples 4 --out "$work/p-$pattern.png" --stats "$work/p-$pattern.json" -q &&
+  count=4
+  [ $pattern = lecture17 ] && count=17  # always its 17 points (another count is refused)
+  if "$lenslab" render --camera "$src/assets/occluder/camera-dof.json" --width 64 --pattern $pattern --aperture-samples $count --out "$work/p-$pattern.png" --stats "$work/p-$pattern.json" -q &&
      grep -qF "\"pattern\": \"$pattern\"" "$work/p-$pattern.json"; then pass; else fail "pattern $pattern"; fi
 done
 if "$lenslab" render --camera "$src/assets/rows/camera-dof.json" --width 96 --max-samples 4 --focus-at 66,42 --out "$work/focus.png" --stats "$work/focus.json" -q &&

@@ -263,12 +263,24 @@ namespace {
 // An unlit white wall on the plane of focus, filling the view: every aperture point sees the same
 // white at every pixel, so a pixel's value is the share of the aperture the barrel lets through
 // from its direction — the two circles' overlap (lens/LensBarrel.h), known in closed form.
-TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
-  LENSLAB_REQUIRE_GL();
+Scene whiteWall() {
   Scene scene;
   scene.source = "white wall";
   scene.lighting.background = glm::vec3(0.0f);
   addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kFocus)), 4.0, 4.0, glm::vec3(1.0f));
+  return scene;
+}
+
+// That overlap at continuous pixel position `pixel` of `camera`'s image.
+double shareThroughBarrel(const Camera& camera, ImageSize size, glm::dvec2 pixel) {
+  const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
+  const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
+  return roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
+}
+
+TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
+  LENSLAB_REQUIRE_GL();
+  const Scene scene = whiteWall();
   Camera camera = bokehCamera(ApertureShape{});
   camera.lens.apertureRadius = 0.1;
   // Seen in the opening's plane the aperture has radius 0.1·(1 − 0.2/2) = 0.09, centred at 0.2·n:
@@ -282,10 +294,7 @@ TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
   double worstRaster = 0.0, worstRaycast = 0.0, least = 1.0;
   for (int y = 0; y < size.heightPx; ++y)
     for (int x = 0; x < size.widthPx; ++x) {
-      const glm::dvec2 w = windowFromPixel(camera.view.window, {x + 0.5, y + 0.5}, size.widthPx, size.heightPx);
-      const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
-      const double share =
-          roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
+      const double share = shareThroughBarrel(camera, size, {x + 0.5, y + 0.5});
       least = std::min(least, share);
       worstRaster = std::max(worstRaster, std::abs(raster.at(x, y).g - share));
       worstRaycast = std::max(worstRaycast, std::abs(raycast.at(x, y).g - share));
@@ -306,10 +315,7 @@ TEST(CatsEye, APixelSeesTheShareOfTheApertureThatTheBarrelLetsThrough) {
 // that view's jittered sample, as the ray caster tests each ray at its film point.
 TEST(CatsEye, WhereTheShareChangesWithinAPixelThePixelAveragesItOverItsArea) {
   LENSLAB_REQUIRE_GL();
-  Scene scene;
-  scene.source = "white wall";
-  scene.lighting.background = glm::vec3(0.0f);
-  addUnlitQuad(scene, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -kFocus)), 4.0, 4.0, glm::vec3(1.0f));
+  const Scene scene = whiteWall();
   Camera camera = bokehCamera(ApertureShape{});
   camera.lens.apertureRadius = 0.001;
   // The aperture, radius 0.0009 in the opening's plane, wholly inside the 0.0089 opening for
@@ -321,11 +327,7 @@ TEST(CatsEye, WhereTheShareChangesWithinAPixelThePixelAveragesItOverItsArea) {
   const FramePlan plan = makeFramePlan(scene, camera, size, PlanOptions{AperturePattern::Sobol, 1024, 1024, 3});
   const Image raster = renderer.render(camera, plan, size);
   const Image raycast = RayCaster(scene).render(camera, size, RaycastOptions{4096, 4});
-  const auto shareAt = [&](glm::dvec2 pixel) {
-    const glm::dvec2 w = windowFromPixel(camera.view.window, pixel, size.widthPx, size.heightPx);
-    const glm::dvec2 n = (w - glm::dvec2(camera.view.prp)) / camera.view.prp.z;
-    return roundApertureThroughBarrel(camera.lens.barrel, camera.lens.apertureRadius, n, camera.inverseFocusDistance());
-  };
+  const auto shareAt = [&](glm::dvec2 pixel) { return shareThroughBarrel(camera, size, pixel); };
   double worstRaster = 0.0, worstRaycast = 0.0, centreVersusArea = 0.0;
   for (int y = 16; y < 32; ++y)
     for (int x = 16; x < 32; ++x) {

@@ -67,11 +67,12 @@ float passes(ivec2 t, int i) {
 #endif
 }
 
-// What a sample of view i at texel t adds to the weights: a sample the barrel stops still counts
-// in the colour's weight (a ray that brings no light: the cat's eye darkens the pixel, as the ray
-// caster's), but not in alpha's: coverage is the share of the rays the lens passes that meet a surface.
-vec4 weightOf(ivec2 t, int i) {
-  return weights[i] * vec4(1.0, 1.0, 1.0, passes(t, i));
+// What a sample of view i that the barrel passes (`through` 1) or stops (0) adds to the weights:
+// a stopped sample still counts in the colour's weight (a ray that brings no light: the cat's eye
+// darkens the pixel, as the ray caster's), but not in alpha's: coverage is the share of the rays
+// the lens passes that meet a surface.
+vec4 weightOf(int i, float through) {
+  return weights[i] * vec4(1.0, 1.0, 1.0, through);
 }
 
 // One sample: view `i`'s texel t, landing at `landed` in the output. Adds it when it lands inside
@@ -80,8 +81,9 @@ void visit(ivec2 t, int i, float area, vec2 landed, inout vec4 s, inout vec4 w, 
            inout ivec3 nearestSample) {
   vec2 d = landed - gl_FragCoord.xy;
   if (max(abs(d.x), abs(d.y)) < 0.5) {
-    s += area * weights[i] * passes(t, i) * texelFetch(views, ivec3(t, i), 0);
-    w += area * weightOf(t, i);
+    float through = passes(t, i);
+    s += area * weights[i] * through * texelFetch(views, ivec3(t, i), 0);
+    w += area * weightOf(i, through);
   }
   float d2 = dot(d, d);
   if (d2 < nearest) {
@@ -146,9 +148,9 @@ void gather(vec2 centre, float scale, int channel, out vec4 s, out vec4 w) {
     }
 #endif
   if (nearest < 1e30) {
-    s += 1e-6 * weights[nearestSample.z] * passes(nearestSample.xy, nearestSample.z) *
-         texelFetch(views, ivec3(nearestSample.xy, nearestSample.z), 0);
-    w += 1e-6 * weightOf(nearestSample.xy, nearestSample.z);
+    float through = passes(nearestSample.xy, nearestSample.z);
+    s += 1e-6 * weights[nearestSample.z] * through * texelFetch(views, ivec3(nearestSample.xy, nearestSample.z), 0);
+    w += 1e-6 * weightOf(nearestSample.z, through);
   }
 }
 

@@ -82,9 +82,9 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
   const std::int64_t frameCount = (static_cast<std::int64_t>(range.last) - range.first) / range.step + 1;
   cameras.write(colmapCamerasHeader());
   images.write(colmapImagesHeader(static_cast<std::size_t>(frameCount)));
-  std::unordered_map<std::string, ColmapCamera> cameraIdOfParams;  // at most kColmapCamerasShared, by lensKey
-  std::uint32_t cameraCount = 0, lastId = 0;
-  ColmapCamera last;  // the previous frame's (its id lastId)
+  std::unordered_map<std::string, ColmapCamera> shared;  // at most kColmapCamerasShared, by lensKey
+  std::uint32_t cameraCount = 0;
+  ColmapCamera last;  // the previous frame's (id 0 before the first)
   std::set<std::string> warnings;
   const std::string imageWhere = cat("--colmap-out: --out ", o.out);  // the frames' names come from --out
   std::int64_t done = 0;
@@ -99,19 +99,18 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
         colmapCameraOf(intrinsicsOf(f.camera.view, f.size), f.camera.lens.effects.distortion, 0, where);
     // The previous frame's camera first: a path holding its intrinsics shares one however many
     // distinct cameras came before.
-    if (lastId == 0 || !sameLens(camera, last)) {
+    if (last.id == 0 || !sameLens(camera, last)) {
       const std::string key = lensKey(camera);
-      if (const auto it = cameraIdOfParams.find(key); it != cameraIdOfParams.end()) {
-        lastId = it->second.id;
+      if (const auto it = shared.find(key); it != shared.end()) {
         last = it->second;
       } else {
-        lastId = camera.id = ++cameraCount;
+        camera.id = ++cameraCount;
         last = camera;
-        if (cameraIdOfParams.size() < kColmapCamerasShared) cameraIdOfParams.emplace(key, camera);
+        if (shared.size() < kColmapCamerasShared) shared.emplace(key, camera);
         cameras.write(colmapCameraLine(camera));
       }
     }
-    const std::uint32_t cameraId = lastId;
+    const std::uint32_t cameraId = last.id;
     const fs::path file = formatFramePath(o.out, frame);
     const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
     images.write(colmapImageLines(

@@ -2,6 +2,7 @@
 
 #include "camera/Intrinsics.h"
 #include "core/Text.h"
+#include "io/ColmapBinary.h"
 #include "io/ColmapExport.h"
 #include "scene/SceneAnimation.h"
 
@@ -78,10 +79,14 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
                       const fs::path& dir, OutputSet& outputs, ProgressReporter& progress) {
   const fs::path base = framesFolder(o.out);
   const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
-  StreamedFile cameras(outputs, dir / "cameras.txt"), images(outputs, dir / "images.txt");
+  const bool binary = o.colmapFormat == "binary";
+  const std::string extension = binary ? ".bin" : ".txt";
+  StreamedFile cameras(outputs, dir / ("cameras" + extension)), images(outputs, dir / ("images" + extension));
   const std::int64_t frameCount = (static_cast<std::int64_t>(range.last) - range.first) / range.step + 1;
-  cameras.write(colmapCamerasHeader());
-  images.write(colmapImagesHeader(static_cast<std::size_t>(frameCount)));
+  // cameras.bin's count leads the file: written as 0 here and set once the cameras are known.
+  cameras.write(binary ? colmapCountField(0) : colmapCamerasHeader());
+  images.write(binary ? colmapCountField(static_cast<std::uint64_t>(frameCount))
+                      : colmapImagesHeader(static_cast<std::size_t>(frameCount)));
   std::unordered_map<std::string, ColmapCamera> shared;  // at most kColmapCamerasShared, by lensKey
   std::uint32_t cameraCount = 0;
   ColmapCamera last;  // the previous frame's (id 0 before the first)
@@ -107,21 +112,25 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
         camera.id = ++cameraCount;
         last = camera;
         if (shared.size() < kColmapCamerasShared) shared.emplace(key, camera);
-        cameras.write(colmapCameraLine(camera));
+        cameras.write(binary ? colmapCameraRecord(camera) : colmapCameraLine(camera));
       }
     }
     const std::uint32_t cameraId = last.id;
     const fs::path file = formatFramePath(o.out, frame);
     const std::string name = fs::absolute(file).lexically_normal().lexically_relative(baseFolder).generic_string();
-    images.write(colmapImageLines(
-        colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, cameraId, name, imageWhere)));
+    const ColmapImage image =
+        colmapImageOf(poseOf(f.camera.view), static_cast<std::uint32_t>(frame) + 1, cameraId, name, imageWhere);
+    images.write(binary ? colmapImageRecord(image) : colmapImageLines(image));
     noteLeftOut(f.camera, warnings);
     if (++done % 1024 == 0) progress.update(done, frameCount);
   }
-  cameras.write(colmapCamerasFooter(cameraCount));
+  if (binary)
+    cameras.overwrite(0, colmapCountField(cameraCount));
+  else
+    cameras.write(colmapCamerasFooter(cameraCount));
   cameras.close();
   images.close();
-  outputs.add(dir / "points3D.txt", colmapPoints3DText());
+  outputs.add(dir / ("points3D" + extension), binary ? colmapPoints3DBinary() : colmapPoints3DText());
   progress.finish();
   if (!o.quiet)
     for (const std::string& w : warnings) std::cerr << "lenslab: warning: --colmap-out: " << w << "\n";

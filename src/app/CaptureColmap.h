@@ -1,6 +1,7 @@
 #pragma once
-// capture --colmap-out: the COLMAP text model of a capture's frames (cameras.txt, images.txt,
-// points3D.txt), written as it is made so that memory does not grow with the frame count.
+// capture --colmap-out: the COLMAP model of a capture's frames (cameras, images, points3D; text
+// or binary, --colmap-format), written as it is made so that memory does not grow with the frame
+// count.
 #include "app/FrameCameras.h"
 #include "io/AtomicFile.h"
 #include "io/FrameSequence.h"
@@ -9,7 +10,7 @@
 
 namespace lenslab {
 
-// The cameras of every frame of `range` (its step included) as a COLMAP text model in `dir`,
+// The cameras of every frame of `range` (its step included) as a COLMAP model in `dir`,
 // written into temporary files of `outputs` (they appear at its commit(), before the first frame):
 // whichever frames this shard renders, the model is the whole range's, a pure function of the
 // frames' cameras (the path's keys, or the scene's camera over its animation), the range and the

@@ -25,7 +25,7 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   nlohmann::json j;
   j["K"] = {{k.fx, 0.0, k.cx}, {0.0, k.fy, k.cy}, {0.0, 0.0, 1.0}};
   const Distortion& d = camera.lens.effects.distortion;
-  if (d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0) j["dist"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  if (d.isOpenCv()) j["dist"] = d.distCoeffs();
   j["R"] = nlohmann::json::array();
   for (const glm::dvec3& row : pose.rows) j["R"].push_back({row.x, row.y, row.z});
   j["t"] = {pose.translation.x, pose.translation.y, pose.translation.z};

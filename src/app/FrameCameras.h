@@ -36,8 +36,9 @@ struct CaptureOptions {
   CameraOptions camera;
   std::optional<double> fps;  // frames per second without --path
   std::optional<glm::vec3> background;
-  std::string colmapOut;     // --colmap-out DIR: the frames' cameras as a COLMAP text model
-  ExposureOptions exposure;  // PNG frames only; physical settings take each frame's f-number
+  std::string colmapOut;              // --colmap-out DIR: the frames' cameras as a COLMAP model
+  std::string colmapFormat = "text";  // --colmap-format: text (cameras.txt, ...) or binary (cameras.bin, ...)
+  ExposureOptions exposure;           // PNG frames only; physical settings take each frame's f-number
   EnvironmentRequest environment;
 };
 

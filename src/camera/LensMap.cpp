@@ -67,6 +67,21 @@ std::vector<double> extremeFocusShifts(const Camera& camera) {
   return shifts;
 }
 
+namespace {
+
+// Every coefficient of every effect is a finite number.
+bool allFinite(const LensEffects& e) {
+  bool finite = true;
+  for (const DistortionTerm& t : kDistortionTerms) finite = finite && std::isfinite(e.distortion.*t.value);
+  for (const double v : {e.chromatic.lateralRed, e.chromatic.lateralBlue, e.chromatic.inverseFocusShiftRed,
+                         e.chromatic.inverseFocusShiftBlue, e.fieldCurvature.inverseFocusPerRadius2, e.vignetting.a1,
+                         e.vignetting.a2, e.vignetting.a3})
+    finite = finite && std::isfinite(v);
+  return finite;
+}
+
+}  // namespace
+
 void validateLensEffects(const Camera& camera, const std::string& where, std::optional<double> focalLength) {
   const LensEffects& e = camera.lens.effects;
   if (e.isZero()) return;
@@ -75,10 +90,7 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
                          ": distortion, chromatic aberration, field curvature and vignetting need a perspective "
                          "projection (they act on the angle from the optical axis); this camera is parallel"));
   const Distortion& d = e.distortion;
-  for (const double v : {d.k1, d.k2, d.p1, d.p2, d.k3, d.alpha, d.beta, d.gamma, e.chromatic.lateralRed,
-                         e.chromatic.lateralBlue, e.chromatic.inverseFocusShiftRed, e.chromatic.inverseFocusShiftBlue,
-                         e.fieldCurvature.inverseFocusPerRadius2, e.vignetting.a1, e.vignetting.a2, e.vignetting.a3})
-    if (!std::isfinite(v)) throw InputError(cat(where, ": lens effect coefficients must be finite numbers"));
+  if (!allFinite(e)) throw InputError(cat(where, ": lens effect coefficients must be finite numbers"));
   // The gain is a polynomial in the distorted radius, the pixel's own place on the film: it must
   // stay positive out to the window's farthest corner (a fit to a real lens can turn down past
   // the field it was fitted over, and a pixel cannot receive negative light).
@@ -138,12 +150,12 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
   }
   if (const auto fold = findFoldOver(d, lo, hi)) {
     const double along = glm::length(fold->distorted) / rect.cornerRadius();
-    throw InputError(
-        cat(where, ": distortion folds over inside the image: at normalised radius ", glm::length(fold->undistorted),
-            " (true position ", fold->undistorted.x, ", ", fold->undistorted.y, "), ", std::lround(100.0 * along),
-            "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
-            "so two points of the scene would land on one pixel (k1 = ",
-            d.k1, ", k2 = ", d.k2, ", k3 = ", d.k3, "); use weaker coefficients or a narrower field of view"));
+    throw InputError(cat(where, ": distortion folds over inside the image: at normalised radius ",
+                         glm::length(fold->undistorted), " (true position ", fold->undistorted.x, ", ",
+                         fold->undistorted.y, "), ", std::lround(100.0 * along),
+                         "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
+                         "so two points of the scene would land on one pixel (",
+                         distortionTermsText(d), "); use weaker coefficients or a narrower field of view"));
   }
 }
 
@@ -188,17 +200,7 @@ void ThinLensMap::validateForwardLinearisation() const {
   const ImageSize size = size_;
   const double errorPx = forwardLinearisationErrorPx();
   if (errorPx <= kMaxForwardLinearisationErrorPx) return;
-  const Distortion& d = camera.lens.effects.distortion;
-  std::string coefficients;
-  for (const auto& [name, value] : {std::pair{"k1", d.k1},
-                                    {"k2", d.k2},
-                                    {"k3", d.k3},
-                                    {"p1", d.p1},
-                                    {"p2", d.p2},
-                                    {"alpha", d.alpha},
-                                    {"beta", d.beta},
-                                    {"gamma", d.gamma}})
-    if (value != 0.0) coefficients += cat(coefficients.empty() ? "" : ", ", name, " = ", value);
+  const std::string coefficients = distortionTermsText(camera.lens.effects.distortion);
   // The error shrinks in proportion to the pixel pitch (a second-order term over one pixel).
   const double widthFor = std::ceil(size.widthPx * errorPx / kMaxForwardLinearisationErrorPx);
   throw InputError(

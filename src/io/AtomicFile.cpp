@@ -132,6 +132,18 @@ void StreamedFile::flush() {
   buffer_.clear();
 }
 
+void StreamedFile::overwrite(std::uint64_t offset, std::string_view bytes) {
+  if (fd_ < 0) throw std::logic_error("StreamedFile::overwrite after close");
+  flush();
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::pwrite(fd_, bytes.data() + done, bytes.size() - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw cannotWrite(target_, n < 0 ? errno : EIO);
+    done += static_cast<std::size_t>(n);
+  }
+}
+
 void StreamedFile::close() {
   flush();
   const int fd = fd_;

@@ -70,6 +70,9 @@ class StreamedFile {
   StreamedFile& operator=(const StreamedFile&) = delete;
   // Appends `bytes` (buffered). Throws InputError naming the target and the reason.
   void write(std::string_view bytes);
+  // Replaces bytes already written at `offset` (a count in a file's header, known at the end),
+  // checked as write() is. The file's length does not change where the bytes were written.
+  void overwrite(std::uint64_t offset, std::string_view bytes);
   // Writes what is buffered and closes; call before the set's commit(). Throws as write().
   void close();
 

@@ -87,8 +87,7 @@ std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const Lens& l
   writeEffects(camera, j);
   // OpenCV's distCoeffs as an array where the lens is all OpenCV's (the lecture's series is not).
   const Distortion& d = camera.lens.effects.distortion;
-  if (!d.isZero() && d.alpha == 0.0 && d.beta == 0.0 && d.gamma == 0.0)
-    j["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  if (!d.isZero() && d.isOpenCv()) j["distortion"] = d.distCoeffs();
   return j.dump(2) + "\n";
 }
 

@@ -25,6 +25,10 @@ ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std:
     throw InputError(cat(where, ": the lens has the lecture's odd-power distortion (alpha ", d.alpha, ", gamma ",
                          d.gamma,
                          "), which no COLMAP camera model holds; give the distortion as OpenCV's k1, k2, p1, p2, k3"));
+  if (d.s1 != 0.0 || d.s2 != 0.0 || d.s3 != 0.0 || d.s4 != 0.0)
+    throw InputError(cat(where, ": the lens has OpenCV's thin-prism terms (s1 ", d.s1, ", s2 ", d.s2, ", s3 ", d.s3,
+                         ", s4 ", d.s4,
+                         "), which no COLMAP camera model holds; COLMAP's fullest, FULL_OPENCV, stops at k6"));
   ColmapCamera c;
   c.id = id;
   c.widthPx = k.widthPx;
@@ -32,14 +36,15 @@ ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std:
   // COLMAP's pixel centres are at i + 0.5, OpenCV's at i.
   c.params = {k.fx, k.fy, k.cx + 0.5, k.cy + 0.5};
   const double k1 = d.k1 + d.beta;  // β is the r² coefficient, as k1 is
-  if (k1 == 0.0 && d.k2 == 0.0 && d.p1 == 0.0 && d.p2 == 0.0 && d.k3 == 0.0) {
+  const bool rational = d.k3 != 0.0 || d.k4 != 0.0 || d.k5 != 0.0 || d.k6 != 0.0;
+  if (k1 == 0.0 && d.k2 == 0.0 && d.p1 == 0.0 && d.p2 == 0.0 && !rational) {
     c.model = "PINHOLE";
-  } else if (d.k3 == 0.0) {
+  } else if (!rational) {
     c.model = "OPENCV";
     c.params.insert(c.params.end(), {k1, d.k2, d.p1, d.p2});
   } else {
     c.model = "FULL_OPENCV";
-    c.params.insert(c.params.end(), {k1, d.k2, d.p1, d.p2, d.k3, 0.0, 0.0, 0.0});
+    c.params.insert(c.params.end(), {k1, d.k2, d.p1, d.p2, d.k3, d.k4, d.k5, d.k6});
   }
   return c;
 }

@@ -6,6 +6,8 @@
 #include "core/ParseNumber.h"
 #include "core/Text.h"
 #include "core/TextFile.h"
+#include "io/ColmapBinary.h"
+#include "lens/effects/Distortion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +20,7 @@
 namespace lenslab {
 namespace fs = std::filesystem;
 
-const char* const kColmapModelsRendered =
-    "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV, and FULL_OPENCV with k4 = k5 = k6 = 0";
+const char* const kColmapModelsRendered = "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV and FULL_OPENCV";
 
 namespace {
 
@@ -50,11 +51,16 @@ const ModelInfo* modelInfo(const std::string& name) {
   return nullptr;
 }
 
-// One line of a file, for messages: "sparse/images.txt:12".
+// One line of a text file or one record of a binary one, for messages: "sparse/images.txt:12",
+// "sparse/cameras.bin: camera record 3".
 struct Where {
   const std::string& file;
   int line;
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(cat(file, ":", line, ": ", message)); }
+  int record = 0;  // binary files: the record, from 1 (line is 0)
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(line > 0 ? cat(file, ":", line, ": ", message)
+                              : cat(file, ": ", record > 0 ? cat("record ", record, ": ") : std::string(), message));
+  }
 };
 
 std::string_view trimmed(std::string_view s) {
@@ -165,7 +171,8 @@ class FirstLines {
 };
 
 [[noreturn]] void failUnknownCamera(const ColmapModel& model, const ColmapImage& image) {
-  throw InputError(cat(model.imagesFile, ":", image.line, ": image ", image.id, " (", image.name, ") names CAMERA_ID ",
+  const std::string at = image.line > 0 ? cat(":", image.line, ":") : cat(": record ", image.record, ":");
+  throw InputError(cat(model.imagesFile, at, " image ", image.id, " (", image.name, ") names CAMERA_ID ",
                        image.cameraId, ", which ", model.camerasFile, " does not hold"));
 }
 
@@ -258,22 +265,24 @@ std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::s
 ColmapModel readColmapModel(const fs::path& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error))
-    throw InputError(cat("--colmap ", dir.string(),
-                         ": not a folder; give the folder of a COLMAP text model (cameras.txt, "
-                         "images.txt)"));
+    throw InputError(
+        cat("--colmap ", dir.string(),
+            ": not a folder; give the folder of a COLMAP model (cameras.txt and images.txt, or cameras.bin "
+            "and images.bin)"));
   ColmapModel model;
-  model.camerasFile = (dir / "cameras.txt").string();
-  model.imagesFile = (dir / "images.txt").string();
-  for (const char* name : {"cameras", "images"}) {
-    const fs::path text = dir / cat(name, ".txt");
-    if (!fs::exists(text, error) && fs::exists(dir / cat(name, ".bin"), error))
-      throw InputError(cat(text.string(), ": missing; ", dir.string(), " holds COLMAP's binary model (", name,
-                           ".bin), and lenslab reads the text format: convert it with colmap model_converter "
-                           "--input_path ",
-                           dir.string(), " --output_path ", dir.string(), " --output_type TXT"));
+  // As COLMAP reads a model: the binary files where both are there, else the text files.
+  const bool binary = fs::exists(dir / "cameras.bin", error) && fs::exists(dir / "images.bin", error);
+  model.camerasFile = (dir / (binary ? "cameras.bin" : "cameras.txt")).string();
+  model.imagesFile = (dir / (binary ? "images.bin" : "images.txt")).string();
+  if (binary) {
+    model.cameras = parseColmapCamerasBinary(
+        readInputFile(model.camerasFile, "COLMAP cameras file", kMaxColmapBinaryBytes), model.camerasFile);
+    model.images = parseColmapImagesBinary(readInputFile(model.imagesFile, "COLMAP images file", kMaxColmapBinaryBytes),
+                                           model.imagesFile);
+  } else {
+    model.cameras = parseColmapCameras(readTextFile(model.camerasFile, "COLMAP cameras file"), model.camerasFile);
+    model.images = parseColmapImages(readTextFile(model.imagesFile, "COLMAP images file"), model.imagesFile);
   }
-  model.cameras = parseColmapCameras(readTextFile(model.camerasFile, "COLMAP cameras file"), model.camerasFile);
-  model.images = parseColmapImages(readTextFile(model.imagesFile, "COLMAP images file"), model.imagesFile);
   // Every image's camera, looked up in a set rather than by cameraOf: COLMAP makes a camera per
   // image by default, and a search of the cameras for each image would take their product.
   std::set<std::uint32_t> ids;
@@ -286,7 +295,7 @@ ColmapModel readColmapModel(const fs::path& dir) {
 constexpr double kMaxPrincipalPointSides = 100.0;
 
 OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
-  const Where where{file, c.line};
+  const Where where{file, c.line, c.record};
   const ModelInfo* m = modelInfo(c.model);
   if (!m)
     where.fail(
@@ -305,18 +314,8 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
   k.cy = p[m->cxIndex() + 1] - 0.5;
   k.widthPx = c.widthPx;
   k.heightPx = c.heightPx;
-  // OpenCV's order; the rational terms k4, k5, k6 (i = 5, 6, 7) are only checked.
-  double* const coefficients[] = {&d.k1, &d.k2, &d.p1, &d.p2, &d.k3};
-  for (std::size_t i = 0; m->k1Index() + i < m->count; ++i) {
-    const double value = p[m->k1Index() + i];
-    if (i < std::size(coefficients))
-      *coefficients[i] = value;
-    else if (value != 0.0)
-      where.fail(cat("camera ", c.id, " is ", m->name, " with k", i - 1, " = ", value,
-                     "; lenslab renders its rational "
-                     "terms k4, k5, k6 only at 0 (it renders ",
-                     kColmapModelsRendered, ")"));
-  }
+  // OpenCV's order: k1, k2, p1, p2, k3, k4, k5, k6.
+  for (std::size_t i = 0; m->k1Index() + i < m->count; ++i) d.*kDistortionTerms[i].value = p[m->k1Index() + i];
   if (!(k.fx > 0.0) || !(k.fy > 0.0))
     where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (",
                    m->name, " takes ", m->params, ")"));

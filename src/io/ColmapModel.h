@@ -1,6 +1,6 @@
 #pragma once
-// COLMAP's sparse model in its text format: cameras.txt and images.txt read and turned into
-// lenslab cameras (writing them is io/ColmapExport.h). COLMAP's conventions (its "Output Format"
+// COLMAP's sparse model in its text format (cameras.txt and images.txt; the binary format is
+// io/ColmapBinary.h) read and turned into lenslab cameras (writing them is io/ColmapExport.h). COLMAP's conventions (its "Output Format"
 // page and src/colmap/sensor/models.h), stated once here:
 //   - An image's pose is world → camera: X_cam = R(q)·X_world + t, q = (QW, QX, QY, QZ) a unit
 //     quaternion in the Hamilton convention (Eigen's), w first; the camera centre is −Rᵀt. The
@@ -34,6 +34,7 @@ struct ColmapCamera {
   int heightPx = 0;
   std::vector<double> params;  // in the model's order, e.g. fx, fy, cx, cy for PINHOLE
   int line = 0;                // where it was read; 0 for one made here
+  int record = 0;              // or its record in cameras.bin, from 1
 };
 
 // The pose line of an image in images.txt: IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME.
@@ -44,6 +45,7 @@ struct ColmapImage {
   std::uint32_t cameraId = 0;
   std::string name;  // relative to the image folder
   int line = 0;
+  int record = 0;  // or its record in images.bin, from 1
 };
 
 struct ColmapModel {
@@ -54,7 +56,7 @@ struct ColmapModel {
 };
 
 // The camera models lenslab renders, for messages: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL,
-// OPENCV, and FULL_OPENCV whose rational terms k4, k5, k6 are 0.
+// OPENCV and FULL_OPENCV.
 extern const char* const kColmapModelsRendered;
 
 // A quaternion may be off unit length by this much and is normalised: COLMAP writes 17 digits,
@@ -66,9 +68,9 @@ constexpr double kQuaternionLengthTolerance = 1e-3;
 // models lenslab does not render are kept (other images may use them) and refused by lensOf.
 std::vector<ColmapCamera> parseColmapCameras(const std::string& text, const std::string& file);
 std::vector<ColmapImage> parseColmapImages(const std::string& text, const std::string& file);
-// DIR/cameras.txt and DIR/images.txt (points3D.txt is not read); every image's CAMERA_ID must be
-// in cameras.txt. A folder with only COLMAP's binary model is refused with the command that
-// converts it.
+// DIR's model, as COLMAP reads one: cameras.bin and images.bin where both are there, else
+// cameras.txt and images.txt (points3D is not read); every image's CAMERA_ID must be in the
+// cameras file.
 ColmapModel readColmapModel(const std::filesystem::path& dir);
 
 // A camera's intrinsics (in OpenCV's pixel convention: cx = COLMAP's cx − 0.5) and distortion.

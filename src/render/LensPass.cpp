@@ -22,26 +22,13 @@ std::vector<double> keyOf(const ThinLensMap& map) {
   const LensEffects& e = camera.lens.effects;
   const Distortion& d = e.distortion;
   const NormalisedRect n = normalisedWindow(camera.view);
-  return {d.k1,
-          d.k2,
-          d.p1,
-          d.p2,
-          d.k3,
-          d.alpha,
-          d.beta,
-          d.gamma,
-          e.chromatic.lateralRed,
-          e.chromatic.lateralBlue,
-          n.min.x,
-          n.min.y,
-          n.max.x,
-          n.max.y,
-          static_cast<double>(size.widthPx),
-          static_cast<double>(size.heightPx),
-          static_cast<double>(overscan.size.widthPx),
-          static_cast<double>(overscan.size.heightPx),
-          static_cast<double>(overscan.padPx.x),
-          static_cast<double>(overscan.padPx.y)};
+  std::vector<double> key;
+  for (const DistortionTerm& t : kDistortionTerms) key.push_back(d.*t.value);
+  key.insert(key.end(), {e.chromatic.lateralRed, e.chromatic.lateralBlue, n.min.x, n.min.y, n.max.x, n.max.y,
+                         static_cast<double>(size.widthPx), static_cast<double>(size.heightPx),
+                         static_cast<double>(overscan.size.widthPx), static_cast<double>(overscan.size.heightPx),
+                         static_cast<double>(overscan.padPx.x), static_cast<double>(overscan.padPx.y)});
+  return key;
 }
 
 }  // namespace

@@ -26,11 +26,17 @@ using test::OpenCvCamera;
 const OpenCvCamera kBarrel{520, 515, 330.2, 236.7, -0.28, 0.09, 0, 0, 0};
 const OpenCvCamera kPincushion{520, 520, 319.5, 239.5, 0.18, 0.02, 0, 0, 0};
 const OpenCvCamera kMixed{505, 512, 325.0, 230.0, -0.21, 0.06, 0.0021, -0.0013, -0.01};
+// OpenCV's rational model and thin prism (its 12 coefficients), of the size a wide-angle
+// calibration with CALIB_RATIONAL_MODEL | CALIB_THIN_PRISM_MODEL gives.
+const OpenCvCamera kRationalPrism{498,   503,  321.0, 242.0, -0.35,  0.12,    0.0015, -0.0011,
+                                  0.015, 0.09, 0.03,  0.004, 0.0012, -0.0007, 0.0009, 0.0003};
 
 std::string intrinsicsJson(const OpenCvCamera& c, const std::string& extra = "") {
+  std::string dist = cat(c.k1, ", ", c.k2, ", ", c.p1, ", ", c.p2, ", ", c.k3);
+  if (c.beyondFive()) dist += cat(", ", c.k4, ", ", c.k5, ", ", c.k6, ", ", c.s1, ", ", c.s2, ", ", c.s3, ", ", c.s4);
   return cat(R"({"eye": [0, 0, 0], "target": [0, 0, -1], "intrinsics": {"fx": )", c.fx, R"(, "fy": )", c.fy,
-             R"(, "cx": )", c.cx, R"(, "cy": )", c.cy, R"(, "width": 640, "height": 480}, "distortion": [)", c.k1, ", ",
-             c.k2, ", ", c.p1, ", ", c.p2, ", ", c.k3, "]", extra, "}");
+             R"(, "cx": )", c.cx, R"(, "cy": )", c.cy, R"(, "width": 640, "height": 480}, "distortion": [)", dist, "]",
+             extra, "}");
 }
 
 // lenslab's own chain: world → lecture projection → normalised → distortion → pixel.
@@ -96,6 +102,7 @@ TEST_P(OpenCvModel, JacobianMatchesFiniteDifferences) {
 INSTANTIATE_TEST_SUITE_P(Barrel, OpenCvModel, ::testing::Values(kBarrel));
 INSTANTIATE_TEST_SUITE_P(Pincushion, OpenCvModel, ::testing::Values(kPincushion));
 INSTANTIATE_TEST_SUITE_P(MixedWithTangential, OpenCvModel, ::testing::Values(kMixed));
+INSTANTIATE_TEST_SUITE_P(RationalAndThinPrism, OpenCvModel, ::testing::Values(kRationalPrism));
 
 TEST(Distortion, LectureSeriesScalesTheRadiusAsWritten) {
   Distortion d;
@@ -288,8 +295,8 @@ TEST(LensEffectsJson, BadKeysAndFormsGiveOneLineErrors) {
     }
     return std::string("(no error)");
   };
-  EXPECT_NE(message(R"("distortion": {"k4": 0.1})").find("distortion.k4"), std::string::npos);
-  EXPECT_NE(message(R"("distortion": [0.1, 0.2])").find("[k1, k2, p1, p2]"), std::string::npos);
+  EXPECT_NE(message(R"("distortion": {"k7": 0.1})").find("distortion.k7"), std::string::npos);
+  EXPECT_NE(message(R"("distortion": [0.1, 0.2])").find("4, 5, 8, 12 or 14 numbers"), std::string::npos);
   EXPECT_NE(message(R"("distortion": {"k1": "x"})").find("distortion.k1"), std::string::npos);
   EXPECT_NE(message(R"("chromatic": {"abbe_number": 40})").find("physical form"), std::string::npos);
   EXPECT_NE(message(R"("chromatic": {"lateral_red": 0.7})").find("lateral_red"), std::string::npos);

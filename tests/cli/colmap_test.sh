@@ -62,6 +62,34 @@ done
 "$lenslab" raycast --camera "$work/frames/frame_0003.camera.json" --spp 1 --out "$work/ray_camera.png" -q || fail "raycast --camera"
 if close_pixels "$work/ray_colmap.png" "$work/ray_camera.png"; then pass; else fail "raycast --colmap differs from raycast --camera of the frame"; fi
 
+# --- the binary model: the same cameras and images, read back by render --colmap ---
+"$lenslab" capture "${common[@]}" --out "$work/frames/frame_%04d.png" --colmap-out "$work/sparse-bin" \
+  --colmap-format binary || fail "capture --colmap-format binary"
+for f in cameras images points3D; do
+  if [ -f "$work/sparse-bin/$f.bin" ] && [ ! -e "$work/sparse-bin/$f.txt" ]; then pass; else fail "no $f.bin alone"; fi
+done
+check_binary=$(cat <<'EOF'
+import struct, sys
+data = open(sys.argv[1] + "/cameras.bin", "rb").read()
+(n,) = struct.unpack_from("<Q", data, 0)
+assert n == 5 and len(data) == 8 + n * (4 + 4 + 8 + 8 + 4 * 8), (n, len(data))
+for k in range(n):
+    cid, model, w, h = struct.unpack_from("<IiQQ", data, 8 + k * 56)
+    assert (cid, model, w, h) == (k + 1, 1, 160, 107), (cid, model, w, h)  # 1: PINHOLE
+text = [l.split() for l in open(sys.argv[2] + "/cameras.txt") if l.strip() and not l.startswith("#")]
+for k, line in enumerate(text):
+    params = struct.unpack_from("<4d", data, 8 + k * 56 + 24)
+    assert [repr(p) for p in params] == [repr(float(x)) for x in line[4:]], (params, line)
+assert open(sys.argv[1] + "/points3D.bin", "rb").read() == bytes(8)
+EOF
+)
+if out=$($python -c "$check_binary" "$work/sparse-bin" "$work/sparse" 2>&1); then pass; else fail "the binary model: $out"; fi
+seed=$(seed_of "$work/frames/manifest.jsonl" 2)
+"$lenslab" render --colmap "$work/sparse-bin" --image frame_0002.png --seed "$seed" --out "$work/colmap_bin.png" -q \
+  || fail "render --colmap of the binary model"
+if close_pixels "$work/colmap_bin.png" "$work/frames/frame_0002.png"; then pass
+else fail "render --colmap of the binary model differs from the frame"; fi
+
 # The bound above is tight enough to see COLMAP's half pixel: the model with each principal point
 # moved by 0.5 px (as if OpenCV's convention had been written) must not pass.
 mkdir "$work/shifted"
@@ -188,7 +216,8 @@ bad "--colmap with --camera" "both give the camera" -- render --colmap "$work/sp
 bad "unknown image" "frame_0000.png, frame_0001.png" -- render --colmap "$work/sparse" --image nothere.png
 bad "no such folder" "not a folder" -- render --colmap "$work/missing" --image a.png
 bad "fisheye" "cameras.txt:2: camera 1 is OPENCV_FISHEYE" -- render --colmap "$work/bad/fisheye" --image a.png
-bad "binary model" "colmap model_converter" -- raycast --colmap "$work/bad/binary" --image a.png
+bad "empty binary model" "cameras.bin: the file ends inside the number of cameras" \
+  -- raycast --colmap "$work/bad/binary" --image a.png
 bad "no POINTS2D lines" "images.txt:2:" -- render --colmap "$work/bad/nopoints" --image a.png
 bad "--colmap with --camera-node" "gives the camera already" -- render --colmap "$work/sparse" --image frame_0000.png \
   --camera-node 0

@@ -91,6 +91,7 @@ const ModelCase kCases[] = {
     {"RADIAL", {795.0, 638.5, 362.5, -0.18, 0.04}},
     {"OPENCV", {801.0, 806.0, 645.5, 355.25, -0.21, 0.05, 0.0012, -0.0008}},
     {"FULL_OPENCV", {799.0, 803.0, 636.0, 361.0, -0.2, 0.045, -0.001, 0.0015, -0.008, 0.0, 0.0, 0.0}},
+    {"FULL_OPENCV", {799.0, 803.0, 636.0, 361.0, -0.32, 0.11, -0.001, 0.0015, 0.012, 0.08, 0.025, 0.003}},
 };
 
 void PrintTo(const ModelCase& c, std::ostream* out) { *out << c.model; }
@@ -139,7 +140,9 @@ TEST_P(ColmapCameraModel, PutsWorldPointsWhereColmapDoes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, ColmapCameraModel, ::testing::ValuesIn(kCases),
-                         [](const ::testing::TestParamInfo<ModelCase>& param) { return param.param.model; });
+                         [](const ::testing::TestParamInfo<ModelCase>& param) {
+                           return param.param.model + "_" + std::to_string(param.index);
+                         });
 
 // --- reading: the layout -------------------------------------------------------------------
 
@@ -240,7 +243,7 @@ TEST(ColmapText, ModelsLenslabDoesNotRenderAreRefusedByNameWhenUsed) {
   EXPECT_NO_THROW(colmapImageCamera(model, "pin.png"));
   expectHas(errorOf([&] { colmapImageCamera(model, "fish.png"); }),
             {"m/cameras.txt:1:", "OPENCV_FISHEYE", "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV"});
-  expectHas(errorOf([&] { colmapImageCamera(model, "full.png"); }), {"m/cameras.txt:3:", "FULL_OPENCV", "k4 = 0.1"});
+  EXPECT_EQ(colmapImageCamera(model, "full.png").lens.effects.distortion.k4, 0.1);  // the rational model
   expectHas(errorOf([&] { colmapImageCamera(model, "neg.png"); }), {"m/cameras.txt:4:", "focal length -5"});
   expectHas(errorOf([&] { colmapImageCamera(model, "wide.png"); }), {"m/cameras.txt:5:", "65536"});
   expectHas(errorOf([&] { colmapImageCamera(model, "lost.png"); }), {"m/images.txt:11:", "CAMERA_ID 9"});
@@ -260,11 +263,7 @@ class ColmapFolder : public test::TempDirTest {
   void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
 };
 
-TEST_F(ColmapFolder, ReadsTheTextModelAndPointsAtTheConverterForABinaryOne) {
-  write("cameras.bin", "binary");
-  write("images.bin", "binary");
-  expectHas(errorOf([&] { readColmapModel(dir_); }),
-            {"cameras.txt", "binary", "colmap model_converter", "--output_type TXT"});
+TEST_F(ColmapFolder, ReadsTheTextModelAndTheBinaryOneFirstAsColmapDoes) {
   write("cameras.txt", "1 PINHOLE 64 48 50 50 32 24\n");
   write("images.txt", "1 1 0 0 0 0 0 5 1 frame.png\n\n2 1 0 0 0 0 0 5 3 other.png\n\n");
   expectHas(errorOf([&] { readColmapModel(dir_); }), {"images.txt:3:", "CAMERA_ID 3", "cameras.txt"});
@@ -274,6 +273,10 @@ TEST_F(ColmapFolder, ReadsTheTextModelAndPointsAtTheConverterForABinaryOne) {
   const Camera camera = colmapImageCamera(model, "frame.png");
   EXPECT_NE(camera.source.find("frame.png"), std::string::npos);
   expectHas(errorOf([&] { readColmapModel(dir_ / "missing"); }), {"missing", "not a folder"});
+  // Both formats in one folder: COLMAP reads the binary one, and so does lenslab.
+  write("cameras.bin", "binary");
+  write("images.bin", "binary");
+  expectHas(errorOf([&] { readColmapModel(dir_); }), {"cameras.bin", "ends inside the number of cameras"});
 }
 
 // --- writing --------------------------------------------------------------------------------
@@ -294,6 +297,13 @@ TEST(ColmapWrite, TheSimplestModelThatHoldsTheLensExactly) {
   EXPECT_EQ(c.model, "FULL_OPENCV");
   EXPECT_EQ(c.params.size(), 12u);
   EXPECT_EQ(c.params[8], 0.01);
+  d.k3 = 0.0, d.k5 = 0.004;  // the rational model alone needs FULL_OPENCV too
+  c = colmapCameraOf(k, d, 1, "t");
+  EXPECT_EQ(c.model, "FULL_OPENCV");
+  EXPECT_EQ(c.params[10], 0.004);
+  d.s3 = 0.001;  // OpenCV's thin prism: no COLMAP model
+  expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }), {"path.json: frame 3", "s3 0.001"});
+  d.s3 = 0.0;
   d.alpha = 0.02;
   expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }),
             {"path.json: frame 3", "alpha", "k1, k2, p1, p2, k3"});

@@ -59,13 +59,17 @@ std::string kJson(const test::OpenCvCamera& c) {
   return list({list({json17(c.fx), "0", json17(c.cx)}), list({"0", json17(c.fy), json17(c.cy)}), "[0, 0, 1]"});
 }
 std::string distJson(const test::OpenCvCamera& c) {
-  return list({json17(c.k1), json17(c.k2), json17(c.p1), json17(c.p2), json17(c.k3)});
+  if (!c.beyondFive()) return list({json17(c.k1), json17(c.k2), json17(c.p1), json17(c.p2), json17(c.k3)});
+  return list({json17(c.k1), json17(c.k2), json17(c.p1), json17(c.p2), json17(c.k3), json17(c.k4), json17(c.k5),
+               json17(c.k6), json17(c.s1), json17(c.s2), json17(c.s3), json17(c.s4)});
 }
 
 const test::OpenCvCamera kLenses[] = {
     {520, 515, 330.2, 236.7},                                       // a pinhole
     {505, 512, 325.0, 230.0, -0.21, 0.06, 0.0021, -0.0013, -0.01},  // barrel, tangential, k3
     {530, 530, 319.5, 239.5, 0.15, 0.02},                           // pincushion
+    // OpenCV's rational model and thin prism, all 12 coefficients
+    {498, 503, 321.0, 242.0, -0.35, 0.12, 0.0015, -0.0011, 0.015, 0.09, 0.03, 0.004, 0.0012, -0.0007, 0.0009, 0.0003},
 };
 
 // Random poses, each lens, K and "intrinsics" alike: lenslab's pixel = OpenCV's + 0.5.
@@ -186,8 +190,9 @@ TEST(OpenCvPoseForm, EachBadKeyIsRefusedInOneLineNamingIt) {
   expectHas(errorOf(file(k)), {"pose", "\"R\" and \"t\"", "\"eye\""});
   expectHas(errorOf(file(rt + R"(, "dist": [0, 0, 0, 0])")), {"intrinsics", "\"K\""});
   expectHas(errorOf(file(k + ", " + rt + R"(, "aperture_radius": 0.01)")), {"\"aperture_radius\"", "focus_distance"});
-  expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0, 0, 0, 0.1, 0, 0])")), {"\"dist\"", "k4 = 0.1"});
-  expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0])")), {"\"dist\"", "[k1, k2, p1, p2, k3]"});
+  expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0.1, 0])")),
+            {"\"dist\"", "tauX = 0.1", "tilted sensor"});
+  expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0])")), {"\"dist\"", "4, 5, 8, 12 or 14 numbers"});
   expectHas(errorOf(file(k + ", " + rt + R"(, "dist": [0, 0, 0, 0], "distortion": {"k1": 0.1})")),
             {"\"dist\"", "give one"});
   expectHas(errorOf(file(k + ", " + rt + R"(, "vrp": [0, 0, 0])")), {"unknown key \"vrp\"", "OpenCV camera"});

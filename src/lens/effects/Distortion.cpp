@@ -1,8 +1,9 @@
 // Distortion: the model (Brown–Conrady in OpenCV's convention with the lecture's series) and its
 // module (LensEffectModule.h).
 //
-// Camera file: "distortion": {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"} (missing
-// keys 0), or OpenCV's distCoeffs array as "distortion" or, in the OpenCV form, "dist".
+// Camera file: "distortion": {"k1", "k2", "p1", "p2", "k3", "k4", "k5", "k6", "s1", "s2", "s3", "s4",
+// "alpha", "beta", "gamma"} (missing keys 0), or OpenCV's distCoeffs array as "distortion" or, in
+// the OpenCV form, "dist".
 // Path: each coefficient linear. Plan: the lens remap pass ("distortion" variant).
 #include "lens/effects/Distortion.h"
 
@@ -21,23 +22,54 @@ namespace {
 glm::dvec2 flipY(glm::dvec2 p) { return {p.x, -p.y}; }
 
 struct Radial {
-  double g;  // 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶
+  double g;  // (1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶) / (1 + k4 r² + k5 r⁴ + k6 r⁶)
   double h;  // g'(r) / r, so that ∂g/∂x = h·x (0 at the centre, where the α term has no derivative)
 };
 
 Radial radial(const Distortion& d, double r) {
   const double r2 = r * r;
   const double k1 = d.k1 + d.beta;
-  Radial out;
-  out.g = 1.0 + r * (d.alpha + r * (k1 + r * d.gamma)) + r2 * r2 * (d.k2 + r2 * d.k3);
-  out.h = 2.0 * k1 + 3.0 * d.gamma * r + 4.0 * d.k2 * r2 + 6.0 * d.k3 * r2 * r2 + (r > 0.0 ? d.alpha / r : 0.0);
-  return out;
+  const double top = 1.0 + r * (d.alpha + r * (k1 + r * d.gamma)) + r2 * r2 * (d.k2 + r2 * d.k3);
+  const double topH =
+      2.0 * k1 + 3.0 * d.gamma * r + 4.0 * d.k2 * r2 + 6.0 * d.k3 * r2 * r2 + (r > 0.0 ? d.alpha / r : 0.0);
+  const double bottom = 1.0 + r2 * (d.k4 + r2 * (d.k5 + r2 * d.k6));
+  const double bottomH = 2.0 * d.k4 + 4.0 * d.k5 * r2 + 6.0 * d.k6 * r2 * r2;
+  // (top / bottom)' / r by the quotient rule; a denominator at or below 0 is the rational model's
+  // pole, beyond which no lens maps: the Jacobian below turns singular there (a fold).
+  return {top / bottom, (topH * bottom - top * bottomH) / (bottom * bottom)};
 }
+
+bool radialDefined(const Distortion& d, double r2) { return 1.0 + r2 * (d.k4 + r2 * (d.k5 + r2 * d.k6)) > 0.0; }
 
 }  // namespace
 
 bool Distortion::isZero() const {
-  return k1 == 0.0 && k2 == 0.0 && p1 == 0.0 && p2 == 0.0 && k3 == 0.0 && alpha == 0.0 && beta == 0.0 && gamma == 0.0;
+  for (const DistortionTerm& t : kDistortionTerms)
+    if (this->*t.value != 0.0) return false;
+  return true;
+}
+
+std::vector<double> Distortion::distCoeffs() const {
+  std::size_t n = 5;
+  for (std::size_t i = 5; i < kOpenCvDistortionTerms; ++i)
+    if (this->*kDistortionTerms[i].value != 0.0) n = i < 8 ? 8 : 12;
+  std::vector<double> c;
+  for (std::size_t i = 0; i < n; ++i) c.push_back(this->*kDistortionTerms[i].value);
+  return c;
+}
+
+std::string distortionTermsText(const Distortion& d) {
+  std::string text;
+  for (const DistortionTerm& t : kDistortionTerms)
+    if (d.*t.value != 0.0) text += cat(text.empty() ? "" : ", ", t.name, " = ", d.*t.value);
+  return text;
+}
+
+Distortion distortionFromDistCoeffs(const std::vector<double>& coefficients) {
+  Distortion d;
+  for (std::size_t i = 0; i < coefficients.size() && i < kOpenCvDistortionTerms; ++i)
+    d.*kDistortionTerms[i].value = coefficients[i];
+  return d;
 }
 
 glm::dvec2 Distortion::distort(glm::dvec2 undistorted) const {
@@ -45,20 +77,24 @@ glm::dvec2 Distortion::distort(glm::dvec2 undistorted) const {
   const double x = p.x, y = p.y;
   const double r2 = x * x + y * y;
   const double g = radial(*this, std::sqrt(r2)).g;
-  const glm::dvec2 d(x * g + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
-                     y * g + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y);
+  const glm::dvec2 d(x * g + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x) + r2 * (s1 + s2 * r2),
+                     y * g + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y + r2 * (s3 + s4 * r2));
   return flipY(d);
 }
 
 glm::dmat2 Distortion::jacobian(glm::dvec2 undistorted) const {
   const glm::dvec2 p = flipY(undistorted);
   const double x = p.x, y = p.y;
-  const Radial rad = radial(*this, std::sqrt(x * x + y * y));
+  const double r2 = x * x + y * y;
+  if (!radialDefined(*this, r2)) return glm::dmat2(0.0);
+  const Radial rad = radial(*this, std::sqrt(r2));
+  // The thin prism's s r² + s' r⁴ has gradient (2s + 4s' r²)·(x, y).
+  const double prismX = 2.0 * s1 + 4.0 * s2 * r2, prismY = 2.0 * s3 + 4.0 * s4 * r2;
   // OpenCV's frame: J = [[∂xd/∂x, ∂xd/∂y], [∂yd/∂x, ∂yd/∂y]].
-  const double dxdx = rad.g + rad.h * x * x + 2.0 * p1 * y + 6.0 * p2 * x;
-  const double dxdy = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y;
-  const double dydx = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y;
-  const double dydy = rad.g + rad.h * y * y + 6.0 * p1 * y + 2.0 * p2 * x;
+  const double dxdx = rad.g + rad.h * x * x + 2.0 * p1 * y + 6.0 * p2 * x + prismX * x;
+  const double dxdy = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y + prismX * y;
+  const double dydx = rad.h * x * y + 2.0 * p1 * x + 2.0 * p2 * y + prismY * x;
+  const double dydy = rad.g + rad.h * y * y + 6.0 * p1 * y + 2.0 * p2 * x + prismY * y;
   // Back to y up: F·J·F with F = diag(1, −1) flips the off-diagonal signs. glm is column-major.
   return glm::dmat2(glm::dvec2(dxdx, -dydx), glm::dvec2(-dxdy, dydy));
 }
@@ -152,16 +188,19 @@ std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 di
 
 namespace {
 
-const std::set<std::string> kKeys = {"k1", "k2", "p1", "p2", "k3", "alpha", "beta", "gamma"};
+std::set<std::string> termNames() {
+  std::set<std::string> names;
+  for (const DistortionTerm& t : kDistortionTerms) names.insert(t.name);
+  return names;
+}
 
-// OpenCV's distCoeffs as a calibration prints them: [k1, k2, p1, p2] or [k1, k2, p1, p2, k3]; the
-// 8-, 12- and 14-element forms too when what lenslab's model lacks is zero (k4, k5, k6 of the rational
-// model, s1..s4 of the thin prism, τx, τy of a tilted sensor).
+// OpenCV's distCoeffs as a calibration prints them: 4, 5, 8 (the rational model), 12 (and the thin
+// prism) or 14 numbers; the 14's last two (τx, τy: a tilted sensor) must be 0.
 Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
   const std::size_t n = r.arraySize(key);
   if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
-    r.fail(key, cat("as an array is OpenCV's distCoeffs [k1, k2, p1, p2] or [k1, k2, p1, p2, k3] (or the 8, 12 or 14 "
-                    "of the fuller models), not ",
+    r.fail(key, cat("as an array is OpenCV's distCoeffs: 4, 5, 8, 12 or 14 numbers (k1, k2, p1, p2[, k3[, k4, k5, "
+                    "k6[, s1, s2, s3, s4[, tauX, tauY]]]]), not ",
                     excerpt(r.text(key))));
   std::vector<double> c(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -169,15 +208,11 @@ Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
     if (!value) r.fail(key, "must hold finite numbers");
     c[i] = *value;
   }
-  static const char* const kBeyond[] = {"k4", "k5", "k6", "s1", "s2", "s3", "s4", "tauX", "tauY"};
-  for (std::size_t i = 5; i < n; ++i)
+  for (std::size_t i = kOpenCvDistortionTerms; i < n; ++i)
     if (c[i] != 0.0)
-      r.fail(key, cat("has ", kBeyond[i - 5], " = ", c[i], " (element ", i,
-                      "); lenslab's lens model is OpenCV's k1, k2, p1, "
-                      "p2, k3: the rational, thin-prism and tilt terms must be 0"));
-  Distortion d;
-  d.k1 = c[0], d.k2 = c[1], d.p1 = c[2], d.p2 = c[3], d.k3 = n > 4 ? c[4] : 0.0;
-  return d;
+      r.fail(key, cat("has ", i == 12 ? "tauX" : "tauY", " = ", c[i], " (element ", i,
+                      "): a tilted sensor (OpenCV's CALIB_TILTED_MODEL) is not modelled; its terms must be 0"));
+  return distortionFromDistCoeffs(c);
 }
 
 void read(const KeyReader& r, const LensFrame&, Lens& lens) {
@@ -185,7 +220,7 @@ void read(const KeyReader& r, const LensFrame&, Lens& lens) {
   if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
   if (r.has("dist")) {
     if (!r.isArray("dist"))
-      r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3], not ", r.text("dist")));
+      r.fail("dist", cat("is OpenCV's distCoeffs array [k1, k2, p1, p2, k3, ...], not ", r.text("dist")));
     d = distCoeffsOf(r, "dist");
   }
   if (!r.has("distortion")) return;
@@ -193,36 +228,23 @@ void read(const KeyReader& r, const LensFrame&, Lens& lens) {
     d = distCoeffsOf(r, "distortion");
     return;
   }
-  const std::unique_ptr<KeyReader> o = r.object("distortion", kKeys);
-  const auto get = [&](const char* key, double& out) {
-    if (o->has(key)) out = o->number(key);
-  };
-  get("k1", d.k1), get("k2", d.k2), get("p1", d.p1), get("p2", d.p2), get("k3", d.k3);
-  get("alpha", d.alpha), get("beta", d.beta), get("gamma", d.gamma);
+  const std::unique_ptr<KeyReader> o = r.object("distortion", termNames());
+  for (const DistortionTerm& t : kDistortionTerms)
+    if (o->has(t.name)) d.*t.value = o->number(t.name);
 }
 
 void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   const Distortion& k = lens.effects.distortion;
   if (k.isZero()) return;
   KeyWriter& d = camera.object("distortion");
-  for (const auto& [key, value] : {std::pair{"k1", k.k1},
-                                   {"k2", k.k2},
-                                   {"p1", k.p1},
-                                   {"p2", k.p2},
-                                   {"k3", k.k3},
-                                   {"alpha", k.alpha},
-                                   {"beta", k.beta},
-                                   {"gamma", k.gamma}})
-    if (value != 0.0) d.number(key, value);
+  for (const DistortionTerm& t : kDistortionTerms)
+    if (k.*t.value != 0.0) d.number(t.name, k.*t.value);
 }
 
 void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   const Distortion &x = a.effects.distortion, &y = b.effects.distortion;
   Distortion& d = out.effects.distortion;
-  d.k1 = lerpValue(x.k1, y.k1, u), d.k2 = lerpValue(x.k2, y.k2, u), d.k3 = lerpValue(x.k3, y.k3, u);
-  d.p1 = lerpValue(x.p1, y.p1, u), d.p2 = lerpValue(x.p2, y.p2, u);
-  d.alpha = lerpValue(x.alpha, y.alpha, u), d.beta = lerpValue(x.beta, y.beta, u),
-  d.gamma = lerpValue(x.gamma, y.gamma, u);
+  for (const DistortionTerm& t : kDistortionTerms) d.*t.value = lerpValue(x.*t.value, y.*t.value, u);
 }
 
 void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {

@@ -5,23 +5,29 @@
 // coefficients mean what they mean in OpenCV (y down), the conversion is inside.
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace lenslab {
 
 // Brown–Conrady distortion in OpenCV's convention and coefficient order, from the true perspective
-// position (x, y) to the distorted one (OpenCV frame, y down):
-//   r² = x² + y²,  radial = 1 + k1 r² + k2 r⁴ + k3 r⁶
-//   x_d = x·radial + 2 p1 x y + p2 (r² + 2x²)
-//   y_d = y·radial + p1 (r² + 2y²) + 2 p2 x y
+// position (x, y) to the distorted one (OpenCV frame, y down), with OpenCV's rational and thin-prism
+// terms (its CALIB_RATIONAL_MODEL and CALIB_THIN_PRISM_MODEL; COLMAP's FULL_OPENCV is the first):
+//   r² = x² + y²,  radial = (1 + k1 r² + k2 r⁴ + k3 r⁶) / (1 + k4 r² + k5 r⁴ + k6 r⁶)
+//   x_d = x·radial + 2 p1 x y + p2 (r² + 2x²) + s1 r² + s2 r⁴
+//   y_d = y·radial + p1 (r² + 2y²) + 2 p2 x y + s3 r² + s4 r⁴
 // plus the lecture's series ρ = ρ'(1 + αρ' + βρ'² + γρ'³): ρ' is the true perspective radius and ρ
 // the distorted one (the lecture's step "convert points to 2D spherical coordinates based in the
 // middle of the image", then scale the radius). The slide prints the series without the leading 1,
 // which would shrink the image centre to a point; lenslab reads it with the 1, so that the centre
 // keeps its perspective scale and α = β = γ = 0 is no distortion. β is OpenCV's k1; α and γ add the
-// odd powers: radial = 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶.
+// odd powers to the numerator: 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶.
 struct Distortion {
   double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0;  // OpenCV
+  double k4 = 0.0, k5 = 0.0, k6 = 0.0;                      // OpenCV's rational model (the denominator)
+  double s1 = 0.0, s2 = 0.0, s3 = 0.0, s4 = 0.0;            // OpenCV's thin prism
   double alpha = 0.0, beta = 0.0, gamma = 0.0;              // the lecture's series
 
   bool isZero() const;
@@ -34,7 +40,34 @@ struct Distortion {
   // converge in 64 steps or the Jacobian is singular (a fold, see findFoldOver).
   std::optional<glm::dvec2> undistort(glm::dvec2 distorted, glm::dvec2 guess) const;
   std::optional<glm::dvec2> undistort(glm::dvec2 distorted) const { return undistort(distorted, distorted); }
+
+  // Whether every term is OpenCV's (none of the lecture's α, β, γ): then distCoeffs() says it all.
+  bool isOpenCv() const { return alpha == 0.0 && beta == 0.0 && gamma == 0.0; }
+  // OpenCV's distCoeffs for the OpenCV terms, at the shortest of its lengths that holds them: 5
+  // (k1, k2, p1, p2, k3), 8 (+ k4, k5, k6) or 12 (+ s1 … s4).
+  std::vector<double> distCoeffs() const;
 };
+
+// Every coefficient, by its camera-file name, in OpenCV's distCoeffs order and then the lecture's:
+// what reads, writes, interpolates and keys a Distortion walks, so that no place forgets a term.
+struct DistortionTerm {
+  const char* name;
+  double Distortion::*value;
+};
+inline constexpr DistortionTerm kDistortionTerms[] = {
+    {"k1", &Distortion::k1},       {"k2", &Distortion::k2},     {"p1", &Distortion::p1},      {"p2", &Distortion::p2},
+    {"k3", &Distortion::k3},       {"k4", &Distortion::k4},     {"k5", &Distortion::k5},      {"k6", &Distortion::k6},
+    {"s1", &Distortion::s1},       {"s2", &Distortion::s2},     {"s3", &Distortion::s3},      {"s4", &Distortion::s4},
+    {"alpha", &Distortion::alpha}, {"beta", &Distortion::beta}, {"gamma", &Distortion::gamma}};
+// The OpenCV terms are the first 12, in distCoeffs order.
+inline constexpr std::size_t kOpenCvDistortionTerms = 12;
+
+// The terms that are not 0, for messages: "k1 = -0.3, k4 = 0.01".
+std::string distortionTermsText(const Distortion& distortion);
+
+// A Distortion from OpenCV's distCoeffs: its first 12 numbers at most (a 14's tilt terms τx, τy are
+// the caller's to refuse), missing ones 0.
+Distortion distortionFromDistCoeffs(const std::vector<double>& coefficients);
 
 // Where a distortion folds over inside a region of the distorted image: the true perspective
 // position, nearest the centre, at which the Jacobian's determinant is ≤ 0 (for a radial model,

@@ -89,7 +89,8 @@ void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames
     if (fs::absolute(o.colmapOut).lexically_normal() == fs::absolute(manifest).lexically_normal())
       throw InputError(cat("--colmap-out ", o.colmapOut, ": is the manifest; give the model a folder of its own"));
     madeFolders.createFolders(o.colmapOut);
-    checkOutputPath(fs::path(o.colmapOut) / "cameras.txt", OutputKind::Any, "--colmap-out");
+    checkOutputPath(fs::path(o.colmapOut) / (o.colmapFormat == "binary" ? "cameras.bin" : "cameras.txt"),
+                    OutputKind::Any, "--colmap-out");
   }
 }
 
@@ -288,13 +289,18 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
       "seed for the aperture and sub-pixel samples: each frame's seed is a hash of this and the frame number "
       "(the manifest's seed; render --seed with it reproduces the frame)");
   addTargetOption(*cmd, o->lens);
-  addApertureShapeOptions(*cmd, o->lens);
+  addLensOverrideOptions(*cmd, o->lens);
   addCameraOptions(*cmd, o->camera);
   cmd->add_option("--colmap-out", o->colmapOut,
-                  "also write the cameras of every frame of --frames as a COLMAP text model in DIR (cameras.txt, "
-                  "images.txt with the frames' names relative to --out's folder, an empty points3D.txt); every shard "
-                  "writes the same files (docs/capture.md)")
+                  "also write the cameras of every frame of --frames as a COLMAP model in DIR (cameras, images with "
+                  "the frames' names relative to --out's folder, an empty points3D); every shard writes the same "
+                  "files (docs/capture.md)")
       ->type_name("DIR");
+  cmd->add_option("--colmap-format", o->colmapFormat,
+                  "with --colmap-out: text (cameras.txt, images.txt, points3D.txt) or binary (cameras.bin, ...), as "
+                  "COLMAP writes either")
+      ->check(CLI::IsMember({"text", "binary"}))
+      ->capture_default_str();
   addBackgroundOption(*cmd, o->background);
   addExposureOptions(*cmd, o->exposure);
   addEnvironmentOptions(*cmd, o->environment);

@@ -66,7 +66,35 @@ void addFocusOptions(CLI::App& cmd, LensOptions& o) {
       ->excludes(distance);
 }
 
-void addApertureShapeOptions(CLI::App& cmd, LensOptions& o) {
+namespace {
+
+void addLensEffectOptions(CLI::App& cmd, LensOptions& o) {
+  cmd.add_option("--distortion", o.distortion,
+                 "lens distortion as OpenCV's distCoeffs k1,k2,p1,p2,k3,k4,k5,k6,s1,s2,s3,s4 (1 to 12 numbers, the "
+                 "missing ones 0; e.g. -0.2 for a barrel, 0.1 for a pincushion), over the camera file's \"distortion\"")
+      ->check(numberIn({.min = -1e4, .max = 1e4, .unit = {}}))
+      ->delimiter(',')
+      ->expected(1, 64)  // more than 12 is refused with the terms named (withLensEffectOptions)
+      ->type_name("K1[,K2,...]");
+  cmd.add_option("--lateral-color", o.lateralColor,
+                 "lateral chromatic aberration: red's and blue's images magnified about the centre by this fraction "
+                 "of green's (e.g. 0.002,-0.002; one number L: red L and blue -L), over the camera file's")
+      ->check(numberIn({.min = -0.49, .max = 0.49, .unit = {}}))
+      ->delimiter(',')
+      ->expected(1, 64)
+      ->type_name("RED[,BLUE]");
+  cmd.add_option("--axial-color", o.axialAbbe,
+                 "axial chromatic aberration of a simple lens of glass with this Abbe number (about 20 for dense "
+                 "flint to 90 for fluorite; 60 is crown glass): red focused farther, blue nearer; needs a camera in "
+                 "the physical form (its focal length)")
+      ->check(numberIn({.min = 1.0, .max = 1000.0, .unit = {}}))
+      ->type_name("ABBE");
+}
+
+}  // namespace
+
+void addLensOverrideOptions(CLI::App& cmd, LensOptions& o) {
+  addLensEffectOptions(cmd, o);
   cmd.add_option(
          "--blades", o.blades,
          "aperture blades: 0 for a round aperture, 3 to 64 for a polygon of the same area (out-of-focus highlights "

@@ -23,8 +23,10 @@ void addSamplingOptions(CLI::App& command, LensOptions& options);
 void addSeedOption(CLI::App& command, LensOptions& options);
 // --focus-distance, --focus-at (render, raycast, view; capture takes focus from its path).
 void addFocusOptions(CLI::App& command, LensOptions& options);
-// --blades N and --squeeze RATIO: the aperture's shape over the camera's (lens/ApertureShape.h).
-void addApertureShapeOptions(CLI::App& cmd, LensOptions& o);
+// The lens over the camera's: --blades N and --squeeze RATIO (the aperture's shape,
+// lens/ApertureShape.h), --distortion, --lateral-color and --axial-color (its effects,
+// lens/LensEffects.h; plan/UserOptions.h withLensEffectOptions says how each replaces the camera's).
+void addLensOverrideOptions(CLI::App& cmd, LensOptions& o);
 // --target-psnr DB (render and view; sweep runs its adaptive method at several targets).
 void addTargetOption(CLI::App& command, LensOptions& options);
 

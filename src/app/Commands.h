@@ -15,5 +15,6 @@ std::function<int()> addInfoCommand(CLI::App& app);
 std::function<int()> addLensCommand(CLI::App& app);     // src/app/LensCommand.cpp
 std::function<int()> addViewCommand(CLI::App& app);     // src/app/ViewCommand.cpp
 std::function<int()> addCaptureCommand(CLI::App& app);  // src/app/CaptureCommand.cpp
+std::function<int()> addDiagramCommand(CLI::App& app);  // src/app/DiagramCommand.cpp
 
 }  // namespace lenslab

@@ -1,6 +1,7 @@
 #include "app/FrameCameras.h"
 
 #include "camera/GltfCamera.h"
+#include "camera/LensMap.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "io/CameraPathJson.h"
@@ -71,7 +72,14 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.where = cat(cameras.name(), ": frame ", frame, " (", k.timeSeconds, " s)");
   k.key = cameras.at(scene, k.timeSeconds, k.where);
   k.key.lens.aperture = withApertureOptions(k.key.lens.aperture, o.lens);  // --blades / --squeeze over every frame's
-  k.camera = toCamera(k.key.camera, k.key.lens, k.where);
+  const double focalLength = k.key.camera.focalLengthMm * kMetresPerMillimetre;
+  k.key.lens.effects = withLensEffectOptions(k.key.lens.effects, o.lens, focalLength, k.where);
+  if (!o.lens.changesLensEffects()) {
+    k.camera = toCamera(k.key.camera, k.key.lens, k.where);
+  } else {
+    k.camera = toCamera(k.key.camera, k.key.lens, cat(k.where, " with ", describeLensEffectOptions(o.lens)));
+    validateLensEffects(k.camera, k.camera.source, focalLength);
+  }
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
 }

@@ -8,6 +8,7 @@
 #include "lens/ParaxialLens.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace lenslab {
 
@@ -67,6 +68,28 @@ double fitErrorPx(const FittedLens& fit, const LensRequest& r, int widthPx) {
 Camera fittedCameraFor(const LensRequest& r, const FittedLens& fit, const Camera& camera, const std::string& file) {
   return cameraForFittedLens(camera, fit, r.settings.sensorMm, r.pose.worldPerMm,
                              cat(camera.source, " through ", file, " (fitted)"));
+}
+
+FocusExplanation focusExplanation(const LensRequest& r, const FittedLens& fit) {
+  FocusExplanation e;
+  e.askedDistance = r.settings.focusDistance;
+  const double asked = 1.0 / r.settings.focusDistance, fitted = fit.inverseFocusPerMm / r.pose.worldPerMm;
+  if (std::abs(fitted - asked) <= 0.005 * std::max(asked, fitted)) return e;
+  const auto distance = [](double inverse) {
+    if (!(inverse > 0.0)) return std::string("infinity");
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", 1.0 / inverse);
+    return std::string(text);
+  };
+  e.note =
+      cat("asked focus ", distance(asked),
+          ": the film is placed where the lens's first-order (paraxial) image of that plane lies; its traced "
+          "rays at ",
+          r.settings.fNumber ? cat("f/", *r.settings.fNumber) : std::string("the full opening"),
+          " come to their best focus on the axis (of the focal surface fitted over the field) at ", distance(fitted),
+          ": the lens's aberrations (spherical aberration, field curvature) move best focus from the paraxial "
+          "one, and the fitted thin lens focuses where the real lens is sharpest");
+  return e;
 }
 
 std::vector<std::pair<std::string, Camera>> fittedCameraAblations(const Camera& fitted) {

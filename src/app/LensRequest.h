@@ -47,6 +47,17 @@ double fitErrorPx(const FittedLens& fit, const LensRequest& request, int widthPx
 Camera fittedCameraFor(const LensRequest& request, const FittedLens& fit, const Camera& camera,
                        const std::string& file);
 
+// Why the fitted lens's focus distance is not the one asked for: the film is placed where the
+// lens's first-order (paraxial) image of the asked plane lies, and the traced rays through the
+// whole stop are sharpest on the axis elsewhere (spherical aberration moves best focus); the thin
+// lens is fitted to where the real lens is sharpest. Empty when the two agree within 0.5 %
+// (of the inverse distances, so that infinity compares too). For --stats' "lens".
+struct FocusExplanation {
+  double askedDistance = 0.0;  // world units from the entrance pupil; +infinity allowed
+  std::string note;
+};
+FocusExplanation focusExplanation(const LensRequest& request, const FittedLens& fit);
+
 // The fitted camera with each of its effects left out in turn, named ("distortion", "barrel",
 // ...): what each effect of the fit is worth against the exact lens (sweep --lens). Effects the
 // fit left at zero are not listed.

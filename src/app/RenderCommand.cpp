@@ -96,7 +96,7 @@ Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedC
         withDepthRangeFitted(fittedCameraFor(request, fit, camera, o.lensFile), scene.bounds));
     SelectedCamera lensCamera;
     camera = lensCamera.camera = lens->fitted().camera();
-    stats.setCamera(lensCamera);
+    stats.setCamera(lensCamera, focusExplanation(request, fit));
     frame = std::move(lens);
   }
   return camera;
@@ -377,7 +377,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   if (method == Method::Raster) addSamplingOptions(*cmd, options->lens);
   addSeedOption(*cmd, options->lens);
   addFocusOptions(*cmd, options->lens);
-  addApertureShapeOptions(*cmd, options->lens);
+  addLensOverrideOptions(*cmd, options->lens);
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);

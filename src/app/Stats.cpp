@@ -15,6 +15,12 @@ void RunStats::setCamera(const SelectedCamera& selected) {
   physical = selected.physical;
 }
 
+void RunStats::setCamera(const SelectedCamera& fitted, const FocusExplanation& focus) {
+  setCamera(fitted);
+  askedFocusDistance = focus.askedDistance;
+  focusNote = focus.note;
+}
+
 namespace {
 
 nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
@@ -30,6 +36,8 @@ nlohmann::json lensJson(const RunStats& s) {
                         {"roundness", s.aperture.roundness},
                         {"anamorphic_squeeze", s.aperture.anamorphicSqueeze}}}};
   if (s.barrel.present()) j["barrel"] = {{"distance", s.barrel.distance}, {"radius", s.barrel.radius}};
+  if (s.askedFocusDistance) j["asked_focus_distance"] = distanceJson(*s.askedFocusDistance);
+  if (!s.focusNote.empty()) j["focus_note"] = s.focusNote;
   if (s.physical) {
     const PhysicalCamera& p = *s.physical;
     j["focal_length_mm"] = p.focalLengthMm;

@@ -1,5 +1,6 @@
 #pragma once
 // --stats: what a run did, as JSON, for scripts and reports.
+#include "app/LensRequest.h"
 #include "camera/Exposure.h"
 #include "camera/ImageSize.h"
 #include "camera/PhysicalCamera.h"
@@ -43,8 +44,14 @@ struct RunStats {
   // The environment (--environment): "environment" in the JSON, absent without one.
   std::optional<EnvironmentSummary> environment;
 
+  // With --lens: the focus distance asked for and, where the fitted lens focuses elsewhere, why.
+  std::optional<double> askedFocusDistance;
+  std::string focusNote;
+
   // The camera's source, focus, aperture and physical description.
   void setCamera(const SelectedCamera& selected);
+  // The same for the thin lens fitted to a real one, with what `focus` says of its focus.
+  void setCamera(const SelectedCamera& fitted, const FocusExplanation& focus);
 };
 
 std::string toJson(const RunStats& stats);

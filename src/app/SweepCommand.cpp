@@ -289,7 +289,7 @@ std::function<int()> addSweepCommand(CLI::App& app) {
   cmd->add_option("--focus-distance", o->lens.focusDistance,
                   "put the plane of focus this far from the PRP (or infinity)")
       ->check(numberOrInfinity({.unit = "world units"}));
-  addApertureShapeOptions(*cmd, o->lens);
+  addLensOverrideOptions(*cmd, o->lens);
   cmd->add_flag("--quiet,-q", o->quiet, "print nothing on success (no progress)");
   return [cmd, o]() {
     if (!cmd->parsed()) return -1;

@@ -27,7 +27,7 @@ std::function<int()> addViewCommand(CLI::App& app) {
   addSamplingOptions(*cmd, o->lens);
   addSeedOption(*cmd, o->lens);
   addFocusOptions(*cmd, o->lens);
-  addApertureShapeOptions(*cmd, o->lens);
+  addLensOverrideOptions(*cmd, o->lens);
   addTargetOption(*cmd, o->lens);
   addCameraOptions(*cmd, o->camera);
   addTimeOption(

@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
   std::vector<std::function<int()>> commands = {lenslab::addRenderCommand(app),  lenslab::addRaycastCommand(app),
                                                 lenslab::addCaptureCommand(app), lenslab::addSweepCommand(app),
                                                 lenslab::addInfoCommand(app),    lenslab::addLensCommand(app),
-                                                lenslab::addViewCommand(app)};
+                                                lenslab::addViewCommand(app),    lenslab::addDiagramCommand(app)};
   if (const std::string message = unknownCommandMessage(app, argc, argv); !message.empty()) {
     std::cerr << "lenslab: error: " << message << " (see --help)\n";
     return 2;

@@ -1,9 +1,12 @@
 #include "plan/UserOptions.h"
 
+#include "camera/LensMap.h"
 #include "core/Error.h"
+#include "core/NumberInput.h"
 #include "core/Text.h"
 #include "lens/AperturePattern.h"
 
+#include <array>
 #include <charconv>
 #include <exception>
 #include <limits>
@@ -67,10 +70,58 @@ ApertureShape withApertureOptions(ApertureShape a, const LensOptions& o) {
   return a;
 }
 
+std::string describeLensEffectOptions(const LensOptions& o) {
+  const auto list = [](const std::vector<double>& values) {
+    std::string text;
+    for (const double v : values) text += cat(text.empty() ? "" : ",", numberText(v));
+    return text;
+  };
+  std::string text;
+  if (!o.distortion.empty()) text += cat("--distortion ", list(o.distortion));
+  if (!o.lateralColor.empty()) text += cat(text.empty() ? "" : " ", "--lateral-color ", list(o.lateralColor));
+  if (o.axialAbbe) text += cat(text.empty() ? "" : " ", "--axial-color ", numberText(*o.axialAbbe));
+  return text;
+}
+
+LensEffects withLensEffectOptions(LensEffects e, const LensOptions& o, std::optional<double> focalLength,
+                                  const std::string& camera) {
+  if (o.distortion.size() > kOpenCvDistortionTerms)
+    throw InputError(
+        cat("--distortion: ", o.distortion.size(), " numbers; give 1 to ", kOpenCvDistortionTerms,
+            ", OpenCV's k1,k2,p1,p2,k3,k4,k5,k6,s1,s2,s3,s4 (a tilted sensor's tauX, tauY is not modelled)"));
+  if (o.lateralColor.size() > 2)
+    throw InputError(cat("--lateral-color: ", o.lateralColor.size(), " numbers; give RED or RED,BLUE"));
+  if (!o.distortion.empty()) e.distortion = distortionFromDistCoeffs(o.distortion);
+  if (!o.lateralColor.empty()) {
+    // One number: red's image larger by it and blue's smaller by as much (a simple lens's sign).
+    e.chromatic.lateralRed = o.lateralColor[0];
+    e.chromatic.lateralBlue = o.lateralColor.size() > 1 ? o.lateralColor[1] : -o.lateralColor[0];
+  }
+  if (o.axialAbbe) {
+    if (!focalLength)
+      throw InputError(cat("--axial-color ", *o.axialAbbe, ": an Abbe number needs the lens's focal length, which ",
+                           camera,
+                           " does not give (it is not in the physical form); use a camera in the physical form, or set "
+                           "\"chromatic\": {\"focus_distance_red\", \"focus_distance_blue\"} in a camera file"));
+    const std::array<double, 2> shifts = inverseFocusShiftsFromAbbe(*o.axialAbbe, *focalLength);
+    e.chromatic.inverseFocusShiftRed = shifts[0];
+    e.chromatic.inverseFocusShiftBlue = shifts[1];
+  }
+  return e;
+}
+
 namespace {
 
 SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
   c.camera.lens.aperture = withApertureOptions(c.camera.lens.aperture, o);
+  if (o.changesLensEffects()) {
+    const std::optional<double> focalLength =
+        c.physical ? std::optional<double>(c.physical->focalLengthMm * kMetresPerMillimetre) : std::nullopt;
+    c.camera.lens.effects = withLensEffectOptions(c.camera.lens.effects, o, focalLength, c.camera.source);
+    // Every later message about the lens (a fold, the raster's linearisation) names the options.
+    c.camera.source += cat(" with ", describeLensEffectOptions(o));
+    validateLensEffects(c.camera, c.camera.source, focalLength);
+  }
   return c;
 }
 

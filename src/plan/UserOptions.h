@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lenslab {
 
@@ -26,6 +27,12 @@ struct LensOptions {
   std::optional<int> blades;          // the aperture's blades (0: round), over the camera's
   std::optional<double> squeeze;      // the aperture's anamorphic squeeze, over the camera's
   std::string cellFilter;             // "on", "off", or empty: the plan's choice (off)
+  // The lens effects over the camera's (lens/LensEffects.h), each replacing that effect:
+  std::vector<double> distortion;    // --distortion: OpenCV's distCoeffs (1 to 12 numbers, missing ones 0)
+  std::vector<double> lateralColor;  // --lateral-color RED[,BLUE]: magnification of red and blue over green
+  std::optional<double> axialAbbe;   // --axial-color ABBE: the glass's Abbe number
+
+  bool changesLensEffects() const { return !distortion.empty() || !lateralColor.empty() || axialAbbe.has_value(); }
 };
 
 // Throws InputError for a bad pattern or sample count.
@@ -37,6 +44,16 @@ PlanOptions toPlanOptions(const LensOptions& options);
 SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& options);
 // --blades and --squeeze alone over `aperture` (capture: each frame's camera), refused alike.
 ApertureShape withApertureOptions(ApertureShape aperture, const LensOptions& options);
+// --distortion, --lateral-color and --axial-color over `effects`, each replacing its effect (the
+// lecture's distortion series too: --distortion is OpenCV's whole model). --axial-color's Abbe
+// number needs the lens's focal length (world units), which a camera in the physical form has;
+// without it the option is refused in one line naming `camera` and the camera file's keys that
+// set the axial colour instead. What the effects do to the image (a fold, a finite coefficient)
+// is checked where every camera's effects are (camera/LensMap.h).
+LensEffects withLensEffectOptions(LensEffects effects, const LensOptions& options, std::optional<double> focalLength,
+                                  const std::string& camera);
+// The lens-effect options given, as typed ("--distortion -0.2,0.05 --axial-color 40"), for messages.
+std::string describeLensEffectOptions(const LensOptions& options);
 
 // The background colour (linear RGB) where no surface is seen, replacing the scene's.
 void applyBackground(Scene& scene, const std::optional<glm::vec3>& background);

@@ -1,5 +1,6 @@
 #include "render/LineDrawer.h"
 
+#include "gl/Framebuffer.h"
 #include "gl/Shader.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -53,6 +54,16 @@ void LineDrawer::draw(const std::vector<LineSegment>& lines, const glm::dmat4& c
   }
   glBindVertexArray(0);
   glDisable(GL_SCISSOR_TEST);
+}
+
+Image LineDrawer::drawOffscreen(const std::vector<LineSegment>& lines, const glm::dmat4& clipFromWorld,
+                                ImageSize size) {
+  const gl::RenderTarget canvas(size.widthPx, size.heightPx);
+  const float transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(canvas.drawTarget().framebuffer, GL_COLOR, 0, transparent);
+  canvas.bind();
+  draw(lines, clipFromWorld, {0, 0, size.widthPx, size.heightPx});
+  return canvas.readColor();
 }
 
 }  // namespace lenslab

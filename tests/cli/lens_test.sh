@@ -127,6 +127,18 @@ else
   fail "render --lens, automatic framing: $(cat "$work/err")"
 fi
 
+# The focus asked for and the fitted lens's: --stats gives both and says why they differ (the film
+# is placed for the paraxial image; the traced rays at f/2 are sharpest farther out).
+if "$lenslab" render --lens "$lenses/double-gauss-50mm.lens" --f-number 2 --focus-distance 4.38 --width 48 \
+     --aperture-samples 2 --out "$work/focus.png" --stats "$work/focus.json" -q 2>"$work/err"; then
+  check holds "$work/focus.json" "close(j['lens']['asked_focus_distance'], 4.38) and j['lens']['focus_distance'] > 4.5 and 'paraxial' in j['lens']['focus_note']"
+else
+  fail "render --lens --focus-distance 4.38 --stats: $(cat "$work/err")"
+fi
+# Without --lens there is nothing to explain.
+"$lenslab" render --width 32 --stats "$work/plain.json" --out "$work/plain.png" -q 2>/dev/null
+check holds "$work/plain.json" "'focus_note' not in j['lens'] and 'asked_focus_distance' not in j['lens']"
+
 # Past the fisheye's image circle no thin lens fits: render traces it exactly, as raycast does.
 if "$lenslab" render --camera "$dof" --lens "$lenses/fisheye-10mm.lens" --f-number 5.6 --width 18 --aperture-samples 1 \
      --out "$work/fisheye.png" 2>"$work/err"; then

@@ -4,6 +4,8 @@
 //   image_check busy IMG X0 Y0 X1 Y1 MIN   exit 0 when the region [X0, X1) × [Y0, Y1) holds
 //                                         non-trivial content: the standard deviation of its
 //                                         luminance (display-encoded) is at least MIN
+//   image_check count IMG R G B TOL        prints how many pixels are within TOL of the display-
+//                                         encoded colour (R, G, B) in [0, 1] in every channel
 // Exit 1 on a failed check, 2 on bad usage or unreadable files.
 #include "io/ImageCompare.h"
 #include "io/ImageFile.h"
@@ -48,7 +50,23 @@ int main(int argc, char** argv) {
       std::cout << "luminance deviation " << deviation << " (minimum " << minimum << ")\n";
       return deviation >= minimum ? 0 : 1;
     }
-    std::cerr << "usage: image_check psnr A B MIN_DB | image_check busy IMG X0 Y0 X1 Y1 MIN\n";
+    if (mode == "count" && argc == 7) {
+      const Image image = displayEncoded(readImage(argv[2]));
+      const glm::vec3 colour(std::atof(argv[3]), std::atof(argv[4]), std::atof(argv[5]));
+      const float tolerance = static_cast<float>(std::atof(argv[6]));
+      long count = 0;
+      for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+          const glm::vec4 c = image.at(x, y);
+          const glm::vec3 d = glm::abs(glm::vec3(c) - colour);
+          if (d.r <= tolerance && d.g <= tolerance && d.b <= tolerance) ++count;
+        }
+      std::cout << count << "\n";
+      return 0;
+    }
+    std::cerr
+        << "usage: image_check psnr A B MIN_DB | image_check busy IMG X0 Y0 X1 Y1 MIN | image_check count IMG R G "
+           "B TOL\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "image_check: " << e.what() << "\n";

@@ -91,7 +91,7 @@ class Canvas {
   // with a white inside.
   void marker(glm::ivec2 q, MarkerShape shape, const glm::vec3& c, bool hollow) {
     const std::vector<glm::dvec2> polygon = markerPolygon(shape);
-    const double radius = 6.0, stroke = 2.0;  // pixels
+    const double radius = 6.0, stroke = 1.5;  // pixels
     const glm::dvec2 centre = glm::dvec2(q) + 0.5;
     const int reach = static_cast<int>(std::ceil(1.5 * radius));
     for (int y = q.y - reach; y <= q.y + reach; ++y)

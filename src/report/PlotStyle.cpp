@@ -25,9 +25,10 @@ std::vector<glm::dvec2> regular(int n, double radius, double startDegrees) {
   return v;
 }
 
-// The plus sign: arms 0.36 wide each side of the centre line, 1.1 long.
+// The plus sign: arms reaching 1.2 from the centre, 0.45 each side of their centre line (wide
+// enough for a hollow one to show its inside).
 std::vector<glm::dvec2> plus() {
-  const double w = 0.36, l = 1.1;
+  const double w = 0.45, l = 1.2;
   return {{w, -l}, {w, -w}, {l, -w}, {l, w}, {w, w}, {w, l}, {-w, l}, {-w, w}, {-l, w}, {-l, -w}, {-w, -w}, {-w, -l}};
 }
 

@@ -7,11 +7,11 @@
 namespace lenslab {
 namespace {
 
-// m · 10^e written out: "2000", "0.002" for exponents -3 to 3, "2e-5" and "5e4" beyond.
+// m · 10^e written out: "2000", "0.0005" for exponents -4 to 3, "2e-5" and "5e4" beyond.
 std::string tickLabel(int mantissa, int exponent) {
   const std::string m = std::to_string(mantissa);
   if (exponent >= 0 && exponent <= 3) return m + std::string(exponent, '0');
-  if (exponent < 0 && exponent >= -3) return "0." + std::string(-exponent - 1, '0') + m;
+  if (exponent < 0 && exponent >= -4) return "0." + std::string(-exponent - 1, '0') + m;
   return m + "e" + std::to_string(exponent);
 }
 

@@ -18,7 +18,7 @@ LogRange fittedLogRange(double minValue, double maxValue);
 
 struct AxisTick {
   double value = 0.0;
-  std::string label;  // "0.05", "20", "2e-5": plain for 0.001 to 9000, mantissa and exponent beyond
+  std::string label;  // "0.05", "20", "2e-5": plain for 0.0001 to 9000, mantissa and exponent beyond
 };
 
 // Ticks inside the range: every decade when it spans more than 2.5 decades (every second, third,

@@ -81,7 +81,7 @@ std::vector<std::string> labels(const std::vector<AxisTick>& ticks) {
 TEST(LogAxis, TicksAre125UnderACoupleOfDecadesAndDecadesOverThem) {
   EXPECT_EQ(labels(logTicks({0.03, 0.4})), (std::vector<std::string>{"0.05", "0.1", "0.2"}));
   EXPECT_EQ(labels(logTicks({0.8, 60.0})), (std::vector<std::string>{"1", "2", "5", "10", "20", "50"}));
-  EXPECT_EQ(labels(logTicks({2e-6, 3.0})), (std::vector<std::string>{"1e-5", "1e-4", "0.001", "0.01", "0.1", "1"}));
+  EXPECT_EQ(labels(logTicks({2e-6, 3.0})), (std::vector<std::string>{"1e-5", "0.0001", "0.001", "0.01", "0.1", "1"}));
   EXPECT_EQ(labels(logTicks({1.5, 4.5})), (std::vector<std::string>{"2", "3", "4"}));
   EXPECT_EQ(labels(logTicks({3000.0, 2e4})), (std::vector<std::string>{"5000", "1e4", "2e4"}));
   EXPECT_NEAR(logTicks({0.03, 0.4})[0].value, 0.05, 1e-15);

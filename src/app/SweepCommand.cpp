@@ -162,21 +162,17 @@ std::string sweepHeader(const SweepCommandOptions& o, const fs::path& scenePath,
       " %\n", "- whole sweep: ", times.sweepSeconds, " s\n");
 }
 
+// Each series in its own colour and marker (report/PlotStyle.h), in the rows' order; the dashed
+// line is the reference's own noise, the floor under which no series can be measured.
 Image errorPlot(const SweepResult& result) {
-  const std::map<std::string, glm::vec3> colours = {
-      {"raster lecture17", {0.8f, 0.1f, 0.6f}},   {"raster concentric", {0.1f, 0.3f, 0.9f}},
-      {"raster r2", {0.0f, 0.6f, 0.3f}},          {"raster random", {0.9f, 0.5f, 0.0f}},
-      {"raycast stratified", {0.8f, 0.0f, 0.0f}}, {"postprocess gather", {0.3f, 0.3f, 0.3f}},
-      {"raster sobol", {0.5f, 0.3f, 0.8f}},       {"adaptive sobol", {0.0f, 0.75f, 0.85f}},
-      {"cell-filter sobol", {0.9f, 0.75f, 0.0f}}};
   std::vector<PlotSeries> series;
   for (const SweepRow& row : result.rows) {
     const std::string key = row.method + " " + row.pattern;
-    if (series.empty() || series.back().name != key)
-      series.push_back({key, colours.count(key) ? colours.at(key) : glm::vec3(0.0f), {}});
+    if (series.empty() || series.back().name != key) series.push_back({key, {}});
     series.back().points.push_back({row.seconds, row.rmse});
   }
-  return logLogPlot(series, "seconds", "RMSE", "error against run time");
+  return logLogPlot(series, "seconds", "RMSE", "error against run time",
+                    HorizontalLine{result.referenceNoiseRmse, "reference noise"});
 }
 
 int runSweepCommand(SweepCommandOptions& o) {

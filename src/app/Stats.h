@@ -45,6 +45,11 @@ struct RunStats {
 
   // The camera's source, focus, aperture and physical description.
   void setCamera(const SelectedCamera& selected);
+  // The exposure and view transform.
+  void setDisplay(const DisplaySettings& display) {
+    exposure = display.exposure;
+    viewTransform = display.encoding.transform;
+  }
 };
 
 std::string toJson(const RunStats& stats);

@@ -103,14 +103,76 @@ struct CaptureRun {
   const AovSelection& aovs;
   const std::optional<EnvironmentSummary>& environment;
   Shard shard;
+  int firstFrame;  // the range's: --exposure auto meters it
   Renderer& renderer;
   ProgressReporter& progress;
   std::unique_ptr<RayCaster> caster = {};  // the AOVs; rebuilt each frame when the scene moves
   RenderTargetLimits limits = queryRenderTargetLimits();
   std::set<std::string> warned = {};
+  // The first frame's exposure as metered: --exposure auto holds its scale for every frame.
+  std::optional<Exposure> held = {};
 
   void warnOnce(const std::string& w) {
     if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
+  }
+
+  // A frame made ready to render: the scene posed at its time, its camera as written (and as
+  // `render --camera` reads that text back), its display.
+  struct FrameSetup {
+    double time = 0.0;
+    FrameKey f;
+    std::string cameraText;
+    Camera camera;
+    DisplaySettings display;
+  };
+  FrameSetup setUp(int frame) {
+    FrameSetup s;
+    s.time = cameras.timeOf(frame);
+    if (!scene.animation.empty()) poseScene(scene, s.time);  // glTF node animations at the frame's time
+    s.f = frameKey(cameras, scene, o, frame);
+    if (const std::string shape = pixelShapeWarning(s.f.camera, o.width, o.height, s.f.size); !shape.empty())
+      warnOnce(shape);
+    s.cameraText =
+        toIntrinsicsCameraJson(s.f.key.camera, s.f.key.lens, s.f.size, cameras.nearGiven(), cameras.farGiven());
+    s.camera = withDepthRangeFitted(parseCameraJson(s.cameraText, s.f.where).camera, scene.bounds);
+    // Each frame's own f-number for a physical exposure (a path may change it from key to key).
+    s.display = resolveDisplay(o.exposure, SelectedCamera{s.camera, s.f.key.camera});
+    return s;
+  }
+
+  // The frame's image by its plan, with `lens`'s seed; sets `stats` and `plan`.
+  Image render(int frame, const FrameSetup& s, const LensOptions& lens, RunStats& stats, FramePlan& plan) {
+    plan = planFrame(renderer, scene, s.camera, s.f.size, toPlanOptions(lens), stats);
+    for (const std::string& w : plan.warnings) warnOnce(w);
+    for (const std::string& w : focusWarnings(s.camera, o.lens)) warnOnce(w);
+    if (const TilePlan tiles = planTiles(s.camera, s.f.size, plan, limits, 0); tiles.tiled)
+      throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why,
+                           "; capture renders each frame in one render "
+                           "target: give a smaller size (render tiles a single large image)"));
+    return renderPlanned(renderer, s.camera, plan, s.f.size, stats, nullptr, true);
+  }
+
+  // The frame's meter reading in `display` (for --exposure auto and a physical exposure); for
+  // --exposure auto the exposure held from the range's first frame. The first reading's warnings
+  // only: a sequence is exposed as one.
+  void meter(DisplaySettings& display, const Image& image, int frame) {
+    const std::vector<std::string> warnings = meterForFile(display, image, o.out, false, held);
+    if (display.exposure.meterReading && !held) {
+      held = display.exposure;
+      for (const std::string& w : warnings) warnOnce(cat("frame ", frame, ": ", w));
+    }
+  }
+
+  // --exposure auto on a process whose first frame to render is not the range's first (another
+  // shard's, or one --skip-existing leaves alone): that frame rendered and metered here, not written.
+  void meterFirst(int frame) {
+    const FrameSetup s = setUp(frame);
+    LensOptions lens = o.lens;
+    lens.seed = frameSeed(o.lens.seed, frame);
+    RunStats stats;
+    FramePlan plan;
+    DisplaySettings display = s.display;
+    meter(display, render(frame, s, lens, stats, plan), frame);
   }
 
   // Renders `frame` and commits its image, camera file and manifest line; the line.
@@ -118,52 +180,37 @@ struct CaptureRun {
     const fs::path imageFile = formatFramePath(o.out, frame);
     const fs::path cameraFile = frameCameraPath(imageFile);
     const auto frameStart = std::chrono::steady_clock::now();
-    const double time = cameras.timeOf(frame);
-    const bool animated = !scene.animation.empty();
-    if (animated) poseScene(scene, time);  // glTF node animations at the frame's time
-    const FrameKey f = frameKey(cameras, scene, o, frame);
-    const PathKey& key = f.key;
-    const ImageSize size = f.size;
-    if (const std::string shape = pixelShapeWarning(f.camera, o.width, o.height, size); !shape.empty()) warnOnce(shape);
-    const std::string cameraText =
-        toIntrinsicsCameraJson(key.camera, key.lens, size, cameras.nearGiven(), cameras.farGiven());
-    // The frame's camera as `render --camera` will read it, from the very text written.
-    const Camera camera = withDepthRangeFitted(parseCameraJson(cameraText, f.where).camera, scene.bounds);
-
-    // Each frame's own f-number for a physical exposure (a path may change it from key to key).
-    const DisplaySettings display = resolveDisplay(o.exposure, SelectedCamera{camera, key.camera});
+    // One exposure for the whole range, whichever shard or rerun renders a frame.
+    if (o.exposure.request.meter && !held && frame != firstFrame) meterFirst(firstFrame);
+    const FrameSetup s = setUp(frame);
     LensOptions lens = o.lens;
     lens.seed = frameSeed(o.lens.seed, frame);
     RunStats stats;
-    const FramePlan plan = planFrame(renderer, scene, camera, size, toPlanOptions(lens), stats);
-    for (const std::string& w : plan.warnings) warnOnce(w);
-    for (const std::string& w : focusWarnings(camera, o.lens)) warnOnce(w);
-    if (const TilePlan tiles = planTiles(camera, size, plan, limits, 0); tiles.tiled)
-      throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why,
-                           "; capture renders each frame in one render "
-                           "target: give a smaller size (render tiles a single large image)"));
-    Image image = renderPlanned(renderer, camera, plan, size, stats, nullptr, true);
+    FramePlan plan;
+    Image image = render(frame, s, lens, stats, plan);
     std::vector<ImageChannel> aovChannelValues;
     if (aovs.any()) {
-      if (!caster || animated) caster = std::make_unique<RayCaster>(scene);
-      aovChannelValues = aovChannels(caster->aovImages(camera, size, aovs));
+      if (!caster || !scene.animation.empty()) caster = std::make_unique<RayCaster>(scene);
+      aovChannelValues = aovChannels(caster->aovImages(s.camera, s.f.size, aovs));
     }
+    DisplaySettings display = s.display;
+    meter(display, image, frame);
 
     OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
-    outputs.add(cameraFile, cameraText);
+    outputs.add(cameraFile, s.cameraText);
     prepareForFile(imageFile, image, display.encoding, cat("frame ", frame, ": "), std::cerr);
     writeImage(outputs, imageFile, image, aovChannelValues);
     const ManifestFrame entry{frame,
-                              time,
+                              s.time,
                               imageFile,
                               cameraFile,
                               lens.seed,
                               stats.estimate ? stats.estimate->meanSamples : static_cast<double>(plan.apertureSamples),
                               stats.estimate ? std::optional<double>(stats.estimate->psnrDb) : std::nullopt,
                               secondsSince(frameStart),
-                              size,
-                              key.camera,
-                              camera,
+                              s.f.size,
+                              s.f.key.camera,
+                              s.camera,
                               aovs,
                               display,
                               environment,
@@ -214,7 +261,7 @@ int runCapture(const CaptureOptions& o) {
   // One line a frame where nobody watches a bar (a cluster job's log), unless
   // LENSLAB_PROGRESS_SECONDS asks for fewer.
   ProgressReporter progress("capture", "frames", o.quiet, 0.0);
-  CaptureRun run{o, scene, cameras, manifest, aovs, environmentSummary, shard, renderer, progress};
+  CaptureRun run{o, scene, cameras, manifest, aovs, environmentSummary, shard, range.first, renderer, progress};
   int rendered = 0, skipped = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int frame = frames[i];

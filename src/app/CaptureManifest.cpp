@@ -110,10 +110,18 @@ nlohmann::json manifestLine(const ManifestFrame& f, const fs::path& manifest) {
     for (const std::string& c : aovChannelNames(f.aovs)) channels.push_back(c);
     line["channels"] = channels;
   }
-  if (!f.display.encoding.isIdentity())
-    line["display"] = {{"exposure_stops", f.display.exposure.stops},
-                       {"exposure", describe(f.display.exposure)},
+  const Exposure& e = f.display.exposure;
+  if (!f.display.encoding.isIdentity() || e.meterReading) {
+    line["display"] = {{"exposure_stops", e.stops},
+                       {"exposure", describe(e)},
+                       {"exposure_source", e.source},
+                       {"used_ev100", ev100ForScale(e.scale)},
                        {"view_transform", viewTransformName(f.display.encoding.transform)}};
+    // The frame's own reading, whichever exposure the sequence holds (null: no light to meter).
+    if (e.meterReading)
+      line["display"]["metered_ev100"] =
+          e.meterReading->ev100 ? nlohmann::json(*e.meterReading->ev100) : nlohmann::json();
+  }
   if (f.environment)
     line["environment"] = {{"file", f.environment->file},
                            {"intensity", f.environment->intensity},

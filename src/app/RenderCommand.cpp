@@ -107,7 +107,7 @@ Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedC
 // camera rendered with (refused for a tiled image).
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected,
                                ImageSize size, const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out,
-                               RunStats& stats, ProgressReporter& progress, const DisplayEncoding& display,
+                               RunStats& stats, ProgressReporter& progress, const DisplaySettings& display,
                                const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues,
                                const std::optional<FittedLens>& fitted) {
   auto t = std::chrono::steady_clock::now();
@@ -276,18 +276,15 @@ int runRender(const RenderOptions& o) {
   selected = applyLensOptions(selected, o.lens);
   for (const std::string& w : focusNotes) std::cerr << "lenslab: warning: " << w << "\n";
   selected.camera = withDepthRangeFitted(selected.camera, scene.bounds);
-  const Camera& camera = selected.camera;
-  const ImageSize size = resolveImageSize(camera, o.width, o.height);
-  if (const std::string shape = pixelShapeWarning(camera, o.width, o.height, size); !shape.empty())
+  const ImageSize size = resolveImageSize(selected.camera, o.width, o.height);
+  if (const std::string shape = pixelShapeWarning(selected.camera, o.width, o.height, size); !shape.empty())
     std::cerr << "lenslab: warning: " << shape << "\n";
 
   // Resolved before any work: a bad exposure refuses at once.
-  const DisplaySettings display = resolveDisplay(o.exposure, selected);
+  DisplaySettings display = resolveDisplay(o.exposure, selected);
 
   RunStats stats;
-  stats.exposure = display.exposure;
   stats.environment = environment;
-  stats.viewTransform = display.encoding.transform;
   stats.command = o.method == Method::Raster ? "render" : "raycast";
   stats.scene = scenePath.string();
   stats.size = size;
@@ -305,7 +302,7 @@ int runRender(const RenderOptions& o) {
   RenderOptions exact = o;
   const bool traceExactly = o.method == Method::Raycast || traceLensExactly(o, selected, size, fitted, exact);
   if (!traceExactly) {
-    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display.encoding, aovs,
+    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display, aovs,
                       aovChannelValues, fitted);
   } else {
     image = raycast(exact, scene, selected, size, stats, progress, aovs, aovChannelValues);
@@ -314,12 +311,15 @@ int runRender(const RenderOptions& o) {
   auto t = std::chrono::steady_clock::now();
   if (image) {  // a tiled render has written its file strip by strip
     progress.setDetail(cat("writing ", out.string()));
+    for (const auto& w : meterForFile(display, *image, out, !o.statsFile.empty()))
+      progress.note("lenslab: warning: " + w);
     prepareForFile(out, *image, display.encoding, "", std::cerr);
     writeImage(outputs, out, *image, aovChannelValues);
     stats.writeSeconds = secondsSince(t);
   }
   progress.setDetail({});  // written: the last line says no more than the figures
   progress.finish();
+  stats.setDisplay(display);  // as the PNG was shown: metered, unless the render was tiled
   stats.seconds = secondsSince(start);
   if (!o.statsFile.empty()) writeStats(outputs, o.statsFile, stats);
   outputs.commit();

@@ -64,6 +64,16 @@ nlohmann::json displayJson(const RunStats& s) {
     d["iso"] = *e.iso;
     d["f_number"] = *e.fNumber;
   }
+  // The EV100 whose scale the PNG got, the frame's meter reading beside it (null: no light to
+  // meter; absent: not metered, as for a tiled render), the camera's own where it has one.
+  d["used_ev100"] = ev100ForScale(e.scale);
+  if (e.meterReading) {
+    d["metered_ev100"] = e.meterReading->ev100 ? nlohmann::json(*e.meterReading->ev100) : nlohmann::json();
+    d["metering"] =
+        "centre-weighted geometric mean luminance, 75 % from the central circle (half the shorter side across); "
+        "EV100 = log2(L * 100 / 12.5)";
+  }
+  if (e.cameraEv100) d["camera_ev100"] = *e.cameraEv100;
   return d;
 }
 

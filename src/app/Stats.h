@@ -52,6 +52,11 @@ struct RunStats {
   void setCamera(const SelectedCamera& selected);
   // The same for the thin lens fitted to a real one, with what `focus` says of its focus.
   void setCamera(const SelectedCamera& fitted, const FocusExplanation& focus);
+  // The exposure and view transform.
+  void setDisplay(const DisplaySettings& display) {
+    exposure = display.exposure;
+    viewTransform = display.encoding.transform;
+  }
 };
 
 std::string toJson(const RunStats& stats);

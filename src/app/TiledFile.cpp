@@ -1,6 +1,7 @@
 #include "app/TiledFile.h"
 
 #include "core/Clock.h"
+#include "core/Error.h"
 #include "core/Text.h"
 #include "io/ImageFile.h"
 #include "io/StripImageWriter.h"
@@ -26,7 +27,12 @@ TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& pla
 
 void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size,
                        const TilePlan& tiles, OutputSet& outputs, const std::filesystem::path& out,
-                       const DisplayEncoding& display, RunStats& stats, ProgressReporter& progress) {
+                       const DisplaySettings& settings, RunStats& stats, ProgressReporter& progress) {
+  if (settings.exposure.source == "--exposure auto")
+    throw InputError(cat("--exposure auto: ", tiles.why,
+                         "; each is written as it is rendered, so no whole frame is there to meter: give --exposure "
+                         "EV, or a smaller --width (and no --tile-size)"));
+  const DisplayEncoding& display = settings.encoding;
 #ifdef __GLIBC__
   // The tiles' buffers (tables, targets, read-backs) are 5 to 30 MB each and differ a little in
   // size from tile to tile; glibc's dynamic mmap threshold would put them on the heap after the

@@ -24,9 +24,10 @@ TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& pla
                       int tileSizePx);
 
 // Renders `plan` in `tiles` and writes them to `out`'s temporary file in `outputs`, each through
-// `display`. Sets stats' render and write times and adds the "tiles" pass to stats.plan.
+// `display`. Sets stats' render and write times and adds the "tiles" pass to stats.plan. Throws
+// InputError for --exposure auto before any tile: no whole frame is there to meter.
 void renderTiledToFile(Renderer& renderer, const Camera& camera, const FramePlan& plan, ImageSize size,
                        const TilePlan& tiles, OutputSet& outputs, const std::filesystem::path& out,
-                       const DisplayEncoding& display, RunStats& stats, ProgressReporter& progress);
+                       const DisplaySettings& display, RunStats& stats, ProgressReporter& progress);
 
 }  // namespace lenslab

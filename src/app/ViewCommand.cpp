@@ -3,6 +3,7 @@
 #include "app/Commands.h"
 #include "app/EnvironmentOptions.h"
 #include "app/ExposureOptions.h"
+#include "core/Error.h"
 #include "core/ParseNumber.h"
 #include "io/OutputPath.h"
 #include "view/ViewApp.h"
@@ -63,6 +64,11 @@ std::function<int()> addViewCommand(CLI::App& app) {
   cmd->add_option("--stats", o->statsFile, "scripted: write frames, samples, ms per sample and focus distance as JSON");
   return [cmd, o]() {
     if (!cmd->parsed()) return -1;
+    // The viewer's image converges frame by frame; its panel's slider is its exposure meter.
+    if (o->exposure.meter)
+      throw InputError(
+          "--exposure auto: view takes --exposure EV (the panel's Display slider changes it); auto meters a finished "
+          "frame in render, raycast and capture");
     // Each file the scripted run writes is checked before the window opens (io/OutputPath.h).
     if (!o->screenshot.empty()) checkOutputPath(o->screenshot, OutputKind::Image, "--screenshot");
     if (!o->saveCamera.empty()) checkOutputPath(o->saveCamera, OutputKind::Any, "--save-camera");

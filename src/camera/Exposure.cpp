@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "core/Text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -20,8 +21,30 @@ double exposureScaleForEv100(double ev) {
 
 double exposureScaleForStops(double stops) { return std::exp2(stops); }
 
+double ev100ForScale(double scale) { return -std::log2(scale / exposureScaleForEv100(0.0)); }
+
+namespace {
+
+// EV100 of the camera's own f-number, shutter_s and iso (default 100), where it has them.
+std::optional<double> cameraEv100(const SelectedCamera& selected) {
+  const std::optional<PhysicalCamera>& p = selected.physical;
+  if (!p || !p->shutterSeconds || !std::isfinite(p->fNumber)) return std::nullopt;
+  return ev100(p->fNumber, *p->shutterSeconds, p->iso.value_or(100.0));
+}
+
+}  // namespace
+
 Exposure resolveExposure(const ExposureRequest& r, const SelectedCamera& selected) {
   Exposure e;
+  e.cameraEv100 = cameraEv100(selected);
+  if (r.meter) {
+    if (r.shutterSeconds || r.iso)
+      throw InputError(
+          "--exposure auto meters the frame; --shutter and --iso set the exposure physically: give one "
+          "or the other");
+    e.source = "--exposure auto";
+    return e;
+  }
   if (r.stops) {
     if (r.shutterSeconds || r.iso)
       throw InputError(
@@ -58,9 +81,26 @@ Exposure resolveExposure(const ExposureRequest& r, const SelectedCamera& selecte
   return e;
 }
 
+Exposure exposedByMeter(Exposure e, const MeterReading& reading) {
+  e.meterReading = reading;
+  if (e.source != "--exposure auto") return e;
+  e.stops = 0.0;
+  if (reading.ev100)
+    e.stops =
+        std::clamp(std::log2(exposureScaleForEv100(*reading.ev100)), kExposureStopsRange.min, kExposureStopsRange.max);
+  e.scale = exposureScaleForStops(e.stops);
+  return e;
+}
+
 std::string describe(const Exposure& e) {
   char text[200];
-  if (e.ev100) {
+  if (e.source == "--exposure auto" && e.meterReading && e.meterReading->ev100) {
+    std::snprintf(text, sizeof text, "metered EV100 %.3g (--exposure auto): scale %.3g", *e.meterReading->ev100,
+                  e.scale);
+  } else if (e.source == "--exposure auto") {
+    std::snprintf(text, sizeof text, "%+.3g EV (--exposure auto: %s)", e.stops,
+                  e.meterReading ? "no light to meter" : "not metered yet");
+  } else if (e.ev100) {
     // Shutter times under a second as photographers write them: 1/125 s.
     const double t = *e.shutterSeconds;
     char shutter[40];

@@ -36,8 +36,10 @@ float srgbFromLinear(float x) {
   return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+bool isDisplayReferred(const fs::path& path) { return lowerExtension(path) == ".png"; }
+
 void applyDisplayForFile(const fs::path& path, Image& image, const DisplayEncoding& display) {
-  if (display.isIdentity() || lowerExtension(path) != ".png") return;
+  if (display.isIdentity() || !isDisplayReferred(path)) return;
   for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
     float* p = &image.rgba[i];
     const glm::vec3 d = displayLinear({p[0], p[1], p[2]}, display);

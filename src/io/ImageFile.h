@@ -66,6 +66,8 @@ std::vector<std::string> channelNames(const std::filesystem::path& path);
 // or tone-mapped. Nothing changes for the identity encoding (the default), so that default PNGs
 // cost and hold what they always did.
 void applyDisplayForFile(const std::filesystem::path& path, Image& image, const DisplayEncoding& display);
+// Whether a file of this name is exposed and shown through a view transform (a PNG), not linear.
+bool isDisplayReferred(const std::filesystem::path& path);
 
 float linearFromSrgb(float encoded);
 float srgbFromLinear(float linear);

@@ -2,7 +2,8 @@
 # Exposure and view transforms as a user meets them (docs/exposure.md): --exposure, --shutter,
 # --iso and --view-transform on render, raycast and capture; camera files' shutter_s and iso; the
 # default PNG unchanged; the EXR never exposed; --stats and the manifest recording them; bad values
-# refused in one line with no file written.
+# refused in one line with no file written; --exposure auto's meter, held over a capture, and the
+# warning for a physical exposure far from it.
 # usage: exposure_test.sh path/to/lenslab source-dir
 . "$(dirname "$0")/test_lib.sh"
 cli_test_setup "$@"
@@ -68,6 +69,63 @@ check holds "$work/d.json" 'j["display"]["exposure_stops"] == 0 and j["display"]
 "$lenslab" capture --path "$src/assets/rows/rack-focus.json" --frames 0:1 --width 32 --aperture-samples 2 -q \
   --exposure 1 --view-transform pbr-neutral --out "$work/cap/frame_%04d.png" 2>/dev/null
 check $python -c 'import json,sys; l=[json.loads(x) for x in open(sys.argv[1])]; sys.exit(0 if l and all(x["display"]["view_transform"]=="pbr-neutral" and x["display"]["exposure_stops"]==1 for x in l) else 1)' "$work/cap/manifest.jsonl"
+
+# --- --exposure auto: the frame's meter (camera/Metering.h) ---
+studio=$src/assets/environments/studio.hdr
+for command in render raycast; do
+  expect_refusal "$command --exposure auto with --shutter" "--exposure excludes --shutter" -- $command --camera "$dof" --exposure auto --shutter 1/30 --width 48 --out "$work/out.png"
+  expect_refusal "$command --exposure bright" "--exposure: bright is not a number of stops; give a finite value from -64 to 64, or auto" -- $command --exposure bright --width 48 --out "$work/out.png"
+done
+expect_refusal "render --exposure auto in tiles" "no whole frame is there to meter" -- render --exposure auto --tile-size 32 --width 96 --out "$work/out.png"
+expect_refusal "view --exposure auto" "--exposure auto: view takes --exposure EV" -- view --exposure auto --frames 1 --no-ui --screenshot "$work/out.png"
+# A scene under twice the light meters one stop up, and auto shows both alike: rows with its unlit
+# materials lit, so that the environment is all its light.
+mkdir -p "$work/lit" && cp "$src"/assets/rows/*.bin "$src"/assets/rows/*.png "$work/lit/"
+$python -c 'import json,sys; g=json.load(open(sys.argv[1])); [m.pop("extensions", None) for m in g["materials"]]; g.pop("extensionsUsed", None); json.dump(g,open(sys.argv[2],"w"))' \
+  "$src/assets/rows/rows.gltf" "$work/lit/rows.gltf"
+lit=("$work/lit/rows.gltf" --camera "$src/assets/rows/camera.json" --environment "$studio" --width 64 -q --exposure auto)
+"$lenslab" render "${lit[@]}" --out "$work/once.png" --stats "$work/once.json" 2>/dev/null
+"$lenslab" render "${lit[@]}" --environment-intensity 2 --out "$work/twice.png" --stats "$work/twice.json" 2>/dev/null
+check $python -c 'import json,sys; a,b=(json.load(open(f))["display"] for f in sys.argv[1:]); sys.exit(0 if abs(b["metered_ev100"]-a["metered_ev100"]-1) < 0.05 else 1)' "$work/once.json" "$work/twice.json"
+check holds "$work/once.json" 'j["display"]["exposure_source"] == "--exposure auto" and abs(j["display"]["used_ev100"] - j["display"]["metered_ev100"]) < 1e-9 and abs(j["display"]["exposure_scale"] - 1 / (1.2 * 2**j["display"]["metered_ev100"])) < 1e-12'
+check idiff -fail 0.004 -warn 0.004 -q "$work/once.png" "$work/twice.png"
+"$lenslab" raycast --camera "$dof" --width 32 --spp 1 -q --exposure auto --out "$work/ra.png" --stats "$work/ra.json" 2>/dev/null
+check holds "$work/ra.json" 'abs(j["display"]["used_ev100"] - j["display"]["metered_ev100"]) < 1e-9 and "centre-weighted" in j["display"]["metering"]'
+# --stats meters any run; auto wins over the camera file's shutter_s and iso, whose EV100 is reported.
+check holds "$work/d.json" 'abs(j["display"]["used_ev100"] + math.log2(1.2)) < 1e-12 and j["display"]["metered_ev100"] > -5'
+"$lenslab" render --camera "$work/cam.json" --width 48 -q --out "$work/fa.png" --exposure auto --stats "$work/fa.json" 2>/dev/null
+check holds "$work/fa.json" 'j["display"]["exposure_source"] == "--exposure auto" and abs(j["display"]["camera_ev100"] - (math.log2(1.4**2 / 0.01) - 2)) < 1e-9'
+# A black frame (from under the floor, looking down at a black background): one warning, 0 stops,
+# no NaN.
+"$lenslab" render --camera "$dof" --eye 0,-50,0 --target 0,-100,-1 --background 0,0,0 --width 48 -q --exposure auto --out "$work/black.png" --stats "$work/black.json" 2>"$work/black.err"
+check grep -q "lenslab: warning: --exposure auto: no pixel of the frame holds light to meter" "$work/black.err"
+check holds "$work/black.json" 'j["display"]["metered_ev100"] is None and j["display"]["exposure_stops"] == 0 and j["display"]["exposure_scale"] == 1'
+# The user's story: f/2, 1/30 s, ISO 800 in the bundled studio scene, through pbr-neutral as the
+# README shows it, puts the frame's metered average nearly black; one warning names the reading and
+# what would meet it. Through none the same average shows at a code over 32: no warning.
+bokeh=("$src/assets/bokeh/bokeh.gltf" --camera "$src/assets/bokeh/camera.json" --environment "$studio" --width 64 -q)
+"$lenslab" render "${bokeh[@]}" --f-number 2 --shutter 1/30 --iso 800 --view-transform pbr-neutral \
+  --out "$work/dark.png" --stats "$work/dark.json" 2>"$work/dark.err"
+check test "$(grep -c "^lenslab: warning: f/2, 1/30 s, ISO 800: EV100 3.91, scale 0.0556 is .* stops under the frame's metered EV100 .*: its metered average shows at .* of 255 (nearly black) through pbr-neutral; give --exposure auto, or --shutter .* (at ISO 800), or --iso .* (at 1/30 s)$" "$work/dark.err")" -eq 1
+check holds "$work/dark.json" 'j["display"]["used_ev100"] - j["display"]["metered_ev100"] > 1 and abs(j["display"]["used_ev100"] - j["display"]["ev100"]) < 1e-9'
+"$lenslab" render "${bokeh[@]}" --f-number 2 --shutter 1/30 --iso 800 --out "$work/dim.png" 2>"$work/dim.err"
+check test "$(grep -c 'metered EV100' "$work/dim.err")" -eq 0
+"$lenslab" render "${bokeh[@]}" --f-number 2 --shutter 1/30 --iso 800 --out "$work/dim.exr" --view-transform pbr-neutral 2>"$work/dim.err"
+check test "$(grep -c 'metered EV100' "$work/dim.err")" -eq 0  # an EXR is not exposed
+"$lenslab" render --camera "$dof" --shutter 1 --iso 3200 --width 48 -q --out "$work/bright.png" 2>"$work/bright.err"
+check grep -q "stops over the frame's metered EV100 .* (nearly white) through none; give --exposure auto" "$work/bright.err"
+# A physical exposure at the meter's reading: no warning.
+"$lenslab" render "${bokeh[@]}" --f-number 2 --view-transform pbr-neutral --out "$work/met.png" 2>"$work/met.err" \
+  --shutter "$($python -c 'import json,sys; print(4 / 2**json.load(open(sys.argv[1]))["display"]["metered_ev100"])' "$work/dark.json")"
+check test "$(grep -c 'metered EV100' "$work/met.err")" -eq 0
+# capture holds the range's first frame's exposure; each line records its frame's own reading;
+# another shard of the range holds the same.
+"$lenslab" capture --path "$src/assets/rows/rack-focus.json" --frames 0:3 --width 32 --aperture-samples 2 -q \
+  --exposure auto --out "$work/auto/frame_%04d.png" 2>/dev/null
+check $python -c 'import json,sys; l=[json.loads(x)["display"] for x in open(sys.argv[1])]; sys.exit(0 if len(l) == 4 and all(x["exposure_stops"] == l[0]["exposure_stops"] and x["metered_ev100"] is not None for x in l) and abs(l[0]["used_ev100"] - l[0]["metered_ev100"]) < 1e-9 else 1)' "$work/auto/manifest.jsonl"
+"$lenslab" capture --path "$src/assets/rows/rack-focus.json" --frames 0:3 --shard 1/2 --width 32 --aperture-samples 2 -q \
+  --exposure auto --out "$work/shard/frame_%04d.png" 2>/dev/null
+check $python -c 'import json,sys; a=json.loads(open(sys.argv[1]).readline())["display"]; l=[json.loads(x)["display"] for x in open(sys.argv[2])]; sys.exit(0 if len(l) == 2 and all(abs(x["exposure_stops"] - a["exposure_stops"]) < 1e-6 for x in l) else 1)' "$work/auto/manifest.jsonl" "$work/shard/manifest.jsonl"
 
 echo "exposure: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -60,15 +60,15 @@ struct DiagramOptions {
 // --aperture-scale: auto (the disk a quarter of the window's height across) or a factor ≥ 1.
 double apertureScaleFor(const std::string& text, const Camera& camera) {
   if (text == "auto") return view::readableApertureScale(camera);
-  return readNumber("--aperture-scale", text, {.min = 1.0, .max = 1e9});
+  return readNumber("--aperture-scale", text, {.min = 1.0, .max = 1e9, .unit = {}});
 }
 
 // The diagram's lines in the image's linear light: they are given in display (sRGB) colours.
 std::vector<LineSegment> linearSegments(const std::vector<view::DiagramLine>& lines) {
   std::vector<LineSegment> out;
   for (const view::DiagramLine& l : lines)
-    out.push_back({l.from, l.to,
-                   glm::vec3(linearFromSrgb(l.color.r), linearFromSrgb(l.color.g), linearFromSrgb(l.color.b))});
+    out.push_back(
+        {l.from, l.to, glm::vec3(linearFromSrgb(l.color.r), linearFromSrgb(l.color.g), linearFromSrgb(l.color.b))});
   return out;
 }
 
@@ -155,7 +155,7 @@ std::function<int()> addDiagramCommand(CLI::App& app) {
   cmd->add_option("--zoom", o->orbit.zoom,
                   "the distance from the camera, in multiples of 2.2 times its size (the larger of PRP.n and the "
                   "window)")
-      ->check(numberIn({.min = 0.05, .max = 50.0}))
+      ->check(numberIn({.min = 0.05, .max = 50.0, .unit = {}}))
       ->capture_default_str()
       ->type_name("X");
   cmd->add_option("--aperture-scale", o->apertureScale,

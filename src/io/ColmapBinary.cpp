@@ -22,11 +22,18 @@ struct ModelEntry {
   std::size_t parameterCount;
 };
 // COLMAP's model ids and parameter counts (src/colmap/sensor/models.h).
-constexpr ModelEntry kModels[] = {
-    {"SIMPLE_PINHOLE", 0, 3}, {"PINHOLE", 1, 4},       {"SIMPLE_RADIAL", 2, 4},          {"RADIAL", 3, 5},
-    {"OPENCV", 4, 8},         {"OPENCV_FISHEYE", 5, 8}, {"FULL_OPENCV", 6, 12},           {"FOV", 7, 5},
-    {"SIMPLE_RADIAL_FISHEYE", 8, 4}, {"RADIAL_FISHEYE", 9, 5}, {"THIN_PRISM_FISHEYE", 10, 12},
-    {"RAD_TAN_THIN_PRISM_FISHEYE", 11, 16}};
+constexpr ModelEntry kModels[] = {{"SIMPLE_PINHOLE", 0, 3},
+                                  {"PINHOLE", 1, 4},
+                                  {"SIMPLE_RADIAL", 2, 4},
+                                  {"RADIAL", 3, 5},
+                                  {"OPENCV", 4, 8},
+                                  {"OPENCV_FISHEYE", 5, 8},
+                                  {"FULL_OPENCV", 6, 12},
+                                  {"FOV", 7, 5},
+                                  {"SIMPLE_RADIAL_FISHEYE", 8, 4},
+                                  {"RADIAL_FISHEYE", 9, 5},
+                                  {"THIN_PRISM_FISHEYE", 10, 12},
+                                  {"RAD_TAN_THIN_PRISM_FISHEYE", 11, 16}};
 
 constexpr std::uint64_t kMaxId = std::numeric_limits<std::uint32_t>::max() - 1;  // COLMAP's max is "invalid"
 
@@ -135,8 +142,8 @@ std::vector<ColmapCamera> parseColmapCamerasBinary(std::string_view bytes, const
     c.heightPx = static_cast<int>(height);
     for (std::size_t p = 0; p < model->parameterCount; ++p) c.params.push_back(r.number("a parameter"));
     if (const auto [it, added] = firstRecord.emplace(c.id, i + 1); !added)
-      r.fail(cat("CAMERA_ID ", c.id, " is given again (first in record ", it->second,
-                 "); each camera needs its own ID"));
+      r.fail(
+          cat("CAMERA_ID ", c.id, " is given again (first in record ", it->second, "); each camera needs its own ID"));
     cameras.push_back(std::move(c));
   }
   r.requireEnd();
@@ -201,8 +208,8 @@ std::string colmapCameraRecord(const ColmapCamera& c) {
 std::string colmapImageRecord(const ColmapImage& i) {
   std::string out;
   append(out, i.id);
-  for (const double v : {i.rotation.w, i.rotation.x, i.rotation.y, i.rotation.z, i.translation.x, i.translation.y,
-                         i.translation.z})
+  for (const double v :
+       {i.rotation.w, i.rotation.x, i.rotation.y, i.rotation.z, i.translation.x, i.translation.y, i.translation.z})
     append(out, v);
   append(out, i.cameraId);
   out += i.name;

@@ -98,7 +98,7 @@ done
 for option in --spp --seed --focus-distance --focus-at --width; do
   if grep -qE -- "^ *$option " <<<"$help"; then pass; else fail "raycast --help lacks $option"; fi
 done
-expect_refusal "raycast --pattern" "raycast: unknown option --pattern: render, capture and view take it, raycast does not" -- \
+expect_refusal "raycast --pattern" "raycast: unknown option --pattern: render, capture, view and diagram take it, raycast does not" -- \
   raycast --pattern r2 --width 16 --out "$work/out.png"
 expect_refusal "a cap with a fixed count" "--max-samples: caps the count that auto (or --target-psnr) chooses" -- \
   render --aperture-samples 8 --max-samples 4 --width 16 --out "$work/out.png"

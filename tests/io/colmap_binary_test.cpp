@@ -80,7 +80,8 @@ TEST(ColmapBinary, ReadsCamerasAndImagesAsLaidOut) {
   const ColmapCamera text = parseColmapCameras("1 PINHOLE 640 480 500 501.5 320.25 239.75\n", "cameras.txt")[0];
   EXPECT_EQ(lensOf(text, "t").intrinsics.fx, lensOf(c[0], "b").intrinsics.fx);
   EXPECT_EQ(lensOf(text, "t").intrinsics.cy, lensOf(c[0], "b").intrinsics.cy);
-  EXPECT_TRUE(has(test::refusalOf([&] { lensOf(c[1], "cameras.bin"); }), "cameras.bin: record 2: camera 9 is OPENCV_FISHEYE"));
+  EXPECT_TRUE(
+      has(test::refusalOf([&] { lensOf(c[1], "cameras.bin"); }), "cameras.bin: record 2: camera 9 is OPENCV_FISHEYE"));
 
   const std::vector<ColmapImage> i = parseColmapImagesBinary(twoImages(), "images.bin");
   ASSERT_EQ(i.size(), 2u);
@@ -125,10 +126,12 @@ TEST(ColmapBinary, BrokenFilesAreRefusedNamingTheFileAndTheRecord) {
     return test::refusalOf([&] { parseColmapCamerasBinary(bytes, "sparse/cameras.bin"); });
   };
   const std::string good = twoCameras();
-  EXPECT_TRUE(has(camerasError(good.substr(0, good.size() - 1)), "sparse/cameras.bin: camera record 2: the file ends inside a parameter"));
+  EXPECT_TRUE(has(camerasError(good.substr(0, good.size() - 1)),
+                  "sparse/cameras.bin: camera record 2: the file ends inside a parameter"));
   EXPECT_TRUE(has(camerasError(good + "x"), "1 bytes follow the last record"));
   const std::string huge = Bytes().put(std::uint64_t{1} << 60).data;
-  EXPECT_TRUE(has(camerasError(huge), "the number of cameras is 1152921504606846976, but the 0 bytes left hold at most 0"))
+  EXPECT_TRUE(
+      has(camerasError(huge), "the number of cameras is 1152921504606846976, but the 0 bytes left hold at most 0"))
       << camerasError(huge);
   std::string badModel = good;
   const std::int32_t twelve = 12;
@@ -151,7 +154,7 @@ TEST(ColmapBinary, BrokenFilesAreRefusedNamingTheFileAndTheRecord) {
   EXPECT_TRUE(has(imagesError(longQuaternion), "image record 1: image 4's quaternion QW QX QY QZ has length"));
   const std::string images = twoImages();
   std::string unterminated = images.substr(0, 82);  // up to the name's 0 byte
-  unterminated[0] = 1;  // one image: its name runs to the end of the file
+  unterminated[0] = 1;                              // one image: its name runs to the end of the file
   EXPECT_TRUE(has(imagesError(unterminated), "image record 1: NAME has no terminating 0 byte"))
       << imagesError(unterminated);
   std::string manyPoints = images;
@@ -170,7 +173,8 @@ TEST_F(ColmapBinaryFolder, RenderCamerasComeFromTheBinaryModel) {
   const Camera camera = colmapImageCamera(model, "left/a.png");
   EXPECT_EQ(camera.calibratedSize->widthPx, 640);
   // Image "b b.png" uses the fisheye camera, refused when asked for, naming its record.
-  EXPECT_TRUE(has(test::refusalOf([&] { colmapImageCamera(model, "b b.png"); }), "cameras.bin: record 2: camera 9 is OPENCV_FISHEYE"));
+  EXPECT_TRUE(has(test::refusalOf([&] { colmapImageCamera(model, "b b.png"); }),
+                  "cameras.bin: record 2: camera 9 is OPENCV_FISHEYE"));
 }
 
 }  // namespace

@@ -42,7 +42,12 @@ class Reader {
  public:
   Reader(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
 
-  void setRecord(std::string record) { record_ = std::move(record); }
+  // Record i (from 0) of kind `what` begins: messages name it from here on. Returns its number
+  // from 1, as ColmapCamera::record and ColmapImage::record hold it.
+  int beginRecord(const char* what, std::uint64_t i) {
+    record_ = cat(what, " record ", i + 1);
+    return static_cast<int>(std::min<std::uint64_t>(i + 1, std::numeric_limits<int>::max()));
+  }
   [[noreturn]] void fail(const std::string& message) const {
     throw InputError(cat(file_, ": ", record_.empty() ? std::string() : record_ + ": ", message));
   }
@@ -122,9 +127,8 @@ std::vector<ColmapCamera> parseColmapCamerasBinary(std::string_view bytes, const
   cameras.reserve(n);
   std::map<std::uint32_t, std::uint64_t> firstRecord;
   for (std::uint64_t i = 0; i < n; ++i) {
-    r.setRecord(cat("camera record ", i + 1));
     ColmapCamera c;
-    c.record = static_cast<int>(std::min<std::uint64_t>(i + 1, std::numeric_limits<int>::max()));
+    c.record = r.beginRecord("camera", i);
     c.id = r.id("CAMERA_ID");
     const std::int32_t modelId = r.read<std::int32_t>("MODEL_ID");
     const ModelEntry* model = nullptr;
@@ -159,9 +163,8 @@ std::vector<ColmapImage> parseColmapImagesBinary(std::string_view bytes, const s
   std::map<std::uint32_t, std::uint64_t> firstId;
   std::map<std::string, std::uint64_t> firstName;
   for (std::uint64_t i = 0; i < n; ++i) {
-    r.setRecord(cat("image record ", i + 1));
     ColmapImage image;
-    image.record = static_cast<int>(std::min<std::uint64_t>(i + 1, std::numeric_limits<int>::max()));
+    image.record = r.beginRecord("image", i);
     image.id = r.id("IMAGE_ID");
     const double qw = r.number("QW"), qx = r.number("QX"), qy = r.number("QY"), qz = r.number("QZ");
     const glm::dquat q(qw, qx, qy, qz);

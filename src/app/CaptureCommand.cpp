@@ -75,6 +75,7 @@ void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames
   checkAovOutput(aovs, o.out, "--out");
   checkOutputPath(manifest, OutputKind::JsonLines, "--manifest");
   checkNotInput(manifest, "--manifest", o.pathFile, "--path");
+  checkNotInput(manifest, "--manifest", o.camerasFile, "--cameras");  // a replayed manifest is not appended to
   // Nor one of the range's frame camera files (f_0002.camera.json), which the manifest's lines would
   // be appended to; nor may the COLMAP model's folder be a frame's file or the manifest.
   const std::string cameraPattern = frameCameraPath(o.out).string();
@@ -132,11 +133,15 @@ struct CaptureRun {
     s.f = frameKey(cameras, scene, o, frame);
     if (const std::string shape = pixelShapeWarning(s.f.camera, o.width, o.height, s.f.size); !shape.empty())
       warnOnce(shape);
+    // A physical frame as the photographer's description; any other as OpenCV's K, R and t.
     s.cameraText =
-        toIntrinsicsCameraJson(s.f.key.camera, s.f.key.lens, s.f.size, cameras.nearGiven(), cameras.farGiven());
+        s.f.key
+            ? toIntrinsicsCameraJson(s.f.key->camera, s.f.key->lens, s.f.size, cameras.nearGiven(), cameras.farGiven())
+            : toOpenCvCameraJson(s.f.camera, s.f.size, !s.f.camera.nearFromScene, !s.f.camera.farFromScene);
     s.camera = withDepthRangeFitted(parseCameraJson(s.cameraText, s.f.where).camera, scene.bounds);
     // Each frame's own f-number for a physical exposure (a path may change it from key to key).
-    s.display = resolveDisplay(o.exposure, SelectedCamera{s.camera, s.f.key.camera});
+    s.display = resolveDisplay(
+        o.exposure, SelectedCamera{s.camera, s.f.key ? std::optional<PhysicalCamera>(s.f.key->camera) : std::nullopt});
     return s;
   }
 
@@ -209,7 +214,7 @@ struct CaptureRun {
                               stats.estimate ? std::optional<double>(stats.estimate->psnrDb) : std::nullopt,
                               secondsSince(frameStart),
                               s.f.size,
-                              s.f.key.camera,
+                              s.f.key ? &s.f.key->camera : nullptr,
                               s.camera,
                               aovs,
                               display,
@@ -224,10 +229,11 @@ struct CaptureRun {
 int runCapture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   // Without --path the scene's animation gives the frame count: the scene is read first.
-  if (o.pathFile.empty() && o.scene.empty())
+  if (o.pathFile.empty() && o.camerasFile.empty() && o.camera.colmapDir.empty() && o.cameraFile.empty() &&
+      o.scene.empty())
     throw InputError(
-        "--path: give a camera path, or a SCENE whose own camera (or automatic framing) is captured over its "
-        "animation");
+        "--path: give a camera path (or --cameras, --colmap, --camera), or a SCENE whose own camera (or automatic "
+        "framing) is captured over its animation");
   const auto [scenePath, unusedCamera] = resolveSceneAndCamera(o.scene, "", "");
   Scene scene = loadGltf(scenePath);
   applyBackground(scene, o.background);
@@ -299,10 +305,26 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_option("scene", o->scene, "glTF 2.0 scene (.gltf or .glb); default: the bundled 'rows' scene");
   cmd->add_option(
       "--path", o->pathFile,
-      "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in the physical form>}, ...]} "
-      "(see docs/capture.md); without it, the scene's glTF camera (--camera-node; else automatic framing) over "
-      "its animation at --fps");
-  cmd->add_option("--fps", o->fps, "without --path: frames per second over the playing animation (default 24)")
+      "camera path JSON: {\"fps\": F, \"keys\": [{\"time\": t, <a camera in any form>}, ...]}: physical keys "
+      "interpolated as a photographer's settings, OpenCV or lecture keys as a pinhole's pose and K (see "
+      "docs/capture.md); without it, --cameras, --colmap, --camera, or the scene's glTF camera (--camera-node; else "
+      "automatic framing) over its animation at --fps");
+  cmd->add_option("--camera", o->cameraFile,
+                  "a camera file in any form (lecture, physical, OpenCV K/R/t or intrinsics) held for every frame, "
+                  "over the animation at --fps")
+      ->type_name("FILE");
+  cmd->add_option("--cameras", o->camerasFile,
+                  "a camera list, one camera a line (JSON lines: camera files' objects with an optional \"time\"), or "
+                  "a previous capture's manifest.jsonl: frame N is its N-th camera (docs/capture.md)")
+      ->type_name("FILE");
+  cmd->add_option("--colmap", o->camera.colmapDir,
+                  "a COLMAP model's folder (text or binary): a frame for every image, in IMAGE_ID order, through its "
+                  "camera's intrinsics and distortion; with --image NAME, that one image's camera held")
+      ->type_name("DIR");
+  cmd->add_option("--image", o->camera.colmapImage, "with --colmap: one photograph's NAME")->type_name("NAME");
+  cmd->add_option("--fps", o->fps,
+                  "without --path: frames per second over the playing animation, or of a camera list's frames "
+                  "(default 24)")
       ->check(numberIn({.min = 1e-3, .max = 1e4, .unit = "frames per second"}))
       ->type_name("F");
   cmd->add_option(

@@ -100,9 +100,11 @@ nlohmann::json manifestLine(const ManifestFrame& f, const fs::path& manifest) {
   line["seconds"] = f.seconds;
   line["width"] = f.size.widthPx;
   line["height"] = f.size.heightPx;
-  line["focal_length_mm"] = f.lens.focalLengthMm;
-  line["f_number"] = distanceJson(f.lens.fNumber);
-  line["focus_distance"] = distanceJson(f.lens.focusDistance);
+  if (f.lens) {
+    line["focal_length_mm"] = f.lens->focalLengthMm;
+    line["f_number"] = distanceJson(f.lens->fNumber);
+  }
+  line["focus_distance"] = distanceJson(f.lens ? f.lens->focusDistance : f.camera.focusDistance());
   if (f.aovs.any()) {
     line["aov"] = f.aovs.names();
     // Every channel of the frame's EXR, in the order written.

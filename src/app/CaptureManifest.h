@@ -45,7 +45,7 @@ struct ManifestFrame {
   std::optional<double> psnrEstimateDb;  // with a target error
   double seconds = 0.0;
   ImageSize size;
-  const PhysicalCamera& lens;  // the frame's physical description
+  const PhysicalCamera* lens;  // the frame's physical description, where it has one
   const Camera& camera;        // as rendered
   const AovSelection& aovs;
   const DisplaySettings& display;

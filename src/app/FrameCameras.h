@@ -5,6 +5,7 @@
 #include "app/ExposureOptions.h"
 #include "camera/CameraPath.h"
 #include "camera/ImageSize.h"
+#include "io/CameraList.h"
 #include "io/EnvironmentFile.h"
 #include "plan/CameraOptions.h"
 #include "plan/UserOptions.h"
@@ -22,6 +23,8 @@ namespace lenslab {
 struct CaptureOptions {
   std::string scene;
   std::string pathFile;
+  std::string cameraFile;   // --camera FILE: a still camera in any form
+  std::string camerasFile;  // --cameras FILE.jsonl: a camera a frame (io/CameraList.h)
   std::string out = "frames/frame_%04d.png";
   std::string manifest;  // default: manifest.jsonl beside the frames
   std::optional<int> width;
@@ -42,29 +45,38 @@ struct CaptureOptions {
   EnvironmentRequest environment;
 };
 
-// Where each frame's camera comes from: the path's keys, or (no --path) the scene's own camera —
-// a glTF camera following its node through the playing animation, or a still one (automatic
-// framing, --eye/--target) — at --fps over the animation's duration. Either way each frame's
-// camera is a physical description, which is what the frame's camera file is written from.
+// One frame's camera: its physical description and lens where its source has one (a physical
+// path or camera file, a glTF camera, automatic framing), else the camera itself (a calibrated
+// camera in the OpenCV form, a lecture-form view, a COLMAP image).
+struct FrameCamera {
+  std::optional<PathKey> physical;
+  Camera view;  // without a physical description
+};
+
+// Where each frame's camera comes from: the path's keys (--path), a list of cameras (--cameras, or
+// every image of --colmap DIR), or the scene's own camera — --camera FILE, a glTF camera
+// following its node through the playing animation, or a still one (automatic framing,
+// --eye/--target) — at --fps over the animation's duration.
 class FrameCameras {
  public:
   // Throws InputError for options the path already gives (--eye, --target, --camera-node, --fps).
   FrameCameras(const CaptureOptions& o, Scene& scene, double imageAspect);
 
-  // Frames in the path, or in the animation at --fps.
+  // Frames in the path or list, or in the animation at --fps.
   int frameCount(const Scene& scene) const;
-  double timeOf(int frame) const { return path_ ? path_->frameTimeSeconds(frame) : frame / fps_; }
-  std::string name() const { return path_ ? o_.pathFile : base_.name; }
-  // Near / far given by the camera (written into its file) rather than fitted to the scene.
+  double timeOf(int frame) const;
+  std::string name() const;
+  // A physical frame's near / far given by the camera (written into its file) rather than fitted
+  // to the scene (any other frame's camera says so itself).
   bool nearGiven() const { return path_ ? !path_->nearFromScene : base_.form == CameraForm::GltfPerspective; }
   // Whether a frame's camera depends on the scene's pose (a glTF camera following its node).
-  bool followsNode() const { return !path_ && !still_; }
+  bool followsNode() const { return !path_ && !list_ && !still_ && !stillView_; }
   bool farGiven() const {
     return path_ ? !path_->farFromScene : base_.form == CameraForm::GltfPerspective && std::isfinite(base_.gltf.zfar);
   }
 
   // The frame's camera, the scene posed at `time` already; `where` names it in errors.
-  PathKey at(const Scene& scene, double time, const std::string& where) const;
+  FrameCamera at(const Scene& scene, int frame, double time, const std::string& where) const;
 
  private:
   // A still camera's physical description; throws InputError for one that has none (orthographic).
@@ -73,18 +85,21 @@ class FrameCameras {
   const CaptureOptions& o_;
   double imageAspect_ = 0.0;
   std::optional<CameraPath> path_;
+  std::optional<std::vector<ListedCamera>> list_;
+  std::string listName_;
   Lens stillLens_;  // a still camera's aperture shape and barrel (the radius is its f/2N)
   double fps_ = 24.0;
   BaseCamera base_;
   std::optional<PhysicalCamera> still_;
+  std::optional<Camera> stillView_;  // --camera in the lecture or OpenCV form
 };
 
 // The frame's camera (the scene posed at the frame's time already) and the frame's size: what the
 // frame's camera file is written from (cheap: the lens is checked when the file is read back).
 struct FrameKey {
   double timeSeconds = 0.0;
-  PathKey key;
-  Camera camera;  // the key's camera with its lens effects
+  std::optional<PathKey> key;  // the physical description, where the frame's camera has one
+  Camera camera;               // as rendered, its lens effects and the lens options applied
   ImageSize size;
   std::string where;
 };

@@ -1,5 +1,6 @@
 #include "camera/CameraPath.h"
 
+#include "camera/ViewPath.h"
 #include "core/Error.h"
 #include "core/Text.h"
 #include "lens/effects/LensEffectRegistry.h"
@@ -9,16 +10,6 @@
 
 namespace lenslab {
 namespace {
-
-// The segment [k, k + 1] holding t, and where in it (0 … 1).
-std::pair<std::size_t, double> segmentAt(const std::vector<PathKey>& keys, double t) {
-  const auto after =
-      std::upper_bound(keys.begin(), keys.end(), t, [](double v, const PathKey& k) { return v < k.timeSeconds; });
-  const std::size_t k = static_cast<std::size_t>(
-      std::clamp<std::ptrdiff_t>(after - keys.begin() - 1, 0, static_cast<std::ptrdiff_t>(keys.size()) - 2));
-  const double u = (t - keys[k].timeSeconds) / (keys[k + 1].timeSeconds - keys[k].timeSeconds);
-  return {k, std::clamp(u, 0.0, 1.0)};
-}
 
 double lerp(double a, double b, double u) { return a + (b - a) * u; }
 glm::dvec3 lerp(const glm::dvec3& a, const glm::dvec3& b, double u) { return a + (b - a) * u; }
@@ -38,11 +29,6 @@ glm::dvec3 pointOr(const std::vector<glm::dvec3>& p, std::ptrdiff_t i) {
   if (i >= n)
     return 2.0 * p[static_cast<std::size_t>(n - 1)] - p[static_cast<std::size_t>(std::max<std::ptrdiff_t>(n - 2, 0))];
   return p[static_cast<std::size_t>(i)];
-}
-
-glm::dvec3 splineAt(const std::vector<glm::dvec3>& p, std::size_t k, double u) {
-  const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(k);
-  return centripetalCatmullRom(pointOr(p, i - 1), p[k], p[k + 1], pointOr(p, i + 2), u);
 }
 
 // Up made orthogonal to the view direction and unit length: the view it gives is the same (the
@@ -83,7 +69,31 @@ void validateFrames(const CameraPath& path, std::string_view where) {
   }
 }
 
+void validateKeyTimes(const std::vector<double>& times, std::string_view where) {
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double t = times[i];
+    if (!std::isfinite(t) || t < 0.0)
+      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be a finite time in seconds, 0 or more"));
+    if (i > 0 && !(t > times[i - 1]))
+      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be later than keys[", i - 1, "].time ",
+                           times[i - 1], " (keys in order, no time twice)"));
+  }
+}
+
 }  // namespace
+
+PathSegment segmentAt(const std::vector<double>& times, double t) {
+  const auto after = std::upper_bound(times.begin(), times.end(), t);
+  const std::size_t k = static_cast<std::size_t>(
+      std::clamp<std::ptrdiff_t>(after - times.begin() - 1, 0, static_cast<std::ptrdiff_t>(times.size()) - 2));
+  const double u = (t - times[k]) / (times[k + 1] - times[k]);
+  return {k, std::clamp(u, 0.0, 1.0)};
+}
+
+glm::dvec3 splineThrough(const std::vector<glm::dvec3>& p, std::size_t k, double u) {
+  const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(k);
+  return centripetalCatmullRom(pointOr(p, i - 1), p[k], p[k + 1], pointOr(p, i + 2), u);
+}
 
 int frameCountFor(double durationSeconds, double fps, std::string_view where) {
   const double frames = durationSeconds * fps;
@@ -91,32 +101,42 @@ int frameCountFor(double durationSeconds, double fps, std::string_view where) {
   return static_cast<int>(std::floor(frames + 1e-9)) + 1;
 }
 
+double CameraPath::lastKeyTimeSeconds() const {
+  if (!viewKeys.empty()) return viewKeys.back().timeSeconds;
+  return keys.empty() ? 0.0 : keys.back().timeSeconds;
+}
+
 int CameraPath::frameCount() const {
   if (frames) return *frames;
-  if (keys.empty()) return 0;
-  return frameCountFor(keys.back().timeSeconds, fps, "camera path");
+  if (keys.empty() && viewKeys.empty()) return 0;
+  return frameCountFor(lastKeyTimeSeconds(), fps, "camera path");
 }
 
 void validate(const CameraPath& path, std::string_view where) {
   if (!(path.fps > 0.0) || !std::isfinite(path.fps))
     throw InputError(cat(where, ": fps ", path.fps, " must be a positive number of frames per second"));
-  if (path.keys.empty())
-    throw InputError(cat(where, ": keys: give at least one key ({\"time\": 0, <a camera in the physical form>})"));
+  if (path.keys.empty() && path.viewKeys.empty())
+    throw InputError(cat(where, ": keys: give at least one key ({\"time\": 0, <a camera>})"));
+  if (!path.keys.empty() && !path.viewKeys.empty())
+    throw InputError(
+        cat(where, ": keys: give every key in the physical form, or every key in the lecture or OpenCV form"));
+  std::vector<double> times;
+  for (const PathKey& key : path.keys) times.push_back(key.timeSeconds);
+  for (const ViewPathKey& key : path.viewKeys) times.push_back(key.timeSeconds);
+  validateKeyTimes(times, where);
+  if (path.frames && *path.frames < 1) throw InputError(cat(where, ": frames ", *path.frames, " must be 1 or more"));
+  if (!path.frames) frameCountFor(path.lastKeyTimeSeconds(), path.fps, where);
+  if (path.holdsViews()) {
+    validateViewFrames(path, where);
+    return;
+  }
   for (std::size_t i = 0; i < path.keys.size(); ++i) {
-    const double t = path.keys[i].timeSeconds;
-    if (!std::isfinite(t) || t < 0.0)
-      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be a finite time in seconds, 0 or more"));
-    if (i > 0 && !(t > path.keys[i - 1].timeSeconds))
-      throw InputError(cat(where, ": keys[", i, "].time ", t, " must be later than keys[", i - 1, "].time ",
-                           path.keys[i - 1].timeSeconds, " (keys in order, no time twice)"));
     if (std::isinf(path.keys[i].camera.fNumber) != std::isinf(path.keys[0].camera.fNumber))
       throw InputError(cat(where, ": keys[", i,
                            "].f_number: a pinhole (no f_number) and a lens cannot be interpolated in stops; "
                            "give every key an f_number, or none"));
     validate(path.keys[i].camera, cat(where, ": keys[", i, "]"));
   }
-  if (path.frames && *path.frames < 1) throw InputError(cat(where, ": frames ", *path.frames, " must be 1 or more"));
-  if (!path.frames) frameCountFor(path.keys.back().timeSeconds, path.fps, where);
   validateFrames(path, where);
 }
 
@@ -178,7 +198,9 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   };
   if (keys.size() == 1 || timeSeconds <= keys.front().timeSeconds) return held(keys.front());
   if (timeSeconds >= keys.back().timeSeconds) return held(keys.back());
-  const auto [k, u] = segmentAt(keys, timeSeconds);
+  std::vector<double> times, inverseFocus, stops;
+  for (const PathKey& key : keys) times.push_back(key.timeSeconds);
+  const auto [k, u] = segmentAt(times, timeSeconds);
   const PhysicalCamera& a = keys[k].camera;
   const PhysicalCamera& b = keys[k + 1].camera;
   const bool smooth = path.interpolation == PathInterpolation::Smooth;
@@ -188,17 +210,15 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds) {
   // Each lens effect as its module interpolates it (lens/effects/).
   out.lens = interpolateLens(keys[k].lens, keys[k + 1].lens, u);
   PhysicalCamera& c = out.camera;
-  std::vector<double> times, inverseFocus, stops;
   std::vector<glm::dvec3> eyes, targets;
   for (const PathKey& key : keys) {
-    times.push_back(key.timeSeconds);
     inverseFocus.push_back(1.0 / key.camera.focusDistance);  // 0 at infinity
     stops.push_back(std::log2(key.camera.fNumber));
     eyes.push_back(key.camera.eye);
     targets.push_back(key.camera.target);
   }
-  c.eye = smooth ? splineAt(eyes, k, u) : lerp(a.eye, b.eye, u);
-  c.target = smooth ? splineAt(targets, k, u) : lerp(a.target, b.target, u);
+  c.eye = smooth ? splineThrough(eyes, k, u) : lerp(a.eye, b.eye, u);
+  c.target = smooth ? splineThrough(targets, k, u) : lerp(a.target, b.target, u);
   // Up: interpolated, then the part along the view direction removed (a camera rolls only as the
   // keys say).
   c.up = orthonormalUp(c, lerp(orthonormalUp(a, a.up), orthonormalUp(b, b.up), u));

@@ -15,6 +15,10 @@
 //   focal length, sensor, near, far and the lens effects: linearly
 // "linear": every quantity piecewise linear in time (focus still in 1/z_f, f-number in stops).
 // Outside the keys' times the first or last key holds.
+//
+// Keys in the lecture or OpenCV form (a calibrated K, R and t; camera/ViewPath.h) are interpolated
+// as a pinhole's pose and intrinsics instead: a path holds keys of one kind.
+#include "camera/Camera.h"
 #include "camera/PhysicalCamera.h"
 #include "lens/Lens.h"
 
@@ -33,11 +37,18 @@ struct PathKey {
   Lens lens;
 };
 
+// A key in the lecture or OpenCV-intrinsics form: the camera as its file gives it (perspective).
+struct ViewPathKey {
+  double timeSeconds = 0.0;
+  Camera camera;
+};
+
 enum class PathInterpolation { Smooth, Linear };
 
 struct CameraPath {
   double fps = 24.0;
-  std::vector<PathKey> keys;
+  std::vector<PathKey> keys;          // physical keys, or
+  std::vector<ViewPathKey> viewKeys;  // keys in the lecture or OpenCV form (camera/ViewPath.h)
   PathInterpolation interpolation = PathInterpolation::Smooth;
   std::optional<int> frames;  // given: this many; else floor(last time × fps) + 1
   // No key gives near (far): each frame's is fitted to the scene, as a camera file's would be.
@@ -46,6 +57,8 @@ struct CameraPath {
   bool farFromScene = true;
 
   int frameCount() const;
+  bool holdsViews() const { return !viewKeys.empty(); }
+  double lastKeyTimeSeconds() const;
   double frameTimeSeconds(int frame) const { return frame / fps; }
 };
 
@@ -65,6 +78,18 @@ PathKey cameraAt(const CameraPath& path, double timeSeconds);
 // One centripetal Catmull–Rom segment from p1 (u = 0) to p2 (u = 1), with neighbours p0 and p3.
 glm::dvec3 centripetalCatmullRom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3,
                                  double u);
+
+// The segment [index, index + 1] of strictly increasing `times` (at least two) that holds t, and
+// where in it, u from 0 to 1 (clamped: before the first key u = 0 of the first segment).
+struct PathSegment {
+  std::size_t index = 0;
+  double u = 0.0;
+};
+PathSegment segmentAt(const std::vector<double>& times, double t);
+
+// The smooth path through `points` (one a key) on segment k at u: centripetal Catmull–Rom, the
+// ends' missing neighbours reflected through their neighbour.
+glm::dvec3 splineThrough(const std::vector<glm::dvec3>& points, std::size_t k, double u);
 
 // Monotone cubic Hermite interpolation (Fritsch–Carlson) of values y at strictly increasing x.
 double monotoneCubic(const std::vector<double>& x, const std::vector<double>& y, double at);

@@ -64,4 +64,12 @@ std::string toCameraJson(const Camera& camera);
 std::string toIntrinsicsCameraJson(const PhysicalCamera& camera, const Lens& lens, ImageSize size, bool writeNear,
                                    bool writeFar);
 
+// Any perspective camera with its lens, as seen on an image of `size`, in the OpenCV form with
+// OpenCV's pose: K, R, t, distCoeffs (where the lens is all OpenCV's), focus_distance,
+// aperture_radius, the other lens effects, aperture shape and barrel; near / far only when asked.
+// Read back, it is the same camera (to rounding): what `capture` writes for a frame whose camera
+// has no physical description (a calibrated camera, a lecture-form view). Throws InputError for a
+// parallel projection.
+std::string toOpenCvCameraJson(const Camera& camera, ImageSize size, bool writeNear, bool writeFar);
+
 }  // namespace lenslab

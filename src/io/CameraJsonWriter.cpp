@@ -91,4 +91,24 @@ std::string toIntrinsicsCameraJson(const PhysicalCamera& physical, const Lens& l
   return j.dump(2) + "\n";
 }
 
+std::string toOpenCvCameraJson(const Camera& camera, ImageSize size, bool writeNear, bool writeFar) {
+  const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
+  const OpenCvPose pose = poseOf(camera.view);
+  json j;
+  j["K"] = {{k.fx, 0.0, k.cx}, {0.0, k.fy, k.cy}, {0.0, 0.0, 1.0}};
+  j["width"] = k.widthPx;
+  j["height"] = k.heightPx;
+  j["R"] = json::array();
+  for (const glm::dvec3& row : pose.rows) j["R"].push_back({row.x, row.y, row.z});
+  j["t"] = {pose.translation.x, pose.translation.y, pose.translation.z};
+  j["focus_distance"] = camera.focusAtInfinity() ? json("infinity") : json(camera.focusDistance());
+  if (camera.lens.apertureRadius > 0.0) j["aperture_radius"] = camera.lens.apertureRadius;
+  if (writeNear) j["near"] = camera.view.nearDistance;
+  if (writeFar) j["far"] = std::isinf(camera.view.farDistance) ? json("infinity") : json(camera.view.farDistance);
+  writeEffects(camera, j);
+  const Distortion& d = camera.lens.effects.distortion;
+  if (!d.isZero() && d.isOpenCv()) j["distortion"] = d.distCoeffs();
+  return j.dump(2) + "\n";
+}
+
 }  // namespace lenslab

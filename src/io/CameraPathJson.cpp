@@ -44,12 +44,12 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
   }
   if (!root.contains("keys") || !root["keys"].is_array())
     throw InputError(
-        cat(where, ": keys: give an array of keys, each {\"time\": seconds, <a camera in the physical form>}"));
+        cat(where, ": keys: give an array of keys, each {\"time\": seconds, <a camera in any form of a camera file>}"));
   const json& keys = root["keys"];
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::string name = cat(where, ": keys[", i, "]");
     if (!keys[i].is_object())
-      throw InputError(cat(name, ": give an object {\"time\": seconds, <a camera in the physical form>}"));
+      throw InputError(cat(name, ": give an object {\"time\": seconds, <a camera in any form of a camera file>}"));
     json camera = keys[i];
     if (!camera.contains("time") || !camera["time"].is_number())
       throw InputError(cat(name, ".time: required, in seconds"));
@@ -57,14 +57,18 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
     key.timeSeconds = camera["time"].get<double>();
     camera.erase("time");
     const CameraFile file = parseCameraJson(camera.dump(), name);
-    if (!file.physical)
-      throw InputError(
-          cat(name,
-              ": give the camera in the physical form (eye, target, up, focal_length_mm, sensor_mm, f_number, "
-              "focus_distance, near, far): a path interpolates those"));
-    key.camera = *file.physical;
     if (camera.contains("near")) path.nearFromScene = false;
     if (camera.contains("far")) path.farFromScene = false;
+    const bool physical = file.physical.has_value();
+    if (i > 0 && physical != path.viewKeys.empty())
+      throw InputError(cat(name, ": is in the ", physical ? "physical" : "lecture or OpenCV",
+                           " form where keys[0] is not; give every key in the physical form (a photographer's "
+                           "focal length and sensor), or every key in the lecture or OpenCV form (a calibrated K)"));
+    if (!physical) {
+      path.viewKeys.push_back({key.timeSeconds, file.camera});
+      continue;
+    }
+    key.camera = *file.physical;
     key.lens = file.camera.lens;
     // The iris and the lens's squeeze do not change along a shot: one shape for every key.
     if (!path.keys.empty() && key.lens.aperture != path.keys.front().lens.aperture)

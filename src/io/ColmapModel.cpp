@@ -359,9 +359,15 @@ Camera colmapImageCamera(const ColmapModel& model, const std::string& name) {
                          " image", model.images.size() == 1 ? "" : "s", " include",
                          model.images.size() == 1 ? "s " : " ", some, model.images.size() > shown ? ", ..." : ""));
   }
-  const OpenCvLens lens = lensOf(cameraOf(model, *image), model.camerasFile);
-  return pinholeFromOpenCv(lens.intrinsics, lens.distortion, poseOf(*image),
-                           cat("COLMAP image ", name, " (", model.imagesFile, ":", image->line, ")"));
+  return colmapImageCamera(model, *image);
+}
+
+Camera colmapImageCamera(const ColmapModel& model, const ColmapImage& image) {
+  const OpenCvLens lens = lensOf(cameraOf(model, image), model.camerasFile);
+  const std::string where =
+      image.line ? cat(model.imagesFile, ":", image.line) : cat(model.imagesFile, ": record ", image.record);
+  return pinholeFromOpenCv(lens.intrinsics, lens.distortion, poseOf(image),
+                           cat("COLMAP image ", image.name, " (", where, ")"));
 }
 
 }  // namespace lenslab

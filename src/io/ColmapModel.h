@@ -88,5 +88,7 @@ OpenCvPose poseOf(const ColmapImage& image);
 // (pinholeFromOpenCv) whose default size is the camera's WIDTH × HEIGHT. Throws InputError for
 // a name not in the model, listing some that are.
 Camera colmapImageCamera(const ColmapModel& model, const std::string& name);
+// The camera that took `image`, one of the model's.
+Camera colmapImageCamera(const ColmapModel& model, const ColmapImage& image);
 
 }  // namespace lenslab

@@ -195,10 +195,12 @@ TEST(CameraPathJson, BadPathsAreRefusedNamingTheKey) {
   EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0], "fov": 40}]})")
                 .find("keys[0]: unknown key \"fov\""),
             std::string::npos);
+  // A lecture-form key mixed with a physical one (keys of one kind only: camera/ViewPath.h).
   EXPECT_NE(
       refusal(
-          R"({"fps": 24, "keys": [{"time": 0, "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1]}]})")
-          .find("keys[0]: give the camera in the physical form"),
+          R"({"fps": 24, "keys": [{"time": 0, "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 2], "window": [-1, -1, 1, 1]}, )"
+          R"({"time": 1, "eye": [0, 1, 5], "target": [0, 0, 0]}]})")
+          .find("keys[1]: is in the physical form where keys[0] is not"),
       std::string::npos);
   EXPECT_NE(refusal(R"({"fps": 24, "keys": [{"eye": [0, 1, 5], "target": [0, 0, 0]}]})").find("keys[0].time: required"),
             std::string::npos);

@@ -191,7 +191,7 @@ if "$lenslab" capture "$scene" --camera-node Left --animation up --fps 4 --width
 else
   fail "capture --camera-node Left --animation up --fps 4"
 fi
-expect_refusal "capture with neither path nor scene" "--path: give a camera path, or a SCENE" -- capture --out "$work/out.d/f_%d.png"
+expect_refusal "capture with neither path nor scene" "--path: give a camera path (or --cameras, --colmap, --camera), or a SCENE" -- capture --out "$work/out.d/f_%d.png"
 
 # --- lens effects' planes of focus: each command refuses one inside the focal length ---
 # (raycast and sweep used to abort in Embree, rc 134, on these; render drew garbage)

@@ -284,7 +284,7 @@ printf '{"fps": 24, "keys": [%s, %s]}' "$key" "$(sed 's/"time": 1/"time": 0/' <<
 printf '{"fps": 24, "keys": [%s, {"time": 1, "eye": [0, 1, 4], "target": [0, 0.5, -2], "fov": 40}]}' "$key" >"$work/unknown.json"
 printf '{"fps": 24, "keys": [%s], "speed": 2}' "$key" >"$work/unknown-top.json"
 printf '{"keys": [%s]}' "$key" >"$work/nofps.json"
-printf '{"fps": 24, "keys": [{"time": 0, "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1]}]}' >"$work/lecture.json"
+printf '{"fps": 24, "keys": [{"time": 0, "vrp": [0,0,0], "vpn": [0,0,1], "prp": [0,0,2], "window": [-1,-1,1,1]}, {"time": 1, "eye": [0,1,5], "target": [0,0,0]}]}' >"$work/lecture.json"
 bad=(--width 32 --aperture-samples 1 --out "$work/bad/f_%02d.png")
 expect_refusal "no keys" "keys" -- capture --path "$work/empty.json" "${bad[@]}"
 expect_refusal "unsorted times" "keys[1]" -- capture --path "$work/unsorted.json" "${bad[@]}"
@@ -292,7 +292,7 @@ expect_refusal "repeated times" "keys[1]" -- capture --path "$work/repeated.json
 expect_refusal "unknown camera key" 'keys[1]: unknown key "fov"' -- capture --path "$work/unknown.json" "${bad[@]}"
 expect_refusal "unknown path key" 'unknown key "speed"' -- capture --path "$work/unknown-top.json" "${bad[@]}"
 expect_refusal "no fps" "fps" -- capture --path "$work/nofps.json" "${bad[@]}"
-expect_refusal "lecture-form key" "physical form" -- capture --path "$work/lecture.json" "${bad[@]}"
+expect_refusal "lecture and physical keys" "keys[1]: is in the physical form where keys[0] is not" -- capture --path "$work/lecture.json" "${bad[@]}"
 expect_refusal "missing path file" "missing.json" -- capture --path "$work/missing.json" "${bad[@]}"
 expect_refusal "no frame number" "%d" -- capture --path "$path" --out "$work/bad/frame.png"
 expect_refusal "two frame numbers" "one %d" -- capture --path "$path" --out "$work/bad/f_%d_%d.png"

@@ -63,7 +63,7 @@ namespace {
 // on an empty volume). The folders this run makes are in `madeFolders`, removed again, when still
 // empty, if it is refused or interrupted.
 void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames, const FrameRange& range,
-                         const fs::path& manifest, const AovSelection& aovs, OutputSet& madeFolders) {
+                         const fs::path& manifest, const AovOutput& aovs, OutputSet& madeFolders) {
   std::set<fs::path> folders;
   for (const int f : frames) folders.insert(fs::path(formatFramePath(o.out, f)).parent_path());
   folders.insert(manifest.parent_path());
@@ -72,7 +72,7 @@ void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames
   const fs::path firstImage = formatFramePath(o.out, frames.empty() ? range.first : frames.front());
   checkOutputPath(firstImage, OutputKind::Image, "--out");
   checkOutputPath(frameCameraPath(firstImage), OutputKind::Any, "--out");  // its name is longer than the image's
-  checkAovOutput(aovs, o.out, "--out");
+  checkAovOutput(aovs, firstImage, "--out");
   checkOutputPath(manifest, OutputKind::JsonLines, "--manifest");
   checkNotInput(manifest, "--manifest", o.pathFile, "--path");
   checkNotInput(manifest, "--manifest", o.camerasFile, "--cameras");  // a replayed manifest is not appended to
@@ -101,7 +101,7 @@ struct CaptureRun {
   Scene& scene;
   const FrameCameras& cameras;
   const fs::path& manifest;
-  const AovSelection& aovs;
+  const AovOutput& aovs;
   const std::optional<EnvironmentSummary>& environment;
   Shard shard;
   int firstFrame;  // the range's: --exposure auto meters it
@@ -193,10 +193,10 @@ struct CaptureRun {
     RunStats stats;
     FramePlan plan;
     Image image = render(frame, s, lens, stats, plan);
-    std::vector<ImageChannel> aovChannelValues;
-    if (aovs.any()) {
+    AovImages aovImages;
+    if (aovs.selection.any()) {
       if (!caster || !scene.animation.empty()) caster = std::make_unique<RayCaster>(scene);
-      aovChannelValues = aovChannels(caster->aovImages(s.camera, s.f.size, aovs));
+      aovImages = caster->aovImages(s.camera, s.f.size, aovs.selection);
     }
     DisplaySettings display = s.display;
     meter(display, image, frame);
@@ -204,7 +204,11 @@ struct CaptureRun {
     OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
     outputs.add(cameraFile, s.cameraText);
     prepareForFile(imageFile, image, display.encoding, cat("frame ", frame, ": "), std::cerr);
-    writeImage(outputs, imageFile, image, aovChannelValues);
+    // The instance ids' names once for the frames' folder (every frame writes the same bytes).
+    const auto warn = [&](const std::string& w) { warnOnce(cat("frame ", frame, ": ", w)); };
+    writeImage(
+        outputs, imageFile, image,
+        addAovOutputs(outputs, imageFile, aovImages, aovs, scene, warn, imageFile.parent_path() / "instances.json"));
     const ManifestFrame entry{frame,
                               s.time,
                               imageFile,
@@ -221,7 +225,9 @@ struct CaptureRun {
                               environment,
                               shard};
     const nlohmann::json line = manifestLine(entry, manifest);
-    commitFrame(outputs, {cameraFile, imageFile}, manifest, line.dump());
+    std::vector<fs::path> files = aovFilePaths(aovs, imageFile);
+    files.insert(files.begin(), {cameraFile, imageFile});
+    commitFrame(outputs, files, manifest, line.dump());
     return line;
   }
 };
@@ -246,7 +252,7 @@ int runCapture(const CaptureOptions& o) {
   const Shard shard = parseShard(o.shard);
   const std::vector<int> frames = shardFrames(range, shard);
   checkFramePattern(o.out, "--out");
-  const AovSelection aovs = parseAovs(o.aovs);
+  const AovOutput aovs = parseAovRequest(o.aovs);
   const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
   OutputSet madeFolders;
   checkCaptureOutputs(o, frames, range, manifest, aovs, madeFolders);
@@ -343,7 +349,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_flag("--skip-existing", o->skipExisting,
                 "leave frames alone whose image exists and whose line the manifest holds (a frame with an image but no "
                 "line is rendered again)");
-  addAovOption(*cmd, o->aovs);
+  addAovOptions(*cmd, o->aovs);
   cmd->add_option(
       "--manifest", o->manifest,
       "the JSON-lines file each rendered frame appends one line to (default: manifest.jsonl beside the frames)");

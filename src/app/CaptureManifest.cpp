@@ -105,12 +105,24 @@ nlohmann::json manifestLine(const ManifestFrame& f, const fs::path& manifest) {
     line["f_number"] = distanceJson(f.lens->fNumber);
   }
   line["focus_distance"] = distanceJson(f.lens ? f.lens->focusDistance : f.camera.focusDistance());
-  if (f.aovs.any()) {
-    line["aov"] = f.aovs.names();
-    // Every channel of the frame's EXR, in the order written.
-    nlohmann::json channels = {"R", "G", "B", "A"};
-    for (const std::string& c : aovChannelNames(f.aovs)) channels.push_back(c);
-    line["channels"] = channels;
+  if (f.aovs.selection.any()) {
+    line["aov"] = f.aovs.selection.names();
+    line["normal_convention"] = f.aovs.normals == NormalConvention::Gl ? "gl" : "opencv";
+    const std::vector<fs::path> files = aovFilePaths(f.aovs, f.imageFile);
+    if (f.aovs.format == AovFormat::Exr) {
+      // Every channel of the EXR that holds them, in the order written: the frame's, after its
+      // colour, or IMAGE.aov.exr's alone.
+      nlohmann::json channels = files.empty() ? nlohmann::json{"R", "G", "B", "A"} : nlohmann::json::array();
+      for (const std::string& c : aovChannelNames(f.aovs.selection)) channels.push_back(c);
+      line["channels"] = channels;
+    }
+    if (!files.empty()) {
+      nlohmann::json named = nlohmann::json::object();
+      const std::vector<std::string> names = f.aovs.selection.names();
+      for (std::size_t i = 0; i < files.size(); ++i)
+        named[f.aovs.format == AovFormat::Exr ? std::string("exr") : names[i]] = relativeTo(files[i], manifest);
+      line["aov_files"] = named;
+    }
   }
   const Exposure& e = f.display.exposure;
   if (!f.display.encoding.isIdentity() || e.meterReading) {

@@ -7,6 +7,7 @@
 #include "camera/ImageSize.h"
 #include "camera/PhysicalCamera.h"
 #include "core/Aovs.h"
+#include "io/AovFiles.h"
 #include "io/AtomicFile.h"
 #include "io/EnvironmentFile.h"
 #include "io/FrameSequence.h"
@@ -47,7 +48,7 @@ struct ManifestFrame {
   ImageSize size;
   const PhysicalCamera* lens;  // the frame's physical description, where it has one
   const Camera& camera;        // as rendered
-  const AovSelection& aovs;
+  const AovOutput& aovs;
   const DisplaySettings& display;
   const std::optional<EnvironmentSummary>& environment;
   Shard shard;

@@ -2,6 +2,7 @@
 // capture's options, and each frame's camera: from the path's keys, or the scene's own camera over
 // its animation; the frame's physical description, lens effects and size, from which its camera
 // file is written.
+#include "app/AovOption.h"
 #include "app/ExposureOptions.h"
 #include "camera/CameraPath.h"
 #include "camera/ImageSize.h"
@@ -33,7 +34,7 @@ struct CaptureOptions {
   std::string frames;  // "A:B"; empty = all
   std::string shard = "0/1";
   bool skipExisting = false;
-  std::vector<std::string> aovs;
+  AovRequest aovs;
   bool quiet = false;
   LensOptions lens;
   CameraOptions camera;

@@ -59,7 +59,7 @@ struct RenderOptions {
   std::optional<glm::vec3> background;
   int tileSizePx = 0;                 // render: 0 = tile only when one render target cannot hold the image
   std::optional<double> timeSeconds;  // the glTF animations' pose; none = the rest pose
-  std::vector<std::string> aovs;      // --aov: the names, parsed in runRender
+  AovRequest aovs;                    // --aov, --aov-format, --normal-convention: parsed in runRender
   ExposureOptions exposure;           // PNG output only
   EnvironmentRequest environment;
   std::string lensFile;          // --lens: a prescription (lens/LensPrescription.h)
@@ -70,9 +70,9 @@ struct RenderOptions {
 constexpr std::int64_t kMaxRaycastPixels = std::int64_t{1} << 28;
 
 // The selected AOVs of `map` (the lens the image was rendered with; with --lens the traced lens,
-// whichever renderer made the image) from the ray caster, as EXR channels; none when none is selected.
-std::vector<ImageChannel> aovsOf(const RayCaster& caster, const ImageMap& map, const AovSelection& aovs) {
-  return aovs.any() ? aovChannels(caster.aovImages(map, aovs)) : std::vector<ImageChannel>{};
+// whichever renderer made the image) from the ray caster; none when none is selected.
+AovImages aovsOf(const RayCaster& caster, const ImageMap& map, const AovSelection& aovs) {
+  return aovs.any() ? caster.aovImages(map, aovs) : AovImages{};
 }
 
 // render's camera after --focus-at (focused on the raster's depth there) and --lens (the thin lens
@@ -103,12 +103,12 @@ Camera refocusAndFit(const RenderOptions& o, const Scene& scene, const SelectedC
 }
 
 // The image, or nothing when it was rendered in tiles and already written, a strip at a time, to
-// `out`'s temporary file in `outputs`. `aovChannelValues` gets the selected AOVs (`aovs`) of the
+// `out`'s temporary file in `outputs`. `aovImages` gets the selected AOVs (`aovs`) of the
 // camera rendered with (refused for a tiled image).
 std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected,
                                ImageSize size, const PlanOptions& planOptions, OutputSet& outputs, const fs::path& out,
                                RunStats& stats, ProgressReporter& progress, const DisplaySettings& display,
-                               const AovSelection& aovs, std::vector<ImageChannel>& aovChannelValues,
+                               const AovSelection& aovs, AovImages& aovImages,
                                const std::optional<FittedLens>& fitted) {
   auto t = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = createHeadlessContext(o.backend == "egl" ? Backend::Egl : Backend::OSMesa);
@@ -144,14 +144,13 @@ std::optional<Image> rasterize(const RenderOptions& o, const Scene& scene, const
   stats.renderSeconds = secondsSince(renderStart);
   if (aovs.any()) {
     if (!frame) frame = std::make_unique<ThinLensMap>(camera, size);
-    aovChannelValues = aovsOf(RayCaster(scene), *frame, aovs);
+    aovImages = aovsOf(RayCaster(scene), *frame, aovs);
   }
   return image;
 }
 
 Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& selected, ImageSize size,
-              RunStats& stats, ProgressReporter& progress, const AovSelection& aovs,
-              std::vector<ImageChannel>& aovChannelValues) {
+              RunStats& stats, ProgressReporter& progress, const AovSelection& aovs, AovImages& aovImages) {
   Camera camera = selected.camera;
   if (o.samplesPerPixel < 1) throw InputError(cat("--spp ", o.samplesPerPixel, ": give at least 1 sample per pixel"));
   if (size.pixelCount() > kMaxRaycastPixels)
@@ -198,7 +197,7 @@ Image raycast(const RenderOptions& o, const Scene& scene, const SelectedCamera& 
   t = std::chrono::steady_clock::now();
   const Image image = caster.render(*map, options, onRows);
   stats.renderSeconds = secondsSince(t);
-  aovChannelValues = aovsOf(caster, *map, aovs);
+  aovImages = aovsOf(caster, *map, aovs);
   return image;
 }
 
@@ -251,8 +250,7 @@ int runRender(const RenderOptions& o) {
   const fs::path out = o.out;
   // Every output checked before any work, so that a bad --stats refuses before the image exists.
   checkOutputPath(out, OutputKind::Image, "--out");
-  const AovSelection aovs = parseAovs(o.aovs);
-  checkAovOutput(aovs, out, "--out");
+  const AovOutput aovs = checkedAovOutput(o.aovs, out, "--out");
   if (!o.statsFile.empty()) checkOutputPath(o.statsFile, OutputKind::Json, "--stats");
   const PlanOptions planOptions = toPlanOptions(o.lens);
 
@@ -295,17 +293,17 @@ int runRender(const RenderOptions& o) {
   // The image and the stats appear together or not at all (io/AtomicFile.h).
   OutputSet outputs;
   std::optional<Image> image;
-  std::vector<ImageChannel> aovChannelValues;  // --aov, beside the image in its EXR
+  AovImages aovImages;  // --aov, beside the image
   // One reporter for the whole run: its last line comes after the file is written.
   ProgressReporter progress(stats.command, o.method == Method::Raster ? "samples" : "rows", o.quiet);
   std::optional<FittedLens> fitted;
   RenderOptions exact = o;
   const bool traceExactly = o.method == Method::Raycast || traceLensExactly(o, selected, size, fitted, exact);
   if (!traceExactly) {
-    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display, aovs,
-                      aovChannelValues, fitted);
+    image = rasterize(o, scene, selected, size, planOptions, outputs, out, stats, progress, display, aovs.selection,
+                      aovImages, fitted);
   } else {
-    image = raycast(exact, scene, selected, size, stats, progress, aovs, aovChannelValues);
+    image = raycast(exact, scene, selected, size, stats, progress, aovs.selection, aovImages);
   }
 
   auto t = std::chrono::steady_clock::now();
@@ -314,7 +312,8 @@ int runRender(const RenderOptions& o) {
     for (const auto& w : meterForFile(display, *image, out, !o.statsFile.empty()))
       progress.note("lenslab: warning: " + w);
     prepareForFile(out, *image, display.encoding, "", std::cerr);
-    writeImage(outputs, out, *image, aovChannelValues);
+    const auto warn = [&](const std::string& w) { progress.note("lenslab: warning: " + w); };
+    writeImage(outputs, out, *image, addAovOutputs(outputs, out, aovImages, aovs, scene, warn));
     stats.writeSeconds = secondsSince(t);
   }
   progress.setDetail({});  // written: the last line says no more than the figures
@@ -381,7 +380,7 @@ std::function<int()> addImageCommand(CLI::App& app, Method method) {
   if (method == Method::Raster) addTargetOption(*cmd, options->lens);
   addCameraOptions(*cmd, options->camera);
   addBackgroundOption(*cmd, options->background);
-  addAovOption(*cmd, options->aovs);
+  addAovOptions(*cmd, options->aovs);
   addExposureOptions(*cmd, options->exposure);
   addEnvironmentOptions(*cmd, options->environment);
   addTimeOption(*cmd, options->timeSeconds,

@@ -81,8 +81,8 @@ std::vector<ListedCamera> loadCameraList(const fs::path& file, double fps) {
     cameras.push_back(std::move(c));
   }
   if (!manifestFrames.empty() && !cameras.empty())
-    throw InputError(cat(file.string(),
-                         ": mixes a manifest's lines with camera lines; give a manifest, or a list of cameras"));
+    throw InputError(
+        cat(file.string(), ": mixes a manifest's lines with camera lines; give a manifest, or a list of cameras"));
   for (auto& [frame, camera] : manifestFrames) cameras.push_back(std::move(camera));
   if (cameras.empty())
     throw InputError(cat(file.string(), ": holds no cameras; give one camera (a JSON object) a line"));

@@ -21,7 +21,7 @@ namespace lenslab {
 
 struct ListedCamera {
   double timeSeconds = 0.0;
-  CameraFile file;  // the camera, and its physical description where it has one
+  CameraFile file;    // the camera, and its physical description where it has one
   std::string where;  // "cams.jsonl:3", or the COLMAP image
 };
 

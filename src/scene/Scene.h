@@ -112,6 +112,7 @@ struct Instance {
   // reports; -1 for an instance made in code. A node with a mesh of several primitives places
   // one instance per primitive, all with the node's index.
   int gltfNode = -1;
+  std::string gltfNodeName;  // that node's name in the file, may be empty (instances.json names it)
 };
 
 // The largest world coordinate a scene may have. Both renderers carry positions in float

@@ -90,14 +90,16 @@ TEST(ViewPath, KeysNoPinholePathCanHoldAreRefusedByName) {
             "photographer's focal length and sensor), or every key in the lecture or OpenCV form (a calibrated K)");
   std::string otherSize = key(1.0, 1500.0, 962.3, 541.7, {0, 1, 5}, 10.0);
   otherSize.replace(otherSize.find("1080"), 4, "1000");
-  EXPECT_NE(test::refusalOf([&] { parseCameraPath(cat(R"({"fps": 10, "keys": [)", a, ", ", otherSize, "]}"), "p"); })
-                .find("p: keys[1]: its image size differs from the first key's"),
+  EXPECT_NE(test::refusalOf([&] {
+              parseCameraPath(cat(R"({"fps": 10, "keys": [)", a, ", ", otherSize, "]}"), "p");
+            }).find("p: keys[1]: its image size differs from the first key's"),
             std::string::npos);
   const std::string parallel =
       R"({"time": 1, "projection": "parallel", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "prp": [0, 0, 5],
           "window": [-1, -1, 1, 1], "far": 10})";
-  EXPECT_NE(test::refusalOf([&] { parseCameraPath(cat(R"({"fps": 10, "keys": [)", parallel, "]}"), "p"); })
-                .find("p: keys[0]: a parallel projection has no pinhole"),
+  EXPECT_NE(test::refusalOf([&] {
+              parseCameraPath(cat(R"({"fps": 10, "keys": [)", parallel, "]}"), "p");
+            }).find("p: keys[0]: a parallel projection has no pinhole"),
             std::string::npos);
 }
 

@@ -300,9 +300,9 @@ expect_refusal "frames past the end" "--frames 70:80" -- capture --path "$path" 
 expect_refusal "frames backwards" "--frames 5:2" -- capture --path "$path" --frames 5:2 "${bad[@]}"
 expect_refusal "shard index" "--shard 3/3" -- capture --path "$path" --shard 3/3 "${bad[@]}"
 expect_refusal "shard form" "--shard 1" -- capture --path "$path" --shard 1 "${bad[@]}"
-expect_refusal "depth in a PNG" "--aov depth" -- capture --path "$path" --aov depth "${bad[@]}"
+expect_refusal "normal convention without normals" "--normal-convention opencv: give --aov normal too" -- \
+  capture --path "$path" --aov depth --normal-convention opencv "${bad[@]}"
 expect_refusal "unknown aov" "--aov" -- capture --path "$path" --aov normals "${bad[@]}"
-expect_refusal "normals in a PNG" "--aov depth,normal: " -- capture --path "$path" --aov depth,normal "${bad[@]}"
 
 echo "capture: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -53,8 +53,9 @@ expect_fault "--manifest over a frame's camera file" "is frame 2's camera file" 
   -- capture --width 16 --path "$src/assets/rows/rack-focus.json" --frames 0:2 --out "$out/fr/f_%04d.png" --manifest "$out/fr/f_0002.camera.json"
 # Refused after it made its folders (the frames' and the manifest's, made first so that each file's
 # place can be checked): capture removes them again, as sweep does.
-expect_fault "capture refused after making its folders" "--aov depth" "$out" - \
-  -- capture --path "$src/assets/rows/rack-focus.json" --width 16 --aov depth --out "$out/new/deeper/f_%04d.png"
+expect_fault "capture refused after making its folders" "give a .jsonl (or .json) file name" "$out" - \
+  -- capture --path "$src/assets/rows/rack-focus.json" --width 16 --out "$out/new/deeper/f_%04d.png" \
+  --manifest "$out/new/deeper/m.png"
 
 # A read-only folder. Root writes into a chmod 555 folder regardless, so as root the run is made
 # as 'nobody' (setpriv); as any other user the chmod alone does it. (tmpfs_test.sh also tries a

@@ -134,7 +134,7 @@ class SceneBuilder {
       for (std::size_t k = 0; k < primitives; ++k)
         if (const int mesh = meshFor(node.mesh, k); mesh >= 0) {
           placed.instances.push_back(static_cast<int>(scene_.instances.size()));
-          scene_.instances.push_back({mesh, worldFromNode, placed.gltfNode});
+          scene_.instances.push_back({mesh, worldFromNode, placed.gltfNode, node.name});
         }
     }
     if (node.camera >= 0) {

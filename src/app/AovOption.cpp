@@ -17,7 +17,8 @@ void addAovOptions(CLI::App& command, AovRequest& request) {
                   "ground truth beside the image (a list, e.g. depth,normal): depth = the distance from the lens "
                   "centre along the optical axis (world units, +inf where nothing is hit); normal = the shading "
                   "normal in camera space (--normal-convention); albedo = the linear base colour; instance = the "
-                  "glTF node hit. One ray per pixel centre from the lens centre (docs/capture.md)")
+                  "glTF node hit; flow (capture) = each pixel's motion to the next frame in pixels. One ray per pixel "
+                  "centre from the lens centre (docs/capture.md)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::IsMember(aovNames()))
@@ -38,9 +39,12 @@ void addAovOptions(CLI::App& command, AovRequest& request) {
       ->capture_default_str();
 }
 
-AovOutput parseAovRequest(const AovRequest& request) {
+AovOutput parseAovRequest(const AovRequest& request, bool sequence) {
   AovOutput o;
   o.selection = parseAovs(request.names);
+  if (o.selection.flow && !sequence)
+    throw InputError(cat("--aov ", aovList(o.selection),
+                         ": flow is each pixel's motion to the next frame of a sequence; `lenslab capture` writes it"));
   o.format = parseAovFormat(request.format);
   o.normals = parseNormalConvention(request.normals);
   if (!o.selection.any() && o.format != AovFormat::Exr)

@@ -27,8 +27,9 @@ struct AovRequest {
 void addAovOptions(CLI::App& command, AovRequest& request);
 
 // The request parsed. Throws InputError (one line) for --aov-format or --normal-convention without
-// --aov, or --normal-convention opencv without the normal AOV.
-AovOutput parseAovRequest(const AovRequest& request);
+// --aov, --normal-convention opencv without the normal AOV, or the flow AOV outside a sequence
+// (`sequence`: capture's frames, which have a next frame).
+AovOutput parseAovRequest(const AovRequest& request, bool sequence = false);
 
 // Checks `image` and the AOV files beside it as outputs (OutputKind::Any), naming `outOption`.
 void checkAovOutput(const AovOutput& output, const std::filesystem::path& image, const std::string& outOption);

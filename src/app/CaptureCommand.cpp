@@ -105,6 +105,7 @@ struct CaptureRun {
   const std::optional<EnvironmentSummary>& environment;
   Shard shard;
   int firstFrame;  // the range's: --exposure auto meters it
+  int frameCount;  // the sequence's: the last has no next frame for the flow AOV
   Renderer& renderer;
   ProgressReporter& progress;
   std::unique_ptr<RayCaster> caster = {};  // the AOVs; rebuilt each frame when the scene moves
@@ -196,7 +197,16 @@ struct CaptureRun {
     AovImages aovImages;
     if (aovs.selection.any()) {
       if (!caster || !scene.animation.empty()) caster = std::make_unique<RayCaster>(scene);
-      aovImages = caster->aovImages(s.camera, s.f.size, aovs.selection);
+      const AovSelection& asked = aovs.selection;
+      // The flow starts from each pixel's surface: its depth and node.
+      AovSelection cast = asked;
+      cast.depth = cast.depth || asked.flow, cast.instance = cast.instance || asked.flow, cast.flow = false;
+      aovImages = caster->aovImages(s.camera, s.f.size, cast);
+      if (asked.flow) {
+        aovImages.flow = flowToNextFrame(cameras, scene, o, frame, frameCount, s.camera, s.f.size, aovImages);
+        if (!asked.depth) aovImages.depth.clear();
+        if (!asked.instance) aovImages.instance.clear();
+      }
     }
     DisplaySettings display = s.display;
     meter(display, image, frame);
@@ -252,7 +262,7 @@ int runCapture(const CaptureOptions& o) {
   const Shard shard = parseShard(o.shard);
   const std::vector<int> frames = shardFrames(range, shard);
   checkFramePattern(o.out, "--out");
-  const AovOutput aovs = parseAovRequest(o.aovs);
+  const AovOutput aovs = parseAovRequest(o.aovs, true);
   const fs::path manifest = o.manifest.empty() ? defaultManifest(o.out) : fs::path(o.manifest);
   OutputSet madeFolders;
   checkCaptureOutputs(o, frames, range, manifest, aovs, madeFolders);
@@ -273,7 +283,8 @@ int runCapture(const CaptureOptions& o) {
   // One line a frame where nobody watches a bar (a cluster job's log), unless
   // LENSLAB_PROGRESS_SECONDS asks for fewer.
   ProgressReporter progress("capture", "frames", o.quiet, 0.0);
-  CaptureRun run{o, scene, cameras, manifest, aovs, environmentSummary, shard, range.first, renderer, progress};
+  CaptureRun run{o,     scene,       cameras,    manifest, aovs,    environmentSummary,
+                 shard, range.first, frameCount, renderer, progress};
   int rendered = 0, skipped = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int frame = frames[i];

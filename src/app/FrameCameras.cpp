@@ -2,6 +2,7 @@
 
 #include "camera/GltfCamera.h"
 #include "camera/LensMap.h"
+#include "camera/OpticalFlow.h"
 #include "camera/ViewPath.h"
 #include "core/Error.h"
 #include "core/Text.h"
@@ -10,6 +11,7 @@
 #include "scene/SceneAnimation.h"
 
 #include <cmath>
+#include <map>
 
 namespace lenslab {
 namespace {
@@ -151,6 +153,25 @@ FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const Capture
   k.key = key;
   k.size = resolveImageSize(k.camera, o.width, o.height);
   return k;
+}
+
+std::vector<float> flowToNextFrame(const FrameCameras& cameras, Scene& scene, const CaptureOptions& o, int frame,
+                                   int frameCount, const Camera& now, ImageSize size, const AovImages& surfaces) {
+  const ThinLensMap nowMap(now, size);
+  if (frame + 1 >= frameCount) return opticalFlow(nowMap, surfaces, nullptr, {});
+  std::map<int, glm::dmat4> before;  // every instance of a node shares its transform
+  for (const Instance& i : scene.instances)
+    if (i.gltfNode >= 0) before[i.gltfNode] = i.worldFromModel;
+  const bool moves = !scene.animation.empty();
+  if (moves) poseScene(scene, cameras.timeOf(frame + 1));
+  NodeMotion motion;
+  if (moves)
+    for (const Instance& i : scene.instances)
+      if (i.gltfNode >= 0) motion[i.gltfNode] = i.worldFromModel * glm::inverse(before[i.gltfNode]);
+  const FrameKey next = frameKey(cameras, scene, o, frame + 1);
+  if (moves) poseScene(scene, cameras.timeOf(frame));
+  const ThinLensMap nextMap(next.camera, next.size);
+  return opticalFlow(nowMap, surfaces, &nextMap, motion);
 }
 
 }  // namespace lenslab

@@ -107,4 +107,10 @@ struct FrameKey {
 
 FrameKey frameKey(const FrameCameras& cameras, const Scene& scene, const CaptureOptions& o, int frame);
 
+// The flow AOV of `frame` (camera `now` at `size`, `scene` posed at the frame's time) to frame + 1
+// of `frameCount` (camera/OpticalFlow.h): the scene is posed at the next frame's time for its
+// nodes' motion and camera, then back. `surfaces` holds the frame's depth and instance AOVs.
+std::vector<float> flowToNextFrame(const FrameCameras& cameras, Scene& scene, const CaptureOptions& o, int frame,
+                                   int frameCount, const Camera& now, ImageSize size, const AovImages& surfaces);
+
 }  // namespace lenslab

@@ -95,6 +95,18 @@ glm::dvec2 ThinLensMap::renderPixelFromOutput(glm::dvec2 pixel) const {
   return truth + glm::dvec2(overscan_.padPx);
 }
 
+std::optional<glm::dvec2> ThinLensMap::pixelOfPoint(const glm::dvec3& world) const {
+  const ViewSpec& view = camera_.view;
+  const ViewBasis b = viewBasis(view);
+  const glm::dvec3 q = world - prpWorld(view);
+  const double depth = -glm::dot(q, b.n);  // along the view direction, −n
+  if (!(depth > 0.0)) return std::nullopt;
+  // The view plane (n = 0, the VRP's) lies PRP.n in front of the PRP: similar triangles.
+  const double scale = view.prp.z / depth;
+  const glm::dvec2 window(view.prp.x + glm::dot(q, b.u) * scale, view.prp.y + glm::dot(q, b.v) * scale);
+  return pixelFromNormalised(camera_.lens.effects.distortChannel(Channel::Green, normalisedFromWindow(view, window)));
+}
+
 glm::dvec2 ThinLensMap::outputFromRenderPixel(glm::dvec2 renderPixel) const {
   const Overscan& o = overscan_;
   const glm::dvec2 n = normalisedFromWindow(

@@ -162,6 +162,10 @@ class ThinLensMap final : public ImageMap {
   glm::dvec2 pixelFromWindow(glm::dvec2 uv) const;
   glm::dvec2 normalisedFromPixel(glm::dvec2 pixel) const;  // perspective only
   glm::dvec2 pixelFromNormalised(glm::dvec2 normalised) const;
+  // Where world point `world` shows on the output image, green's (through the lens's distortion):
+  // the lecture's projection onto the view plane from the PRP, then distorted. nullopt for a point
+  // not in front of the lens centre (perspective only).
+  std::optional<glm::dvec2> pixelOfPoint(const glm::dvec3& world) const;
   // Exact, per point: the true perspective sample channel `c` of output position `pixel` shows,
   // Newton started from `guess` (a true normalised position; the pixel's own when not given).
   ChannelSample undistorted(Channel c, glm::dvec2 pixel, std::optional<glm::dvec2> guess = std::nullopt) const;

@@ -6,13 +6,13 @@
 namespace lenslab {
 
 const std::vector<std::string>& aovNames() {
-  static const std::vector<std::string> names{"depth", "normal", "albedo", "instance"};
+  static const std::vector<std::string> names{"depth", "normal", "albedo", "instance", "flow"};
   return names;
 }
 
 std::vector<std::string> AovSelection::names() const {
   std::vector<std::string> out;
-  const bool on[] = {depth, normal, albedo, instance};
+  const bool on[] = {depth, normal, albedo, instance, flow};
   for (std::size_t i = 0; i < aovNames().size(); ++i)
     if (on[i]) out.push_back(aovNames()[i]);
   return out;
@@ -29,6 +29,8 @@ AovSelection parseAovs(const std::vector<std::string>& names, const std::string&
       s.albedo = true;
     else if (name == "instance")
       s.instance = true;
+    else if (name == "flow")
+      s.flow = true;
     else {
       std::string valid;
       for (const std::string& n : aovNames()) valid += (valid.empty() ? "" : ", ") + n;

@@ -15,8 +15,9 @@ struct AovSelection {
   bool normal = false;    // the shading normal, camera space (u right, v up, n toward the viewer)
   bool albedo = false;    // the base colour the renderers shade: factor × texture × vertex colour
   bool instance = false;  // the glTF node index of the instance hit
+  bool flow = false;      // capture: each pixel's motion to the next frame, pixels (camera/OpticalFlow.h)
 
-  bool any() const { return depth || normal || albedo || instance; }
+  bool any() const { return depth || normal || albedo || instance || flow; }
   // The selected names, in the order above (as the manifest lists them).
   std::vector<std::string> names() const;
 };
@@ -46,6 +47,7 @@ struct AovImages {
   std::vector<float> albedo;  // 3 a pixel, linear RGB; 0, 0, 0 where nothing is hit
   std::vector<float>
       instance;  // 1 a pixel, an exact integer (float holds them to 2^24); kNoSurfaceInstance where nothing is hit
+  std::vector<float> flow;  // 2 a pixel (x right, y down, pixels); NaN where unknown
 };
 
 }  // namespace lenslab

@@ -24,6 +24,7 @@ std::vector<std::string> aovChannelNames(const AovSelection& selection) {
   if (selection.normal) names.insert(names.end(), kNormal.begin(), kNormal.end());
   if (selection.albedo) names.insert(names.end(), kAlbedo.begin(), kAlbedo.end());
   if (selection.instance) names.push_back("instance");
+  if (selection.flow) names.insert(names.end(), {"flow.X", "flow.Y"});
   return names;
 }
 
@@ -35,6 +36,9 @@ std::vector<ImageChannel> aovChannels(const AovImages& images) {
   if (!images.albedo.empty())
     for (std::size_t k = 0; k < 3; ++k) channels.push_back({kAlbedo[k], component(images.albedo, 3, k)});
   if (!images.instance.empty()) channels.push_back({"instance", images.instance});
+  if (!images.flow.empty())
+    for (std::size_t k = 0; k < 2; ++k)
+      channels.push_back({k == 0 ? "flow.X" : "flow.Y", component(images.flow, 2, k)});
   return channels;
 }
 

@@ -28,7 +28,8 @@ fs::path beside(const fs::path& image, const std::string& suffix) {
 
 bool isExr(const fs::path& image) {
   std::string ext = image.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".exr";
 }
 
@@ -102,6 +103,29 @@ void writeNpy(OutputSet& outputs, const fs::path& image, const AovImages& a) {
   if (!a.normal.empty()) outputs.add(beside(image, ".normal.npy"), encodeNpy(a.normal, {h, w, 3}));
   if (!a.albedo.empty()) outputs.add(beside(image, ".albedo.npy"), encodeNpy(a.albedo, {h, w, 3}));
   if (!a.instance.empty()) outputs.add(beside(image, ".instance.npy"), encodeNpy(instanceIds(a.instance), {h, w}));
+  if (!a.flow.empty()) outputs.add(beside(image, ".flow.npy"), encodeNpy(a.flow, {h, w, 2}));
+}
+
+// KITTI's flow PNG: R = u·64 + 2¹⁵, G = v·64 + 2¹⁵, B = 1 where the flow is known.
+void writeKittiFlow(OutputSet& outputs, const fs::path& image, const AovImages& a, std::vector<std::string>& warnings) {
+  std::vector<std::uint16_t> out(a.flow.size() / 2 * 3, 0);
+  std::size_t clamped = 0;
+  for (std::size_t i = 0; i < a.flow.size() / 2; ++i) {
+    const float u = a.flow[2 * i], v = a.flow[2 * i + 1];
+    if (!std::isfinite(u) || !std::isfinite(v)) continue;
+    const auto code = [&](float f) {
+      const double c = std::round(f * 64.0 + 32768.0);
+      clamped += c < 0.0 || c > 65535.0;
+      return static_cast<std::uint16_t>(std::clamp(c, 0.0, 65535.0));
+    };
+    out[3 * i] = code(u), out[3 * i + 1] = code(v), out[3 * i + 2] = 1;
+  }
+  const fs::path file = beside(image, ".flow.png");
+  if (clamped)
+    warnings.push_back(cat(file.string(), ": ", clamped,
+                           " flow components beyond ±512 px, held there (KITTI's "
+                           "range); --aov-format npy or exr holds any flow"));
+  outputs.add(file, encodePng16(file, out, a.widthPx, a.heightPx, 3));
 }
 
 void writePng16(OutputSet& outputs, const fs::path& image, const AovImages& a, std::vector<std::string>& warnings) {
@@ -142,6 +166,7 @@ void writePng16(OutputSet& outputs, const fs::path& image, const AovImages& a, s
     const fs::path file = beside(image, ".instance.png");
     outputs.add(file, encodePng16(file, out, w, h, 1));
   }
+  if (!a.flow.empty()) writeKittiFlow(outputs, image, a, warnings);
 }
 
 }  // namespace
@@ -162,7 +187,8 @@ NormalConvention parseNormalConvention(const std::string& text) {
 std::vector<fs::path> aovFilePaths(const AovOutput& o, const fs::path& image) {
   const AovSelection& s = o.selection;
   if (!s.any()) return {};
-  if (o.format == AovFormat::Exr) return isExr(image) ? std::vector<fs::path>{} : std::vector{beside(image, ".aov.exr")};
+  if (o.format == AovFormat::Exr)
+    return isExr(image) ? std::vector<fs::path>{} : std::vector{beside(image, ".aov.exr")};
   const std::string ext = o.format == AovFormat::Npy ? ".npy" : ".png";
   std::vector<fs::path> files;
   for (const std::string& name : s.names()) files.push_back(beside(image, "." + name + ext));
@@ -178,8 +204,8 @@ void applyNormalConvention(AovImages& images, NormalConvention convention) {
   }
 }
 
-std::vector<ImageChannel> writeAovFiles(OutputSet& outputs, const fs::path& image, AovImages images,
-                                        const AovOutput& o, std::vector<std::string>& warnings) {
+std::vector<ImageChannel> writeAovFiles(OutputSet& outputs, const fs::path& image, AovImages images, const AovOutput& o,
+                                        std::vector<std::string>& warnings) {
   if (!o.selection.any()) return {};
   applyNormalConvention(images, o.normals);
   switch (o.format) {
@@ -188,12 +214,8 @@ std::vector<ImageChannel> writeAovFiles(OutputSet& outputs, const fs::path& imag
       outputs.add(beside(image, ".aov.exr"),
                   encodeChannelExr(beside(image, ".aov.exr"), aovChannels(images), images.widthPx, images.heightPx));
       return {};
-    case AovFormat::Npy:
-      writeNpy(outputs, image, images);
-      return {};
-    case AovFormat::Png16:
-      writePng16(outputs, image, images, warnings);
-      return {};
+    case AovFormat::Npy: writeNpy(outputs, image, images); return {};
+    case AovFormat::Png16: writePng16(outputs, image, images, warnings); return {};
   }
   return {};
 }

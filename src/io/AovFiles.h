@@ -11,11 +11,13 @@
 //          IMAGE.normal.npy    float32 (H, W, 3), unit; 0 where nothing is hit
 //          IMAGE.albedo.npy    float32 (H, W, 3), linear
 //          IMAGE.instance.npy  int32 (H, W): the instance id (instances.json), 0 where nothing is hit
+//          IMAGE.flow.npy      float32 (H, W, 2): pixels to the next frame (x right, y down), NaN unknown
 //   png16  IMAGE.depth.png     uint16 millimetres, 0 where nothing is hit; beyond 65.535 m held
 //                              at 65535 (and warned of)
 //          IMAGE.normal.png    uint16 RGB, (n + 1) / 2 · 65535
 //          IMAGE.albedo.png    uint16 RGB, linear (not sRGB) × 65535, clamped to [0, 1]
 //          IMAGE.instance.png  uint16 instance id, 0 where nothing is hit (ids up to 65535)
+//          IMAGE.flow.png      KITTI's flow PNG: uint16 RGB, u·64 + 2¹⁵, v·64 + 2¹⁵, 1 where known
 // The instance id of a surface is its glTF node index + 1 (the EXR channel keeps the node index,
 // −1 where nothing is hit).
 #include "core/Aovs.h"

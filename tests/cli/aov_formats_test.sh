@@ -96,6 +96,63 @@ for line in map(json.loads, open(sys.argv[1])):
     assert "channels" not in line, line
 PY
 
+# --- optical flow: each pixel's motion to the next frame, checked by warping frame 1 back onto 0 ---
+# A camera looking down at the floor moves and turns (no occlusion changes) through a distorting lens.
+cat >down.json <<'JSON'
+{"fps": 4, "interpolation": "linear", "keys": [
+ {"time": 0, "eye": [0, 3, 0], "target": [0, 0, 0], "up": [0, 0, -1], "focal_length_mm": 35, "distortion": {"k1": -0.15}},
+ {"time": 1, "eye": [0.6, 2.7, 0.3], "target": [0.5, 0, 0.2], "up": [0.1, 0, -1], "focal_length_mm": 35,
+  "distortion": {"k1": -0.15}}]}
+JSON
+check "$lenslab" capture --path down.json --width 96 --height 64 --aperture-samples 1 -q --aov flow --out flow/f_%02d.exr
+check "$lenslab" capture --path down.json --width 96 --height 64 --aperture-samples 1 -q --aov flow --frames 0 \
+  --aov-format npy --out flownpy/f_%02d.png
+check "$lenslab" capture --path down.json --width 96 --height 64 --aperture-samples 1 -q --aov flow --frames 0 \
+  --aov-format png16 --out flowpng/f_%02d.png
+oiiotool --dumpdata flow/f_00.exr >f0.txt && oiiotool --dumpdata flow/f_01.exr >f1.txt &&
+  oiiotool --dumpdata flow/f_04.exr >f4.txt && oiiotool --dumpdata flowpng/f_00.flow.png >kitti.txt &&
+  iinfo -v flow/f_00.exr | grep 'channel list' >flow.channels || fail "oiiotool --dumpdata (flow)"
+check $python - <<'PY'
+import ast, math, struct
+W, H = 96, 64
+def dump(name):
+    rows = [l.split(":", 1)[1].split("(")[0].split() for l in open(name) if l.strip().startswith("Pixel")]
+    return [[float(v) for v in r] for r in rows]
+order = [c.strip() for c in open("flow.channels").read().split(":", 1)[1].split(",")]
+assert order == ["R", "G", "B", "A", "flow.X", "flow.Y"], order
+a, b, last = dump("f0.txt"), dump("f1.txt"), dump("f4.txt")
+def bilinear(img, x, y):  # pixel centres at i + 0.5
+    x, y = x - 0.5, y - 0.5
+    x0, y0 = math.floor(x), math.floor(y)
+    if x0 < 0 or y0 < 0 or x0 + 1 >= W or y0 + 1 >= H: return None
+    fx, fy = x - x0, y - y0
+    at = lambda i, j, c: img[j * W + i][c]
+    return [(1 - fx) * (1 - fy) * at(x0, y0, c) + fx * (1 - fy) * at(x0 + 1, y0, c) + (1 - fx) * fy * at(x0, y0 + 1, c)
+            + fx * fy * at(x0 + 1, y0 + 1, c) for c in range(3)]
+warped, still = [], []
+for y in range(H):
+    for x in range(W):
+        p = a[y * W + x]
+        assert not math.isnan(p[4]), "the floor fills the frame: every pixel has a flow"
+        w, s = bilinear(b, x + 0.5 + p[4], y + 0.5 + p[5]), bilinear(b, x + 0.5, y + 0.5)
+        if w and s:
+            warped.append(sum(abs(w[c] - p[c]) for c in range(3)) / 3)
+            still.append(sum(abs(s[c] - p[c]) for c in range(3)) / 3)
+mw, ms = sum(warped) / len(warped), sum(still) / len(still)
+# Frame 1 warped back by the flow matches frame 0 up to the checker's resampling at its edges.
+assert mw < 0.05 and mw < 0.15 * ms, (mw, ms)
+assert all(math.isnan(p[4]) and math.isnan(p[5]) for p in last), "the last frame has no next frame: NaN"
+data = open("flownpy/f_00.flow.npy", "rb").read()
+n = struct.unpack("<H", data[8:10])[0]
+assert ast.literal_eval(data[10:10 + n].decode())["shape"] == (H, W, 2)
+flow = struct.unpack(f"<{W * H * 2}f", data[10 + n:])
+assert all(abs(flow[2 * i] - a[i][4]) < 1e-5 and abs(flow[2 * i + 1] - a[i][5]) < 1e-5 for i in range(W * H))
+for p, k in zip(a, dump("kitti.txt")):  # KITTI: u·64 + 2^15, v·64 + 2^15, valid
+    assert abs(k[0] - (p[4] * 64 + 32768)) <= 0.5 and abs(k[1] - (p[5] * 64 + 32768)) <= 0.5 and k[2] == 1, (p, k)
+PY
+expect_refusal "flow of one image" "--aov flow: flow is each pixel's motion to the next frame of a sequence" -- \
+  render "${common[@]}" --aov flow -o out.exr
+
 # --- mistakes ---
 refused_outputs='out*'
 expect_refusal "format without aovs" "--aov-format npy: give --aov LIST too" -- render "${common[@]}" --aov-format npy -o out.png

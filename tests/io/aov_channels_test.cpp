@@ -29,14 +29,15 @@ TEST(AovNames, ParsesEachNameAndRefusesAnUnknownOneNamingTheValidOnes) {
   } catch (const InputError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("--aov normals"), std::string::npos) << message;
-    EXPECT_NE(message.find("depth, normal, albedo, instance"), std::string::npos) << message;
+    EXPECT_NE(message.find("depth, normal, albedo, instance, flow"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
 }
 
 TEST(AovNames, ChannelsFollowOpenExrNamesInTheSelectionsOrder) {
   EXPECT_EQ(aovChannelNames(parseAovs(aovNames())),
-            (std::vector<std::string>{"Z", "N.X", "N.Y", "N.Z", "albedo.R", "albedo.G", "albedo.B", "instance"}));
+            (std::vector<std::string>{"Z", "N.X", "N.Y", "N.Z", "albedo.R", "albedo.G", "albedo.B", "instance",
+                                      "flow.X", "flow.Y"}));
   EXPECT_EQ(aovChannelNames(parseAovs({"albedo"})), (std::vector<std::string>{"albedo.R", "albedo.G", "albedo.B"}));
 }
 

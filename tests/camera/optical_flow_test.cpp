@@ -43,8 +43,8 @@ TEST(OpticalFlow, ANodeMovedSidewaysMovesByFocalLengthTimesShiftOverDepth) {
   const NodeMotion motion{{3, glm::translate(glm::dmat4(1.0), glm::dvec3(0.1, 0.05, 0.0))}};
   const std::vector<float> flow = opticalFlow(now, surfaces(5.0, 3), &next, motion);
   for (std::size_t i = 0; i < flow.size() / 2; ++i) {
-    EXPECT_NEAR(flow[2 * i], 80.0 * 0.1 / 5.0, 1e-4) << i;           // x right
-    EXPECT_NEAR(flow[2 * i + 1], -82.0 * 0.05 / 5.0, 1e-4) << i;     // world up is image up: y down negative
+    EXPECT_NEAR(flow[2 * i], 80.0 * 0.1 / 5.0, 1e-4) << i;        // x right
+    EXPECT_NEAR(flow[2 * i + 1], -82.0 * 0.05 / 5.0, 1e-4) << i;  // world up is image up: y down negative
   }
   // Another node does not move; nor does anything when the camera stays.
   for (const float f : opticalFlow(now, surfaces(5.0, 2), &next, motion)) EXPECT_NEAR(f, 0.0, 1e-4);

@@ -22,5 +22,6 @@ start=$(date +%s)
 cmake --preset asan >/dev/null
 cmake --build build-asan --target "${targets[@]}"
 built=$(date +%s)
-ctest --test-dir build-asan -L "$labels" --output-on-failure
+# Two at a time: 683 s against 1206 s serial on two cores (the tests keep to their own folders).
+ctest --test-dir build-asan -L "$labels" -j2 --output-on-failure
 echo "sanitize: build $((built - start)) s, tests $(($(date +%s) - built)) s"

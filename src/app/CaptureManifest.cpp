@@ -17,8 +17,9 @@ namespace {
 nlohmann::json distanceJson(double d) { return std::isinf(d) ? nlohmann::json("infinity") : nlohmann::json(d); }
 
 // K, distCoeffs, R and t of the frame's camera in OpenCV's conventions, for vision tools that read
-// the manifest rather than the camera files (distCoeffs only where the lens is all OpenCV's), with
-// the image size, focus and aperture: a camera file `render --camera` reads (docs/camera-files.md).
+// the manifest rather than the camera files (distCoeffs only where the lens is all OpenCV's; a
+// fisheye's cv::fisheye D as "distortion": {"model": "fisheye", "k1" … "k4"}), with the image size,
+// focus and aperture: a camera file `render --camera` reads (docs/camera-files.md).
 nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   const OpenCvIntrinsics k = intrinsicsOf(camera.view, size);
   const OpenCvPose pose = poseOf(camera.view);
@@ -26,6 +27,7 @@ nlohmann::json openCvJson(const Camera& camera, ImageSize size) {
   j["K"] = {{k.fx, 0.0, k.cx}, {0.0, k.fy, k.cy}, {0.0, 0.0, 1.0}};
   const Distortion& d = camera.lens.effects.distortion;
   if (d.isOpenCv()) j["dist"] = d.distCoeffs();
+  if (d.fisheye) j["distortion"] = {{"model", "fisheye"}, {"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"k4", d.k4}};
   j["R"] = nlohmann::json::array();
   for (const glm::dvec3& row : pose.rows) j["R"].push_back({row.x, row.y, row.z});
   j["t"] = {pose.translation.x, pose.translation.y, pose.translation.z};

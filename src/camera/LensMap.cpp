@@ -82,6 +82,44 @@ bool allFinite(const LensEffects& e) {
 
 }  // namespace
 
+namespace {
+
+// The distortion maps the image one to one: no fold inside it, and a fisheye's image short of 90°.
+void validateDistortion(const Camera& camera, const std::string& where) {
+  const LensEffects& e = camera.lens.effects;
+  const Distortion& d = e.distortion;
+  // The distorted region to check: the window, and for lateral colour the part of green's image
+  // that each channel's window shows (scaled by 1 / (1 + lateral)).
+  const NormalisedRect rect = normalisedWindow(camera.view);
+  glm::dvec2 lo = rect.min, hi = rect.max;
+  for (const Channel c : kChannels) {
+    const double s = 1.0 / (1.0 + e.chromatic.lateral(c));
+    lo = glm::min(lo, rect.min * s);
+    hi = glm::max(hi, rect.max * s);
+  }
+  if (const auto reach = d.fisheyeReach(); reach && !reach->folds) {
+    const double extent = NormalisedRect{lo, hi}.cornerRadius();
+    if (!(reach->distortedRadius > extent))
+      throw InputError(cat(where, ": the fisheye's image reaches 90° from the optical axis at normalised radius ",
+                           reach->distortedRadius, ", ", std::lround(100.0 * reach->distortedRadius / extent),
+                           "% of the way from the centre to the farthest corner (radius ", extent, "; ",
+                           distortionTermsText(d),
+                           "); lenslab's cameras see less than 90° from the axis, so give a longer focal length "
+                           "in pixels or a smaller image"));
+  }
+  if (const auto fold = findFoldOver(d, lo, hi)) {
+    const double along = glm::length(fold->distorted) / rect.cornerRadius();
+    throw InputError(cat(where, ": distortion folds over inside the image: at normalised radius ",
+                         glm::length(fold->undistorted), " (true position ", fold->undistorted.x, ", ",
+                         fold->undistorted.y, "), ", std::lround(100.0 * along),
+                         "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
+                         "so two points of the scene would land on one pixel (",
+                         distortionTermsText(d), "); use weaker coefficients or a narrower field of view"));
+  }
+}
+
+}  // namespace
+
 void validateLensEffects(const Camera& camera, const std::string& where, std::optional<double> focalLength) {
   const LensEffects& e = camera.lens.effects;
   if (e.isZero()) return;
@@ -89,7 +127,6 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
     throw InputError(cat(where,
                          ": distortion, chromatic aberration, field curvature and vignetting need a perspective "
                          "projection (they act on the angle from the optical axis); this camera is parallel"));
-  const Distortion& d = e.distortion;
   if (!allFinite(e)) throw InputError(cat(where, ": lens effect coefficients must be finite numbers"));
   // The gain is a polynomial in the distorted radius, the pixel's own place on the film: it must
   // stay positive out to the window's farthest corner (a fit to a real lens can turn down past
@@ -139,24 +176,7 @@ void validateLensEffects(const Camera& camera, const std::string& where, std::op
       throw InputError(
           cat(where, ": chromatic.", name, " = ", value,
               " is a relative magnification of the channel; use a value in (-0.5, 0.5), typically below 0.01"));
-  // The distorted region to check: the window, and for lateral colour the part of green's image
-  // that each channel's window shows (scaled by 1 / (1 + lateral)).
-  const NormalisedRect rect = normalisedWindow(camera.view);
-  glm::dvec2 lo = rect.min, hi = rect.max;
-  for (const Channel c : kChannels) {
-    const double s = 1.0 / (1.0 + e.chromatic.lateral(c));
-    lo = glm::min(lo, rect.min * s);
-    hi = glm::max(hi, rect.max * s);
-  }
-  if (const auto fold = findFoldOver(d, lo, hi)) {
-    const double along = glm::length(fold->distorted) / rect.cornerRadius();
-    throw InputError(cat(where, ": distortion folds over inside the image: at normalised radius ",
-                         glm::length(fold->undistorted), " (true position ", fold->undistorted.x, ", ",
-                         fold->undistorted.y, "), ", std::lround(100.0 * along),
-                         "% of the way from the centre to the farthest corner, the distorted radius stops growing, "
-                         "so two points of the scene would land on one pixel (",
-                         distortionTermsText(d), "); use weaker coefficients or a narrower field of view"));
-  }
+  validateDistortion(camera, where);
 }
 
 double ThinLensMap::forwardLinearisationErrorPx() const {

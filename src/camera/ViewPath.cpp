@@ -58,6 +58,10 @@ void validateViewKeys(const std::vector<ViewPathKey>& keys, std::string_view whe
     if (c.lens.barrel != first.lens.barrel)
       throw InputError(
           cat(key, ": \"barrel\" differs from the first key's; every key of a path takes the same lens barrel"));
+    if (c.lens.effects.distortion.fisheye != first.lens.effects.distortion.fisheye)
+      throw InputError(cat(key,
+                           ": \"distortion.model\" differs from the first key's; every key of a path takes one "
+                           "distortion model (fisheye or opencv), whose coefficients are interpolated"));
   }
 }
 

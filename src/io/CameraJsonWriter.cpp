@@ -24,6 +24,7 @@ class JsonKeyWriter final : public KeyWriter {
   void distance(const std::string& key, double value) override {
     object_[key] = std::isinf(value) ? json("infinity") : json(value);
   }
+  void string(const std::string& key, const std::string& value) override { object_[key] = value; }
   KeyWriter& object(const std::string& key) override {
     object_[key] = json::object();
     children_.push_back(std::make_unique<JsonKeyWriter>(object_[key]));

@@ -78,6 +78,10 @@ CameraPath parseCameraPath(const std::string& text, const std::string& where) {
     if (!path.keys.empty() && key.lens.barrel != path.keys.front().lens.barrel)
       throw InputError(
           cat(name, ": \"barrel\" differs from the first key's; every key of a path takes the same lens barrel"));
+    if (!path.keys.empty() && key.lens.effects.distortion.fisheye != path.keys.front().lens.effects.distortion.fisheye)
+      throw InputError(cat(name,
+                           ": \"distortion.model\" differs from the first key's; every key of a path takes one "
+                           "distortion model (fisheye or opencv), whose coefficients are interpolated"));
     path.keys.push_back(key);
   }
   validate(path, where);

@@ -35,6 +35,11 @@ ColmapCamera colmapCameraOf(const OpenCvIntrinsics& k, const Distortion& d, std:
   c.heightPx = k.heightPx;
   // COLMAP's pixel centres are at i + 0.5, OpenCV's at i.
   c.params = {k.fx, k.fy, k.cx + 0.5, k.cy + 0.5};
+  if (d.fisheye) {
+    c.model = "OPENCV_FISHEYE";
+    c.params.insert(c.params.end(), {d.k1, d.k2, d.k3, d.k4});
+    return c;
+  }
   const double k1 = d.k1 + d.beta;  // β is the r² coefficient, as k1 is
   const bool rational = d.k3 != 0.0 || d.k4 != 0.0 || d.k5 != 0.0 || d.k6 != 0.0;
   if (k1 == 0.0 && d.k2 == 0.0 && d.p1 == 0.0 && d.p2 == 0.0 && !rational) {

@@ -20,7 +20,9 @@
 namespace lenslab {
 namespace fs = std::filesystem;
 
-const char* const kColmapModelsRendered = "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV and FULL_OPENCV";
+const char* const kColmapModelsRendered =
+    "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV, FULL_OPENCV, OPENCV_FISHEYE, SIMPLE_RADIAL_FISHEYE and "
+    "RADIAL_FISHEYE";
 
 namespace {
 
@@ -32,6 +34,7 @@ struct ModelInfo {
   const char* params;
   std::size_t count;
   bool oneFocal;
+  bool fisheye = false;  // the params after cx, cy are the fisheye's k1, k2, ... (on θ, Distortion.h)
 
   std::size_t cxIndex() const { return oneFocal ? 1 : 2; }
   std::size_t k1Index() const { return cxIndex() + 2; }  // = count for the pinholes, which have no k1
@@ -43,6 +46,9 @@ constexpr ModelInfo kModels[] = {
     {"RADIAL", "f, cx, cy, k1, k2", 5, true},
     {"OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2", 8, false},
     {"FULL_OPENCV", "fx, fy, cx, cy, k1, k2, p1, p2, k3, k4, k5, k6", 12, false},
+    {"OPENCV_FISHEYE", "fx, fy, cx, cy, k1, k2, k3, k4", 8, false, true},
+    {"SIMPLE_RADIAL_FISHEYE", "f, cx, cy, k", 4, true, true},
+    {"RADIAL_FISHEYE", "f, cx, cy, k1, k2", 5, true, true},
 };
 
 const ModelInfo* modelInfo(const std::string& name) {
@@ -314,8 +320,11 @@ OpenCvLens lensOf(const ColmapCamera& c, const std::string& file) {
   k.cy = p[m->cxIndex() + 1] - 0.5;
   k.widthPx = c.widthPx;
   k.heightPx = c.heightPx;
-  // OpenCV's order: k1, k2, p1, p2, k3, k4, k5, k6.
-  for (std::size_t i = 0; m->k1Index() + i < m->count; ++i) d.*kDistortionTerms[i].value = p[m->k1Index() + i];
+  // OpenCV's order: k1, k2, p1, p2, k3, k4, k5, k6; the fisheyes': k1, k2, k3, k4.
+  constexpr double Distortion::*kFisheyeTerms[] = {&Distortion::k1, &Distortion::k2, &Distortion::k3, &Distortion::k4};
+  d.fisheye = m->fisheye;
+  for (std::size_t i = 0; m->k1Index() + i < m->count; ++i)
+    d.*(m->fisheye ? kFisheyeTerms[i] : kDistortionTerms[i].value) = p[m->k1Index() + i];
   if (!(k.fx > 0.0) || !(k.fy > 0.0))
     where.fail(cat("camera ", c.id, " has focal length ", k.fx > 0.0 ? k.fy : k.fx, "; give it in pixels, > 0 (",
                    m->name, " takes ", m->params, ")"));

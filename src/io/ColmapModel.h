@@ -56,7 +56,8 @@ struct ColmapModel {
 };
 
 // The camera models lenslab renders, for messages: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL,
-// OPENCV and FULL_OPENCV.
+// OPENCV, FULL_OPENCV and the fisheyes OPENCV_FISHEYE, SIMPLE_RADIAL_FISHEYE and RADIAL_FISHEYE
+// (lens/effects/Distortion.h's fisheye model).
 extern const char* const kColmapModelsRendered;
 
 // A quaternion may be off unit length by this much and is normalised: COLMAP writes 17 digits,

@@ -53,7 +53,7 @@ class JsonReader final : public KeyReader {
   // A 3×3 matrix given row by row, [[a, b, c], [d, e, f], [g, h, i]], of finite numbers; `shape`
   // shows the rows in messages.
   RotationRows matrix3(const std::string& key, const std::string& shape) const;
-  std::string string(const std::string& key) const;
+  std::string string(const std::string& key) const override;
   // The object under `key`, read with keys named "key.sub" in messages; unknown keys are errors.
   JsonReader child(const std::string& key, const std::set<std::string>& allowed) const;
 

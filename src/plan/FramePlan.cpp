@@ -1,6 +1,7 @@
 #include "plan/FramePlan.h"
 
 #include "camera/DepthRange.h"
+#include "core/Error.h"
 #include "core/Text.h"
 #include "lens/ApertureCells.h"
 #include "lens/effects/LensEffectRegistry.h"
@@ -51,6 +52,24 @@ PlanView planViewOf(const Camera& camera) {
       view.farthestCornerSlope =
           std::max(view.farthestCornerSlope, glm::length(glm::dvec2(u - v.prp.x, w - v.prp.y)) / v.prp.z);
   return view;
+}
+
+// The raster draws a lens's image from one undistorted render that holds the true perspective
+// position of each of its pixels. Toward 90° from the axis (a fisheye's field) that position runs
+// off as tan θ and the render with it: beyond this many times the image's side it is refused,
+// naming the ray caster, which casts each pixel's ray itself.
+constexpr double kMaxOverscanPerSide = 8.0;
+
+void checkOverscan(const Camera& camera, ImageSize size, const Overscan& overscan) {
+  const double factor = std::max(static_cast<double>(overscan.size.widthPx) / size.widthPx,
+                                 static_cast<double>(overscan.size.heightPx) / size.heightPx);
+  if (factor <= kMaxOverscanPerSide) return;
+  throw InputError(cat(camera.source, ": the raster would draw this ", size.widthPx, "x", size.heightPx,
+                       " image from an undistorted render of ", overscan.size.widthPx, "x", overscan.size.heightPx,
+                       " pixels (", std::lround(factor), " times a side, at most ", kMaxOverscanPerSide,
+                       "): the lens (", distortionTermsText(camera.lens.effects.distortion),
+                       ") shows directions far from the axis, where a perspective view stretches without bound; "
+                       "ray cast it (lenslab raycast), or narrow its field"));
 }
 
 }  // namespace
@@ -309,6 +328,7 @@ FramePlan makeFramePlan(const Scene& scene, const Camera& camera, ImageSize size
   // The frame's image map, built once, and its render for the lens pass (the image itself without one).
   const ThinLensMap map(camera, size);
   const ThinLensMap rendered = map.overscanned();
+  checkOverscan(camera, size, rendered.overscan());
   plan.pattern = options.pattern;
   plan.seed = options.seed;
   depthRange(scene, camera, plan);

@@ -39,14 +39,14 @@ struct Bytes {
 
 bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
 
-// Two cameras: a PINHOLE (id 1) and an OPENCV_FISHEYE (id 9, which lenslab reads but does not render).
+// Two cameras: a PINHOLE (id 1) and a FOV (id 9, which lenslab reads but does not render).
 std::string twoCameras() {
   Bytes b;
   b.put(std::uint64_t{2});
   b.put(std::uint32_t{1}).put(std::int32_t{1}).put(std::uint64_t{640}).put(std::uint64_t{480});
   for (const double p : {500.0, 501.5, 320.25, 239.75}) b.put(p);
-  b.put(std::uint32_t{9}).put(std::int32_t{5}).put(std::uint64_t{64}).put(std::uint64_t{48});
-  for (const double p : {40.0, 40.0, 32.0, 24.0, 0.1, 0.01, 0.0, 0.0}) b.put(p);
+  b.put(std::uint32_t{9}).put(std::int32_t{7}).put(std::uint64_t{64}).put(std::uint64_t{48});
+  for (const double p : {40.0, 40.0, 32.0, 24.0, 0.9}) b.put(p);  // FOV: fx, fy, cx, cy, omega
   return b.data;
 }
 
@@ -73,15 +73,14 @@ TEST(ColmapBinary, ReadsCamerasAndImagesAsLaidOut) {
   EXPECT_EQ(c[0].widthPx, 640);
   EXPECT_EQ(c[0].heightPx, 480);
   EXPECT_EQ(c[0].params, (std::vector<double>{500.0, 501.5, 320.25, 239.75}));
-  EXPECT_EQ(c[1].model, "OPENCV_FISHEYE");
-  EXPECT_EQ(c[1].params.size(), 8u);
+  EXPECT_EQ(c[1].model, "FOV");
+  EXPECT_EQ(c[1].params.size(), 5u);
   EXPECT_EQ(c[1].record, 2);
   // The same camera from the text reader gives the same lens.
   const ColmapCamera text = parseColmapCameras("1 PINHOLE 640 480 500 501.5 320.25 239.75\n", "cameras.txt")[0];
   EXPECT_EQ(lensOf(text, "t").intrinsics.fx, lensOf(c[0], "b").intrinsics.fx);
   EXPECT_EQ(lensOf(text, "t").intrinsics.cy, lensOf(c[0], "b").intrinsics.cy);
-  EXPECT_TRUE(
-      has(test::refusalOf([&] { lensOf(c[1], "cameras.bin"); }), "cameras.bin: record 2: camera 9 is OPENCV_FISHEYE"));
+  EXPECT_TRUE(has(test::refusalOf([&] { lensOf(c[1], "cameras.bin"); }), "cameras.bin: record 2: camera 9 is FOV"));
 
   const std::vector<ColmapImage> i = parseColmapImagesBinary(twoImages(), "images.bin");
   ASSERT_EQ(i.size(), 2u);
@@ -172,9 +171,9 @@ TEST_F(ColmapBinaryFolder, RenderCamerasComeFromTheBinaryModel) {
   EXPECT_EQ(model.images.size(), 2u);
   const Camera camera = colmapImageCamera(model, "left/a.png");
   EXPECT_EQ(camera.calibratedSize->widthPx, 640);
-  // Image "b b.png" uses the fisheye camera, refused when asked for, naming its record.
-  EXPECT_TRUE(has(test::refusalOf([&] { colmapImageCamera(model, "b b.png"); }),
-                  "cameras.bin: record 2: camera 9 is OPENCV_FISHEYE"));
+  // Image "b b.png" uses the FOV camera, refused when asked for, naming its record.
+  EXPECT_TRUE(
+      has(test::refusalOf([&] { colmapImageCamera(model, "b b.png"); }), "cameras.bin: record 2: camera 9 is FOV"));
 }
 
 }  // namespace

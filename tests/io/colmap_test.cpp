@@ -49,7 +49,18 @@ glm::dvec2 colmapImgFromCam(const std::string& model, const std::vector<double>&
   const double u = cam.x / cam.z, v = cam.y / cam.z;
   const double r2 = u * u + v * v;
   double fx = 0, fy = 0, cx = 0, cy = 0, du = 0, dv = 0;
-  if (model == "SIMPLE_PINHOLE" || model == "SIMPLE_RADIAL" || model == "RADIAL") {
+  if (model == "SIMPLE_RADIAL_FISHEYE" || model == "RADIAL_FISHEYE" || model == "OPENCV_FISHEYE") {
+    // The fisheyes: θ = atan r, θ_d = θ(1 + k1 θ² + k2 θ⁴ + k3 θ⁶ + k4 θ⁸), (u, v)·θ_d / r.
+    const bool one = model != "OPENCV_FISHEYE";
+    fx = p[0], fy = one ? p[0] : p[1], cx = p[one ? 1 : 2], cy = p[one ? 2 : 3];
+    const std::size_t first = one ? 3 : 4;
+    double k[4] = {0, 0, 0, 0};
+    for (std::size_t i = first; i < p.size(); ++i) k[i - first] = p[i];
+    const double r = std::sqrt(r2), theta = std::atan(r), t2 = theta * theta;
+    const double thetaD = theta * (1 + k[0] * t2 + k[1] * t2 * t2 + k[2] * t2 * t2 * t2 + k[3] * t2 * t2 * t2 * t2);
+    const double scale = r > 0 ? thetaD / r : 1.0;
+    du = u * scale - u, dv = v * scale - v;
+  } else if (model == "SIMPLE_PINHOLE" || model == "SIMPLE_RADIAL" || model == "RADIAL") {
     fx = fy = p[0], cx = p[1], cy = p[2];
     const double radial = model == "SIMPLE_PINHOLE"  ? 0.0
                           : model == "SIMPLE_RADIAL" ? p[3] * r2
@@ -92,6 +103,9 @@ const ModelCase kCases[] = {
     {"OPENCV", {801.0, 806.0, 645.5, 355.25, -0.21, 0.05, 0.0012, -0.0008}},
     {"FULL_OPENCV", {799.0, 803.0, 636.0, 361.0, -0.2, 0.045, -0.001, 0.0015, -0.008, 0.0, 0.0, 0.0}},
     {"FULL_OPENCV", {799.0, 803.0, 636.0, 361.0, -0.32, 0.11, -0.001, 0.0015, 0.012, 0.08, 0.025, 0.003}},
+    {"SIMPLE_RADIAL_FISHEYE", {610.0, 641.0, 359.0, 0.021}},
+    {"RADIAL_FISHEYE", {605.0, 638.5, 362.5, -0.015, 0.004}},
+    {"OPENCV_FISHEYE", {601.0, 606.0, 645.5, 355.25, 0.012, -0.006, 0.0021, -0.0004}},
 };
 
 void PrintTo(const ModelCase& c, std::ostream* out) { *out << c.model; }
@@ -230,7 +244,7 @@ TEST(ColmapText, ModelsLenslabDoesNotRenderAreRefusedByNameWhenUsed) {
   model.camerasFile = "m/cameras.txt";
   model.imagesFile = "m/images.txt";
   model.cameras = parseColmapCameras(
-      "1 OPENCV_FISHEYE 640 480 500 500 320 240 0.1 0 0 0\n2 PINHOLE 640 480 500 500 320 240\n"
+      "1 FOV 640 480 500 500 320 240 0.9\n2 PINHOLE 640 480 500 500 320 240\n"
       "3 FULL_OPENCV 640 480 500 500 320 240 0 0 0 0 0 0.1 0 0\n4 SIMPLE_PINHOLE 640 480 -5 320 240\n"
       "5 PINHOLE 70000 480 500 500 320 240\n6 PINHOLE 640 480 500 500 1e30 240\n",
       model.camerasFile);
@@ -239,10 +253,11 @@ TEST(ColmapText, ModelsLenslabDoesNotRenderAreRefusedByNameWhenUsed) {
       "4 1 0 0 0 0 0 0 4 neg.png\n\n5 1 0 0 0 0 0 0 5 wide.png\n\n6 1 0 0 0 0 0 0 9 lost.png\n\n"
       "7 1 0 0 0 0 0 0 6 far.png\n\n",
       "m/images.txt");
-  // Another image's camera is fine: the fisheye is refused only for its own image.
+  // Another image's camera is fine: the FOV model is refused only for its own image.
   EXPECT_NO_THROW(colmapImageCamera(model, "pin.png"));
   expectHas(errorOf([&] { colmapImageCamera(model, "fish.png"); }),
-            {"m/cameras.txt:1:", "OPENCV_FISHEYE", "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV"});
+            {"m/cameras.txt:1:", "camera 1 is FOV", "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV",
+             "RADIAL_FISHEYE"});
   EXPECT_EQ(colmapImageCamera(model, "full.png").lens.effects.distortion.k4, 0.1);  // the rational model
   expectHas(errorOf([&] { colmapImageCamera(model, "neg.png"); }), {"m/cameras.txt:4:", "focal length -5"});
   expectHas(errorOf([&] { colmapImageCamera(model, "wide.png"); }), {"m/cameras.txt:5:", "65536"});
@@ -308,6 +323,24 @@ TEST(ColmapWrite, TheSimplestModelThatHoldsTheLensExactly) {
   expectHas(errorOf([&] { colmapCameraOf(k, d, 1, "path.json: frame 3"); }),
             {"path.json: frame 3", "alpha", "k1, k2, p1, p2, k3"});
   EXPECT_THROW(colmapImageOf({}, 1, 1, "two words.png", "t"), InputError);
+}
+
+TEST(ColmapWrite, AFisheyeIsOpenCvFisheyeAndReadsBackAsTheSameLens) {
+  const OpenCvIntrinsics k{600.0, 602.0, 319.5, 239.5, 640, 480};
+  Distortion d;
+  d.fisheye = true;  // the equidistant fisheye: k1 … k4 = 0, but not a pinhole
+  ColmapCamera c = colmapCameraOf(k, d, 1, "t");
+  EXPECT_EQ(c.model, "OPENCV_FISHEYE");
+  EXPECT_EQ(c.params, (std::vector<double>{600.0, 602.0, 320.0, 240.0, 0.0, 0.0, 0.0, 0.0}));
+  d.k1 = 0.02, d.k2 = -0.004, d.k3 = 0.001, d.k4 = -0.0002;
+  c = colmapCameraOf(k, d, 1, "t");
+  EXPECT_EQ(c.params, (std::vector<double>{600.0, 602.0, 320.0, 240.0, 0.02, -0.004, 0.001, -0.0002}));
+  const OpenCvLens back = lensOf(parseColmapCameras(colmapCamerasText({c}), "cameras.txt")[0], "cameras.txt");
+  EXPECT_TRUE(back.distortion.fisheye);
+  EXPECT_EQ(back.distortion.k3, 0.001);
+  EXPECT_EQ(back.distortion.k4, -0.0002);
+  EXPECT_EQ(back.distortion.p1, 0.0);  // θ's k3, k4 are not OpenCV's p1, p2
+  EXPECT_EQ(back.intrinsics.cx, 319.5);
 }
 
 TEST(ColmapWrite, AWrittenModelReadsBackAsTheSameCameras) {

@@ -55,7 +55,8 @@ Scene dotScene() {
 
 // Where OpenCV puts the dot's centroid, in lenslab's pixels: the area-weighted mean of the
 // distorted square (distortion bends the square, so its centroid is not its centre's image).
-glm::dvec2 expectedCentroid(const OpenCvCamera& cv, glm::dvec2 dot) {
+template <class Model>
+glm::dvec2 expectedCentroid(const Model& cv, glm::dvec2 dot) {
   const auto pixel = [&](glm::dvec2 n) {  // normalised (y up) → lenslab pixel
     return cv.project({n.x, -n.y, 1.0}) + glm::dvec2(0.5);
   };
@@ -129,6 +130,30 @@ INSTANTIATE_TEST_SUITE_P(Pincushion, DistortedDots,
                          ::testing::Values(OpenCvCamera{262, 262, 159.5, 119.5, 0.16, 0.02}));
 INSTANTIATE_TEST_SUITE_P(MixedTangential, DistortedDots,
                          ::testing::Values(OpenCvCamera{255, 259, 162.0, 117.0, -0.21, 0.06, 0.0021, -0.0013, -0.01}));
+
+// OpenCV's fisheye model through the raster's lens pass: the corner at about 55° from the axis,
+// where the undistorted render is half as wide again as the image.
+TEST(LensEffectsGl, FisheyeDotsLandWhereOpenCvsFisheyePutsThem) {
+  LENSLAB_REQUIRE_GL();
+  const test::OpenCvFisheye cv{205.0, 204.0, 161.3, 118.2, 0.03, -0.006, 0.001, 0.0};
+  const Camera camera =
+      parseCameraJson(cat(R"({"eye": [0, 0, 0], "target": [0, 0, -1], "near": 0.1, "far": 10, "intrinsics": {"fx": )",
+                          cv.fx, R"(, "fy": )", cv.fy, R"(, "cx": )", cv.cx, R"(, "cy": )", cv.cy, R"(, "width": )",
+                          kWidth, R"(, "height": )", kHeight, R"(}, "distortion": {"model": "fisheye", "k1": )", cv.k1,
+                          R"(, "k2": )", cv.k2, R"(, "k3": )", cv.k3, "}}"),
+                      "fisheye camera")
+          .camera;
+  const Image fine = renderFine(dotScene(), camera);
+  double worst = 0.0;
+  for (const glm::dvec2 dot : dotPositions()) {
+    const glm::dvec2 expected = expectedCentroid(cv, dot);
+    const glm::dvec2 measured = measuredCentroid(fine, expected, 9.0, 1);
+    worst = std::max({worst, std::abs(measured.x - expected.x), std::abs(measured.y - expected.y)});
+  }
+  RecordProperty("worst_error_px", cat(worst));
+  std::cout << "worst fisheye dot error " << worst << " px\n";
+  EXPECT_LE(worst, 0.1);
+}
 
 // The bundled grid through its OpenCV-calibrated camera (assets/grid/camera-distortion.json): each
 // octagonal dot's centroid lands where OpenCV's model puts it (the area-weighted centroid of the

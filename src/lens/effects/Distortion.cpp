@@ -26,7 +26,31 @@ struct Radial {
   double h;  // g'(r) / r, so that ∂g/∂x = h·x (0 at the centre, where the α term has no derivative)
 };
 
+// The fisheye's θ_d(θ) and dθ_d/dθ.
+struct FisheyeRadius {
+  double value, slope;
+};
+FisheyeRadius fisheyeRadius(const Distortion& d, double theta) {
+  const double t2 = theta * theta;
+  const double poly = 1.0 + t2 * (d.k1 + t2 * (d.k2 + t2 * (d.k3 + t2 * d.k4)));
+  const double slope = 1.0 + t2 * (3.0 * d.k1 + t2 * (5.0 * d.k2 + t2 * (7.0 * d.k3 + t2 * 9.0 * d.k4)));
+  return {theta * poly, slope};
+}
+
+// The fisheye as a radial factor of the true perspective radius r = tan θ: g = θ_d / r.
+Radial fisheyeRadial(const Distortion& d, double r) {
+  const double theta = std::atan(r);
+  const FisheyeRadius f = fisheyeRadius(d, theta);
+  const double g = r > 0.0 ? f.value / r : 1.0;
+  // Near the centre g = 1 + (k1 − 1/3) r² + O(r⁴), so h = 2(k1 − 1/3) + O(r²); the closed form
+  // below would lose its digits to cancellation there.
+  if (r < 1e-4) return {g, 2.0 * (d.k1 - 1.0 / 3.0)};
+  const double slopePerR = f.slope / (1.0 + r * r);  // dθ_d/dr = dθ_d/dθ · dθ/dr
+  return {g, (slopePerR - g) / (r * r)};             // g'/r with g' = (dθ_d/dr − g) / r
+}
+
 Radial radial(const Distortion& d, double r) {
+  if (d.fisheye) return fisheyeRadial(d, r);
   const double r2 = r * r;
   const double k1 = d.k1 + d.beta;
   const double top = 1.0 + r * (d.alpha + r * (k1 + r * d.gamma)) + r2 * r2 * (d.k2 + r2 * d.k3);
@@ -39,11 +63,14 @@ Radial radial(const Distortion& d, double r) {
   return {top / bottom, (topH * bottom - top * bottomH) / (bottom * bottom)};
 }
 
-bool radialDefined(const Distortion& d, double r2) { return 1.0 + r2 * (d.k4 + r2 * (d.k5 + r2 * d.k6)) > 0.0; }
+bool radialDefined(const Distortion& d, double r2) {
+  return d.fisheye || 1.0 + r2 * (d.k4 + r2 * (d.k5 + r2 * d.k6)) > 0.0;
+}
 
 }  // namespace
 
 bool Distortion::isZero() const {
+  if (fisheye) return false;  // k1 = … = k4 = 0 is the equidistant fisheye
   for (const DistortionTerm& t : kDistortionTerms)
     if (this->*t.value != 0.0) return false;
   return true;
@@ -58,8 +85,36 @@ std::vector<double> Distortion::distCoeffs() const {
   return c;
 }
 
+std::optional<Distortion::FisheyeReach> Distortion::fisheyeReach() const {
+  if (!fisheye) return std::nullopt;
+  // dθ_d/dθ is a polynomial in θ²: walk [0, 90°] for its first zero, then bisect on it.
+  constexpr int kSteps = 4096;
+  const double right = M_PI / 2.0;
+  double before = 0.0;
+  for (int i = 1; i <= kSteps; ++i) {
+    const double theta = right * i / kSteps;
+    if (fisheyeRadius(*this, theta).slope > 0.0) {
+      before = theta;
+      continue;
+    }
+    double lo = before, hi = theta;
+    for (int k = 0; k < 60; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (fisheyeRadius(*this, mid).slope > 0.0 ? lo : hi) = mid;
+    }
+    return FisheyeReach{lo, fisheyeRadius(*this, lo).value, true};
+  }
+  return FisheyeReach{right, fisheyeRadius(*this, right).value, false};
+}
+
 std::string distortionTermsText(const Distortion& d) {
   std::string text;
+  if (d.fisheye) {
+    const std::pair<const char*, double> terms[] = {{"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"k4", d.k4}};
+    for (const auto& [name, value] : terms)
+      if (value != 0.0) text += cat(text.empty() ? "" : ", ", name, " = ", value);
+    return text.empty() ? "the equidistant fisheye" : cat("fisheye ", text);
+  }
   for (const DistortionTerm& t : kDistortionTerms)
     if (d.*t.value != 0.0) text += cat(text.empty() ? "" : ", ", t.name, " = ", d.*t.value);
   return text;
@@ -154,9 +209,16 @@ std::optional<FoldOver> findFoldOver(const Distortion& distortion, glm::dvec2 di
     return p.x >= distortedMin.x && p.x <= distortedMax.x && p.y >= distortedMin.y && p.y <= distortedMax.y;
   };
   double extent = 0.0;  // the farthest corner of the region from the principal point
+  glm::dvec2 farthest(0.0);
   for (const glm::dvec2 c : {distortedMin, distortedMax, glm::dvec2(distortedMin.x, distortedMax.y),
                              glm::dvec2(distortedMax.x, distortedMin.y)})
-    extent = std::max(extent, glm::length(c));
+    if (glm::length(c) > extent) extent = glm::length(c), farthest = c;
+  // The fisheye is radial in θ: it folds where dθ_d/dθ reaches 0, toward every direction at once.
+  if (const auto reach = distortion.fisheyeReach()) {
+    if (!reach->folds || reach->distortedRadius > extent) return std::nullopt;
+    const glm::dvec2 direction = farthest / extent;
+    return FoldOver{std::tan(reach->theta) * direction, reach->distortedRadius * direction};
+  }
   // Walk outward along rays from the centre, over the branch of the map that the inverse uses
   // (the one that contains the centre): up to the first point where the Jacobian's determinant
   // stops being positive. That point folds the image if its distorted position is inside the
@@ -215,6 +277,30 @@ Distortion distCoeffsOf(const KeyReader& r, const std::string& key) {
   return distortionFromDistCoeffs(c);
 }
 
+// "model": "fisheye" with k1 … k4 (cv::fisheye's D), or OpenCV's standard model ("opencv", the default).
+void readObject(const KeyReader& r, Distortion& d) {
+  std::set<std::string> names = termNames();
+  names.insert("model");
+  const std::unique_ptr<KeyReader> o = r.object("distortion", names);
+  if (o->has("model")) {
+    const std::string model = o->string("model");
+    if (model != "opencv" && model != "fisheye")
+      o->fail("model", cat("is \"", excerpt(model),
+                           "\"; use \"opencv\" (Brown–Conrady, the default) or \"fisheye\" "
+                           "(OpenCV's fisheye model: k1, k2, k3, k4 on the angle from the axis)"));
+    d.fisheye = model == "fisheye";
+  }
+  for (const DistortionTerm& t : kDistortionTerms) {
+    if (!o->has(t.name)) continue;
+    const std::string name = t.name;
+    if (d.fisheye && name != "k1" && name != "k2" && name != "k3" && name != "k4")
+      o->fail(name,
+              "is not a term of the fisheye model, which takes k1, k2, k3 and k4 (θ_d = θ(1 + k1 θ² + k2 θ⁴ "
+              "+ k3 θ⁶ + k4 θ⁸)); leave it out or use \"model\": \"opencv\"");
+    d.*t.value = o->number(t.name);
+  }
+}
+
 void read(const KeyReader& r, const LensFrame&, Lens& lens) {
   Distortion& d = lens.effects.distortion;
   if (r.has("dist") && r.has("distortion")) r.fail("dist", "and \"distortion\" both give the distortion; give one");
@@ -228,15 +314,14 @@ void read(const KeyReader& r, const LensFrame&, Lens& lens) {
     d = distCoeffsOf(r, "distortion");
     return;
   }
-  const std::unique_ptr<KeyReader> o = r.object("distortion", termNames());
-  for (const DistortionTerm& t : kDistortionTerms)
-    if (o->has(t.name)) d.*t.value = o->number(t.name);
+  readObject(r, d);
 }
 
 void write(const Lens& lens, const LensFrame&, KeyWriter& camera) {
   const Distortion& k = lens.effects.distortion;
   if (k.isZero()) return;
   KeyWriter& d = camera.object("distortion");
+  if (k.fisheye) d.string("model", "fisheye");
   for (const DistortionTerm& t : kDistortionTerms)
     if (k.*t.value != 0.0) d.number(t.name, k.*t.value);
 }
@@ -245,6 +330,7 @@ void interpolate(const Lens& a, const Lens& b, double u, Lens& out) {
   const Distortion &x = a.effects.distortion, &y = b.effects.distortion;
   Distortion& d = out.effects.distortion;
   for (const DistortionTerm& t : kDistortionTerms) d.*t.value = lerpValue(x.*t.value, y.*t.value, u);
+  d.fisheye = x.fisheye;  // the path reader refuses keys of different models
 }
 
 void plan(const Lens& lens, const PlanView&, EffectNeeds& needs) {

@@ -24,11 +24,21 @@ namespace lenslab {
 // which would shrink the image centre to a point; lenslab reads it with the 1, so that the centre
 // keeps its perspective scale and α = β = γ = 0 is no distortion. β is OpenCV's k1; α and γ add the
 // odd powers to the numerator: 1 + α r + (k1 + β) r² + γ r³ + k2 r⁴ + k3 r⁶.
+//
+// Or OpenCV's fisheye model (cv::fisheye; COLMAP's OPENCV_FISHEYE, and its RADIAL_FISHEYE and
+// SIMPLE_RADIAL_FISHEYE, which keep k1, k2 or k1 alone): the distorted radius is a polynomial in
+// the angle from the optical axis, θ = atan r,
+//   θ_d = θ (1 + k1 θ² + k2 θ⁴ + k3 θ⁶ + k4 θ⁸),  (x_d, y_d) = (θ_d / r)·(x, y),
+// so that k1 = … = k4 = 0 is the equidistant fisheye (θ_d = θ), not the pinhole. k1 … k4 hold θ's
+// coefficients then and every other term is 0 (the camera reader refuses any other). The true
+// perspective position (x, y) = (X/Z, Y/Z) reaches only up to θ < 90°: the image of a fisheye whose
+// field reaches 90° from the axis is refused (validateLensEffects), not folded.
 struct Distortion {
   double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0;  // OpenCV
   double k4 = 0.0, k5 = 0.0, k6 = 0.0;                      // OpenCV's rational model (the denominator)
   double s1 = 0.0, s2 = 0.0, s3 = 0.0, s4 = 0.0;            // OpenCV's thin prism
   double alpha = 0.0, beta = 0.0, gamma = 0.0;              // the lecture's series
+  bool fisheye = false;                                     // OpenCV's fisheye model: k1 … k4 are θ's
 
   bool isZero() const;
   // From the true perspective position to the distorted one; both in lenslab's frame (y up).
@@ -41,8 +51,17 @@ struct Distortion {
   std::optional<glm::dvec2> undistort(glm::dvec2 distorted, glm::dvec2 guess) const;
   std::optional<glm::dvec2> undistort(glm::dvec2 distorted) const { return undistort(distorted, distorted); }
 
-  // Whether every term is OpenCV's (none of the lecture's α, β, γ): then distCoeffs() says it all.
-  bool isOpenCv() const { return alpha == 0.0 && beta == 0.0 && gamma == 0.0; }
+  // Whether every term is OpenCV's standard model's (none of the lecture's α, β, γ, not the
+  // fisheye): then distCoeffs() says it all.
+  bool isOpenCv() const { return !fisheye && alpha == 0.0 && beta == 0.0 && gamma == 0.0; }
+  // How far the fisheye's image reaches on the branch that contains the centre; empty for the
+  // other models.
+  struct FisheyeReach {
+    double theta;            // radians from the axis: 90°, or where θ_d stops growing before it
+    double distortedRadius;  // θ_d there, the largest distorted radius any ray reaches
+    bool folds;              // θ_d stops growing before 90° (dθ_d/dθ reaches 0)
+  };
+  std::optional<FisheyeReach> fisheyeReach() const;
   // OpenCV's distCoeffs for the OpenCV terms, at the shortest of its lengths that holds them: 5
   // (k1, k2, p1, p2, k3), 8 (+ k4, k5, k6) or 12 (+ s1 … s4).
   std::vector<double> distCoeffs() const;
@@ -62,7 +81,7 @@ inline constexpr DistortionTerm kDistortionTerms[] = {
 // The OpenCV terms are the first 12, in distCoeffs order.
 inline constexpr std::size_t kOpenCvDistortionTerms = 12;
 
-// The terms that are not 0, for messages: "k1 = -0.3, k4 = 0.01".
+// The terms that are not 0, for messages: "k1 = -0.3, k4 = 0.01" ("fisheye k1 = 0.02" for the fisheye).
 std::string distortionTermsText(const Distortion& distortion);
 
 // A Distortion from OpenCV's distCoeffs: its first 12 numbers at most (a 14's tilt terms τx, τy are
@@ -73,7 +92,8 @@ Distortion distortionFromDistCoeffs(const std::vector<double>& coefficients);
 // position, nearest the centre, at which the Jacobian's determinant is ≤ 0 (for a radial model,
 // dρ/dρ' ≤ 0) while its distorted image still lies inside `distortedMin`–`distortedMax`.
 // Beyond a fold two true positions land on one pixel and the image mirrors: no post pass or ray
-// caster can undo that, so cameras with a fold inside the image are refused.
+// caster can undo that, so cameras with a fold inside the image are refused. A fisheye's 90° is not
+// a fold (its image ends there): validateLensEffects refuses an image that reaches it by name.
 struct FoldOver {
   glm::dvec2 undistorted;
   glm::dvec2 distorted;

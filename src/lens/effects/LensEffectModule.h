@@ -44,7 +44,8 @@ class KeyReader {
   virtual std::size_t arraySize(const std::string& key) const = 0;
   // The array's i-th element when it is a finite number.
   virtual std::optional<double> element(const std::string& key, std::size_t i) const = 0;
-  virtual std::string text(const std::string& key) const = 0;  // the value as the file wrote it
+  virtual std::string text(const std::string& key) const = 0;    // the value as the file wrote it
+  virtual std::string string(const std::string& key) const = 0;  // a JSON string's value
   [[noreturn]] virtual void fail(const std::string& key, const std::string& message) const = 0;
   // "<file>: \"key\" is missing; the <form> form needs it" when absent.
   virtual void require(const std::string& key, const std::string& form) const = 0;
@@ -59,7 +60,8 @@ class KeyWriter {
   virtual void number(const std::string& key, double value) = 0;
   virtual void integer(const std::string& key, int value) = 0;
   virtual void distance(const std::string& key, double value) = 0;  // +infinity as "infinity"
-  virtual KeyWriter& object(const std::string& key) = 0;            // a new object under `key`
+  virtual void string(const std::string& key, const std::string& value) = 0;
+  virtual KeyWriter& object(const std::string& key) = 0;  // a new object under `key`
 };
 
 // What the frame plan knows of the view when it asks a module (the aperture is the lens's).

@@ -33,17 +33,18 @@ constexpr int kWidth = 1280, kHeight = 960;
 const OpenCvFisheye kFisheye{560.0, 561.5, 641.3, 478.2, 0.021, -0.0043, 0.0011, -0.00018};
 
 std::string fisheyeJson(const OpenCvFisheye& c, const std::string& distortion = "") {
-  const std::string terms =
-      distortion.empty()
-          ? cat(R"("model": "fisheye", "k1": )", c.k1, R"(, "k2": )", c.k2, R"(, "k3": )", c.k3, R"(, "k4": )", c.k4)
-          : distortion;
+  const std::string terms = distortion.empty() ? cat(R"("model": "fisheye", "k1": )", c.k1, R"(, "k2": )", c.k2,
+                                                     R"(, "k3": )", c.k3, R"(, "k4": )", c.k4)
+                                               : distortion;
   return cat(R"({"K": [[)", c.fx, ", 0, ", c.cx, "], [0, ", c.fy, ", ", c.cy, R"(], [0, 0, 1]], "width": )", kWidth,
              R"(, "height": )", kHeight, R"(, "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "t": [0, 0, 0],
              "near": 0.01, "distortion": {)",
              terms, "}}");
 }
 
-Camera fisheyeCamera(const OpenCvFisheye& c = kFisheye) { return parseCameraJson(fisheyeJson(c), "fisheye.json").camera; }
+Camera fisheyeCamera(const OpenCvFisheye& c = kFisheye) {
+  return parseCameraJson(fisheyeJson(c), "fisheye.json").camera;
+}
 
 // A direction at angle θ from the axis (OpenCV's camera frame, R = I: the world's), at distance `range`.
 glm::dvec3 pointAt(double theta, double azimuth, double range) {
@@ -130,6 +131,9 @@ TEST(Fisheye, TheRayCastersRaysLeaveEachPixelAlongTheModelsDirection) {
   std::printf("worst ray %.3g px, worst projection %.3g px\n", worstRay, worstPoint);
   EXPECT_LE(worstRay, 1e-6);
   EXPECT_LE(worstPoint, 1e-6);
+  // The models end at 90°: COLMAP's fisheyes project no point at w ≤ 0, OpenCV's divides by z.
+  EXPECT_FALSE(map.pixelOfPoint(pointAt(100.0 * M_PI / 180.0, 0.3, 2.0)));
+  EXPECT_FALSE(map.pixelOfPoint(pointAt(90.5 * M_PI / 180.0, 0.3, 2.0)));
 }
 
 TEST(Fisheye, AnImageThatReaches90DegreesIsRefusedByName) {
@@ -196,9 +200,9 @@ TEST(Fisheye, TheRasterRefusesARenderThatStretchesWithoutBoundAndNamesTheRayCast
   const ThinLensMap map(wideCamera, size);
   const auto corner = map.centreRay({0.5, 0.5});
   ASSERT_TRUE(corner);
-  EXPECT_LE(glm::length(wide.project(corner->ray.origin + corner->ray.direction) + glm::dvec2(0.5) -
-                        glm::dvec2(0.5, 0.5)),
-            1e-6);
+  EXPECT_LE(
+      glm::length(wide.project(corner->ray.origin + corner->ray.direction) + glm::dvec2(0.5) - glm::dvec2(0.5, 0.5)),
+      1e-6);
 }
 
 }  // namespace

@@ -91,6 +91,23 @@ k = lines[2]["opencv"]["K"]
 assert abs(k[0][2] - (48 + 0.3 / 3 * 96 - 0.5)) < 1e-9 * 100, k
 PY
 
+# --- a fisheye (OpenCV's fisheye model): one OPENCV_FISHEYE camera, its frames replayed from it ---
+fish='"K": [[90, 0, 95.5], [0, 90, 53.5], [0, 0, 1]], "width": 192, "height": 108,
+  "distortion": {"model": "fisheye", "k1": 0.02, "k2": -0.003}'
+cat >fish.json <<JSON
+{"fps": 4, "interpolation": "linear", "keys": [
+  {"time": 0, $fish, "eye": [3, 1.5, 4], "target": [0, 0.5, 0]},
+  {"time": 0.5, $fish, "eye": [-3, 1.5, 4], "target": [0, 0.5, 0]}]}
+JSON
+check "$lenslab" capture --path fish.json --out fish/f_%02d.png --colmap-out fish/model -q
+check grep -q '^# Number of cameras: 1$' fish/model/cameras.txt
+check grep -q '^1 OPENCV_FISHEYE 192 108 90 90 96 54 0.02 -0.003 0 0$' fish/model/cameras.txt
+check holds fish/f_02.camera.json 'j["distortion"] == {"model": "fisheye", "k1": 0.02, "k2": -0.003}'
+check "$lenslab" capture --colmap fish/model --out fishback/f_%02d.png -q
+check close_pixels fish/f_01.png fishback/f_01.png
+# The ray caster through the same camera file.
+check "$lenslab" raycast --camera fish/f_01.camera.json --spp 4 --out fish-ray.png -q
+
 # --- mistakes: one line, a non-zero exit, no frame ---
 refused_outputs='out*'
 echo '[1, 2]' >notobject.jsonl
@@ -108,6 +125,13 @@ expect_refusal "not an object" "notobject.jsonl:1: give a camera as a JSON objec
 expect_refusal "camera file gone" "gone.jsonl:1: \"camera\": gone.camera.json is not there" -- \
   capture --cameras gone.jsonl --out out/f_%02d.png
 expect_refusal "empty list" "empty.jsonl: holds no cameras" -- capture --cameras empty.jsonl --out out/f_%02d.png
+sed 's/"K": \[\[90, 0/"K": [[60, 0/; s/\[0, 90, 53.5\]/[0, 60, 53.5]/' fish.json >fish90.json
+expect_refusal "fisheye past 90" "the fisheye's image reaches 90° from the optical axis" -- \
+  capture --path fish90.json --out out/f_%02d.png
+sed 's/"k1": 0.02, "k2": -0.003}/"k1": 0.02, "k2": -0.003}, "aperture_radius": 0.01/; 0,/"fisheye"/s/"fisheye"/"opencv"/' \
+  fish.json >fishmix.json
+expect_refusal "fisheye and opencv keys" "\"distortion.model\" differs from the first key's" -- \
+  capture --path fishmix.json --out out/f_%02d.png
 expect_refusal "manifest is the list" "--manifest" -- \
   capture --cameras small/manifest.jsonl --out out/f_%02d.png --manifest small/manifest.jsonl
 echo '{"time": -1, "eye": [0, 1, 5], "target": [0, 0, 0]}' >negative.jsonl

@@ -7,7 +7,6 @@
 #include "io/StripImageWriter.h"
 #include "render/TiledRender.h"
 
-#include <cctype>
 #include <chrono>
 
 #ifdef __GLIBC__
@@ -19,9 +18,7 @@ namespace lenslab {
 TilePlan tilesForFile(const Camera& camera, ImageSize size, const FramePlan& plan, const std::filesystem::path& out,
                       int tileSizePx) {
   TileMemory memory;
-  std::string extension = out.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  memory.fileBytesPerPixel = extension == ".png" ? 3 : 16;  // StripImageWriter: 8-bit RGB, or float RGBA
+  memory.fileBytesPerPixel = lowerExtension(out) == ".png" ? 3 : 16;  // StripImageWriter: 8-bit RGB, or float RGBA
   return planTiles(camera, size, plan, queryRenderTargetLimits(), tileSizePx, &memory);
 }
 

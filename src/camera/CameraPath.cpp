@@ -11,16 +11,7 @@
 namespace lenslab {
 namespace {
 
-double lerp(double a, double b, double u) { return a + (b - a) * u; }
 glm::dvec3 lerp(const glm::dvec3& a, const glm::dvec3& b, double u) { return a + (b - a) * u; }
-
-// A far plane at infinity stays there; between a finite and an infinite one, the finite holds.
-double lerpDistance(double a, double b, double u) {
-  if (std::isinf(a) && std::isinf(b)) return a;
-  if (std::isinf(a)) return b;
-  if (std::isinf(b)) return a;
-  return lerp(a, b, u);
-}
 
 // A neighbour beyond the ends: the end point reflected through its neighbour.
 glm::dvec3 pointOr(const std::vector<glm::dvec3>& p, std::ptrdiff_t i) {
@@ -81,6 +72,13 @@ void validateKeyTimes(const std::vector<double>& times, std::string_view where) 
 }
 
 }  // namespace
+
+double lerpDistance(double a, double b, double u) {
+  if (std::isinf(a) && std::isinf(b)) return a;
+  if (std::isinf(a)) return b;
+  if (std::isinf(b)) return a;
+  return lerp(a, b, u);
+}
 
 PathSegment segmentAt(const std::vector<double>& times, double t) {
   const auto after = std::upper_bound(times.begin(), times.end(), t);

@@ -91,6 +91,12 @@ PathSegment segmentAt(const std::vector<double>& times, double t);
 // ends' missing neighbours reflected through their neighbour.
 glm::dvec3 splineThrough(const std::vector<glm::dvec3>& points, std::size_t k, double u);
 
+// a at u = 0 to b at u = 1 (a + (b − a)·u: a value both keys share is held exactly).
+inline double lerp(double a, double b, double u) { return a + (b - a) * u; }
+// The same for a distance that may be +infinity (a far plane): infinity stays there, and between a
+// finite and an infinite one the finite holds.
+double lerpDistance(double a, double b, double u);
+
 // Monotone cubic Hermite interpolation (Fritsch–Carlson) of values y at strictly increasing x.
 double monotoneCubic(const std::vector<double>& x, const std::vector<double>& y, double at);
 

@@ -29,13 +29,6 @@ Pinhole pinholeOf(const Camera& camera, ImageSize size) {
   return {placementOf(pose).eye, quaternionFromRotation(pose.rows), intrinsicsOf(camera.view, size)};
 }
 
-double lerp(double a, double b, double u) { return a + (b - a) * u; }
-
-double lerpDistance(double a, double b, double u) {
-  if (std::isinf(a) || std::isinf(b)) return std::isinf(a) && std::isinf(b) ? a : (std::isinf(a) ? b : a);
-  return lerp(a, b, u);
-}
-
 }  // namespace
 
 void validateViewKeys(const std::vector<ViewPathKey>& keys, std::string_view where) {

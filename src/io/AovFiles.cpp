@@ -26,13 +26,6 @@ fs::path beside(const fs::path& image, const std::string& suffix) {
   return p.string() + suffix;
 }
 
-bool isExr(const fs::path& image) {
-  std::string ext = image.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".exr";
-}
-
 // `values` of `type` as an image file named like `name` (its extension picks the format), in memory.
 std::string encodeWithOiio(const fs::path& name, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* values) {
   auto out = OIIO::ImageOutput::create(name.filename().string());
@@ -188,7 +181,7 @@ std::vector<fs::path> aovFilePaths(const AovOutput& o, const fs::path& image) {
   const AovSelection& s = o.selection;
   if (!s.any()) return {};
   if (o.format == AovFormat::Exr)
-    return isExr(image) ? std::vector<fs::path>{} : std::vector{beside(image, ".aov.exr")};
+    return lowerExtension(image) == ".exr" ? std::vector<fs::path>{} : std::vector{beside(image, ".aov.exr")};
   const std::string ext = o.format == AovFormat::Npy ? ".npy" : ".png";
   std::vector<fs::path> files;
   for (const std::string& name : s.names()) files.push_back(beside(image, "." + name + ext));
@@ -210,7 +203,7 @@ std::vector<ImageChannel> writeAovFiles(OutputSet& outputs, const fs::path& imag
   applyNormalConvention(images, o.normals);
   switch (o.format) {
     case AovFormat::Exr:
-      if (isExr(image)) return aovChannels(images);
+      if (lowerExtension(image) == ".exr") return aovChannels(images);
       outputs.add(beside(image, ".aov.exr"),
                   encodeChannelExr(beside(image, ".aov.exr"), aovChannels(images), images.widthPx, images.heightPx));
       return {};

@@ -1,6 +1,7 @@
 #include "io/CameraList.h"
 
 #include "core/Error.h"
+#include "core/NumberInput.h"
 #include "core/Text.h"
 #include "core/TextFile.h"
 #include "io/ColmapModel.h"
@@ -18,6 +19,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A line's "time", through the number layer: seconds from the animation's start, as --time takes.
+constexpr NumberRange kFrameTimeSeconds{.min = 0.0, .max = 1e9, .unit = "seconds"};
+double frameTime(const nlohmann::json& line, const std::string& where) {
+  return checkedNumber(cat(where, ": \"time\""), line["time"].get<double>(), kFrameTimeSeconds);
+}
+
 // A manifest line's frame: its camera file (relative to the manifest's folder) at its time.
 ListedCamera manifestCamera(const nlohmann::json& line, const fs::path& list, const std::string& where) {
   if (!line["camera"].is_string())
@@ -34,13 +41,8 @@ ListedCamera manifestCamera(const nlohmann::json& line, const fs::path& list, co
   c.where = cat(where, " (", file.string(), ")");
   if (!line.contains("time") || !line["time"].is_number())
     throw InputError(cat(where, ": \"time\": a manifest line gives its frame's time in seconds"));
-  c.timeSeconds = line["time"].get<double>();
+  c.timeSeconds = frameTime(line, where);
   return c;
-}
-
-void checkTime(double t, const std::string& where) {
-  if (!std::isfinite(t) || t < 0.0)
-    throw InputError(cat(where, ": \"time\" ", t, ": give a finite time in seconds, 0 or more"));
 }
 
 }  // namespace
@@ -64,7 +66,6 @@ std::vector<ListedCamera> loadCameraList(const fs::path& file, double fps) {
       if (!line["frame"].is_number_integer() || line["frame"].get<long long>() < 0)
         throw InputError(cat(where, ": \"frame\" must be a frame number, 0 or more (a manifest line's)"));
       ListedCamera c = manifestCamera(line, file, where);
-      checkTime(c.timeSeconds, where);
       manifestFrames[line["frame"].get<long long>()] = std::move(c);
       continue;
     }
@@ -73,8 +74,7 @@ std::vector<ListedCamera> loadCameraList(const fs::path& file, double fps) {
     c.timeSeconds = static_cast<double>(cameras.size()) / fps;
     if (line.contains("time")) {
       if (!line["time"].is_number()) throw InputError(cat(where, ": \"time\": give a number of seconds"));
-      c.timeSeconds = line["time"].get<double>();
-      checkTime(c.timeSeconds, where);
+      c.timeSeconds = frameTime(line, where);
       line.erase("time");
     }
     c.file = parseCameraJson(line.dump(), where);

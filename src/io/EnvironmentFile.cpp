@@ -27,18 +27,6 @@ namespace {
 constexpr int kCacheVersion = 2;  // 2: specular levels spaced from roughness 0.045
 constexpr char kMagic[8] = {'L', 'E', 'N', 'S', 'E', 'N', 'V', '1'};
 
-std::string oneLine(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  return s;
-}
-
-std::string lowerExtension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 // FNV-1a, 64 bits: enough to tell files and entries apart, not a defence against forgery.
 std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 0xcbf29ce484222325ull) {
   for (const unsigned char c : bytes) {

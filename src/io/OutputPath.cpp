@@ -39,13 +39,6 @@ int probeFolder(const fs::path& folder) {
   return error;
 }
 
-std::string lowerExtension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 }  // namespace
 
 void checkOutputPath(const fs::path& path, OutputKind kind, std::string_view option) {

@@ -16,28 +16,15 @@
 namespace lenslab {
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string oneLine(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  return s;
-}
-
-bool isPng(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".png";
-}
-
-}  // namespace
-
 struct StripImageWriter::Output {
   std::unique_ptr<OIIO::ImageOutput> image;
 };
 
 StripImageWriter::StripImageWriter(OutputSet& outputs, const fs::path& path, ImageSize size)
-    : target_((checkImageExtension(path), path)), out_(std::make_unique<Output>()), size_(size), png_(isPng(path)) {
+    : target_((checkImageExtension(path), path)),
+      out_(std::make_unique<Output>()),
+      size_(size),
+      png_(lowerExtension(path) == ".png") {
   temporary_ = outputs.addStreamed(path);
   const std::string temporary = temporary_.string();
   out_->image = OIIO::ImageOutput::create(temporary);

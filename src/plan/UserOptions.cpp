@@ -112,7 +112,8 @@ LensEffects withLensEffectOptions(LensEffects e, const LensOptions& o, std::opti
 
 namespace {
 
-SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
+// --blades / --squeeze and the lens-effect options (--distortion, --lateral-color, ...) over the camera's.
+SelectedCamera withApertureAndEffectOptions(SelectedCamera c, const LensOptions& o) {
   c.camera.lens.aperture = withApertureOptions(c.camera.lens.aperture, o);
   if (o.changesLensEffects()) {
     const std::optional<double> focalLength =
@@ -128,23 +129,13 @@ SelectedCamera withApertureOptions(SelectedCamera c, const LensOptions& o) {
 }  // namespace
 
 SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& o) {
-  if (o.focusDistance.empty()) return withApertureOptions(camera, o);
-  double d = 0.0;
-  if (o.focusDistance == "infinity") {
-    d = std::numeric_limits<double>::infinity();
-  } else {
-    std::size_t used = 0;
-    try {
-      d = std::stod(o.focusDistance, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != o.focusDistance.size())
-      throw InputError(cat("--focus-distance ", o.focusDistance, ": give a distance or infinity"));
-  }
+  if (o.focusDistance.empty()) return withApertureAndEffectOptions(camera, o);
+  const double d = o.focusDistance == "infinity"
+                       ? std::numeric_limits<double>::infinity()
+                       : readNumber("--focus-distance", o.focusDistance, {.unit = "world units"});
   SelectedCamera c = refocused(camera, d, "--focus-distance");
   c.camera.source += cat(", refocused to ", o.focusDistance);
-  return withApertureOptions(c, o);
+  return withApertureAndEffectOptions(c, o);
 }
 
 void applyBackground(Scene& scene, const std::optional<glm::vec3>& background) {

@@ -99,7 +99,7 @@ Scene loadGltf(const fs::path& file) {
   try {
     return load(file);
   } catch (const gltf::Problem& problem) {
-    throw InputError(cat(file.string(), ": ", gltf::oneLine(problem.what())));
+    throw InputError(cat(file.string(), ": ", oneLine(problem.what())));
   } catch (const std::bad_alloc&) {
     throw InputError(cat(file.string(), ": not enough memory to load it"));
   }

@@ -135,7 +135,7 @@ expect_refusal "fisheye and opencv keys" "\"distortion.model\" differs from the 
 expect_refusal "manifest is the list" "--manifest" -- \
   capture --cameras small/manifest.jsonl --out out/f_%02d.png --manifest small/manifest.jsonl
 echo '{"time": -1, "eye": [0, 1, 5], "target": [0, 0, 0]}' >negative.jsonl
-expect_refusal "negative time" "negative.jsonl:1: \"time\" -1: give a finite time in seconds, 0 or more" -- \
+expect_refusal "negative time" "negative.jsonl:1: \"time\": -1 is out of range; give" -- \
   capture --cameras negative.jsonl --out out/f_%02d.png
 
 echo "capture_cameras: $passed passed, $failed failed"

@@ -5,20 +5,6 @@
 
 namespace lenslab::gltf {
 
-std::string oneLine(const std::string& text) {
-  std::string out, line;
-  std::istringstream in(text);
-  while (std::getline(in, line)) {
-    std::replace(line.begin(), line.end(), '\r', ' ');
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
-    const auto last = line.find_last_not_of(" \t");
-    if (!out.empty()) out += "; ";
-    out += line.substr(first, last - first + 1);
-  }
-  return out;
-}
-
 std::string joined(const std::vector<std::string>& names) {
   std::string out;
   for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;

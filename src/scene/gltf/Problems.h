@@ -21,9 +21,6 @@ template <class... Parts>
   throw Problem(cat(parts...));
 }
 
-// tinygltf ends each of its errors with a newline; a message here is one line: "first; second".
-std::string oneLine(const std::string& text);
-
 // "a, b, c"
 std::string joined(const std::vector<std::string>& names);
 

@@ -76,6 +76,15 @@ void addLensEffectOptions(CLI::App& cmd, LensOptions& o) {
       ->delimiter(',')
       ->expected(1, 64)  // more than 12 is refused with the terms named (withLensEffectOptions)
       ->type_name("K1[,K2,...]");
+  cmd.add_option("--fisheye", o.fisheye,
+                 "OpenCV's fisheye model over the camera file's \"distortion\": its k1,k2,k3,k4 (cv::fisheye's D; "
+                 "1 to 4 numbers, the missing ones 0), theta_d = theta (1 + k1 theta^2 + ...); 0 for the equidistant "
+                 "fisheye")
+      ->check(numberIn({.min = -1e4, .max = 1e4, .unit = {}}))
+      ->delimiter(',')
+      ->expected(1, 64)  // more than 4 is refused with the terms named (withLensEffectOptions)
+      ->excludes("--distortion")
+      ->type_name("K1[,K2,K3,K4]");
   cmd.add_option("--lateral-color", o.lateralColor,
                  "lateral chromatic aberration: red's and blue's images magnified about the centre by this fraction "
                  "of green's (e.g. 0.002,-0.002; one number L: red L and blue -L), over the camera file's")

@@ -78,6 +78,7 @@ std::string describeLensEffectOptions(const LensOptions& o) {
   };
   std::string text;
   if (!o.distortion.empty()) text += cat("--distortion ", list(o.distortion));
+  if (!o.fisheye.empty()) text += cat(text.empty() ? "" : " ", "--fisheye ", list(o.fisheye));
   if (!o.lateralColor.empty()) text += cat(text.empty() ? "" : " ", "--lateral-color ", list(o.lateralColor));
   if (o.axialAbbe) text += cat(text.empty() ? "" : " ", "--axial-color ", numberText(*o.axialAbbe));
   return text;
@@ -91,7 +92,17 @@ LensEffects withLensEffectOptions(LensEffects e, const LensOptions& o, std::opti
             ", OpenCV's k1,k2,p1,p2,k3,k4,k5,k6,s1,s2,s3,s4 (a tilted sensor's tauX, tauY is not modelled)"));
   if (o.lateralColor.size() > 2)
     throw InputError(cat("--lateral-color: ", o.lateralColor.size(), " numbers; give RED or RED,BLUE"));
+  if (o.fisheye.size() > 4)
+    throw InputError(cat("--fisheye: ", o.fisheye.size(),
+                         " numbers; give 1 to 4, the fisheye model's k1,k2,k3,k4 (OpenCV's cv::fisheye D)"));
   if (!o.distortion.empty()) e.distortion = distortionFromDistCoeffs(o.distortion);
+  if (!o.fisheye.empty()) {
+    e.distortion = Distortion{};
+    e.distortion.fisheye = true;
+    const std::array<double Distortion::*, 4> terms = {&Distortion::k1, &Distortion::k2, &Distortion::k3,
+                                                       &Distortion::k4};
+    for (std::size_t i = 0; i < o.fisheye.size(); ++i) e.distortion.*terms[i] = o.fisheye[i];
+  }
   if (!o.lateralColor.empty()) {
     // One number: red's image larger by it and blue's smaller by as much (a simple lens's sign).
     e.chromatic.lateralRed = o.lateralColor[0];

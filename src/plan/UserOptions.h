@@ -29,10 +29,13 @@ struct LensOptions {
   std::string cellFilter;             // "on", "off", or empty: the plan's choice (off)
   // The lens effects over the camera's (lens/LensEffects.h), each replacing that effect:
   std::vector<double> distortion;    // --distortion: OpenCV's distCoeffs (1 to 12 numbers, missing ones 0)
+  std::vector<double> fisheye;       // --fisheye: OpenCV's fisheye model's k1..k4 (1 to 4 numbers)
   std::vector<double> lateralColor;  // --lateral-color RED[,BLUE]: magnification of red and blue over green
   std::optional<double> axialAbbe;   // --axial-color ABBE: the glass's Abbe number
 
-  bool changesLensEffects() const { return !distortion.empty() || !lateralColor.empty() || axialAbbe.has_value(); }
+  bool changesLensEffects() const {
+    return !distortion.empty() || !fisheye.empty() || !lateralColor.empty() || axialAbbe.has_value();
+  }
 };
 
 // Throws InputError for a bad pattern or sample count.
@@ -44,8 +47,9 @@ PlanOptions toPlanOptions(const LensOptions& options);
 SelectedCamera applyLensOptions(const SelectedCamera& camera, const LensOptions& options);
 // --blades and --squeeze alone over `aperture` (capture: each frame's camera), refused alike.
 ApertureShape withApertureOptions(ApertureShape aperture, const LensOptions& options);
-// --distortion, --lateral-color and --axial-color over `effects`, each replacing its effect (the
-// lecture's distortion series too: --distortion is OpenCV's whole model). --axial-color's Abbe
+// --distortion (or --fisheye), --lateral-color and --axial-color over `effects`, each replacing its
+// effect (the lecture's distortion series too: --distortion is OpenCV's whole model, --fisheye its
+// fisheye model). --axial-color's Abbe
 // number needs the lens's focal length (world units), which a camera in the physical form has;
 // without it the option is refused in one line naming `camera` and the camera file's keys that
 // set the axial colour instead. What the effects do to the image (a fold, a finite coefficient)

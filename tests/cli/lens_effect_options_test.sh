@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The lecture's lens effects from the command line: --distortion, --lateral-color and
+# The lecture's lens effects from the command line: --distortion (or --fisheye), --lateral-color and
 # --axial-color give the same image as the camera file's keys they stand for (render, raycast,
 # capture), replace the camera's own effect, and are refused in one line when out of range, on a
 # camera without a focal length (--axial-color), or where the distortion folds inside the image.
@@ -23,6 +23,13 @@ if same_pixels "$work/flag.exr" "$work/plain.exr"; then fail "--distortion chang
 "$lenslab" raycast --camera "$rows/camera.json" --distortion -0.25,0.06,0,0,0,0,0.01 --width 66 --spp 4 -q --out "$work/rflag.exr"
 "$lenslab" raycast --camera "$work/barrel.json" --width 66 --spp 4 -q --out "$work/rfile.exr"
 check same_pixels "$work/rflag.exr" "$work/rfile.exr"
+
+# --fisheye: OpenCV's fisheye model, as the camera file's "model": "fisheye" gives it.
+with_keys "$rows/camera.json" "$work/fisheye.json" '{"distortion": {"model": "fisheye", "k1": 0.02, "k2": -0.004}}'
+"$lenslab" render --camera "$rows/camera.json" --fisheye 0.02,-0.004 "${small[@]}" --out "$work/flag.exr"
+"$lenslab" render --camera "$work/fisheye.json" "${small[@]}" --out "$work/file.exr"
+check same_pixels "$work/flag.exr" "$work/file.exr"
+if same_pixels "$work/flag.exr" "$work/plain.exr"; then fail "--fisheye changed nothing"; else pass; fi
 
 with_keys "$rows/camera.json" "$work/lateral.json" '{"chromatic": {"lateral_red": 0.004, "lateral_blue": -0.004}}'
 "$lenslab" render --camera "$rows/camera.json" --lateral-color 0.004 "${small[@]}" --out "$work/flag.exr"
@@ -56,6 +63,10 @@ expect_refusal "--distortion nan" "--distortion: nan is not a finite number" \
   -- render --distortion nan --width 32 --out "$work/out.png"
 expect_refusal "--distortion 13 numbers" "--distortion: 13 numbers; give 1 to 12" \
   -- render --distortion 0,0,0,0,0,0,0,0,0,0,0,0,0 --width 32 --out "$work/out.png"
+expect_refusal "--fisheye 5 numbers" "--fisheye: 5 numbers; give 1 to 4" \
+  -- render --fisheye 0,0,0,0,0 --width 32 --out "$work/out.png"
+expect_refusal "--fisheye with --distortion" "--distortion excludes --fisheye" \
+  -- render --fisheye 0 --distortion 0.1 --width 32 --out "$work/out.png"
 expect_refusal "--lateral-color 0.6" "--lateral-color: 0.6 is out of range; give a finite value from -0.49 to 0.49" \
   -- render --lateral-color 0.6 --width 32 --out "$work/out.png"
 expect_refusal "--axial-color 0" "--axial-color: 0 is out of range" \

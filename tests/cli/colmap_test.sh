@@ -197,9 +197,9 @@ else
 fi
 
 # --- bad models and options: one line, no image ---
-mkdir -p "$work/bad/fisheye" "$work/bad/binary" "$work/bad/nopoints"
-printf '# fisheye\n1 OPENCV_FISHEYE 64 48 50 50 32 24 0.1 0 0 0\n' >"$work/bad/fisheye/cameras.txt"
-printf '1 1 0 0 0 0 0 5 1 a.png\n\n' >"$work/bad/fisheye/images.txt"
+mkdir -p "$work/bad/fov" "$work/bad/binary" "$work/bad/nopoints"
+printf '# FOV\n1 FOV 64 48 50 50 32 24 0.9\n' >"$work/bad/fov/cameras.txt"
+printf '1 1 0 0 0 0 0 5 1 a.png\n\n' >"$work/bad/fov/images.txt"
 touch "$work/bad/binary/cameras.bin" "$work/bad/binary/images.bin"
 printf '1 PINHOLE 64 48 50 50 32 24\n' >"$work/bad/nopoints/cameras.txt"
 printf '1 1 0 0 0 0 0 5 1 a.png\n2 1 0 0 0 0 0 5 1 b.png\n' >"$work/bad/nopoints/images.txt"
@@ -215,7 +215,7 @@ bad "--colmap with --camera" "both give the camera" -- render --colmap "$work/sp
   --camera "$src/assets/rows/camera.json"
 bad "unknown image" "frame_0000.png, frame_0001.png" -- render --colmap "$work/sparse" --image nothere.png
 bad "no such folder" "not a folder" -- render --colmap "$work/missing" --image a.png
-bad "fisheye" "cameras.txt:2: camera 1 is OPENCV_FISHEYE" -- render --colmap "$work/bad/fisheye" --image a.png
+bad "FOV model" "cameras.txt:2: camera 1 is FOV" -- render --colmap "$work/bad/fov" --image a.png
 bad "empty binary model" "cameras.bin: the file ends inside the number of cameras" \
   -- raycast --colmap "$work/bad/binary" --image a.png
 bad "no POINTS2D lines" "images.txt:2:" -- render --colmap "$work/bad/nopoints" --image a.png

@@ -83,6 +83,10 @@ struct SweepRun {
   GatherDof gather;
   fs::path imageDir;
   std::set<std::string> imageNames;
+  // Why the cell-filter series cannot run on this camera (a lens that moves or warps each view as
+  // it is summed, a barrel, ...: plan/FramePlan.cpp); empty where it can. Such a series is left out,
+  // as the gather is, rather than refused after the reference.
+  std::string cellsLeftOut;
   std::int64_t imagesPlanned = 0;
 
   bool wanted(const std::string& series) const {
@@ -96,6 +100,7 @@ struct SweepRun {
     if (series == "lecture17") return {17};
     if (series == "raycast") return doublings(o.maxSpp);
     if (series == "cells") {  // from 2: one view has no cells to spread over
+      if (!cellsLeftOut.empty()) return {};
       std::vector<int> views = doublings(o.maxViews);
       views.erase(views.begin());
       return views;
@@ -151,6 +156,10 @@ void runRasterSeries(SweepRun& run) {
   // The cell filter on sobol's own cells (powers of two); its pre-pass (the largest circle in view,
   // which bounds how far it gathers) is part of each frame's time.
   if (!run.wanted("cells")) return;
+  if (!run.cellsLeftOut.empty()) {
+    say(o, cat("cell filter: left out (", run.cellsLeftOut, ")"));
+    return;
+  }
   for (int n : run.budgetsOf("cells")) {
     PlanOptions options{AperturePattern::Sobol, n, n, o.seed};
     options.cellFilter = true;
@@ -304,7 +313,8 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   result.referenceNoiseRmse = 0.5 * compareImages(halves.halves[0], halves.halves[1], 0.0).rmse;
 
   const auto setupStart = std::chrono::steady_clock::now();
-  SweepRun run{scene, camera, size, o, result, std::move(reference), {}, Renderer(scene), GatherDof(), imageDir, {}, 0};
+  SweepRun run{scene,       camera,   size, o,  result, std::move(reference), {}, Renderer(scene),
+               GatherDof(), imageDir, {},   {}, 0};
   run.edges = pinholeEdges(run.renderer, camera, size);
   result.edgeFraction =
       static_cast<double>(std::count(run.edges.begin(), run.edges.end(), true)) / static_cast<double>(run.edges.size());
@@ -314,6 +324,13 @@ SweepResult runSweep(const Scene& scene, const Camera& camera, ImageSize size, c
   (void)run.gather.apply(camera, run.renderer.renderPinhole(camera, size), 8);
   result.setupSeconds = secondsSince(setupStart);
 
+  {
+    PlanOptions cells{AperturePattern::Sobol, 2, 2, o.seed};
+    cells.cellFilter = true;
+    const FramePlan plan = makeFramePlan(scene, camera, size, cells);
+    if (!plan.cellFilter)
+      run.cellsLeftOut = plan.cellFilterWhy.substr(plan.cellFilterWhy.rfind("off: ", 0) == 0 ? 5 : 0);
+  }
   run.imagesPlanned = run.wanted("adaptive") ? static_cast<std::int64_t>(o.targetsDb.size()) : 0;
   for (const std::string& series : sweepSeriesNames())
     run.imagesPlanned += static_cast<std::int64_t>(run.budgetsOf(series).size());

@@ -168,6 +168,12 @@ if "$lenslab" sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/o
    head -1 "$work/sweep/sweep.csv" | grep -qx "method,pattern,samples,seconds,rmse,psnr,max_error,edge_rmse,target_psnr,estimate_psnr,mean_samples,max_tile_samples" &&
    grep -q "^adaptive,sobol," "$work/sweep/sweep.csv" &&
    grep -q "^postprocess,gather," "$work/sweep/sweep.csv" && ls "$work"/sweep/images/raster-concentric-4.png >/dev/null; then pass; else fail "sweep"; fi
+# A lens whose views move as they are summed (distortion) cannot take the cell filter: that series
+# is left out, said so, and the rest of the sweep is written.
+if "$lenslab" sweep --camera "$src/assets/rows/camera-lens.json" --out "$work/sweep-lens" --width 32 --reference-spp 2 \
+     --max-views 2 --max-spp 1 2>"$work/sweep-lens.err" &&
+   grep -q "cell filter: left out (distortion" "$work/sweep-lens.err" && grep -q "^raster,sobol," "$work/sweep-lens/sweep.csv" &&
+   ! grep -q "^cell-filter," "$work/sweep-lens/sweep.csv"; then pass; else fail "sweep of a distorting lens leaves the cell filter out"; fi
 expect_refusal "sweep of a pinhole" "pinhole" -- sweep "$src/assets/occluder/occluder.gltf" --camera "$src/assets/occluder/camera.json" --out "$work/out-sweep" --width 16
 
 # info.

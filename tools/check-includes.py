@@ -3,7 +3,9 @@
 
 The folders of src/ are layers, top to bottom (docs/development.md, "Folders"):
 
-    app/                      the command line: the top; nothing includes it
+    python/                   the Python module: the top; it renders a frame as the command
+                              line does (app/FrameRender.h)
+    app/                      the command line; nothing but python/ includes it
     view/  report/            the viewer's library, the sweep report (side by side, under app/ only)
     render/  raycast/         the raster passes, the CPU reference
     gl/                       contexts, GL objects, shader loading
@@ -45,6 +47,7 @@ LAYERS = [
     ['render', 'raycast'],
     ['view', 'report'],
     ['app'],
+    ['python'],
 ]
 RANK = {folder: rank for rank, folders in enumerate(LAYERS) for folder in folders}
 EXTENSIONS = ('.h', '.hpp', '.cpp', '.cc', '.c', '.inc')

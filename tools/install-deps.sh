@@ -11,6 +11,8 @@ packages=(
   xvfb xauth fonts-dejavu-core python3-pil python3-yaml
   strace  # tests/install/install_test.sh, where no private mount namespace can be made
   clang-format  # tools/check-format.sh: the C++ follows .clang-format (ctest entry format)
+  python3-dev pybind11-dev python3-numpy  # the Python module in the build tree and its tests (docs/python.md)
+  python3-venv python3-pip                # `pip install .` into a virtual environment (tests/install/)
 )
 # --fuzz: also what tools/fuzz.sh needs (it asks for them itself): libFuzzer comes with clang (the
 # default build stays on gcc); llvm-14 has llvm-symbolizer, for file:line in the fuzzers' reports.

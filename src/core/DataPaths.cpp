@@ -37,7 +37,25 @@ bool isInside(const fs::path& path, const fs::path& folder) {
 // executable): an installed lenslab does not so much as look at the build tree.
 bool insideBuildTree(const fs::path& exe) { return !exe.empty() && isInside(exe, LENSLAB_BUILD_DIR); }
 
+fs::path& embeddingLibrary() {
+  static fs::path library;
+  return library;
+}
+
+// The file that stands for "the executable" in the rules of DataPaths.h, and the data folder
+// relative to its folder.
+fs::path codePath() { return embeddingLibrary().empty() ? executablePath() : embeddingLibrary(); }
+fs::path dataFromCode() {
+  return embeddingLibrary().empty() ? fs::path(LENSLAB_DATA_FROM_BIN) : fs::path("share/lenslab");
+}
+
 }  // namespace
+
+void setEmbeddingLibrary(const fs::path& library) {
+  std::error_code error;
+  const fs::path resolved = fs::weakly_canonical(library, error);
+  embeddingLibrary() = error ? library : resolved;
+}
 
 fs::path executablePath() {
   // Read once: the executable does not change while it runs, and shaderDirectory() asks on every
@@ -50,7 +68,7 @@ fs::path executablePath() {
   return exe;
 }
 
-bool runningFromBuildTree() { return insideBuildTree(executablePath()); }
+bool runningFromBuildTree() { return insideBuildTree(codePath()); }
 
 std::optional<fs::path> shaderDirectory() {
   if (auto env = fromEnvironment("LENSLAB_SHADER_DIR")) return env;
@@ -60,10 +78,10 @@ std::optional<fs::path> shaderDirectory() {
 
 fs::path assetDirectory() {
   if (auto env = fromEnvironment("LENSLAB_ASSET_DIR")) return *env;
-  const fs::path exe = executablePath();
+  const fs::path exe = codePath();
   fs::path installed;
   if (!exe.empty()) {
-    installed = (exe.parent_path() / LENSLAB_DATA_FROM_BIN / "assets").lexically_normal();
+    installed = (exe.parent_path() / dataFromCode() / "assets").lexically_normal();
     std::error_code error;
     if (fs::is_directory(installed, error)) return installed;
   }

@@ -25,7 +25,14 @@ namespace lenslab {
 // be read.
 std::filesystem::path executablePath();
 
-// Whether the running executable lies inside the build tree this library was built in.
+// For a library loaded into another program (the Python module, loaded by python): its own file,
+// which then stands for the executable in the rules above, with the installed data in
+// <its folder>/share/lenslab (a wheel's layout) instead of <executable's folder>/../share/lenslab.
+// Called once, before any other thread asks for data.
+void setEmbeddingLibrary(const std::filesystem::path& library);
+
+// Whether the running executable (or the embedding library) lies inside the build tree this
+// library was built in.
 bool runningFromBuildTree();
 
 // The folder to read shaders from, or nullopt for the ones compiled into the library.

@@ -23,6 +23,10 @@ class EglContext final : public GlContext {
     eglTerminate(display_);
   }
   Backend backend() const override { return Backend::Egl; }
+  void makeCurrent() override {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw std::runtime_error("EGL: could not make the context current");
+  }
 
  private:
   EGLDisplay display_;

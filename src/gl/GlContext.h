@@ -21,6 +21,10 @@ class GlContext {
   GlContext& operator=(const GlContext&) = delete;
 
   virtual Backend backend() const = 0;
+  // Makes this context the calling thread's current one: a process holding several (the Python
+  // module's renderers) switches between them; a context is created current. Throws
+  // std::runtime_error when the driver refuses.
+  virtual void makeCurrent() = 0;
   // GL_RENDERER and GL_VERSION as the driver reports them.
   std::string renderer() const;
   std::string version() const;

@@ -101,6 +101,10 @@ class OsmesaContext final : public GlContext {
   }
   ~OsmesaContext() override { osmesa().destroyContext(context_); }
   Backend backend() const override { return Backend::OSMesa; }
+  void makeCurrent() override {
+    if (!osmesa().makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, kBufferSide, kBufferSide))
+      throw std::runtime_error("OSMesa: could not make the context current");
+  }
 
  private:
   static constexpr int kBufferSide = 4;

@@ -5,7 +5,7 @@ scene made again each time, the EXR written and read back) against one lenslab.R
 median of the per-pair ratios, with its spread.
 
 usage: PYTHONPATH=build/python python3 tools/bench-python-frames.py [--cli build/lenslab]
-       [--frames 20] [--width 320] [--camera assets/rows/camera-dof.json]
+       [--frames 20] [--width 321] [--camera assets/rows/camera-dof.json]
 """
 import argparse
 import statistics
@@ -22,7 +22,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--cli", default=str(root / "build" / "lenslab"))
     parser.add_argument("--frames", type=int, default=20)
-    parser.add_argument("--width", type=int, default=320)
+    parser.add_argument("--width", type=int, default=321)
     parser.add_argument("--camera", default=str(root / "assets" / "rows" / "camera-dof.json"))
     args = parser.parse_args()
 

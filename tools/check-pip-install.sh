@@ -10,7 +10,7 @@
 # usage: tools/check-pip-install.sh [SOURCE_DIR [path/to/build/lenslab]]
 set -euo pipefail
 src=$(cd "${1:-$(dirname "$0")/..}" && pwd)
-cli=${2:-}
+cli=${2:+$(realpath "$2")}
 work=$(mktemp -d /tmp/lenslab-pip.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 

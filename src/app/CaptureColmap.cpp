@@ -76,7 +76,8 @@ std::string lensKey(const ColmapCamera& c) {
 }  // namespace
 
 void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range,
-                      const fs::path& dir, OutputSet& outputs, ProgressReporter& progress) {
+                      const fs::path& dir, OutputSet& outputs, ProgressReporter& progress,
+                      const std::function<void(const std::string&)>& warn) {
   const fs::path base = framesFolder(o.out);
   const fs::path baseFolder = fs::absolute(base.empty() ? fs::path(".") : base).lexically_normal();
   const bool binary = o.colmapFormat == "binary";
@@ -133,7 +134,13 @@ void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras,
   outputs.add(dir / ("points3D" + extension), binary ? colmapPoints3DBinary() : colmapPoints3DText());
   progress.finish();
   if (!o.quiet)
-    for (const std::string& w : warnings) std::cerr << "lenslab: warning: --colmap-out: " << w << "\n";
+    for (const std::string& w : warnings) {
+      const std::string line = "lenslab: warning: --colmap-out: " + w;
+      if (warn)
+        warn(line);
+      else
+        progress.note(line);
+    }
 }
 
 }  // namespace lenslab

@@ -8,6 +8,9 @@
 #include "io/Progress.h"
 #include "scene/Scene.h"
 
+#include <functional>
+#include <string>
+
 namespace lenslab {
 
 // The cameras of every frame of `range` (its step included) as a COLMAP model in `dir`,
@@ -19,9 +22,11 @@ namespace lenslab {
 // kColmapCamerasShared distinct ones and the previous frame's (past them each new one has its
 // own). IMAGE_ID is the frame number + 1 (stable whatever the range). Throws InputError for a lens no
 // COLMAP model holds; warns once for each effect a pinhole model leaves out. A glTF camera
-// following its node poses `scene` at each frame's time. `progress` counts the frames.
+// following its node poses `scene` at each frame's time. `progress` counts the frames; the
+// warnings go to `warn` when given, else to `progress`.
 void writeColmapModel(const CaptureOptions& o, const FrameCameras& frameCameras, Scene& scene, FrameRange range,
-                      const std::filesystem::path& dir, OutputSet& outputs, ProgressReporter& progress);
+                      const std::filesystem::path& dir, OutputSet& outputs, ProgressReporter& progress,
+                      const std::function<void(const std::string&)>& warn = {});
 
 // Two frames' cameras are one lens (one CAMERA_ID) when their model and size are the same and each
 // parameter is within this relative tolerance (of the larger magnitude, at least 1): frames of a

@@ -13,6 +13,7 @@
 #include "app/ExposureOptions.h"
 #include "app/Commands.h"
 #include "app/CaptureColmap.h"
+#include "app/CaptureFrame.h"
 #include "app/CaptureManifest.h"
 #include "app/FrameCameras.h"
 #include "app/FrameRender.h"
@@ -59,189 +60,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Every output checked before any work (the frames' folders made first: a cluster's shards start
-// on an empty volume). The folders this run makes are in `madeFolders`, removed again, when still
-// empty, if it is refused or interrupted.
-void checkCaptureOutputs(const CaptureOptions& o, const std::vector<int>& frames, const FrameRange& range,
-                         const fs::path& manifest, const AovOutput& aovs, OutputSet& madeFolders) {
-  std::set<fs::path> folders;
-  for (const int f : frames) folders.insert(fs::path(formatFramePath(o.out, f)).parent_path());
-  folders.insert(manifest.parent_path());
-  for (const fs::path& folder : folders)
-    if (!folder.empty()) madeFolders.createFolders(folder);
-  const fs::path firstImage = formatFramePath(o.out, frames.empty() ? range.first : frames.front());
-  checkOutputPath(firstImage, OutputKind::Image, "--out");
-  checkOutputPath(frameCameraPath(firstImage), OutputKind::Any, "--out");  // its name is longer than the image's
-  checkAovOutput(aovs, firstImage, "--out");
-  checkOutputPath(manifest, OutputKind::JsonLines, "--manifest");
-  checkNotInput(manifest, "--manifest", o.pathFile, "--path");
-  checkNotInput(manifest, "--manifest", o.camerasFile, "--cameras");  // a replayed manifest is not appended to
-  // Nor one of the range's frame camera files (f_0002.camera.json), which the manifest's lines would
-  // be appended to; nor may the COLMAP model's folder be a frame's file or the manifest.
-  const std::string cameraPattern = frameCameraPath(o.out).string();
-  if (const std::optional<int> f = frameNamedBy(cameraPattern, manifest); f && inRange(range, *f))
-    throw InputError(cat("--manifest ", manifest.string(), ": is frame ", *f, "'s camera file; give another name"));
-  checkAppendable(manifest, "--manifest");
-  if (!o.colmapOut.empty()) {
-    for (const auto& [pattern, what] : {std::pair{o.out, "image"}, std::pair{cameraPattern, "camera file"}})
-      if (const std::optional<int> f = frameNamedBy(pattern, o.colmapOut); f && inRange(range, *f))
-        throw InputError(cat("--colmap-out ", o.colmapOut, ": is frame ", *f, "'s ", what, " (--out ", o.out,
-                             "); give the model a folder of its own"));
-    if (fs::absolute(o.colmapOut).lexically_normal() == fs::absolute(manifest).lexically_normal())
-      throw InputError(cat("--colmap-out ", o.colmapOut, ": is the manifest; give the model a folder of its own"));
-    madeFolders.createFolders(o.colmapOut);
-    checkOutputPath(fs::path(o.colmapOut) / (o.colmapFormat == "binary" ? "cameras.bin" : "cameras.txt"),
-                    OutputKind::Any, "--colmap-out");
-  }
-}
-
-// A capture in progress: what every frame is rendered with and reported through.
-struct CaptureRun {
-  const CaptureOptions& o;
-  Scene& scene;
-  const FrameCameras& cameras;
-  const fs::path& manifest;
-  const AovOutput& aovs;
-  const std::optional<EnvironmentSummary>& environment;
-  Shard shard;
-  int firstFrame;  // the range's: --exposure auto meters it
-  int frameCount;  // the sequence's: the last has no next frame for the flow AOV
-  Renderer& renderer;
-  ProgressReporter& progress;
-  std::unique_ptr<RayCaster> caster = {};  // the AOVs; rebuilt each frame when the scene moves
-  RenderTargetLimits limits = queryRenderTargetLimits();
-  std::set<std::string> warned = {};
-  // The first frame's exposure as metered: --exposure auto holds its scale for every frame.
-  std::optional<Exposure> held = {};
-
-  void warnOnce(const std::string& w) {
-    if (!o.quiet && warned.insert(w).second) progress.note("lenslab: warning: " + w);
-  }
-
-  // A frame made ready to render: the scene posed at its time, its camera as written (and as
-  // `render --camera` reads that text back), its display.
-  struct FrameSetup {
-    double time = 0.0;
-    FrameKey f;
-    std::string cameraText;
-    Camera camera;
-    DisplaySettings display;
-  };
-  FrameSetup setUp(int frame) {
-    FrameSetup s;
-    s.time = cameras.timeOf(frame);
-    if (!scene.animation.empty()) poseScene(scene, s.time);  // glTF node animations at the frame's time
-    s.f = frameKey(cameras, scene, o, frame);
-    if (const std::string shape = pixelShapeWarning(s.f.camera, o.width, o.height, s.f.size); !shape.empty())
-      warnOnce(shape);
-    // A physical frame as the photographer's description; any other as OpenCV's K, R and t.
-    s.cameraText =
-        s.f.key
-            ? toIntrinsicsCameraJson(s.f.key->camera, s.f.key->lens, s.f.size, cameras.nearGiven(), cameras.farGiven())
-            : toOpenCvCameraJson(s.f.camera, s.f.size, !s.f.camera.nearFromScene, !s.f.camera.farFromScene);
-    s.camera = withDepthRangeFitted(parseCameraJson(s.cameraText, s.f.where).camera, scene.bounds);
-    // Each frame's own f-number for a physical exposure (a path may change it from key to key).
-    s.display = resolveDisplay(
-        o.exposure, SelectedCamera{s.camera, s.f.key ? std::optional<PhysicalCamera>(s.f.key->camera) : std::nullopt});
-    return s;
-  }
-
-  // The frame's image by its plan, with `lens`'s seed; sets `stats` and `plan`.
-  Image render(int frame, const FrameSetup& s, const LensOptions& lens, RunStats& stats, FramePlan& plan) {
-    plan = planFrame(renderer, scene, s.camera, s.f.size, toPlanOptions(lens), stats);
-    for (const std::string& w : plan.warnings) warnOnce(w);
-    for (const std::string& w : focusWarnings(s.camera, o.lens)) warnOnce(w);
-    if (const TilePlan tiles = planTiles(s.camera, s.f.size, plan, limits, 0); tiles.tiled)
-      throw InputError(cat("--width/--height: frame ", frame, ": ", tiles.why,
-                           "; capture renders each frame in one render "
-                           "target: give a smaller size (render tiles a single large image)"));
-    return renderPlanned(renderer, s.camera, plan, s.f.size, stats, nullptr, true);
-  }
-
-  // The frame's meter reading in `display` (for --exposure auto and a physical exposure); for
-  // --exposure auto the exposure held from the range's first frame. The first reading's warnings
-  // only: a sequence is exposed as one.
-  void meter(DisplaySettings& display, const Image& image, int frame) {
-    const std::vector<std::string> warnings = meterForFile(display, image, o.out, false, held);
-    if (display.exposure.meterReading && !held) {
-      held = display.exposure;
-      for (const std::string& w : warnings) warnOnce(cat("frame ", frame, ": ", w));
-    }
-  }
-
-  // --exposure auto on a process whose first frame to render is not the range's first (another
-  // shard's, or one --skip-existing leaves alone): that frame rendered and metered here, not written.
-  void meterFirst(int frame) {
-    const FrameSetup s = setUp(frame);
-    LensOptions lens = o.lens;
-    lens.seed = frameSeed(o.lens.seed, frame);
-    RunStats stats;
-    FramePlan plan;
-    DisplaySettings display = s.display;
-    meter(display, render(frame, s, lens, stats, plan), frame);
-  }
-
-  // Renders `frame` and commits its image, camera file and manifest line; the line.
-  nlohmann::json capture(int frame) {
-    const fs::path imageFile = formatFramePath(o.out, frame);
-    const fs::path cameraFile = frameCameraPath(imageFile);
-    const auto frameStart = std::chrono::steady_clock::now();
-    // One exposure for the whole range, whichever shard or rerun renders a frame.
-    if (o.exposure.request.meter && !held && frame != firstFrame) meterFirst(firstFrame);
-    const FrameSetup s = setUp(frame);
-    LensOptions lens = o.lens;
-    lens.seed = frameSeed(o.lens.seed, frame);
-    RunStats stats;
-    FramePlan plan;
-    Image image = render(frame, s, lens, stats, plan);
-    AovImages aovImages;
-    if (aovs.selection.any()) {
-      if (!caster || !scene.animation.empty()) caster = std::make_unique<RayCaster>(scene);
-      const AovSelection& asked = aovs.selection;
-      // The flow starts from each pixel's surface: its depth and node.
-      AovSelection cast = asked;
-      cast.depth = cast.depth || asked.flow, cast.instance = cast.instance || asked.flow, cast.flow = false;
-      aovImages = caster->aovImages(s.camera, s.f.size, cast);
-      if (asked.flow) {
-        aovImages.flow = flowToNextFrame(cameras, scene, o, frame, frameCount, s.camera, s.f.size, aovImages);
-        if (!asked.depth) aovImages.depth.clear();
-        if (!asked.instance) aovImages.instance.clear();
-      }
-    }
-    DisplaySettings display = s.display;
-    meter(display, image, frame);
-
-    OutputSet outputs;  // renamed into place with the frame's manifest line (commitFrame)
-    outputs.add(cameraFile, s.cameraText);
-    prepareForFile(imageFile, image, display.encoding, cat("frame ", frame, ": "), std::cerr);
-    // The instance ids' names once for the frames' folder (every frame writes the same bytes).
-    const auto warn = [&](const std::string& w) { warnOnce(cat("frame ", frame, ": ", w)); };
-    writeImage(
-        outputs, imageFile, image,
-        addAovOutputs(outputs, imageFile, aovImages, aovs, scene, warn, imageFile.parent_path() / "instances.json"));
-    const ManifestFrame entry{frame,
-                              s.time,
-                              imageFile,
-                              cameraFile,
-                              lens.seed,
-                              stats.estimate ? stats.estimate->meanSamples : static_cast<double>(plan.apertureSamples),
-                              stats.estimate ? std::optional<double>(stats.estimate->psnrDb) : std::nullopt,
-                              secondsSince(frameStart),
-                              s.f.size,
-                              s.f.key ? &s.f.key->camera : nullptr,
-                              s.camera,
-                              aovs,
-                              display,
-                              environment,
-                              shard};
-    const nlohmann::json line = manifestLine(entry, manifest);
-    std::vector<fs::path> files = aovFilePaths(aovs, imageFile);
-    files.insert(files.begin(), {cameraFile, imageFile});
-    commitFrame(outputs, files, manifest, line.dump());
-    return line;
-  }
-};
-
 int runCapture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   // Without --path the scene's animation gives the frame count: the scene is read first.
@@ -283,8 +101,8 @@ int runCapture(const CaptureOptions& o) {
   // One line a frame where nobody watches a bar (a cluster job's log), unless
   // LENSLAB_PROGRESS_SECONDS asks for fewer.
   ProgressReporter progress("capture", "frames", o.quiet, 0.0);
-  CaptureRun run{o,     scene,       cameras,    manifest, aovs,    environmentSummary,
-                 shard, range.first, frameCount, renderer, progress};
+  CaptureFrames run(o, scene, cameras, aovs, environmentSummary, shard, range.first, frameCount,
+                    [&progress](const std::string& line) { progress.note(line); });
   int rendered = 0, skipped = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int frame = frames[i];
@@ -295,7 +113,7 @@ int runCapture(const CaptureOptions& o) {
       ++skipped;
       continue;
     }
-    const nlohmann::json line = run.capture(frame);
+    const nlohmann::json line = run.commit(run.render(frame, renderer), imageFile, manifest);
     ++rendered;
     progress.update(static_cast<std::int64_t>(i) + 1, static_cast<std::int64_t>(frames.size()),
                     cat("frame ", frame, ": ", std::round(line["samples"].get<double>() * 10.0) / 10.0, " samples, ",

@@ -20,6 +20,7 @@ namespace {
 std::string sequenceSource(const CaptureOptions& o) {
   if (!o.pathFile.empty()) return cat("--path ", o.pathFile);
   if (!o.camerasFile.empty()) return cat("--cameras ", o.camerasFile);
+  if (o.cameraList) return "cameras";
   if (!o.camera.colmapDir.empty() && o.camera.colmapImage.empty()) return cat("--colmap ", o.camera.colmapDir);
   return "";
 }
@@ -60,7 +61,10 @@ FrameCameras::FrameCameras(const CaptureOptions& o, Scene& scene, double imageAs
       return;
     }
     listName_ = source;
-    list_ = o.camerasFile.empty() ? loadColmapCameras(o.camera.colmapDir, fps_) : loadCameraList(o.camerasFile, fps_);
+    if (o.cameraList && o.cameraList->empty()) throw InputError("cameras: an empty list; give at least one camera");
+    list_ = o.cameraList            ? *o.cameraList
+            : o.camerasFile.empty() ? loadColmapCameras(o.camera.colmapDir, fps_)
+                                    : loadCameraList(o.camerasFile, fps_);
     return;
   }
   // A still camera is chosen at the animation's start, whichever frames this process renders.

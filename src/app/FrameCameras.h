@@ -2,8 +2,8 @@
 // capture's options, and each frame's camera: from the path's keys, or the scene's own camera over
 // its animation; the frame's physical description, lens effects and size, from which its camera
 // file is written.
-#include "app/AovOption.h"
-#include "app/ExposureOptions.h"
+#include "app/AovOutputs.h"
+#include "app/ExposureSettings.h"
 #include "camera/CameraPath.h"
 #include "camera/ImageSize.h"
 #include "io/CameraList.h"
@@ -26,6 +26,8 @@ struct CaptureOptions {
   std::string pathFile;
   std::string cameraFile;   // --camera FILE: a still camera in any form
   std::string camerasFile;  // --cameras FILE.jsonl: a camera a frame (io/CameraList.h)
+  // A camera a frame given as objects (the Python package's cameras=[...]), named "cameras".
+  std::optional<std::vector<ListedCamera>> cameraList;
   std::string out = "frames/frame_%04d.png";
   std::string manifest;  // default: manifest.jsonl beside the frames
   std::optional<int> width;

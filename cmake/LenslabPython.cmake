@@ -36,11 +36,12 @@ pybind11_add_module(_lenslab
   src/python/CameraBinding.cpp
   src/python/RendererBinding.cpp
   src/python/FileBinding.cpp
+  src/python/SequenceBinding.cpp
 )
 target_link_libraries(_lenslab PRIVATE lenslab_frame lenslab_render lenslab_raycast lenslab_plan lenslab_io
   lenslab_warnings)
 
-set(LENSLAB_PYTHON_SOURCES __init__.py _camera.py _frame.py)
+set(LENSLAB_PYTHON_SOURCES __init__.py _camera.py _frame.py _sequence.py)
 if(SKBUILD)
   # The wheel: everything under site-packages/lenslab/ (pyproject.toml: wheel.install-dir).
   install(TARGETS _lenslab LIBRARY DESTINATION . COMPONENT python)

@@ -18,8 +18,10 @@ _lenslab._set_module_file(_lenslab.__file__)
 from ._camera import Camera  # noqa: E402
 from ._frame import Frame, Renderer  # noqa: E402
 from ._lenslab import Scene, asset_directory, read_image  # noqa: E402
+from ._sequence import Sequence, write  # noqa: E402
 
-__all__ = ["Camera", "Frame", "Renderer", "Scene", "asset_directory", "load", "read_image", "write_image"]
+__all__ = ["Camera", "Frame", "Renderer", "Scene", "Sequence", "asset_directory", "load", "read_image", "write",
+           "write_image"]
 
 
 def load(path=None, *, animation=None, time=None, background=None):

@@ -11,8 +11,10 @@ class Frame:
     ``depth`` float32 (H, W), distance along the optical axis in world units (metres), +inf where
     nothing is hit; ``normal`` float32 (H, W, 3), unit, camera space in the convention asked for
     (0 where nothing is hit); ``albedo`` float32 (H, W, 3), linear; ``instance`` int32 (H, W), the
-    glTF node index, −1 where nothing is hit. ``camera``: the camera as rendered (near and far fitted
-    to the scene)."""
+    glTF node index, −1 where nothing is hit; ``flow`` float32 (H, W, 2) for a Sequence's frame, the
+    motion to the next frame in pixels. ``camera``: the camera as rendered (near and far fitted to
+    the scene). A Sequence's frame also has ``index``, ``time`` and ``seed``, and its arrays are
+    read-only views of what ``lenslab.write`` writes (copy one to change it)."""
 
     def __init__(self, fields):
         self.rgba = fields["rgba"]
@@ -23,6 +25,12 @@ class Frame:
         self.samples = fields["samples"]
         self.warnings = list(fields["warnings"])
         self.camera = Camera(fields["camera"])
+        self.flow = fields.get("flow")
+        # A Sequence's frame: its frame number, time in seconds and seed (else None).
+        self.index = fields.get("index")
+        self.time = fields.get("time")
+        self.seed = fields.get("seed")
+        self._captured = fields.get("captured")
 
     @property
     def rgb(self):
@@ -39,7 +47,8 @@ class Frame:
 
     def __repr__(self):
         width, height = self.size
-        return f"<lenslab.Frame {width}x{height}, {self.samples} samples>"
+        where = "" if self.index is None else f"frame {self.index}, "
+        return f"<lenslab.Frame {where}{width}x{height}, {self.samples} samples>"
 
 
 class Renderer:
@@ -73,3 +82,7 @@ class Renderer:
         per pixel: the reference ``render`` converges to."""
         camera = scene.camera() if camera is None else camera
         return Frame(self._native.raycast(scene, camera._native, int(spp), width, height, seed, list(aovs), normals))
+
+    def frames(self, sequence):
+        """A ``Sequence``'s frames, rendered in order (as ``sequence.frames(self)``)."""
+        return sequence.frames(self)

@@ -32,5 +32,6 @@ void bindScene(pybind11::module_& m);
 void bindCamera(pybind11::module_& m);
 void bindRenderer(pybind11::module_& m);
 void bindFiles(pybind11::module_& m);
+void bindSequence(pybind11::module_& m);
 
 }  // namespace lenslab::python

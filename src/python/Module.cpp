@@ -28,4 +28,5 @@ PYBIND11_MODULE(_lenslab, m) {
   lenslab::python::bindCamera(m);
   lenslab::python::bindRenderer(m);
   lenslab::python::bindFiles(m);
+  lenslab::python::bindSequence(m);
 }

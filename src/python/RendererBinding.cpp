@@ -16,6 +16,7 @@
 #include "plan/UserOptions.h"
 #include "python/Arrays.h"
 #include "python/Bindings.h"
+#include "python/Sequence.h"
 #include "raycast/RayCaster.h"
 #include "render/Renderer.h"
 #include "render/TiledRender.h"
@@ -83,7 +84,7 @@ class PyRenderer {
     const ImageSize size = sizeFor(frame.camera, request);
     context_->makeCurrent();
     requireOneTarget(size, queryRenderTargetLimits(), "lenslab.Renderer.render");
-    Renderer& renderer = rendererFor(scene);
+    Renderer& renderer = rendererFor(scene.scene);
     RunStats stats;
     const FramePlan plan = planFrame(renderer, *scene.scene, frame.camera.camera, size, planOptions, stats);
     frame.warnings = plan.warnings;
@@ -106,6 +107,13 @@ class PyRenderer {
     frame.samples = samplesPerPixel;
     frame.aovs = aovImagesOf(scene, map, aovs);
     return frame;
+  }
+
+  // Frame `frame` of `sequence`, as capture renders it.
+  std::shared_ptr<CapturedFrame> renderFrame(PySequence& sequence, int frame) {
+    checkThread("render_frame");
+    context_->makeCurrent();
+    return std::make_shared<CapturedFrame>(sequence.frames->render(frame, rendererFor(sequence.scene)));
   }
 
  private:
@@ -144,10 +152,10 @@ class PyRenderer {
   }
 
   // The renderer of the scene last rendered, kept (with the scene) until another scene is.
-  Renderer& rendererFor(const PyScene& scene) {
-    if (!renderer_ || rasterScene_ != scene.scene) {
+  Renderer& rendererFor(const std::shared_ptr<const Scene>& scene) {
+    if (!renderer_ || rasterScene_ != scene) {
       renderer_.reset();
-      rasterScene_ = scene.scene;
+      rasterScene_ = scene;
       renderer_ = std::make_unique<Renderer>(*rasterScene_);
     }
     return *renderer_;
@@ -196,6 +204,44 @@ py::dict toPython(Frame&& frame) {
   return d;
 }
 
+// A sequence's frame as Python sees it: read-only views of what lenslab.write writes (normals in
+// the OpenCV convention and instance ids as int32 are copies), its frame number, time, seed and
+// camera, and the frame itself for lenslab.write.
+py::dict toPython(const PyCapturedFrame& captured) {
+  const CapturedFrame& c = *captured.frame;
+  const std::shared_ptr<const void> owner = captured.frame;
+  py::dict d;
+  const int w = c.image.width, h = c.image.height;
+  d["rgba"] = readOnlyView(c.image.rgba, {h, w, 4}, owner);
+  const AovImages& a = c.aovs;
+  if (!a.depth.empty()) d["depth"] = readOnlyView(a.depth, {h, w}, owner);
+  if (!a.normal.empty()) {
+    if (captured.sequence->frames->aovs().normals == NormalConvention::Gl) {
+      d["normal"] = readOnlyView(a.normal, {h, w, 3}, owner);
+    } else {
+      AovImages normals;
+      normals.normal = a.normal;
+      applyNormalConvention(normals, captured.sequence->frames->aovs().normals);
+      d["normal"] = floatsOf(std::move(normals.normal), w, h, 3);
+    }
+  }
+  if (!a.albedo.empty()) d["albedo"] = readOnlyView(a.albedo, {h, w, 3}, owner);
+  if (!a.instance.empty()) {
+    std::vector<std::int32_t> ids(a.instance.begin(), a.instance.end());
+    d["instance"] = arrayOf(std::move(ids), {h, w});
+  }
+  if (!a.flow.empty()) d["flow"] = readOnlyView(a.flow, {h, w, 2}, owner);
+  d["samples"] = c.stats.estimate ? c.stats.estimate->meanSamples : static_cast<double>(c.apertureSamples);
+  d["warnings"] = std::vector<std::string>{};
+  d["camera"] =
+      PyCamera{SelectedCamera{c.camera, c.key.key ? std::optional<PhysicalCamera>(c.key.key->camera) : std::nullopt}};
+  d["index"] = c.frame;
+  d["time"] = c.timeSeconds;
+  d["seed"] = c.seed;
+  d["captured"] = captured;
+  return d;
+}
+
 FrameRequest requestOf(std::optional<int> width, std::optional<int> height, std::uint32_t seed,
                        std::vector<std::string> aovs, std::string normals) {
   return FrameRequest{width, height, seed, std::move(aovs), std::move(normals)};
@@ -236,7 +282,18 @@ void bindRenderer(py::module_& m) {
             return toPython(std::move(frame));
           },
           py::arg("scene"), py::arg("camera"), py::arg("spp"), py::arg("width"), py::arg("height"), py::arg("seed"),
-          py::arg("aovs"), py::arg("normals"));
+          py::arg("aovs"), py::arg("normals"))
+      .def(
+          "render_frame",
+          [](PyRenderer& r, const std::shared_ptr<PySequence>& sequence, int frame) {
+            PyCapturedFrame captured{nullptr, sequence};
+            {
+              py::gil_scoped_release release;
+              captured.frame = r.renderFrame(*sequence, frame);
+            }
+            return toPython(captured);
+          },
+          py::arg("sequence"), py::arg("frame"));
 }
 
 }  // namespace lenslab::python

@@ -31,6 +31,7 @@ class Frame:
         self.time = fields.get("time")
         self.seed = fields.get("seed")
         self._captured = fields.get("captured")
+        self._scene = None
 
     @property
     def rgb(self):
@@ -74,14 +75,18 @@ class Renderer:
         the viewer) or "opencv" (x right, y down, z forward)."""
         camera = scene.camera() if camera is None else camera
         samples = "auto" if aperture_samples is None else str(int(aperture_samples))
-        return Frame(self._native.render(scene, camera._native, samples, pattern or "", width, height, seed,
-                                         list(aovs), normals))
+        frame = Frame(self._native.render(scene, camera._native, samples, pattern or "", width, height, seed,
+                                          list(aovs), normals))
+        frame._scene = scene  # the instance ids' names, for lenslab.write
+        return frame
 
     def raycast(self, scene, camera=None, *, spp=64, seed=1, aovs=(), normals="gl", width=None, height=None):
         """The same frame from the CPU ray caster (Embree), ``spp`` stratified pixel × lens samples
         per pixel: the reference ``render`` converges to."""
         camera = scene.camera() if camera is None else camera
-        return Frame(self._native.raycast(scene, camera._native, int(spp), width, height, seed, list(aovs), normals))
+        frame = Frame(self._native.raycast(scene, camera._native, int(spp), width, height, seed, list(aovs), normals))
+        frame._scene = scene
+        return frame
 
     def frames(self, sequence):
         """A ``Sequence``'s frames, rendered in order (as ``sequence.frames(self)``)."""

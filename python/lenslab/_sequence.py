@@ -1,5 +1,6 @@
 """lenslab.Sequence and lenslab.write: the frames ``lenslab capture`` renders, from Python."""
 
+import json
 import warnings as _warnings
 
 from . import _lenslab
@@ -77,13 +78,23 @@ class Sequence:
         return result
 
 
-def write(frame):
-    """Writes a frame of a ``Sequence`` as ``lenslab capture`` does, with its writers: the image at
-    the sequence's ``out`` for its frame number, the AOV files (and instances.json) beside it, its
-    camera file, and its line appended to the manifest — together or not at all. Returns the
-    manifest line (a dict)."""
-    import json
+def write(frame, path=None, *, aov_format="exr"):
+    """Writes a frame with the command line's writers, whole or not at all.
 
-    if getattr(frame, "_captured", None) is None:
-        raise ValueError("lenslab.write: the frame is not a Sequence's; write a single frame with lenslab.write_image")
-    return json.loads(frame._captured.write())
+    A ``Sequence``'s frame (no ``path``): as ``lenslab capture`` writes it — the image at the
+    sequence's ``out`` for its frame number, the AOV files (and instances.json) beside it, its camera
+    file, and its line appended to the manifest; returns the line (a dict).
+
+    A frame from ``Renderer.render`` or ``raycast``: as ``lenslab render --out PATH --aov ...
+    --aov-format F`` writes it — the image at ``path`` (``.png`` 8-bit sRGB, ``.exr`` linear float)
+    and the frame's AOVs as ``aov_format`` "exr" (channels of the EXR, or PATH.aov.exr beside a PNG),
+    "npy" or "png16", with PATH.instances.json for the instance ids; returns None."""
+    if frame._captured is not None:
+        if path is not None:
+            raise ValueError("lenslab.write: a Sequence's frame goes where the sequence's out= puts it; give no path")
+        return json.loads(frame._captured.write())
+    if path is None:
+        raise ValueError("lenslab.write: give the path of a frame from Renderer.render or raycast")
+    _lenslab._write_frame(str(path), frame.rgba, frame.depth, frame.normal, frame.albedo, frame.instance, aov_format,
+                          frame._scene)
+    return None

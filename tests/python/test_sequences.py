@@ -99,9 +99,42 @@ class SequenceWritesCaptureFiles(unittest.TestCase):
                 lenslab.Sequence(self.scene, path=PATH, out=f"{d}/no_frame_number.png")
             with self.assertRaisesRegex(ValueError, "cameras: an empty list"):
                 lenslab.Sequence(self.scene, cameras=[], out=f"{d}/f_%d.png")
-            with self.assertRaisesRegex(ValueError, "not a Sequence's"):
+            with self.assertRaisesRegex(ValueError, "give the path of a frame"):
                 lenslab.write(self.renderer.render(self.scene, width=32))
             self.assertEqual(os.listdir(d), [])  # nothing written
+
+
+class WriteGivesRenderFiles(unittest.TestCase):
+    """lenslab.write of a single frame: `lenslab render --out PATH --aov ... --aov-format F`'s files."""
+
+    def test_the_image_and_aov_files_are_the_clis_bytes(self):
+        scene = lenslab.load()
+        renderer = lenslab.Renderer(width=96)
+        camera = lenslab.Camera.from_file(ASSETS / "rows" / "camera.json")
+        for aov_format, normals in (("npy", "opencv"), ("png16", "gl")):
+            with self.subTest(aov_format=aov_format), scratch() as d:
+                os.mkdir(f"{d}/cli")
+                os.mkdir(f"{d}/py")
+                status, err = run_cli("render", "--camera", ASSETS / "rows" / "camera.json", "--width", 96, "--aov",
+                                      "depth,normal,albedo,instance", "--aov-format", aov_format,
+                                      "--normal-convention", normals, "--out", f"{d}/cli/f.png", "--quiet")
+                self.assertEqual(status, 0, err)
+                frame = renderer.render(scene, camera, aovs=("depth", "normal", "albedo", "instance"),
+                                        normals=normals)
+                self.assertIsNone(lenslab.write(frame, f"{d}/py/f.png", aov_format=aov_format))
+                cli, py = files_under(f"{d}/cli"), files_under(f"{d}/py")
+                self.assertEqual(cli, py)
+                self.assertIn("f.instances.json", cli)
+                for name in cli:
+                    self.assertTrue(filecmp.cmp(f"{d}/cli/{name}", f"{d}/py/{name}", shallow=False), name)
+
+    def test_a_bad_aov_format_writes_nothing(self):
+        scene = lenslab.load()
+        frame = lenslab.Renderer(width=32).render(scene, aovs=("depth",))
+        with scratch() as d:
+            with self.assertRaisesRegex(ValueError, "aov_format"):
+                lenslab.write(frame, f"{d}/f.png", aov_format="tiff")
+            self.assertEqual(os.listdir(d), [])
 
 
 if __name__ == "__main__":

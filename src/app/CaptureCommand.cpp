@@ -160,7 +160,7 @@ std::function<int()> addCaptureCommand(CLI::App& app) {
   cmd->add_option("--fps", o->fps,
                   "without --path: frames per second over the playing animation, or of a camera list's frames "
                   "(default 24)")
-      ->check(numberIn({.min = 1e-3, .max = 1e4, .unit = "frames per second"}))
+      ->check(numberIn(kFramesPerSecondRange))
       ->type_name("F");
   cmd->add_option(
          "--out,-o", o->out,

@@ -6,6 +6,7 @@
 #include "app/ExposureSettings.h"
 #include "camera/CameraPath.h"
 #include "camera/ImageSize.h"
+#include "core/NumberInput.h"
 #include "io/CameraList.h"
 #include "io/EnvironmentFile.h"
 #include "plan/CameraOptions.h"
@@ -20,6 +21,9 @@
 #include <vector>
 
 namespace lenslab {
+
+// Frames per second of a sequence without a path (capture --fps, lenslab.Sequence's fps=).
+inline constexpr NumberRange kFramesPerSecondRange{.min = 1e-3, .max = 1e4, .unit = "frames per second"};
 
 struct CaptureOptions {
   std::string scene;

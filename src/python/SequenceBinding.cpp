@@ -40,7 +40,7 @@ std::shared_ptr<PySequence> makeSequence(const PyScene& scene, const SequenceReq
   o.camera.colmapDir = r.colmap;
   o.cameraFile = r.cameraFile;
   o.camera.cameraNode = r.cameraNode;
-  o.fps = r.fps;
+  o.fps = r.fps ? std::optional<double>(checkedNumber("fps", *r.fps, kFramesPerSecondRange)) : std::nullopt;
   o.width = r.width;
   o.height = r.height;
   o.frames = r.frames;

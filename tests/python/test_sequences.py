@@ -97,6 +97,9 @@ class SequenceWritesCaptureFiles(unittest.TestCase):
                 lenslab.Sequence(self.scene, path=PATH, cameras=[lenslab.Camera.from_file(PATH.parent / "camera.json")])
             with self.assertRaisesRegex(ValueError, "--out"):
                 lenslab.Sequence(self.scene, path=PATH, out=f"{d}/no_frame_number.png")
+            with self.assertRaisesRegex(ValueError, "fps: 0 is out of range"):
+                lenslab.Sequence(self.scene, cameras=[lenslab.Camera.from_file(PATH.parent / "camera.json")], fps=0,
+                                 out=f"{d}/f_%d.png")
             with self.assertRaisesRegex(ValueError, "cameras: an empty list"):
                 lenslab.Sequence(self.scene, cameras=[], out=f"{d}/f_%d.png")
             with self.assertRaisesRegex(ValueError, "give the path of a frame"):
